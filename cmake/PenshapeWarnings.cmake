@@ -1,0 +1,19 @@
+# Warnings as errors on our own targets only (generated and third-party code is not ours).
+function(penshape_warnings target)
+  target_compile_options(${target} PRIVATE
+    -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Werror)
+endfunction()
+
+# Test binaries: discovered by ctest. PRE_TEST discovery works for sanitizer builds too.
+function(penshape_add_test target)
+  cmake_parse_arguments(ARG "" "" "SOURCES;LIBS" ${ARGN})
+  add_executable(${target} ${ARG_SOURCES})
+  penshape_warnings(${target})
+  target_link_libraries(${target} PRIVATE ${ARG_LIBS} GTest::gtest GTest::gtest_main)
+  target_compile_definitions(${target} PRIVATE
+    PENSHAPE_SHARED_DATA_DIR="${PENSHAPE_SHARED_DATA_DIR}"
+    PENSHAPE_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+    PENSHAPE_BINARY_DIR="${PROJECT_BINARY_DIR}")
+  gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60 DISCOVERY_MODE PRE_TEST
+    PROPERTIES ENVIRONMENT "PENSHAPE_SHARED_DATA_DIR=${PENSHAPE_SHARED_DATA_DIR}")
+endfunction()

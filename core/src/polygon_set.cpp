@@ -1,0 +1,59 @@
+#include "penshape/core/polygon_set.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace penshape {
+
+std::size_t PolygonSet::vertex_count() const {
+  std::size_t n = 0;
+  for (const auto& p : polygons) {
+    n += p.outer.size();
+    for (const auto& h : p.holes) n += h.size();
+  }
+  return n;
+}
+
+Rational exact(double v) {
+  // mpq_set_d is exact for finite doubles (they are dyadic rationals).
+  Rational r;
+  mpq_set_d(r.get_mpq_t(), v);
+  return r;
+}
+
+ExactPoint exact(PointD p) { return {exact(p.x), exact(p.y)}; }
+
+double to_double(const Rational& v) { return v.get_d(); }
+
+PointD to_double(const ExactPoint& p) { return {to_double(p.x), to_double(p.y)}; }
+
+Rational twice_signed_area(const Ring& ring) {
+  Rational sum = 0;
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const ExactPoint& a = ring[i];
+    const ExactPoint& b = ring[(i + 1) % n];
+    sum += a.x * b.y - a.y * b.x;
+  }
+  return sum;
+}
+
+Rational area(const PolygonSet& set) {
+  Rational twice = 0;
+  for (const auto& p : set.polygons) {
+    twice += abs(twice_signed_area(p.outer));
+    for (const auto& h : p.holes) twice -= abs(twice_signed_area(h));
+  }
+  return twice / 2;
+}
+
+void normalize_orientation(PolygonSet& set) {
+  for (auto& p : set.polygons) {
+    if (sgn(twice_signed_area(p.outer)) < 0) std::reverse(p.outer.begin(), p.outer.end());
+    for (auto& h : p.holes) {
+      if (sgn(twice_signed_area(h)) > 0) std::reverse(h.begin(), h.end());
+    }
+  }
+}
+
+} // namespace penshape
