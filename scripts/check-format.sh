@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
-# Checks clang-format on the C++ files changed against a base (default: the first commit, i.e.
-# every tracked file). Usage: scripts/check-format.sh [BASE]. Exit 1 lists the files to fix.
+# Checks clang-format on C++ files: every tracked and untracked (not ignored) file by default, or
+# only those changed since BASE. Usage: scripts/check-format.sh [BASE]. Exit 1 lists the files.
 set -euo pipefail
 cd "$(git rev-parse --show-toplevel)"
-base=${1:-$(git rev-list --max-parents=0 HEAD | tail -n 1)}
-mapfile -t files < <( { git diff --name-only --diff-filter=ACMR "$base" -- ; \
-  git ls-files --others --exclude-standard ; [ "$base" = "$(git rev-list --max-parents=0 HEAD | tail -n 1)" ] && git ls-files ; } \
-  | grep -E '\.(cpp|hpp|h|cc)$' | sort -u)
+if [ $# -ge 1 ]; then
+  list() { git diff --name-only --diff-filter=ACMR "$1"; git ls-files --others --exclude-standard; }
+  mapfile -t files < <(list "$1" | grep -E '\.(cpp|hpp|h|cc)$' | sort -u)
+else
+  mapfile -t files < <( { git ls-files; git ls-files --others --exclude-standard; } \
+    | grep -E '\.(cpp|hpp|h|cc)$' | sort -u)
+fi
 bad=()
 for f in "${files[@]}"; do
   [ -f "$f" ] || continue

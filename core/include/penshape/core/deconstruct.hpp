@@ -1,0 +1,76 @@
+#pragma once
+// Offset deconstruction (../shared/papers/deconstructing-approximate-offsets.txt, Sections 2-3):
+// given a polygonal region Q, a radius r and a tolerance eps, is there a polygonal region P
+// whose r-offset is within Hausdorff distance eps of Q? APPROXDECIDE answers with a working
+// precision delta < eps:
+//   YES       certified: the returned P satisfies P ⊆ Π = inset(offset(Q, eps), r) and
+//             Q ⊆ offset(P, r + eps), hence H(offset(P, r), Q) <= eps (Proposition 3).
+//   NO        certified: no polygonal P exists (the exterior approximation excludes part of Q).
+//   UNDECIDED delta is too coarse to tell; a smaller delta decides (Theorems 11, 13).
+// With r <= eps the answer is YES with P = Q, as in the paper.
+#include <chrono>
+#include <cstddef>
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+#include "penshape/core/polygon_set.hpp"
+
+namespace penshape {
+
+enum class Answer { kYes, kNo, kUndecided };
+enum class EngineKind { kFast, kReference };
+
+const char* to_string(Answer a);     // "YES", "NO", "UNDECIDED"
+const char* to_string(EngineKind e); // "fast", "reference"
+
+// Called now and then inside long computations; returning true aborts with Cancelled.
+using CancelHook = std::function<bool()>;
+
+// Thrown when a CancelHook asked to stop.
+struct Cancelled : std::runtime_error {
+  Cancelled() : std::runtime_error("cancelled") {}
+};
+
+// Thrown for input the engines refuse; the message names the problem (which polygon, ring and
+// vertex, which parameter, which bound).
+struct InvalidInput : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+struct DeconstructParams {
+  Rational radius;    // r > 0
+  Rational tolerance; // eps > 0
+  Rational precision; // delta, 0 < delta < eps
+  EngineKind engine = EngineKind::kFast;
+};
+
+// Explicit limits; exceeding one is InvalidInput whose message states the limit.
+struct DeconstructLimits {
+  std::size_t max_input_vertices = 200'000;
+  // Vertices of the largest disk approximation D̄_{a,b} (it grows like sqrt(b / (b - a))).
+  std::size_t max_disk_vertices = 4'096;
+};
+
+struct DeconstructResult {
+  Answer answer = Answer::kUndecided;
+  EngineKind engine = EngineKind::kFast;
+  DeconstructParams params;
+  // With YES: the solution P (P ⊆ Π̂ ⊆ Π and Q ⊆ offset(P, r + eps)). Empty otherwise.
+  PolygonSet solution;
+  // With YES: an upper bound on H(offset(P, r), Q) that the certificate proves (<= eps).
+  Rational hausdorff_bound;
+  std::size_t disk_vertices = 0; // vertices of the largest disk approximation used
+  std::chrono::nanoseconds elapsed{0};
+};
+
+// Validates Q (simple rings, no repeated vertices, holes inside outers, finite) and the
+// parameters; throws InvalidInput naming the problem.
+void validate_deconstruct_input(const PolygonSet& q, const DeconstructParams& params,
+                                const DeconstructLimits& limits = {});
+
+// APPROXDECIDE(Q, r, eps, delta) with the chosen engine.
+DeconstructResult deconstruct(const PolygonSet& q, const DeconstructParams& params,
+                              const CancelHook& cancel = {}, const DeconstructLimits& limits = {});
+
+} // namespace penshape
