@@ -11,6 +11,8 @@
 
 namespace penshape {
 
+// GMP needs canonical rationals (lowest terms, positive denominator): mpq_class(p, q) is not
+// canonical unless p/q already is; call canonicalize() after building one from a fraction.
 using Rational = mpq_class;
 
 struct ExactPoint {

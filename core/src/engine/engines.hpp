@@ -1,0 +1,19 @@
+#pragma once
+// The two deconstruction engines behind deconstruct() (core/src/deconstruct.cpp). Internal:
+// callers use penshape/core/deconstruct.hpp. Both receive validated input with r > eps (the
+// r <= eps case is answered before dispatch) and must give certified YES/NO answers; they may
+// differ only in speed and in which undecided cases they can settle.
+#include "penshape/core/deconstruct.hpp"
+
+namespace penshape::detail {
+
+// The paper's APPROXDECIDE literally: CGAL exact Minkowski sums and Boolean set operations on
+// D̄_{a,b} disk approximations. The baseline and the test oracle.
+DeconstructResult decide_reference(const PolygonSet& q, const DeconstructParams& params,
+                                   const CancelHook& cancel, const DeconstructLimits& limits);
+
+// The default engine: the same certified answers, much faster.
+DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& params,
+                              const CancelHook& cancel, const DeconstructLimits& limits);
+
+} // namespace penshape::detail
