@@ -25,3 +25,24 @@ DeconstructResult convex_decide(const PolygonSet& q, const DeconstructParams& pa
                                 const CancelHook& cancel = {});
 
 } // namespace penshape
+
+namespace penshape {
+
+// The greedy solution P^s of Section 5 (Theorems 27-30): starting at a point s on ∂Π̂, jump to
+// the horizon (the farthest boundary point whose chord still meets every eyelet
+// κ_i = D_{r+ε}(q_i) ∩ Π̂ with its spot in between) until the chord back to s is good. At most
+// OPT + 1 vertices on non-degenerate inputs; may be a segment or a single point.
+//
+// Horizons are found in floating point; the returned polygon is then checked exactly (vertices on
+// ∂Π̂ with rational coordinates, every vertex disk of Q meets P, so Q ⊆ offset(P, r + ε) and
+// P ⊆ Π̂ ⊆ Π by convexity). When the check fails, the result falls back to Π̂ itself, so
+// the certificate always holds. `pi_hat` must be a YES solution of convex_decide for q.
+struct GreedyResult {
+  PolygonSet solution; // the ring may have 1, 2 or more vertices
+  std::size_t vertices = 0;
+  bool fell_back = false; // the exact check failed and Π̂ was returned
+};
+GreedyResult convex_greedy_solution(const PolygonSet& q, const PolygonSet& pi_hat,
+                                    const Rational& reach, const CancelHook& cancel = {});
+
+} // namespace penshape
