@@ -91,22 +91,4 @@ Ring intersect_sorted_half_planes(const std::vector<HalfPlane>& planes) {
   return out;
 }
 
-Rational squared_distance_to_segment(const ExactPoint& p, const ExactPoint& s,
-                                     const ExactPoint& t) {
-  const Rational dx = t.x - s.x;
-  const Rational dy = t.y - s.y;
-  const Rational px = p.x - s.x;
-  const Rational py = p.y - s.y;
-  const Rational len2 = dx * dx + dy * dy;
-  const Rational proj = px * dx + py * dy;
-  if (sgn(len2) == 0 || sgn(proj) <= 0) return px * px + py * py;
-  if (proj >= len2) {
-    const Rational qx = p.x - t.x;
-    const Rational qy = p.y - t.y;
-    return qx * qx + qy * qy;
-  }
-  // |p - s|² - proj² / len2
-  return px * px + py * py - proj * proj / len2;
-}
-
 } // namespace penshape::detail

@@ -2,6 +2,7 @@
 // Internal: the inward shift of a convex polygon's edge lines and their intersection.
 #include <vector>
 
+#include "../geometry/segment_distance.hpp"
 #include "penshape/core/polygon_set.hpp"
 
 namespace penshape::detail {
