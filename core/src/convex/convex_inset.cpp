@@ -9,7 +9,7 @@ namespace {
 Rational sqrt_bound(const Rational& x, unsigned bits, ShiftBound bound) {
   // sqrt(N/D) = sqrt(N·D) / D; scale by 4^bits before the integer square root.
   mpz_class scaled = x.get_num() * x.get_den();
-  mpz_mul_2exp(scaled.get_mpz_t(), scaled.get_mpz_t(), 2 * bits);
+  mpz_mul_2exp(scaled.get_mpz_t(), scaled.get_mpz_t(), 2UL * bits);
   mpz_class root = sqrt(scaled); // floor
   if (bound == ShiftBound::kUpper && root * root != scaled) ++root;
   mpz_class den = x.get_den();

@@ -26,7 +26,4 @@ std::vector<HalfPlane> shifted_edge_half_planes(const Ring& ring, const Rational
 // as a counterclockwise ring; empty when the intersection has no interior.
 Ring intersect_sorted_half_planes(const std::vector<HalfPlane>& planes);
 
-// Squared distance from p to the segment [s, t], exactly.
-Rational squared_distance_to_segment(const ExactPoint& p, const ExactPoint& s, const ExactPoint& t);
-
 } // namespace penshape::detail
