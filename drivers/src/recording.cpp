@@ -272,8 +272,7 @@ UsbhidDump read_usbhid_dump(std::string_view text) {
     }
     const std::string_view head = tokens[0].text;
     const auto colon = head.rfind(':');
-    if (colon != std::string_view::npos && !head.empty() && hex_digit(head[0]) >= 0 &&
-        head.size() > 2 &&
+    if (colon != std::string_view::npos &&
         (head.substr(colon + 1) == "STREAM" || head.substr(colon + 1) == "DESCRIPTOR")) {
       flush();
       any = true;
@@ -281,7 +280,8 @@ UsbhidDump read_usbhid_dump(std::string_view text) {
       const auto parts_end = colon;
       const auto iface_start = head.rfind(':', parts_end - 1);
       const bool well_formed = !damaged && iface_start != std::string_view::npos &&
-                               std::count(head.begin(), head.end(), ':') == 3;
+                               std::count(head.begin(), head.end(), ':') == 3 &&
+                               hex_digit(head[0]) >= 0;
       if (!well_formed) {
         kind = Kind::kDamaged;
         ++dump.damaged_blocks;
