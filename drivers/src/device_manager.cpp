@@ -57,35 +57,41 @@ DeviceId DeviceManager::start_reader(AttachedDevice info, const DeviceProfile& p
   d->info = info;
   d->source = std::move(source);
   const DeviceId id = info.id;
-  d->pipeline = std::make_unique<PenPipeline>(
-      profile, options_.segmenter,
-      PenCallbacks{.on_sample =
-                       [this, id](const PenSample& s) {
-                         if (callbacks_.on_sample) callbacks_.on_sample(id, s);
-                       },
-                   .on_stroke =
-                       [this, id](Stroke&& s) {
-                         s.id = next_stroke_id_++;
-                         if (callbacks_.on_stroke) callbacks_.on_stroke(id, std::move(s));
-                       }});
-  if (callbacks_.on_attach) callbacks_.on_attach(d->info);
+  d->pipeline =
+      std::make_unique<PenPipeline>(profile, options_.segmenter,
+                                    PenCallbacks{.on_sample =
+                                                     [this, id](const PenSample& s) {
+                                                       if (callbacks_.on_sample)
+                                                         callbacks_.on_sample(id, s);
+                                                     },
+                                                 .on_stroke =
+                                                     [this, id](Stroke&& s) {
+                                                       s.id = next_stroke_id_++;
+                                                       if (callbacks_.on_stroke)
+                                                         callbacks_.on_stroke(id, std::move(s));
+                                                     }});
   Device* raw = d.get();
   {
     std::lock_guard lock(mutex_);
     devices_.emplace(id, std::move(d));
-    // The thread starts under the lock so stop() never sees a device without its thread.
-    raw->thread = std::thread([this, raw] {
-      const LoopEnd end =
-          run_reader_loop(*raw->source, *raw->pipeline, raw->stop, options_.read_poll);
-      const DetachReason why = end == LoopEnd::kGone    ? DetachReason::kGone
-                               : end == LoopEnd::kEnd   ? DetachReason::kEnded
-                                                        : DetachReason::kStopped;
-      if (callbacks_.on_detach) callbacks_.on_detach(raw->info.id, why, raw->pipeline->counters());
-      raw->finished = true;
-      changed_.notify_all();
-      if (backend_ != nullptr && why == DetachReason::kGone) backend_->wake(); // reap + rescan
-    });
   }
+  // Listed first, announced next, read last: a callback may already call devices(), and no
+  // sample can precede the attach event.
+  if (callbacks_.on_attach) callbacks_.on_attach(raw->info);
+  std::lock_guard lock(mutex_);
+  if (devices_.count(id) == 0) return id; // stop() ran meanwhile and took the device
+  // Started under the lock so stop() never sees a listed device whose thread is not set yet.
+  raw->thread = std::thread([this, raw] {
+    const LoopEnd end =
+        run_reader_loop(*raw->source, *raw->pipeline, raw->stop, options_.read_poll);
+    const DetachReason why = end == LoopEnd::kGone  ? DetachReason::kGone
+                             : end == LoopEnd::kEnd ? DetachReason::kEnded
+                                                    : DetachReason::kStopped;
+    if (callbacks_.on_detach) callbacks_.on_detach(raw->info.id, why, raw->pipeline->counters());
+    raw->finished = true;
+    changed_.notify_all();
+    if (backend_ != nullptr && why == DetachReason::kGone) backend_->wake(); // reap + rescan
+  });
   return id;
 }
 

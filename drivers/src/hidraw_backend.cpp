@@ -84,8 +84,8 @@ class HidapiSource final : public ReportSource {
   ReadStatus read(std::vector<std::uint8_t>& bytes, std::int64_t& time_us,
                   std::chrono::milliseconds timeout) override {
     if (interrupted_) return ReadStatus::kEnd;
-    const int n = hid_read_timeout(dev_, buffer_.data(), buffer_.size(),
-                                   static_cast<int>(timeout.count()));
+    const int n =
+        hid_read_timeout(dev_, buffer_.data(), buffer_.size(), static_cast<int>(timeout.count()));
     if (n < 0) return ReadStatus::kGone;
     if (interrupted_) return ReadStatus::kEnd;
     if (n == 0) return ReadStatus::kTimeout;
@@ -94,8 +94,8 @@ class HidapiSource final : public ReportSource {
     return ReadStatus::kReport;
   }
   std::int64_t now_us() const override {
-    return std::chrono::duration_cast<std::chrono::microseconds>(
-               std::chrono::steady_clock::now() - start_)
+    return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() -
+                                                                 start_)
         .count();
   }
   // hid_read_timeout cannot be woken; the reader loop's poll period bounds the delay.
@@ -217,8 +217,8 @@ class HidrawBackend final : public DeviceBackend {
 
 std::unique_ptr<DeviceBackend> make_hidraw_backend() { return std::make_unique<HidrawBackend>(); }
 
-std::size_t record_hidraw(const std::string& path, std::ostream& out,
-                          const std::atomic<bool>& stop, std::chrono::milliseconds max_duration) {
+std::size_t record_hidraw(const std::string& path, std::ostream& out, const std::atomic<bool>& stop,
+                          std::chrono::milliseconds max_duration) {
   ensure_hid_init();
   Recording header;
   header.descriptor = read_descriptor(path);
@@ -235,8 +235,7 @@ std::size_t record_hidraw(const std::string& path, std::ostream& out,
     hid_free_enumeration(info);
   }
   std::vector<InitStep> init;
-  if (const TabletSpec* spec =
-          find_tablet(header.identity.vendor_id, header.identity.product_id)) {
+  if (const TabletSpec* spec = find_tablet(header.identity.vendor_id, header.identity.product_id)) {
     const auto indexes = vendor_string_indexes(spec->protocol);
     if (!indexes.empty()) {
       header.vendor_strings =

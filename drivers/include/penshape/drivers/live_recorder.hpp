@@ -21,7 +21,7 @@ std::size_t record_source(ReportSource& source, const Recording& header, std::os
 // Opens a live hidraw node (e.g. /dev/hidraw3): identity and descriptor from sysfs (or the
 // HIDIOCGRDESC ioctl), the tablet's vendor strings and init reports, then record_source.
 // Throws std::runtime_error when the node cannot be opened.
-std::size_t record_hidraw(const std::string& path, std::ostream& out,
-                          const std::atomic<bool>& stop, std::chrono::milliseconds max_duration);
+std::size_t record_hidraw(const std::string& path, std::ostream& out, const std::atomic<bool>& stop,
+                          std::chrono::milliseconds max_duration);
 
 } // namespace penshape::drivers
