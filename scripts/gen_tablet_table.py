@@ -9,6 +9,11 @@ DATA = os.path.join(os.path.dirname(__file__), '..', '..', 'shared', 'data', 'hi
 names = {}
 for r in csv.DictReader(open(os.path.join(DATA, 'wacom-hid-descriptors/INDEX.tsv')), delimiter='\t'):
     names.setdefault((r['vid'].lower(), r['pid'].lower()), set()).add(r['device'])
+for f in glob.glob(os.path.join(DATA, 'wacom-hid-descriptors/**/*.hid.bin'), recursive=True):
+    rel = os.path.relpath(f, os.path.join(DATA, 'wacom-hid-descriptors'))
+    name = os.path.basename(f)  # <bus>:<VID>:<PID>.<n>.hid.bin
+    names.setdefault((name[5:9].lower(), name[10:14].lower()), set()).add(
+        rel.split(os.sep)[0].replace('_', ' '))
 for f in ['hid-tools-tests/tablet_rdescs.hidrec.txt', 'udev-hid-bpf/huion_xppen_rdescs.hidrec.txt']:
     name = None
     for line in open(os.path.join(DATA, f)):
