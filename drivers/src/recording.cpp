@@ -342,6 +342,31 @@ Recording recording_from_dump(const UsbhidDump& dump, int interface, const Devic
   return r;
 }
 
+Recording load_recording_file(const std::filesystem::path& path) {
+  const std::string text = read_file(path);
+  switch (detect_format(text)) {
+    case RecordingFormat::kHidRecorder:
+      return read_hid_recorder(text);
+    case RecordingFormat::kUsbhidDump: {
+      const UsbhidDump dump = read_usbhid_dump(text);
+      int iface = dump.descriptors.empty() ? 0 : dump.descriptors.begin()->first;
+      std::size_t most = 0;
+      for (const auto& [i, events] : dump.streams) {
+        if (events.size() > most) {
+          most = events.size();
+          iface = i;
+        }
+      }
+      return recording_from_dump(dump, iface, {});
+    }
+    case RecordingFormat::kRawBytes:
+      break;
+  }
+  Recording r;
+  r.descriptor.assign(text.begin(), text.end());
+  return r;
+}
+
 std::string read_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw RecordingError(0, "cannot open " + path.string());
