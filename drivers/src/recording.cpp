@@ -151,12 +151,16 @@ Recording read_hid_recorder(std::string_view text) {
       continue;
     }
     if (other_device) continue;
-    if (tag == "N:") {
-      const auto rest = line.text.substr(tokens[0].offset - line.offset + 2);
-      const auto begin = rest.find_first_not_of(" \t");
-      rec.identity.name = begin == std::string_view::npos ? "" : std::string(rest.substr(begin));
-    } else if (tag == "P:") {
-      rec.phys = tokens.size() >= 2 ? std::string(tokens[1].text) : std::string();
+    if (tag == "N:" || tag == "P:") {
+      // The rest of the line, without the blanks around it.
+      std::string_view rest = line.text.substr(tokens[0].offset - line.offset + 2);
+      while (!rest.empty() && (is_space(rest.front()) || rest.front() == '\r')) {
+        rest.remove_prefix(1);
+      }
+      while (!rest.empty() && (is_space(rest.back()) || rest.back() == '\r')) {
+        rest.remove_suffix(1);
+      }
+      (tag == "N:" ? rec.identity.name : rec.phys) = std::string(rest);
     } else if (tag == "I:") {
       if (tokens.size() != 4) throw RecordingError(line.offset, "I: needs bus, vid and pid");
       rec.identity.bus = static_cast<Bus>(parse_number<std::uint16_t>(tokens[1], 16, "bus"));

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
+#include "penshape/drivers/recording.hpp"
 #include "penshape/drivers/vendor_protocols.hpp"
 #include "shared_data.hpp"
 
@@ -29,6 +32,23 @@ TEST(TabletTable, BuiltinCoversEveryDeviceWithSharedData) {
   ASSERT_EQ(intuos->init.size(), 1U);
   EXPECT_EQ(intuos->init[0].kind, InitStep::Kind::kFeatureReport);
   EXPECT_EQ(intuos->init[0].bytes, (std::vector<std::uint8_t>{0x02, 0x02}));
+}
+
+TEST(TabletTable, UdevRulesGrantEveryTabletsNodes) {
+  const std::string rules =
+      read_file(std::filesystem::path(PENSHAPE_SOURCE_DIR) / "packaging/70-penshape-tablets.rules");
+  for (const auto& t : builtin_tablets()) {
+    char hidraw[96], usb[160];
+    std::snprintf(hidraw, sizeof hidraw,
+                  "KERNEL==\"hidraw*\", KERNELS==\"*:%04X:%04X.*\", TAG+=\"uaccess\"\n",
+                  t.vendor_id, t.product_id);
+    std::snprintf(usb, sizeof usb,
+                  "SUBSYSTEM==\"usb\", ENV{DEVTYPE}==\"usb_device\", ATTR{idVendor}==\"%04x\", "
+                  "ATTR{idProduct}==\"%04x\", TAG+=\"uaccess\"\n",
+                  t.vendor_id, t.product_id);
+    EXPECT_NE(rules.find(hidraw), std::string::npos) << t.name;
+    EXPECT_NE(rules.find(usb), std::string::npos) << t.name;
+  }
 }
 
 TEST(TabletTable, BadRowsNameTheirLine) {
