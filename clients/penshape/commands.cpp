@@ -3,6 +3,8 @@
 #include <array>
 
 #include "command.hpp"
+#include "hid_describe_command.hpp"
+#include "replay_command.hpp"
 #include "version_command.hpp"
 
 namespace penshape::cli {
@@ -11,6 +13,10 @@ std::span<const Subcommand> subcommands() {
   static constexpr std::array kCommands{
       Subcommand{"version", "print the version and the libraries penshape was built with",
                  &run_version},
+      Subcommand{"hid describe", "print a HID report descriptor's layouts and pen fields",
+                 &run_hid_describe},
+      Subcommand{"replay", "decode a recorded tablet stream into samples and strokes (--local)",
+                 &run_replay},
   };
   return kCommands;
 }
