@@ -1,0 +1,81 @@
+// The reference engine on the authors' demo cases (r = 1, eps = 0.1), with every YES solution
+// checked by the independent sampling Hausdorff check.
+#include <gtest/gtest.h>
+
+#include "penshape/core/deconstruct.hpp"
+#include "penshape/core/polygon_io.hpp"
+#include "support/hausdorff_check.hpp"
+#include "support/shared_data.hpp"
+
+namespace penshape {
+namespace {
+
+PolygonSet demo(const std::string& name) {
+  return read_xy(test::read_shared("polygons/authors_demo_1_01_" + name + ".txt"));
+}
+
+DeconstructParams params(const Rational& r, const Rational& eps, const Rational& delta) {
+  return {r, eps, delta, EngineKind::kReference};
+}
+
+// H(offset(P, r), Q) <= eps, up to the check's own sampling error.
+void expect_certified_yes(const PolygonSet& q, const DeconstructResult& res, double spacing) {
+  ASSERT_EQ(res.answer, Answer::kYes);
+  ASSERT_FALSE(res.solution.empty());
+  EXPECT_LE(res.hausdorff_bound, res.params.tolerance);
+  const auto h =
+      test::hausdorff_to_offset(test::region_skeleton(res.solution), res.params.radius.get_d(),
+                                test::to_region_d(q), spacing);
+  EXPECT_LE(h.value, res.hausdorff_bound.get_d() + h.error + 1e-9);
+}
+
+TEST(ReferenceEngine, DemoWork1IsYes) {
+  const PolygonSet q = demo("work1");
+  const auto res = deconstruct(q, params(1, Rational(1, 10), Rational(1, 80)));
+  expect_certified_yes(q, res, 0.01);
+  EXPECT_EQ(res.engine, EngineKind::kReference);
+  EXPECT_GT(res.disk_vertices, 0U);
+}
+
+TEST(ReferenceEngine, DemoWork2IsYes) {
+  const PolygonSet q = demo("work2");
+  const auto res = deconstruct(q, params(1, Rational(1, 10), Rational(1, 80)));
+  expect_certified_yes(q, res, 0.01);
+}
+
+TEST(ReferenceEngine, DemoFail1IsNo) {
+  const auto res = deconstruct(demo("fail1"), params(1, Rational(1, 10), Rational(1, 80)));
+  EXPECT_EQ(res.answer, Answer::kNo);
+  EXPECT_TRUE(res.solution.empty());
+}
+
+TEST(ReferenceEngine, DemoFail2IsNoAtFinePrecision) {
+  const auto res = deconstruct(demo("fail2"), params(1, Rational(1, 10), Rational(1, 200)));
+  EXPECT_EQ(res.answer, Answer::kNo);
+}
+
+TEST(Deconstruct, RadiusAtMostToleranceIsYesWithQ) {
+  const PolygonSet q = demo("fail1");
+  const auto res = deconstruct(q, params(Rational(1, 10), Rational(1, 10), Rational(1, 100)));
+  ASSERT_EQ(res.answer, Answer::kYes);
+  EXPECT_EQ(res.solution.vertex_count(), q.vertex_count());
+  EXPECT_EQ(area(res.solution), area(q));
+  expect_certified_yes(q, res, 0.01);
+}
+
+TEST(Deconstruct, CancelHookAborts) {
+  const PolygonSet q = demo("work1");
+  EXPECT_THROW(deconstruct(q, params(1, Rational(1, 10), Rational(1, 80)), [] { return true; }),
+               Cancelled);
+}
+
+TEST(Deconstruct, AnswerAndEngineNames) {
+  EXPECT_STREQ(to_string(Answer::kYes), "YES");
+  EXPECT_STREQ(to_string(Answer::kNo), "NO");
+  EXPECT_STREQ(to_string(Answer::kUndecided), "UNDECIDED");
+  EXPECT_STREQ(to_string(EngineKind::kFast), "fast");
+  EXPECT_STREQ(to_string(EngineKind::kReference), "reference");
+}
+
+} // namespace
+} // namespace penshape
