@@ -1,0 +1,68 @@
+#pragma once
+// The ink polygon of a stroke: Q = stroke ⊕ pen disk, the region a wide-tip pen covers.
+//
+// Units: millimetres, in the tablet's axes (x to the right, y downwards as the device reports;
+// a point (x, y) in device units is (x / x_resolution, y / y_resolution) mm; a resolution of 0
+// (unknown) takes device units as millimetres).
+//
+// Construction: the stroke's samples, in order, form a polyline (one sample: a point). Each
+// segment sweeps the convex hull of the pen disks at its two ends; Q is the union of these hulls
+// (Clipper, int64, non-zero fill), so doubling back, self-crossings, loops (holes where a loop
+// encloses area) and several components come out right. Three approximations, each bounded and
+// added into InkPolygon::hausdorff_bound (a bound on the Hausdorff distance between Q and the
+// exact swept region of the true disks):
+//   1. the disk is a regular k-gon inscribed in the circle: error r_max·(1 - cos(π/k));
+//   2. samples within tau of the last kept sample (position change plus radius change) are
+//      skipped: error <= tau;
+//   3. coordinates are rounded to a grid of 2^-m mm (Clipper's integers, also where it cuts
+//      edges): error <= sqrt(2)·grid (half a diagonal for the input, half for the output).
+// max_error splits as 1/2 (disk), 1/4 (skipping), 1/4 (grid). The disk polygon may have at most
+// 4096 vertices (a smaller max_error relative to the radius is InvalidInput). Q's coordinates are
+// exact dyadic rationals (integers times the grid).
+//
+// Pressure → radius (when use_pressure and the tablet reports pressure, pressure_max > 0):
+//   radius(p) = radius_mm · (min_fraction + (1 - min_fraction) · (p / pressure_max)^gamma),
+// so a feather touch draws min_fraction of the full radius and full pressure the full radius;
+// gamma < 1 makes light pressure count more. Otherwise every sample has radius_mm.
+#include <cstddef>
+#include <vector>
+
+#include "penshape/core/polygon_set.hpp"
+#include "penshape/types/stroke.hpp"
+
+namespace penshape {
+
+struct InkOptions {
+  double radius_mm = 0.5;            // pen radius (at full pressure), > 0
+  double max_error_mm = 0.0;         // bound on the total approximation error; 0: radius_mm / 50
+  bool use_pressure = false;         // per-sample radius from pressure (see the curve above)
+  double min_fraction = 0.25;        // radius fraction at zero pressure, in [0, 1]
+  double gamma = 1.0;                // pressure exponent, > 0
+  std::size_t max_samples = 100'000; // longer strokes are InvalidInput
+};
+
+// A sample in millimetres with its pen radius.
+struct InkSample {
+  double x = 0.0;
+  double y = 0.0;
+  double radius = 0.0;
+};
+
+struct InkPolygon {
+  PolygonSet region;            // Q: valid (validate_region), outer rings ccw, holes cw
+  double hausdorff_bound = 0.0; // H(Q, exact swept region) <= this (mm), <= max_error
+  std::size_t disk_vertices = 0;
+  double grid = 0.0; // coordinate grid (mm), a power of two
+};
+
+// Samples of a stroke in millimetres with their radii (the curve above).
+std::vector<InkSample> ink_samples(const Stroke& stroke, const InkOptions& options);
+
+// Q for samples in millimetres. Throws InvalidInput on no samples, too many, non-finite values,
+// a non-positive radius or error, or coordinates beyond 10^9 mm.
+InkPolygon ink_polygon(const std::vector<InkSample>& samples, const InkOptions& options);
+
+// Q of a stroke: ink_polygon(ink_samples(stroke, options), options).
+InkPolygon ink_polygon(const Stroke& stroke, const InkOptions& options);
+
+} // namespace penshape
