@@ -106,6 +106,49 @@ void collect(const ClipperLib::PolyNode& node, double grid, PolygonSet& out) {
   out.polygons.push_back(std::move(polygon));
 }
 
+// Douglas-Peucker on (x, y, radius): keeps the ends and every sample whose distance to the kept
+// chord, plus its radius's difference from the chord's interpolated radius, exceeds tau. Every
+// removed sample is within tau of the simplified chain and every chord point within tau of the
+// original chain (it sweeps from one kept sample to the next), so the swept regions differ by at
+// most tau.
+std::vector<InkSample> simplify(const std::vector<InkSample>& in, double tau) {
+  if (in.size() <= 2) return in;
+  std::vector<char> keep(in.size(), 0);
+  keep.front() = keep.back() = 1;
+  std::vector<std::pair<std::size_t, std::size_t>> stack{{0, in.size() - 1}};
+  while (!stack.empty()) {
+    const auto [i, j] = stack.back();
+    stack.pop_back();
+    const InkSample& a = in[i];
+    const InkSample& b = in[j];
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    const double len2 = dx * dx + dy * dy;
+    double worst = -1;
+    std::size_t worst_k = i;
+    for (std::size_t k = i + 1; k < j; ++k) {
+      const InkSample& p = in[k];
+      const double t =
+          len2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / len2, 0.0, 1.0) : 0.0;
+      const double d = std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy) +
+                       std::abs(p.radius - (a.radius + t * (b.radius - a.radius)));
+      if (d > worst) {
+        worst = d;
+        worst_k = k;
+      }
+    }
+    if (worst > tau) {
+      keep[worst_k] = 1;
+      stack.push_back({i, worst_k});
+      stack.push_back({worst_k, j});
+    }
+  }
+  std::vector<InkSample> out;
+  for (std::size_t k = 0; k < in.size(); ++k) {
+    if (keep[k]) out.push_back(in[k]);
+  }
+  return out;
+}
+
 } // namespace
 
 std::vector<InkSample> ink_samples(const Stroke& stroke, const InkOptions& options) {
@@ -164,7 +207,9 @@ InkPolygon ink_polygon(const std::vector<InkSample>& samples, const InkOptions& 
   const std::size_t k = polygon_vertices(r_max, max_error / 2);
   const double tau = max_error / 4;
   // Grid 2^-m with sqrt(2)·grid <= max_error / 4.
-  result.grid = std::ldexp(1.0, floor_log2(max_error / 4 / std::numbers::sqrt2));
+  // Rounding: up to three times half a grid diagonal (input points, offset vertices, union
+  // intersections), so 1.5·sqrt(2)·grid <= max_error / 4.
+  result.grid = std::ldexp(1.0, floor_log2(max_error / 4 / (1.5 * std::numbers::sqrt2)));
   const Grid grid{1.0 / result.grid};
   double extent = 0;
   for (const auto& s : samples) extent = std::max({extent, std::abs(s.x), std::abs(s.y)});
@@ -192,32 +237,44 @@ InkPolygon ink_polygon(const std::vector<InkSample>& samples, const InkOptions& 
     }
   };
 
-  // Skip samples that barely move (position plus radius change <= tau) from the last kept one.
-  std::vector<const InkSample*> kept{&samples.front()};
-  for (std::size_t i = 1; i < samples.size(); ++i) {
-    const InkSample& a = *kept.back();
-    const InkSample& b = samples[i];
-    const double change = std::hypot(b.x - a.x, b.y - a.y) + std::abs(b.radius - a.radius);
-    if (change > tau || i + 1 == samples.size()) kept.push_back(&b);
-  }
+  const std::vector<InkSample> kept = simplify(samples, tau);
+  const bool constant_radius = std::all_of(kept.begin(), kept.end(), [&](const InkSample& x) {
+    return x.radius == kept.front().radius;
+  });
 
-  Paths hulls;
-  hulls.reserve(kept.size());
-  if (kept.size() == 1) {
+  Paths pieces;
+  if (constant_radius && kept.size() > 1) {
+    // One radius: Clipper's own offset of the open polyline with round joins and ends, whose
+    // arc vertices lie on the circle with sagitta <= the arc tolerance (the same bound as the
+    // k-gon), unioned with the non-zero rule.
+    ClipperLib::ClipperOffset offsetter;
+    // Clipper rounds the number of arc steps, so a last chord may span 1.5 nominal steps: its
+    // sagitta is at most 2.25 times the arc tolerance.
+    offsetter.ArcTolerance = (max_error / 2 / 2.25) * grid.scale;
+    result.hausdorff_bound = max_error / 2 + tau + 1.5 * std::numbers::sqrt2 * result.grid;
+    Path line;
+    line.reserve(kept.size());
+    for (const auto& x : kept) line.push_back({grid.round(x.x), grid.round(x.y)});
+    offsetter.AddPath(line, ClipperLib::jtRound, ClipperLib::etOpenRound);
+    offsetter.Execute(pieces, kept.front().radius * grid.scale);
+  } else if (kept.size() == 1) {
     Path disk;
-    add_disk(disk, *kept.front());
-    hulls.push_back(convex_hull(std::move(disk)));
-  }
-  for (std::size_t i = 0; i + 1 < kept.size(); ++i) {
-    Path both;
-    both.reserve(2 * k);
-    add_disk(both, *kept[i]);
-    add_disk(both, *kept[i + 1]);
-    hulls.push_back(convex_hull(std::move(both)));
+    add_disk(disk, kept.front());
+    pieces.push_back(convex_hull(std::move(disk)));
+  } else {
+    // Varying radius: the hull of the two end disks per segment.
+    pieces.reserve(kept.size());
+    for (std::size_t i = 0; i + 1 < kept.size(); ++i) {
+      Path both;
+      both.reserve(2 * k);
+      add_disk(both, kept[i]);
+      add_disk(both, kept[i + 1]);
+      pieces.push_back(convex_hull(std::move(both)));
+    }
   }
   ClipperLib::Clipper clipper;
   clipper.StrictlySimple(true);
-  clipper.AddPaths(hulls, ClipperLib::ptSubject, true);
+  clipper.AddPaths(pieces, ClipperLib::ptSubject, true);
   ClipperLib::PolyTree tree;
   if (!clipper.Execute(ClipperLib::ctUnion, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero)) {
     throw InvalidInput("the union of the pen hulls failed (coordinates out of range)");

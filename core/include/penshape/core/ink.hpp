@@ -5,17 +5,21 @@
 // a point (x, y) in device units is (x / x_resolution, y / y_resolution) mm; a resolution of 0
 // (unknown) takes device units as millimetres).
 //
-// Construction: the stroke's samples, in order, form a polyline (one sample: a point). Each
-// segment sweeps the convex hull of the pen disks at its two ends; Q is the union of these hulls
-// (Clipper, int64, non-zero fill), so doubling back, self-crossings, loops (holes where a loop
-// encloses area) and several components come out right. Three approximations, each bounded and
+// Construction: the stroke's samples, in order, form a polyline (one sample: a point), first
+// simplified (Douglas-Peucker on position plus radius, tolerance tau). Each segment sweeps the
+// convex hull of the pen disks at its two ends; Q is the union of these hulls (Clipper, int64,
+// non-zero fill; with one radius throughout, Clipper's round-joined offset of the open polyline,
+// the same region with arcs of the same accuracy), so doubling back, self-crossings, loops
+// (holes where a loop encloses area) come out right. Three approximations, each bounded and
 // added into InkPolygon::hausdorff_bound (a bound on the Hausdorff distance between Q and the
 // exact swept region of the true disks):
-//   1. the disk is a regular k-gon inscribed in the circle: error r_max·(1 - cos(π/k));
-//   2. samples within tau of the last kept sample (position change plus radius change) are
-//      skipped: error <= tau;
-//   3. coordinates are rounded to a grid of 2^-m mm (Clipper's integers, also where it cuts
-//      edges): error <= sqrt(2)·grid (half a diagonal for the input, half for the output).
+//   1. the disk (or each round join/end) is a polygon inscribed in the circle with sagitta
+//      <= max_error/2 (the k-gon: r_max·(1 - cos(π/k)); Clipper's arcs: 2.25 times its arc
+//      tolerance, as it rounds the step count);
+//   2. the simplification: error <= tau;
+//   3. coordinates are rounded to a grid of 2^-m mm (Clipper's integers): at most three
+//      roundings of half a grid diagonal (input, offset vertices, union intersections), so
+//      error <= 1.5·sqrt(2)·grid.
 // max_error splits as 1/2 (disk), 1/4 (skipping), 1/4 (grid). The disk polygon may have at most
 // 4096 vertices (a smaller max_error relative to the radius is InvalidInput). Q's coordinates are
 // exact dyadic rationals (integers times the grid).
