@@ -170,10 +170,13 @@ std::vector<InkSample> ink_samples(const Stroke& stroke, const InkOptions& optio
   return out;
 }
 
-InkPolygon ink_polygon(const std::vector<InkSample>& samples, const InkOptions& options) {
-  if (samples.empty()) throw InvalidInput("the stroke has no samples");
-  if (samples.size() > options.max_samples) {
-    throw InvalidInput("the stroke has " + std::to_string(samples.size()) +
+InkPolygon ink_polygon(const std::vector<std::vector<InkSample>>& strokes,
+                       const InkOptions& options) {
+  std::size_t total = 0;
+  for (const auto& stroke : strokes) total += stroke.size();
+  if (strokes.empty() || total == 0) throw InvalidInput("the stroke has no samples");
+  if (total > options.max_samples) {
+    throw InvalidInput("the strokes have " + std::to_string(total) +
                        " samples, over the limit of " + std::to_string(options.max_samples));
   }
   if (!(options.radius_mm > 0) || !std::isfinite(options.radius_mm)) {
@@ -189,39 +192,44 @@ InkPolygon ink_polygon(const std::vector<InkSample>& samples, const InkOptions& 
     throw InvalidInput("the maximal error must be positive and finite");
   }
   double r_max = 0;
-  for (std::size_t i = 0; i < samples.size(); ++i) {
-    check_finite(samples[i].x, "x", i);
-    check_finite(samples[i].y, "y", i);
-    check_finite(samples[i].radius, "radius", i);
-    if (!(samples[i].radius > 0)) {
-      throw InvalidInput("sample " + std::to_string(i) + ": radius must be positive");
+  double extent = 0;
+  for (std::size_t j = 0; j < strokes.size(); ++j) {
+    const auto& samples = strokes[j];
+    if (samples.empty()) throw InvalidInput("stroke " + std::to_string(j) + " has no samples");
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+      check_finite(samples[i].x, "x", i);
+      check_finite(samples[i].y, "y", i);
+      check_finite(samples[i].radius, "radius", i);
+      if (!(samples[i].radius > 0)) {
+        throw InvalidInput("sample " + std::to_string(i) + ": radius must be positive");
+      }
+      if (std::abs(samples[i].x) > kMaxCoordinateMm || std::abs(samples[i].y) > kMaxCoordinateMm) {
+        throw InvalidInput("sample " + std::to_string(i) + ": coordinate beyond 10^9 mm");
+      }
+      r_max = std::max(r_max, samples[i].radius);
+      extent = std::max({extent, std::abs(samples[i].x), std::abs(samples[i].y)});
     }
-    if (std::abs(samples[i].x) > kMaxCoordinateMm || std::abs(samples[i].y) > kMaxCoordinateMm) {
-      throw InvalidInput("sample " + std::to_string(i) + ": coordinate beyond 10^9 mm");
-    }
-    r_max = std::max(r_max, samples[i].radius);
   }
   if (r_max > kMaxCoordinateMm) throw InvalidInput("the pen radius exceeds 10^9 mm");
 
   InkPolygon result;
   const std::size_t k = polygon_vertices(r_max, max_error / 2);
   const double tau = max_error / 4;
-  // Grid 2^-m with sqrt(2)·grid <= max_error / 4.
   // Rounding: up to three times half a grid diagonal (input points, offset vertices, union
   // intersections), so 1.5·sqrt(2)·grid <= max_error / 4.
   result.grid = std::ldexp(1.0, floor_log2(max_error / 4 / (1.5 * std::numbers::sqrt2)));
   const Grid grid{1.0 / result.grid};
-  double extent = 0;
-  for (const auto& s : samples) extent = std::max({extent, std::abs(s.x), std::abs(s.y)});
   if ((extent + r_max) * grid.scale > kMaxGridUnits) {
-    throw InvalidInput(
-        "coordinates too large for the requested precision (more than 10^18 grid "
-        "steps of " +
-        std::to_string(result.grid) + " mm)");
+    throw InvalidInput("coordinates too large for the requested precision (more than 10^18 " +
+                       std::string("grid steps of ") + std::to_string(result.grid) + " mm)");
   }
   result.disk_vertices = k;
-  result.hausdorff_bound = r_max * (1.0 - std::cos(std::numbers::pi / static_cast<double>(k))) +
-                           tau + std::numbers::sqrt2 * result.grid;
+  const double hull_bound = r_max * (1.0 - std::cos(std::numbers::pi / static_cast<double>(k))) +
+                            tau + std::numbers::sqrt2 * result.grid;
+  // Clipper rounds the number of arc steps, so a last chord may span 1.5 nominal steps: its
+  // sagitta is at most 2.25 times the arc tolerance.
+  const double arc_tolerance = max_error / 2 / 2.25;
+  const double offset_bound = max_error / 2 + tau + 1.5 * std::numbers::sqrt2 * result.grid;
 
   std::vector<double> cos_k(k);
   std::vector<double> sin_k(k);
@@ -237,39 +245,40 @@ InkPolygon ink_polygon(const std::vector<InkSample>& samples, const InkOptions& 
     }
   };
 
-  const std::vector<InkSample> kept = simplify(samples, tau);
-  const bool constant_radius = std::all_of(kept.begin(), kept.end(), [&](const InkSample& x) {
-    return x.radius == kept.front().radius;
-  });
-
   Paths pieces;
-  if (constant_radius && kept.size() > 1) {
-    // One radius: Clipper's own offset of the open polyline with round joins and ends, whose
-    // arc vertices lie on the circle with sagitta <= the arc tolerance (the same bound as the
-    // k-gon), unioned with the non-zero rule.
-    ClipperLib::ClipperOffset offsetter;
-    // Clipper rounds the number of arc steps, so a last chord may span 1.5 nominal steps: its
-    // sagitta is at most 2.25 times the arc tolerance.
-    offsetter.ArcTolerance = (max_error / 2 / 2.25) * grid.scale;
-    result.hausdorff_bound = max_error / 2 + tau + 1.5 * std::numbers::sqrt2 * result.grid;
-    Path line;
-    line.reserve(kept.size());
-    for (const auto& x : kept) line.push_back({grid.round(x.x), grid.round(x.y)});
-    offsetter.AddPath(line, ClipperLib::jtRound, ClipperLib::etOpenRound);
-    offsetter.Execute(pieces, kept.front().radius * grid.scale);
-  } else if (kept.size() == 1) {
-    Path disk;
-    add_disk(disk, kept.front());
-    pieces.push_back(convex_hull(std::move(disk)));
-  } else {
-    // Varying radius: the hull of the two end disks per segment.
-    pieces.reserve(kept.size());
-    for (std::size_t i = 0; i + 1 < kept.size(); ++i) {
-      Path both;
-      both.reserve(2 * k);
-      add_disk(both, kept[i]);
-      add_disk(both, kept[i + 1]);
-      pieces.push_back(convex_hull(std::move(both)));
+  for (const auto& samples : strokes) {
+    const std::vector<InkSample> kept = simplify(samples, tau);
+    const bool constant_radius = std::all_of(kept.begin(), kept.end(), [&](const InkSample& x) {
+      return x.radius == kept.front().radius;
+    });
+    if (constant_radius && kept.size() > 1) {
+      // One radius: Clipper's own offset of the open polyline with round joins and ends (arc
+      // vertices on the circle), the same region as the union of the hulls.
+      ClipperLib::ClipperOffset offsetter;
+      offsetter.ArcTolerance = arc_tolerance * grid.scale;
+      Path line;
+      line.reserve(kept.size());
+      for (const auto& x : kept) line.push_back({grid.round(x.x), grid.round(x.y)});
+      offsetter.AddPath(line, ClipperLib::jtRound, ClipperLib::etOpenRound);
+      Paths outline;
+      offsetter.Execute(outline, kept.front().radius * grid.scale);
+      pieces.insert(pieces.end(), outline.begin(), outline.end());
+      result.hausdorff_bound = std::max(result.hausdorff_bound, offset_bound);
+    } else if (kept.size() == 1) {
+      Path disk;
+      add_disk(disk, kept.front());
+      pieces.push_back(convex_hull(std::move(disk)));
+      result.hausdorff_bound = std::max(result.hausdorff_bound, hull_bound);
+    } else {
+      // Varying radius: the hull of the two end disks per segment.
+      for (std::size_t i = 0; i + 1 < kept.size(); ++i) {
+        Path both;
+        both.reserve(2 * k);
+        add_disk(both, kept[i]);
+        add_disk(both, kept[i + 1]);
+        pieces.push_back(convex_hull(std::move(both)));
+      }
+      result.hausdorff_bound = std::max(result.hausdorff_bound, hull_bound);
     }
   }
   ClipperLib::Clipper clipper;
@@ -282,6 +291,10 @@ InkPolygon ink_polygon(const std::vector<InkSample>& samples, const InkOptions& 
   for (const ClipperLib::PolyNode* node : tree.Childs) collect(*node, result.grid, result.region);
   normalize_orientation(result.region);
   return result;
+}
+
+InkPolygon ink_polygon(const std::vector<InkSample>& samples, const InkOptions& options) {
+  return ink_polygon(std::vector<std::vector<InkSample>>{samples}, options);
 }
 
 InkPolygon ink_polygon(const Stroke& stroke, const InkOptions& options) {

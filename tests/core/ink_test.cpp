@@ -42,7 +42,7 @@ void expect_ink_close(const std::vector<PointD>& pts, double r, const InkPolygon
                       double grid_spacing) {
   ASSERT_FALSE(ink.region.empty());
   EXPECT_NO_THROW(validate_region(ink.region));
-  EXPECT_LE(ink.hausdorff_bound, r / 50 + 1e-12);
+  EXPECT_LE(ink.hausdorff_bound, r / 50 + 1e-12); // the default max_error
   const double tiny = 1e-9;
   for (const auto& ring : test::to_region_d(ink.region).rings) {
     for (std::size_t i = 0; i < ring.size(); ++i) {
@@ -141,6 +141,80 @@ TEST(InkPolygon, BadInputIsRejected) {
   EXPECT_THROW(
       ink_polygon(std::vector<InkSample>{{0, 0, 1}}, {.radius_mm = 1, .max_error_mm = 1e-30}),
       InvalidInput);
+}
+
+} // namespace
+} // namespace penshape
+
+namespace penshape {
+namespace {
+
+TEST(InkPolygon, SeveralStrokesGiveSeveralComponents) {
+  // The two strokes of a "=" sign, and a third crossing neither: three components.
+  const std::vector<std::vector<PointD>> strokes{
+      {{0, 0}, {20, 0}}, {{0, 10}, {20, 10}}, {{40, 0}, {40, 10}, {45, 12}}};
+  std::vector<std::vector<InkSample>> samples;
+  for (const auto& s : strokes) samples.push_back(with_radius(s, 1.0));
+  const InkPolygon ink = ink_polygon(samples, {.radius_mm = 1.0});
+  EXPECT_EQ(ink.region.polygons.size(), 3U);
+  EXPECT_NO_THROW(validate_region(ink.region));
+  // Every stroke's own ink lies within the union's error of the union.
+  for (const auto& s : strokes) {
+    const InkPolygon one = ink_polygon(with_radius(s, 1.0), {.radius_mm = 1.0});
+    EXPECT_GE(to_double(area(ink.region)), to_double(area(one.region)) * 0.999);
+  }
+}
+
+// Signed distance to the region swept by disks of linearly varying radius: the union over t of
+// D_{r(t)}(p(t)) is exactly the hull of the end disks, and |y - p(t)| - r(t) is convex in t, so
+// a ternary search finds its minimum per segment.
+double swept_signed_distance(const std::vector<InkSample>& s, PointD y) {
+  auto f = [&](const InkSample& a, const InkSample& b, double t) {
+    return std::hypot(y.x - (a.x + t * (b.x - a.x)), y.y - (a.y + t * (b.y - a.y))) -
+           (a.radius + t * (b.radius - a.radius));
+  };
+  double best = f(s[0], s[0], 0.0);
+  for (std::size_t i = 0; i + 1 < s.size(); ++i) {
+    double lo = 0, hi = 1;
+    for (int it = 0; it < 100; ++it) {
+      const double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
+      if (f(s[i], s[i + 1], m1) < f(s[i], s[i + 1], m2)) {
+        hi = m2;
+      } else {
+        lo = m1;
+      }
+    }
+    best = std::min(best, f(s[i], s[i + 1], (lo + hi) / 2));
+  }
+  return best;
+}
+
+TEST(InkPolygon, PressureStrokeIsValidAndWithinItsRadii) {
+  // A real stroke with a pressure ramp: Q lies between the ink of the thinnest and of the
+  // thickest constant pen (areas), and is a valid region.
+  const auto pts =
+      test::read_dollar1(test::shared_data_dir() + "/strokes/dollar1/s02/medium/pigtail01.xml");
+  std::vector<InkSample> samples;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const double t = static_cast<double>(i) / static_cast<double>(pts.size() - 1);
+    samples.push_back({pts[i].x, pts[i].y, 1.0 + 2.0 * t});
+  }
+  const InkPolygon ink = ink_polygon(samples, {.radius_mm = 3.0});
+  EXPECT_NO_THROW(validate_region(ink.region));
+  const double a = to_double(area(ink.region));
+  const double thin =
+      to_double(area(ink_polygon(with_radius(pts, 1.0), {.radius_mm = 1.0}).region));
+  const double thick =
+      to_double(area(ink_polygon(with_radius(pts, 3.0), {.radius_mm = 3.0}).region));
+  EXPECT_GT(a, thin);
+  EXPECT_LT(a, thick);
+  // Every boundary vertex of Q lies on the exact swept boundary, up to the stated error.
+  for (const auto& ring : test::to_region_d(ink.region).rings) {
+    for (const PointD& v : ring) {
+      ASSERT_NEAR(swept_signed_distance(samples, v), 0.0, ink.hausdorff_bound + 1e-9)
+          << v.x << ", " << v.y;
+    }
+  }
 }
 
 } // namespace

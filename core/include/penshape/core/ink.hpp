@@ -8,11 +8,11 @@
 // Construction: the stroke's samples, in order, form a polyline (one sample: a point), first
 // simplified (Douglas-Peucker on position plus radius, tolerance tau). Each segment sweeps the
 // convex hull of the pen disks at its two ends; Q is the union of these hulls (Clipper, int64,
-// non-zero fill; with one radius throughout, Clipper's round-joined offset of the open polyline,
-// the same region with arcs of the same accuracy), so doubling back, self-crossings, loops
-// (holes where a loop encloses area) come out right. Three approximations, each bounded and
-// added into InkPolygon::hausdorff_bound (a bound on the Hausdorff distance between Q and the
-// exact swept region of the true disks):
+// non-zero fill; with one radius throughout, Clipper's round-joined offset of the open
+// polyline, the same region with arcs of the same accuracy). So doubling back, self-crossings
+// and loops (holes where a loop encloses area) come out right, and several strokes give several
+// components. Three approximations, each bounded and added into InkPolygon::hausdorff_bound (a
+// bound on the Hausdorff distance between Q and the exact swept region of the true disks):
 //   1. the disk (or each round join/end) is a polygon inscribed in the circle with sagitta
 //      <= max_error/2 (the k-gon: r_max·(1 - cos(π/k)); Clipper's arcs: 2.25 times its arc
 //      tolerance, as it rounds the step count);
@@ -20,9 +20,9 @@
 //   3. coordinates are rounded to a grid of 2^-m mm (Clipper's integers): at most three
 //      roundings of half a grid diagonal (input, offset vertices, union intersections), so
 //      error <= 1.5·sqrt(2)·grid.
-// max_error splits as 1/2 (disk), 1/4 (skipping), 1/4 (grid). The disk polygon may have at most
-// 4096 vertices (a smaller max_error relative to the radius is InvalidInput). Q's coordinates are
-// exact dyadic rationals (integers times the grid).
+// max_error splits as 1/2 (disk), 1/4 (simplification), 1/4 (grid). The disk polygon may have at
+// most 4096 vertices (a smaller max_error relative to the radius is InvalidInput). Q's coordinates
+// are exact dyadic rationals (integers times the grid).
 //
 // Pressure → radius (when use_pressure and the tablet reports pressure, pressure_max > 0):
 //   radius(p) = radius_mm · (min_fraction + (1 - min_fraction) · (p / pressure_max)^gamma),
@@ -66,7 +66,13 @@ std::vector<InkSample> ink_samples(const Stroke& stroke, const InkOptions& optio
 // a non-positive radius or error, or coordinates beyond 10^9 mm.
 InkPolygon ink_polygon(const std::vector<InkSample>& samples, const InkOptions& options);
 
-// Q of a stroke: ink_polygon(ink_samples(stroke, options), options).
+// Q of several strokes drawn with the same pen: the union of their ink (several components
+// where they do not touch). max_samples limits the total.
+InkPolygon ink_polygon(const std::vector<std::vector<InkSample>>& strokes,
+                       const InkOptions& options);
+
+// Q of a stroke: ink_polygon(ink_samples(stroke, options), options). Every sample counts, in
+// order (the tip-up sample at the end too: it is where the pen left the surface).
 InkPolygon ink_polygon(const Stroke& stroke, const InkOptions& options);
 
 } // namespace penshape
