@@ -174,6 +174,18 @@ int main(int argc, char** argv) {
     ink_s.push_back(std::chrono::duration<double>(t1 - t0).count());
     total_s.push_back(std::chrono::duration<double>(t2 - t0).count());
   }
+  // The same stroke with a pressure ramp (radius 0.25..0.75 mm): the per-segment hull union.
+  auto pressure_samples = samples;
+  for (std::size_t i = 0; i < pressure_samples.size(); ++i) {
+    pressure_samples[i].radius =
+        0.25 + 0.5 * static_cast<double>(i) / static_cast<double>(pressure_samples.size() - 1);
+  }
+  std::vector<double> pressure_s;
+  penshape::InkPolygon pressure_ink;
+  for (int i = 0; i < stroke_runs; ++i) {
+    pressure_s.push_back(
+        seconds_of([&] { pressure_ink = penshape::ink_polygon(pressure_samples, ink_options); }));
+  }
   if (json) {
     std::printf(
         "{\"case\":\"stroke_1000_samples\",\"runs\":%d,\"ink_vertices\":%zu,\"answer\":\"%s\","
@@ -190,6 +202,19 @@ int main(int argc, char** argv) {
     std::printf("ink + decision (%s): p50 %.3f ms, p99 %.3f ms (target p99 <= 5 ms)\n",
                 penshape::to_string(decision.answer), percentile(total_s, 0.5) * 1e3,
                 percentile(total_s, 0.99) * 1e3);
+  }
+  if (json) {
+    std::printf(
+        "{\"case\":\"stroke_1000_samples_pressure\",\"runs\":%d,\"ink_vertices\":%zu,"
+        "\"ink_p50_s\":%.6g,\"ink_p99_s\":%.6g}\n",
+        stroke_runs, pressure_ink.region.vertex_count(), percentile(pressure_s, 0.5),
+        percentile(pressure_s, 0.99));
+  } else {
+    std::printf(
+        "ink polygon with pressure (radius 0.25..0.75 mm): %zu vertices, p50 %.3f ms, "
+        "p99 %.3f ms\n",
+        pressure_ink.region.vertex_count(), percentile(pressure_s, 0.5) * 1e3,
+        percentile(pressure_s, 0.99) * 1e3);
   }
   return 0;
 }
