@@ -96,3 +96,18 @@ TEST(DeconstructCli, SelfIntersectingFileIsRejected) {
 }
 
 } // namespace
+
+namespace {
+
+TEST(DeconstructCli, ArcsOfTheSolutionOffset) {
+  const Result r = run(polygon("authors_demo_1_01_work1.txt") +
+                       " --radius 1 --tolerance 0.1 --engine reference --json --arcs");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("\"offset\":[{\"outer\":[{\""), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("{\"arc\":{\"center\":["), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"radius\":1,"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("{\"segment\":[["), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"offset_max_error\":"), std::string::npos) << r.out;
+}
+
+} // namespace
