@@ -100,6 +100,26 @@ TEST(EngineProperties, EnginesNeverContradict) {
   }
 }
 
+TEST(EngineProperties, EnginesNeverContradictOnRealPolygons) {
+  for (const char* name :
+       {"authors_demo_1_01_work1.txt", "authors_demo_1_01_fail2.txt", "authors_S.txt",
+        "cgal_wheel1.txt", "cgal_comb_robot.txt", "israel_ne50m.txt", "cgal_knife.txt"}) {
+    const PolygonSet q = read_polygon_text(test::read_shared(std::string("polygons/") + name));
+    for (int divisor : {10, 30}) {
+      SCOPED_TRACE(std::string(name) + " r = w/" + std::to_string(divisor));
+      const Rational r = width(q) / divisor;
+      const DeconstructParams base{r, r / 2, r / 16, EngineKind::kReference};
+      auto fast = base;
+      fast.engine = EngineKind::kFast;
+      const Answer a = deconstruct(q, base).answer;
+      const Answer b = deconstruct(q, fast).answer;
+      EXPECT_FALSE((a == Answer::kYes && b == Answer::kNo) ||
+                   (a == Answer::kNo && b == Answer::kYes))
+          << to_string(a) << " vs " << to_string(b);
+    }
+  }
+}
+
 // Every shared polygon at r = w/10, w/30, w/50, eps = r/2, delta = eps/8 with the reference
 // engine: no crash, no hang (a 20 s deadline per case through the cancel hook; a cancelled
 // case counts as finished cleanly), and every YES checked independently on the polygons of up

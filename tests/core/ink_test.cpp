@@ -219,3 +219,31 @@ TEST(InkPolygon, PressureStrokeIsValidAndWithinItsRadii) {
 
 } // namespace
 } // namespace penshape
+
+namespace penshape {
+namespace {
+
+TEST(InkPolygon, RealStrokeInkDeconstructs) {
+  // The daemon's path: stroke → ink polygon → decision with the pen radius; every YES is
+  // checked independently against the ink polygon.
+  const std::string dir = test::shared_data_dir() + "/strokes/dollar1/s03/medium/";
+  int yes = 0;
+  for (const char* name : {"circle02.xml", "triangle02.xml", "v02.xml"}) {
+    SCOPED_TRACE(name);
+    const auto pts = test::read_dollar1(dir + name);
+    const double r = 3.0;
+    const InkPolygon ink = ink_polygon(with_radius(pts, r), {.radius_mm = r});
+    const DeconstructParams params{Rational(3), Rational(3, 2), Rational(3, 16),
+                                   EngineKind::kReference};
+    const auto res = deconstruct(ink.region, params);
+    if (res.answer != Answer::kYes) continue;
+    ++yes;
+    const auto h = test::hausdorff_to_offset(test::region_skeleton(res.solution), r,
+                                             test::to_region_d(ink.region), 0.5);
+    EXPECT_LE(h.value, 1.5 + h.error + 1e-9);
+  }
+  EXPECT_GE(yes, 1);
+}
+
+} // namespace
+} // namespace penshape
