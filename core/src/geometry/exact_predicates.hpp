@@ -24,8 +24,11 @@ inline int orientation(const FilteredPoint& a, const FilteredPoint& b, const Fil
   const double m = std::max(
       {std::abs(a.x), std::abs(a.y), std::abs(b.x), std::abs(b.y), std::abs(c.x), std::abs(c.y)});
   const double bound = 1e-12 * m * m;
-  if (det > bound) return 1;
-  if (det < -bound) return -1;
+  // Only where products stay normal doubles (tiny coordinates fall through to exact).
+  if (m > 1e-100) {
+    if (det > bound) return 1;
+    if (det < -bound) return -1;
+  }
   const ExactPoint& pa = *a.exact;
   const ExactPoint& pb = *b.exact;
   const ExactPoint& pc = *c.exact;
