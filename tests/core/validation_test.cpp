@@ -77,6 +77,23 @@ TEST(Validation, HolesAndPolygons) {
   EXPECT_TRUE(has(message(overlap), "polygon 1 overlaps polygon 0")) << message(overlap);
 }
 
+TEST(Validation, ExtremeScalesAreDecidedExactly) {
+  // Coordinates far below and above the double filter's safe range still validate exactly.
+  for (const Rational& scale :
+       {Rational(parse_rational("1e-320")), Rational(parse_rational("1e300"))}) {
+    PolygonSet sq = square(0, 0, 5);
+    for (auto& v : sq.polygons[0].outer) {
+      v.x *= scale;
+      v.y *= scale;
+    }
+    EXPECT_EQ(message(sq), "");
+    PolygonSet bowtie{{{{{0, 0}, {4 * scale, 4 * scale}, {4 * scale, 0}, {0, 6 * scale}}, {}}}};
+    EXPECT_TRUE(has(message(bowtie), "self-intersecting"));
+    PolygonSet flat{{{{{0, 0}, {scale, 0}, {2 * scale, 0}}, {}}}};
+    EXPECT_TRUE(has(message(flat), "zero area"));
+  }
+}
+
 TEST(Validation, Parameters) {
   const PolygonSet q = square(0, 0, 5);
   auto p = kOk;
