@@ -2,6 +2,8 @@
 // checked by the independent sampling Hausdorff check.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "penshape/core/deconstruct.hpp"
 #include "penshape/core/polygon_io.hpp"
 #include "support/hausdorff_check.hpp"
@@ -27,6 +29,21 @@ void expect_certified_yes(const PolygonSet& q, const DeconstructResult& res, dou
       test::hausdorff_to_offset(test::region_skeleton(res.solution), res.params.radius.get_d(),
                                 test::to_region_d(q), spacing);
   EXPECT_LE(h.value, res.hausdorff_bound.get_d() + h.error + 1e-9);
+}
+
+TEST(HausdorffCheck, KnownValueAndWrongSolutions) {
+  // P = [0,4]², r = 1, Q = [-1,5]²: the farthest point is Q's corner, sqrt(2) - 1 from the
+  // rounded corner of offset(P, 1).
+  const PolygonSet p{{{{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {}}}};
+  const PolygonSet q{{{{{-1, -1}, {5, -1}, {5, 5}, {-1, 5}}, {}}}};
+  const auto h =
+      test::hausdorff_to_offset(test::region_skeleton(p), 1.0, test::to_region_d(q), 0.01);
+  EXPECT_NEAR(h.value, std::sqrt(2.0) - 1.0, h.error);
+  // A shifted P is far off.
+  const PolygonSet shifted{{{{{1, 0}, {5, 0}, {5, 4}, {1, 4}}, {}}}};
+  const auto far =
+      test::hausdorff_to_offset(test::region_skeleton(shifted), 1.0, test::to_region_d(q), 0.01);
+  EXPECT_GT(far.value, 1.0 - far.error);
 }
 
 TEST(ReferenceEngine, DemoWork1IsYes) {

@@ -148,7 +148,9 @@ HausdorffEstimate hausdorff_to_offset(const SkeletonD& s, double r, const Region
       offset_to_q = std::max(offset_to_q, distance_to_region(q, y));
     }
   }
-  return {std::max(q_to_offset, offset_to_q), spacing};
+  // A point of Q is within h/sqrt(2) of a grid point inside Q, or within h/sqrt(2) of ∂Q and so
+  // within h/sqrt(2) + h/2 < 1.25·h of a boundary sample; the offset side is within h.
+  return {std::max(q_to_offset, offset_to_q), 1.25 * spacing};
 }
 
 } // namespace penshape::test
