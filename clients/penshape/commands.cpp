@@ -5,6 +5,7 @@
 #include "command.hpp"
 #include "hid_describe_command.hpp"
 #include "replay_command.hpp"
+#include "deconstruct_command.hpp"
 #include "version_command.hpp"
 
 namespace penshape::cli {
@@ -17,6 +18,8 @@ std::span<const Subcommand> subcommands() {
                  &run_hid_describe},
       Subcommand{"replay", "decode a recorded tablet stream into samples and strokes (--local)",
                  &run_replay},
+      Subcommand{"deconstruct", "is a polygon file an approximate offset? (offset deconstruction)",
+                 &run_deconstruct},
   };
   return kCommands;
 }
