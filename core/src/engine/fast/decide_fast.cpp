@@ -1,0 +1,169 @@
+// The fast engine: APPROXDECIDE's interior and exterior chains on an integer grid with Clipper
+// (candidates only), then exact-grid certificates for the answer (README.md).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "../engines.hpp"
+#include "clipper_stage.hpp"
+#include "grid_frame.hpp"
+#include "level_set_check.hpp"
+#include "no_certificate.hpp"
+#include "segment_index.hpp"
+#include "yes_certificate.hpp"
+
+namespace penshape::detail {
+namespace {
+
+using namespace penshape::fast;
+
+// Budget of the working precision delta (grid units d): each chain keeps 2·margin of slack for
+// the certificates, disks are drawn with arc tolerance d/4 and P is simplified by d/8; together
+// less than the paper's 2·delta (Theorems 11, 13), so the answers match the literal algorithm's.
+struct Budget {
+  double margin;
+  double arc_tolerance;
+  double simplify;
+};
+
+Budget budget(double d) { return {d / 8.0, d / 4.0, d / 8.0}; }
+
+void check_cancel(const CancelHook& cancel) {
+  if (cancel && cancel()) throw Cancelled();
+}
+
+// One offset stage, with the disk-size limit enforced before Clipper runs.
+IRegion offset_stage(const IRings& rings, double delta, double tol, const DeconstructLimits& limits,
+                     std::size_t& disk_vertices) {
+  const double steps = std::ceil(round_join_steps(delta, tol));
+  if (steps > static_cast<double>(limits.max_disk_vertices)) {
+    throw InvalidInput("fast engine: a disk of radius " + std::to_string(std::fabs(delta)) +
+                       " grid units at tolerance " + std::to_string(tol) + " needs " +
+                       std::to_string(static_cast<long long>(steps)) +
+                       " vertices, over the limit of " + std::to_string(limits.max_disk_vertices) +
+                       " (precision too fine for the radius)");
+  }
+  disk_vertices = std::max(disk_vertices, static_cast<std::size_t>(steps));
+  return offset_round(rings, delta, tol);
+}
+
+PolygonSet to_polygon_set(const GridFrame& frame, const IRegion& region) {
+  PolygonSet out;
+  for (const IPolygon& poly : region) {
+    PolygonWithHoles pw;
+    for (const IPt& p : poly.outer) pw.outer.push_back(frame.exact(p));
+    for (const IRing& hole : poly.holes) {
+      Ring h;
+      for (const IPt& p : hole) h.push_back(frame.exact(p));
+      pw.holes.push_back(std::move(h));
+    }
+    out.polygons.push_back(std::move(pw));
+  }
+  return out;
+}
+
+// Points of Q̃ \ Q̂' (exterior chain) worth trying as NO witnesses, farthest from Q̂' first.
+std::vector<IPt> witness_candidates(const IRegion& diff, const SegmentIndex& q_hat_prime) {
+  std::vector<std::pair<double, IPt>> scored;
+  for (const IPolygon& poly : diff) {
+    double cx = 0, cy = 0;
+    for (const IPt& p : poly.outer) {
+      cx += static_cast<double>(p.x);
+      cy += static_cast<double>(p.y);
+    }
+    const double n = static_cast<double>(poly.outer.size());
+    const DPt centre{cx / n, cy / n};
+    std::vector<DPt> pts{centre};
+    for (const IPt& p : poly.outer) {
+      pts.push_back(to_d(p));
+      pts.push_back({0.5 * (centre.x + static_cast<double>(p.x)),
+                     0.5 * (centre.y + static_cast<double>(p.y))});
+    }
+    for (const DPt& d : pts) {
+      const IPt g{std::llround(d.x), std::llround(d.y)};
+      scored.push_back({q_hat_prime.distance(to_d(g), 1e18), g});
+    }
+  }
+  std::sort(scored.begin(), scored.end(),
+            [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::vector<IPt> out;
+  for (std::size_t i = 0; i < scored.size() && out.size() < 6; ++i) out.push_back(scored[i].second);
+  return out;
+}
+
+} // namespace
+
+DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& params,
+                              const CancelHook& cancel, const DeconstructLimits& limits) {
+  const auto start = std::chrono::steady_clock::now();
+  DeconstructResult result;
+  result.engine = EngineKind::kFast;
+  result.params = params;
+  auto finish = [&]() {
+    result.elapsed = std::chrono::duration_cast<std::chrono::nanoseconds>(
+        std::chrono::steady_clock::now() - start);
+    return result;
+  };
+
+  const GridFrame frame(q, params);
+  const double r = frame.units(params.radius);
+  const double eps = frame.units(params.tolerance);
+  const double d = frame.units(params.precision);
+  const Budget b = budget(d);
+
+  const IRings q_grid = frame.round(q);
+  const SegmentIndex q_index(q_grid, eps / 2.0);
+  // The level-set certificates need simple rings; a grid too coarse for the input's features
+  // cannot certify anything (a finer precision gives a finer grid).
+  if (q_grid.empty() || !rings_are_simple(q_index)) return finish();
+  std::vector<IPt> q_vertices;
+  for (const auto& poly : q.polygons) q_vertices.push_back(frame.round(poly.outer.front()));
+  check_cancel(cancel);
+
+  // Interior chain (Algorithm 2 with margins): P ⊆ inset(offset(Q̃, eps - 2m), r + 2m).
+  const IRegion q_eps =
+      offset_stage(q_grid, eps - 2 * b.margin, b.arc_tolerance, limits, result.disk_vertices);
+  check_cancel(cancel);
+  const IRegion pi_hat = offset_stage(flatten(q_eps), -(r + 2 * b.margin + b.arc_tolerance),
+                                      b.arc_tolerance, limits, result.disk_vertices);
+  check_cancel(cancel);
+  if (!pi_hat.empty()) {
+    const IRegion p = simplify(pi_hat, b.simplify);
+    YesCheckInput in{&q_index, q_vertices, r, eps, b.margin / 8.0};
+    if (verify_yes(in, p, cancel)) {
+      result.answer = Answer::kYes;
+      result.solution = to_polygon_set(frame, p);
+      result.hausdorff_bound = params.tolerance;
+      return finish();
+    }
+  }
+  check_cancel(cancel);
+
+  // Exterior chain (Algorithm 3 with margins): Q̂' ⊇ offset(Π, r + eps) with room to spare.
+  const IRegion q_eps_out = offset_stage(q_grid, eps + 2 * b.margin + b.arc_tolerance,
+                                         b.arc_tolerance, limits, result.disk_vertices);
+  check_cancel(cancel);
+  const IRegion pi_out = offset_stage(flatten(q_eps_out), -(r - 2 * b.margin), b.arc_tolerance,
+                                      limits, result.disk_vertices);
+  check_cancel(cancel);
+  const IRegion q_prime_out =
+      offset_stage(flatten(pi_out), r + eps + 2 * b.margin + b.arc_tolerance, b.arc_tolerance,
+                   limits, result.disk_vertices);
+  check_cancel(cancel);
+  const IRegion diff = difference(q_grid, flatten(q_prime_out));
+  if (diff.empty()) return finish();
+
+  const SegmentIndex outer_index(flatten(q_eps_out), r / 2.0);
+  const SegmentIndex q_prime_index(flatten(q_prime_out), r / 2.0);
+  NoCheckInput no{&q_index, &outer_index, r, eps, b.margin / 2.0, b.margin / 4.0};
+  for (const IPt& w : witness_candidates(diff, q_prime_index)) {
+    if (verify_no_witness(no, w, cancel)) {
+      result.answer = Answer::kNo;
+      return finish();
+    }
+  }
+  return finish();
+}
+
+} // namespace penshape::detail
