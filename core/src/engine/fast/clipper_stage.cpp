@@ -1,5 +1,7 @@
 #include "clipper_stage.hpp"
 
+#include "douglas_peucker.hpp"
+
 #include <clipper.hpp>
 
 #include <algorithm>
@@ -51,54 +53,6 @@ void collect(const cl::PolyNode& node, IRegion& out) {
   }
 }
 
-// Perpendicular-distance Douglas-Peucker on the open chain ring[i..j] (indices modulo n).
-void douglas_peucker(const IRing& ring, std::size_t i, std::size_t j, double tol,
-                     std::vector<char>& keep) {
-  const std::size_t n = ring.size();
-  if ((j + n - i) % n < 2) return;
-  const DPt a = to_d(ring[i % n]);
-  const DPt b = to_d(ring[j % n]);
-  double worst = -1.0;
-  std::size_t worst_k = i;
-  for (std::size_t k = i + 1; k < j; ++k) {
-    const double d = point_segment_distance(to_d(ring[k % n]), a, b);
-    if (d > worst) {
-      worst = d;
-      worst_k = k;
-    }
-  }
-  if (worst > tol) {
-    keep[worst_k % n] = 1;
-    douglas_peucker(ring, i, worst_k, tol, keep);
-    douglas_peucker(ring, worst_k, j, tol, keep);
-  }
-}
-
-IRing simplify_ring(const IRing& ring, double tol) {
-  const std::size_t n = ring.size();
-  if (n <= 4) return ring;
-  // Split the closed ring at vertex 0 and at the vertex farthest from it.
-  std::size_t far = 0;
-  std::int64_t best = -1;
-  for (std::size_t k = 1; k < n; ++k) {
-    const std::int64_t dx = ring[k].x - ring[0].x, dy = ring[k].y - ring[0].y;
-    const std::int64_t d = std::max(std::abs(dx), std::abs(dy));
-    if (d > best) {
-      best = d;
-      far = k;
-    }
-  }
-  std::vector<char> keep(n, 0);
-  keep[0] = keep[far] = 1;
-  douglas_peucker(ring, 0, far, tol, keep);
-  douglas_peucker(ring, far, n, tol, keep);
-  IRing out;
-  for (std::size_t k = 0; k < n; ++k) {
-    if (keep[k]) out.push_back(ring[k]);
-  }
-  return out;
-}
-
 } // namespace
 
 IRings flatten(const IRegion& region) {
@@ -110,13 +64,18 @@ IRings flatten(const IRegion& region) {
   return rings;
 }
 
+// Clipper rounds the number of steps of each join to the nearest integer, so one chord can span
+// up to 1.5 nominal steps: its depth is then up to 1.5² = 2.25 times the ArcTolerance it was
+// given. Asking for tolerance / kJoinDepthFactor keeps every chord within `tolerance`.
+constexpr double kJoinDepthFactor = 2.5;
+
 double round_join_steps(double delta, double arc_tolerance) {
-  const double y = std::min(arc_tolerance, std::fabs(delta) * 0.25);
+  const double y = std::min(arc_tolerance / kJoinDepthFactor, std::fabs(delta) * 0.25);
   return std::numbers::pi / std::acos(1.0 - y / std::fabs(delta));
 }
 
 IRegion offset_round(const IRings& rings, double delta, double arc_tolerance) {
-  cl::ClipperOffset offset(2.0, arc_tolerance);
+  cl::ClipperOffset offset(2.0, arc_tolerance / kJoinDepthFactor);
   offset.AddPaths(to_paths(rings), cl::jtRound, cl::etClosedPolygon);
   cl::PolyTree tree;
   offset.Execute(tree, delta);
@@ -136,9 +95,9 @@ IRegion difference(const IRings& subject, const IRings& clip) {
   return out;
 }
 
-IRegion simplify(const IRegion& region, double tolerance) {
+IRegion simplify(const IRings& input, double tolerance) {
   IRings rings;
-  for (const IRing& ring : flatten(region)) rings.push_back(simplify_ring(ring, tolerance));
+  for (const IRing& ring : input) rings.push_back(simplify_ring(ring, tolerance));
   clean_rings(rings);
   cl::Clipper c;
   c.AddPaths(to_paths(rings), cl::ptSubject, true);

@@ -1,12 +1,16 @@
 // The fast engine: APPROXDECIDE's interior and exterior chains on an integer grid with Clipper
 // (candidates only), then exact-grid certificates for the answer (README.md).
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "../engines.hpp"
 #include "clipper_stage.hpp"
+#include "douglas_peucker.hpp"
 #include "grid_frame.hpp"
 #include "level_set_check.hpp"
 #include "no_certificate.hpp"
@@ -22,12 +26,13 @@ using namespace penshape::fast;
 // the certificates, disks are drawn with arc tolerance d/4 and P is simplified by d/8; together
 // less than the paper's 2·delta (Theorems 11, 13), so the answers match the literal algorithm's.
 struct Budget {
-  double margin;
-  double arc_tolerance;
-  double simplify;
+  double margin;        // slack left for the certificates on each side
+  double arc_tolerance; // chord depth of the round joins
+  double simplify;      // Douglas-Peucker tolerance for P
+  double input;         // Douglas-Peucker tolerance for the copy of Q̃ the chains offset
 };
 
-Budget budget(double d) { return {d / 8.0, d / 4.0, d / 8.0}; }
+Budget budget(double d) { return {d / 16.0, d / 4.0, d / 16.0, d / 8.0}; }
 
 void check_cancel(const CancelHook& cancel) {
   if (cancel && cancel()) throw Cancelled();
@@ -63,9 +68,13 @@ PolygonSet to_polygon_set(const GridFrame& frame, const IRegion& region) {
   return out;
 }
 
-// Points of Q̃ \ Q̂' (exterior chain) worth trying as NO witnesses, farthest from Q̂' first.
-std::vector<IPt> witness_candidates(const IRegion& diff, const SegmentIndex& q_hat_prime) {
+// Points of Q̃ \ Q̂' (exterior chain) worth trying as NO witnesses: inside Q̃ away from its
+// boundary, farthest from Q̂' first. Vertices of the difference often sit on ∂Q̃, so we also
+// try points pulled from each vertex towards the piece's centroid.
+std::vector<IPt> witness_candidates(const IRegion& diff, const SegmentIndex& q_index,
+                                    const SegmentIndex& q_hat_prime) {
   std::vector<std::pair<double, IPt>> scored;
+  const double clear = kInputRounding + 2.0;
   for (const IPolygon& poly : diff) {
     double cx = 0, cy = 0;
     for (const IPt& p : poly.outer) {
@@ -76,12 +85,14 @@ std::vector<IPt> witness_candidates(const IRegion& diff, const SegmentIndex& q_h
     const DPt centre{cx / n, cy / n};
     std::vector<DPt> pts{centre};
     for (const IPt& p : poly.outer) {
-      pts.push_back(to_d(p));
-      pts.push_back({0.5 * (centre.x + static_cast<double>(p.x)),
-                     0.5 * (centre.y + static_cast<double>(p.y))});
+      for (const double t : {1.0 / 256, 1.0 / 64, 1.0 / 16, 1.0 / 4, 1.0 / 2}) {
+        pts.push_back({static_cast<double>(p.x) + t * (centre.x - static_cast<double>(p.x)),
+                       static_cast<double>(p.y) + t * (centre.y - static_cast<double>(p.y))});
+      }
     }
     for (const DPt& d : pts) {
       const IPt g{std::llround(d.x), std::llround(d.y)};
+      if (q_index.winding(g) <= 0 || q_index.distance(to_d(g), clear) < clear) continue;
       scored.push_back({q_hat_prime.distance(to_d(g), 1e18), g});
     }
   }
@@ -113,25 +124,63 @@ DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& para
   const Budget b = budget(d);
 
   const IRings q_grid = frame.round(q);
-  const SegmentIndex q_index(q_grid, eps / 2.0);
-  // The level-set certificates need simple rings; a grid too coarse for the input's features
-  // cannot certify anything (a finer precision gives a finer grid).
-  if (q_grid.empty() || !rings_are_simple(q_index)) return finish();
+  if (q_grid.empty()) return finish();
   std::vector<IPt> q_vertices;
   for (const auto& poly : q.polygons) q_vertices.push_back(frame.round(poly.outer.front()));
   check_cancel(cancel);
 
+  // The chains offset a simplified copy Q_s of Q̃ (H(Q_s, Q̃) <= b.input): far fewer
+  // self-intersections for Clipper, and the radii below absorb the difference.
+  const bool dbg = std::getenv("PENSHAPE_FAST_DEBUG") != nullptr;
+  auto lap = [&, last = std::chrono::steady_clock::now()](const char* what) mutable {
+    const auto now = std::chrono::steady_clock::now();
+    if (dbg) std::fprintf(stderr, "  %-12s %8.3f ms\n", what, std::chrono::duration<double, std::milli>(now - last).count());
+    last = now;
+  };
+  lap("setup");
+  // The chains and the YES certificate work on Q_s, a Douglas-Peucker copy of Q̃ whose distance
+  // to Q̃ is checked (H(Q, Q_s) <= η + input tolerance): far fewer edges for Clipper and for the
+  // level-set walk. If that copy is not simple we fall back to Q̃ itself.
+  std::optional<SegmentIndex> cert_index;
+  double eta = kInputRounding + b.input;
+  if (auto q_dp = simplify_rings_checked(q_grid, b.input)) {
+    cert_index.emplace(*q_dp, eps / 2.0);
+    if (!rings_are_simple(*cert_index)) cert_index.reset();
+  }
+  if (!cert_index) {
+    eta = kInputRounding;
+    cert_index.emplace(q_grid, eps / 2.0);
+    // The level-set certificates need simple rings; a grid too coarse for the input's
+    // features cannot certify YES (a finer precision gives a finer grid).
+    if (!rings_are_simple(*cert_index)) cert_index.reset();
+  }
+  const IRings q_simple = cert_index ? cert_index->rings() : q_grid;
+  lap("simplify Q");
+
   // Interior chain (Algorithm 2 with margins): P ⊆ inset(offset(Q̃, eps - 2m), r + 2m).
-  const IRegion q_eps =
-      offset_stage(q_grid, eps - 2 * b.margin, b.arc_tolerance, limits, result.disk_vertices);
+  const IRegion q_eps = offset_stage(q_simple, eps - 2 * b.margin - (eta - kInputRounding), b.arc_tolerance,
+                                     limits, result.disk_vertices);
   check_cancel(cancel);
+  lap("offset eps");
   const IRegion pi_hat = offset_stage(flatten(q_eps), -(r + 2 * b.margin + b.arc_tolerance),
                                       b.arc_tolerance, limits, result.disk_vertices);
   check_cancel(cancel);
-  if (!pi_hat.empty()) {
+  lap("inset r");
+  if (!pi_hat.empty() && cert_index) {
     const IRegion p = simplify(pi_hat, b.simplify);
-    YesCheckInput in{&q_index, q_vertices, r, eps, b.margin / 8.0};
-    if (verify_yes(in, p, cancel)) {
+    lap("simplify P");
+    YesCheckInput in{&*cert_index, eta, q_vertices, r, eps, b.margin / 8.0};
+    if (dbg) {
+      auto area_of = [](const IRegion& reg) { double a = 0; for (auto& pp : reg) { a += static_cast<double>(twice_area(pp.outer)) / 2; for (auto& h : pp.holes) a += static_cast<double>(twice_area(h)) / 2; } return a; };
+      const IRegion o1 = offset_round(flatten(pi_hat), r + 2 * b.margin - 2, 1.0);
+      const IRegion o2 = offset_round(flatten(p), r + b.margin - 2, 1.0);
+      std::fprintf(stderr, "  pi_hat+r+2m outside a: %g ; P+r+m outside a: %g ; |a| %zu |pi| %zu |P| %zu\n",
+                   area_of(difference(flatten(o1), flatten(q_eps))), area_of(difference(flatten(o2), flatten(q_eps))),
+                   flatten(q_eps).size(), flatten(pi_hat).size(), flatten(p).size());
+    }
+    const bool ok = verify_yes(in, p, cancel);
+    lap("verify yes");
+    if (ok) {
       result.answer = Answer::kYes;
       result.solution = to_polygon_set(frame, p);
       result.hausdorff_bound = params.tolerance;
@@ -141,7 +190,7 @@ DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& para
   check_cancel(cancel);
 
   // Exterior chain (Algorithm 3 with margins): Q̂' ⊇ offset(Π, r + eps) with room to spare.
-  const IRegion q_eps_out = offset_stage(q_grid, eps + 2 * b.margin + b.arc_tolerance,
+  const IRegion q_eps_out = offset_stage(q_simple, eps + 2 * b.margin + (eta - kInputRounding) + b.arc_tolerance,
                                          b.arc_tolerance, limits, result.disk_vertices);
   check_cancel(cancel);
   const IRegion pi_out = offset_stage(flatten(q_eps_out), -(r - 2 * b.margin), b.arc_tolerance,
@@ -152,12 +201,15 @@ DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& para
                    limits, result.disk_vertices);
   check_cancel(cancel);
   const IRegion diff = difference(q_grid, flatten(q_prime_out));
+  if (std::getenv("PENSHAPE_FAST_DEBUG")) std::fprintf(stderr, "exterior diff pieces %zu\n", diff.size());
   if (diff.empty()) return finish();
 
+  const SegmentIndex q_index(q_grid, eps / 2.0);
   const SegmentIndex outer_index(flatten(q_eps_out), r / 2.0);
   const SegmentIndex q_prime_index(flatten(q_prime_out), r / 2.0);
   NoCheckInput no{&q_index, &outer_index, r, eps, b.margin / 2.0, b.margin / 4.0};
-  for (const IPt& w : witness_candidates(diff, q_prime_index)) {
+  for (const IPt& w : witness_candidates(diff, q_index, q_prime_index)) {
+    if (std::getenv("PENSHAPE_FAST_DEBUG")) std::fprintf(stderr, "witness %lld %lld\n", (long long)w.x, (long long)w.y);
     if (verify_no_witness(no, w, cancel)) {
       result.answer = Answer::kNo;
       return finish();

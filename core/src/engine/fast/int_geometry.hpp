@@ -50,7 +50,8 @@ inline double point_segment_distance(DPt p, DPt a, DPt b) {
   const double len2 = dx * dx + dy * dy;
   double t = len2 > 0.0 ? (wx * dx + wy * dy) / len2 : 0.0;
   t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
-  return std::hypot(wx - t * dx, wy - t * dy);
+  const double ex = wx - t * dx, ey = wy - t * dy;
+  return std::sqrt(ex * ex + ey * ey);
 }
 
 // A lower bound on the distance between segments [p, q] and [a, b]: 0 unless the segments are

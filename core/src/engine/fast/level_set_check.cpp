@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <vector>
 
 namespace penshape::fast {
@@ -174,7 +176,22 @@ class Walker {
                           if (stadium_interval(s, g.da(), g.db(), need + 1.0, iv)) forbidden.push_back(iv);
                         });
     std::vector<Interval> cover = cover_intervals(s, forbidden);
-    return gaps_are_clear(s, cover, need);
+    const bool ok = gaps_are_clear(s, cover, need);
+    if (!ok && std::getenv("PENSHAPE_FAST_DEBUG")) {
+      double dmin = 1e300;
+      for (int k = 0; k <= 16; ++k) dmin = std::min(dmin, q_.b->distance(at(s, k / 16.0), 1e9));
+      double da = 1e300;
+      for (int k = 0; k <= 16; ++k) da = std::min(da, q_.a->distance(at(s, k / 16.0), 1e9));
+      std::fprintf(stderr, "piece (%g,%g)-(%g,%g) err %g need %g level %g: min dist to B %g, to A %g, cover %zu\n",
+                   s.p.x, s.p.y, s.q.x, s.q.y, s.error, need, q_.level, dmin, da, cover.size());
+      for (const auto& c : cover) std::fprintf(stderr, "   cover [%g, %g]\n", c.lo, c.hi);
+      for (const auto& c : forbidden) std::fprintf(stderr, "   forbidden [%g, %g]\n", c.lo, c.hi);
+      for (int k = 0; k <= 32; ++k) {
+        const DPt x = at(s, k / 32.0);
+        std::fprintf(stderr, "   t=%.3f dA=%.1f dB=%.1f inA=%d inB=%d\n", k / 32.0, q_.a->distance(x, 1e9), q_.b->distance(x, 1e9), q_.a->winding(round_point(x)), q_.b->winding(round_point(x)));
+      }
+    }
+    return ok;
   }
 
   // A piece lying inside B passes only if all of it is provably off the level set.

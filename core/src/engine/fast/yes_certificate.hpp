@@ -1,6 +1,6 @@
 #pragma once
-// Exact-grid verification of a YES candidate P against the grid input Q̃ (README.md, "Why YES
-// is certified"). With η = kInputRounding >= H(Q, Q̃), it proves in grid units
+// Exact-grid verification of a YES candidate P against an integer region Q̃ with a proven
+// bound η >= H(Q, Q̃) (README.md, "Why YES is certified"). It proves in grid units
 //   (A) offset(P, r) ⊆ {d(·, Q̃) <= eps - η} ⊆ offset(Q, eps), i.e. P ⊆ Π, and
 //   (B) Q ⊆ offset(P, r + eps),
 // so H(offset(P, r), Q) <= eps (Proposition 3). False means "not verified", never "wrong".
@@ -13,7 +13,8 @@
 namespace penshape::fast {
 
 struct YesCheckInput {
-  const SegmentIndex* q = nullptr;           // Q̃ (simple rings, checked by the caller)
+  const SegmentIndex* q = nullptr;           // Q̃ or a simplification (simple rings, checked)
+  double eta = 0.0;                          // proven bound on H(Q, that region), grid units
   std::vector<IPt> q_component_vertices;     // one grid vertex per polygon of Q (its outer ring)
   double radius = 0.0;                       // r, grid units
   double tolerance = 0.0;                    // eps, grid units
