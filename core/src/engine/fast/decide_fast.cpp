@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -32,7 +33,7 @@ struct Budget {
   double input;         // Douglas-Peucker tolerance for the copy of Q̃ the chains offset
 };
 
-Budget budget(double d) { return {d / 16.0, d / 4.0, d / 16.0, d / 8.0}; }
+Budget budget(double d) { return {d / 16.0, d / 2.0, d / 16.0, d / 8.0}; }
 
 void check_cancel(const CancelHook& cancel) {
   if (cancel && cancel()) throw Cancelled();
@@ -132,9 +133,10 @@ DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& para
   // The chains offset a simplified copy Q_s of Q̃ (H(Q_s, Q̃) <= b.input): far fewer
   // self-intersections for Clipper, and the radii below absorb the difference.
   const bool dbg = std::getenv("PENSHAPE_FAST_DEBUG") != nullptr;
-  auto lap = [&, last = std::chrono::steady_clock::now()](const char* what) mutable {
-    const auto now = std::chrono::steady_clock::now();
-    if (dbg) std::fprintf(stderr, "  %-12s %8.3f ms\n", what, std::chrono::duration<double, std::milli>(now - last).count());
+  auto cpu_ms = [] { timespec ts{}; clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts); return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) / 1e6; };
+  auto lap = [&, last = cpu_ms()](const char* what) mutable {
+    const double now = cpu_ms();
+    if (dbg) std::fprintf(stderr, "  %-12s %8.3f ms cpu\n", what, now - last);
     last = now;
   };
   lap("setup");
@@ -143,9 +145,13 @@ DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& para
   // level-set walk. If that copy is not simple we fall back to Q̃ itself.
   std::optional<SegmentIndex> cert_index;
   double eta = kInputRounding + b.input;
-  if (auto q_dp = simplify_rings_checked(q_grid, b.input)) {
-    cert_index.emplace(*q_dp, eps / 2.0);
-    if (!rings_are_simple(*cert_index)) cert_index.reset();
+  // Narrow features can make a coarse simplification cross itself: retry finer.
+  for (double tol = b.input; tol >= b.input / 8.0 && !cert_index; tol /= 2.0) {
+    if (auto q_dp = simplify_rings_checked(q_grid, tol)) {
+      cert_index.emplace(*q_dp, eps / 2.0);
+      eta = kInputRounding + tol;
+      if (!rings_are_simple(*cert_index)) cert_index.reset();
+    }
   }
   if (!cert_index) {
     eta = kInputRounding;
@@ -169,15 +175,7 @@ DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& para
   if (!pi_hat.empty() && cert_index) {
     const IRegion p = simplify(pi_hat, b.simplify);
     lap("simplify P");
-    YesCheckInput in{&*cert_index, eta, q_vertices, r, eps, b.margin / 8.0};
-    if (dbg) {
-      auto area_of = [](const IRegion& reg) { double a = 0; for (auto& pp : reg) { a += static_cast<double>(twice_area(pp.outer)) / 2; for (auto& h : pp.holes) a += static_cast<double>(twice_area(h)) / 2; } return a; };
-      const IRegion o1 = offset_round(flatten(pi_hat), r + 2 * b.margin - 2, 1.0);
-      const IRegion o2 = offset_round(flatten(p), r + b.margin - 2, 1.0);
-      std::fprintf(stderr, "  pi_hat+r+2m outside a: %g ; P+r+m outside a: %g ; |a| %zu |pi| %zu |P| %zu\n",
-                   area_of(difference(flatten(o1), flatten(q_eps))), area_of(difference(flatten(o2), flatten(q_eps))),
-                   flatten(q_eps).size(), flatten(pi_hat).size(), flatten(p).size());
-    }
+    YesCheckInput in{&*cert_index, eta, q_vertices, r, eps, b.margin / 2.0};
     const bool ok = verify_yes(in, p, cancel);
     lap("verify yes");
     if (ok) {

@@ -71,7 +71,8 @@ std::optional<IRings> simplify_rings_checked(const IRings& rings, double toleran
   out.reserve(rings.size());
   const double bound = tolerance - kDistanceSlack;
   for (const IRing& ring : rings) {
-    const std::vector<std::size_t> idx = kept_indices(ring, tolerance);
+    // Simplify a little tighter than the bound we check, so rounding never decides.
+    const std::vector<std::size_t> idx = kept_indices(ring, bound - kDistanceSlack);
     IRing s;
     for (const std::size_t k : idx) s.push_back(ring[k]);
     if (s.size() < 3 || (twice_area(s) > 0) != (twice_area(ring) > 0)) return std::nullopt;

@@ -155,16 +155,32 @@ class Walker {
                         std::max(p.x, q.x) + need, std::max(p.y, q.y) + need, [&](std::size_t k) {
                           if (!ok) return;
                           const Segment& g = q_.b->segments()[k];
+                          // Boxes farther apart than `need` cannot hold closer points.
+                          const double gx0 = static_cast<double>(std::min(g.a.x, g.b.x));
+                          const double gx1 = static_cast<double>(std::max(g.a.x, g.b.x));
+                          const double gy0 = static_cast<double>(std::min(g.a.y, g.b.y));
+                          const double gy1 = static_cast<double>(std::max(g.a.y, g.b.y));
+                          const double bx = std::max({gx0 - std::max(p.x, q.x), std::min(p.x, q.x) - gx1, 0.0});
+                          const double by = std::max({gy0 - std::max(p.y, q.y), std::min(p.y, q.y) - gy1, 0.0});
+                          if (bx * bx + by * by >= need * need) return;
                           if (segment_segment_distance_lower(p, q, g.da(), g.db()) < need) ok = false;
                         });
     return ok;
   }
 
   bool check(const Piece& s) {
+    const DPt mid = at(s, 0.5);
+    // Deep inside {d(·, A) < level}: every point of the piece is within half its length of the
+    // midpoint, so a midpoint closer than level - half - error is proof enough (1-Lipschitz).
+    const double half = 0.5 * std::sqrt((s.q.x - s.p.x) * (s.q.x - s.p.x) +
+                                        (s.q.y - s.p.y) * (s.q.y - s.p.y));
+    const double deep = q_.level - half - s.error - kDistanceSlack;
+    ++stat_pieces;
     // Distance every represented curve point must keep from B's edges.
     const double need = q_.clearance + s.error + kDistanceSlack;
-    const DPt mid = at(s, 0.5);
-    if (far_from_b(s, 0.0, 1.0, need)) return outside_b(mid) || covered_entirely(s);
+    if (far_from_b(s, 0.0, 1.0, need) && outside_b(mid)) { ++stat_far; return true; }
+    if (deep > 0.0 && q_.a->distance(mid, deep) < deep) { ++stat_deep; return true; }
+    ++stat_cover;
     // Near B: drop the parts provably closer than `level` to A, check the remaining gaps.
     std::vector<Interval> forbidden;
     const DPt p = s.p, q = s.q;
@@ -215,6 +231,7 @@ class Walker {
                           if (done) return;
                           const Segment& g = q_.a->segments()[k];
                           Interval iv;
+                          ++stat_stadium;
                           if (!stadium_interval(s, g.da(), g.db(), radius, iv)) return;
                           if (point_segment_distance(at(s, iv.lo), g.da(), g.db()) > verify ||
                               point_segment_distance(at(s, iv.hi), g.da(), g.db()) > verify) {
@@ -267,6 +284,8 @@ class Walker {
   const LevelSetQuery& q_;
   const CancelHook& cancel_;
   unsigned pieces_ = 0;
+ public:
+  std::size_t stat_pieces = 0, stat_deep = 0, stat_far = 0, stat_cover = 0, stat_stadium = 0;
 };
 
 bool segments_intersect(IPt p1, IPt p2, IPt q1, IPt q2) {
@@ -285,7 +304,9 @@ bool segments_intersect(IPt p1, IPt p2, IPt q1, IPt q2) {
 
 bool level_set_avoids(const LevelSetQuery& query, const CancelHook& cancel) {
   Walker w(query, cancel);
-  return w.run();
+  const bool ok = w.run();
+  if (std::getenv("PENSHAPE_FAST_DEBUG")) std::fprintf(stderr, "  walk: level %g edges %zu pieces %zu deep %zu far %zu cover %zu stadium %zu\n", query.level, query.a->segments().size(), w.stat_pieces, w.stat_deep, w.stat_far, w.stat_cover, w.stat_stadium);
+  return ok;
 }
 
 bool rings_are_simple(const SegmentIndex& index) {
