@@ -1,10 +1,7 @@
 // The fast engine: APPROXDECIDE's interior and exterior chains on an integer grid with Clipper
 // (candidates only), then exact-grid certificates for the answer (README.md).
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <chrono>
-#include <ctime>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -132,14 +129,6 @@ DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& para
 
   // The chains offset a simplified copy Q_s of Q̃ (H(Q_s, Q̃) <= b.input): far fewer
   // self-intersections for Clipper, and the radii below absorb the difference.
-  const bool dbg = std::getenv("PENSHAPE_FAST_DEBUG") != nullptr;
-  auto cpu_ms = [] { timespec ts{}; clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts); return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) / 1e6; };
-  auto lap = [&, last = cpu_ms()](const char* what) mutable {
-    const double now = cpu_ms();
-    if (dbg) std::fprintf(stderr, "  %-12s %8.3f ms cpu\n", what, now - last);
-    last = now;
-  };
-  lap("setup");
   // The chains and the YES certificate work on Q_s, a Douglas-Peucker copy of Q̃ whose distance
   // to Q̃ is checked (H(Q, Q_s) <= η + input tolerance): far fewer edges for Clipper and for the
   // level-set walk. If that copy is not simple we fall back to Q̃ itself.
@@ -150,7 +139,7 @@ DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& para
     if (auto q_dp = simplify_rings_checked(q_grid, tol)) {
       cert_index.emplace(*q_dp, eps / 2.0);
       eta = kInputRounding + tol;
-      if (!rings_are_simple(*cert_index)) cert_index.reset();
+      if (!is_certifiable_region(*cert_index)) cert_index.reset();
     }
   }
   if (!cert_index) {
@@ -158,27 +147,21 @@ DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& para
     cert_index.emplace(q_grid, eps / 2.0);
     // The level-set certificates need simple rings; a grid too coarse for the input's
     // features cannot certify YES (a finer precision gives a finer grid).
-    if (!rings_are_simple(*cert_index)) cert_index.reset();
+    if (!is_certifiable_region(*cert_index)) cert_index.reset();
   }
   const IRings q_simple = cert_index ? cert_index->rings() : q_grid;
-  lap("simplify Q");
 
   // Interior chain (Algorithm 2 with margins): P ⊆ inset(offset(Q̃, eps - 2m), r + 2m).
-  const IRegion q_eps = offset_stage(q_simple, eps - 2 * b.margin - (eta - kInputRounding), b.arc_tolerance,
-                                     limits, result.disk_vertices);
+  const IRegion q_eps = offset_stage(q_simple, eps - 2 * b.margin - (eta - kInputRounding),
+                                     b.arc_tolerance, limits, result.disk_vertices);
   check_cancel(cancel);
-  lap("offset eps");
   const IRegion pi_hat = offset_stage(flatten(q_eps), -(r + 2 * b.margin + b.arc_tolerance),
                                       b.arc_tolerance, limits, result.disk_vertices);
   check_cancel(cancel);
-  lap("inset r");
   if (!pi_hat.empty() && cert_index) {
     const IRegion p = simplify(pi_hat, b.simplify);
-    lap("simplify P");
     YesCheckInput in{&*cert_index, eta, q_vertices, r, eps, b.margin / 2.0};
-    const bool ok = verify_yes(in, p, cancel);
-    lap("verify yes");
-    if (ok) {
+    if (verify_yes(in, p, cancel)) {
       result.answer = Answer::kYes;
       result.solution = to_polygon_set(frame, p);
       result.hausdorff_bound = params.tolerance;
@@ -188,8 +171,9 @@ DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& para
   check_cancel(cancel);
 
   // Exterior chain (Algorithm 3 with margins): Q̂' ⊇ offset(Π, r + eps) with room to spare.
-  const IRegion q_eps_out = offset_stage(q_simple, eps + 2 * b.margin + (eta - kInputRounding) + b.arc_tolerance,
-                                         b.arc_tolerance, limits, result.disk_vertices);
+  const IRegion q_eps_out =
+      offset_stage(q_simple, eps + 2 * b.margin + (eta - kInputRounding) + b.arc_tolerance,
+                   b.arc_tolerance, limits, result.disk_vertices);
   check_cancel(cancel);
   const IRegion pi_out = offset_stage(flatten(q_eps_out), -(r - 2 * b.margin), b.arc_tolerance,
                                       limits, result.disk_vertices);
@@ -199,7 +183,6 @@ DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& para
                    limits, result.disk_vertices);
   check_cancel(cancel);
   const IRegion diff = difference(q_grid, flatten(q_prime_out));
-  if (std::getenv("PENSHAPE_FAST_DEBUG")) std::fprintf(stderr, "exterior diff pieces %zu\n", diff.size());
   if (diff.empty()) return finish();
 
   const SegmentIndex q_index(q_grid, eps / 2.0);
@@ -207,7 +190,6 @@ DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& para
   const SegmentIndex q_prime_index(flatten(q_prime_out), r / 2.0);
   NoCheckInput no{&q_index, &outer_index, r, eps, b.margin / 2.0, b.margin / 4.0};
   for (const IPt& w : witness_candidates(diff, q_index, q_prime_index)) {
-    if (std::getenv("PENSHAPE_FAST_DEBUG")) std::fprintf(stderr, "witness %lld %lld\n", (long long)w.x, (long long)w.y);
     if (verify_no_witness(no, w, cancel)) {
       result.answer = Answer::kNo;
       return finish();

@@ -42,7 +42,8 @@ std::vector<std::size_t> kept_indices(const IRing& ring, double tol) {
   std::size_t far = 0;
   std::int64_t best = -1;
   for (std::size_t k = 1; k < n; ++k) {
-    const std::int64_t d = std::max(std::abs(ring[k].x - ring[0].x), std::abs(ring[k].y - ring[0].y));
+    const std::int64_t d =
+        std::max(std::abs(ring[k].x - ring[0].x), std::abs(ring[k].y - ring[0].y));
     if (d > best) {
       best = d;
       far = k;

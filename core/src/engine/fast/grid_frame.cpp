@@ -63,7 +63,9 @@ GridFrame::GridFrame(const PolygonSet& q, const DeconstructParams& params) {
   ty_ = floor_q((min_y - margin) * pow2(k_));
 }
 
-double GridFrame::units(const Rational& length) const { return Rational(length * pow2(k_)).get_d(); }
+double GridFrame::units(const Rational& length) const {
+  return Rational(length * pow2(k_)).get_d();
+}
 
 IPt GridFrame::round(const ExactPoint& p) const {
   const Rational half(1, 2);

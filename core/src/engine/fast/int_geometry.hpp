@@ -36,8 +36,8 @@ inline DPt to_d(IPt p) { return {static_cast<double>(p.x), static_cast<double>(p
 
 // Exact orientation of c relative to the directed line a->b: >0 left, <0 right, 0 collinear.
 inline int orientation(IPt a, IPt b, IPt c) {
-  const Int128 v = static_cast<Int128>(b.x - a.x) * (c.y - a.y) -
-                     static_cast<Int128>(b.y - a.y) * (c.x - a.x);
+  const Int128 v =
+      static_cast<Int128>(b.x - a.x) * (c.y - a.y) - static_cast<Int128>(b.y - a.y) * (c.x - a.x);
   return (v > 0) - (v < 0);
 }
 

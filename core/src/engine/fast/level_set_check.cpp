@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <vector>
 
 namespace penshape::fast {
@@ -25,7 +23,9 @@ struct Piece {
   double error;
 };
 
-DPt at(const Piece& s, double t) { return {s.p.x + t * (s.q.x - s.p.x), s.p.y + t * (s.q.y - s.p.y)}; }
+DPt at(const Piece& s, double t) {
+  return {s.p.x + t * (s.q.x - s.p.x), s.p.y + t * (s.q.y - s.p.y)};
+}
 
 // Solves k0 + k1 t in [lo, hi] for t; returns false when empty.
 bool linear_range(double k0, double k1, double lo, double hi, Interval& out) {
@@ -151,20 +151,21 @@ class Walker {
   bool far_from_b(const Piece& s, double t0, double t1, double need) {
     const DPt p = at(s, t0), q = at(s, t1);
     bool ok = true;
-    q_.b->for_each_near(std::min(p.x, q.x) - need, std::min(p.y, q.y) - need,
-                        std::max(p.x, q.x) + need, std::max(p.y, q.y) + need, [&](std::size_t k) {
-                          if (!ok) return;
-                          const Segment& g = q_.b->segments()[k];
-                          // Boxes farther apart than `need` cannot hold closer points.
-                          const double gx0 = static_cast<double>(std::min(g.a.x, g.b.x));
-                          const double gx1 = static_cast<double>(std::max(g.a.x, g.b.x));
-                          const double gy0 = static_cast<double>(std::min(g.a.y, g.b.y));
-                          const double gy1 = static_cast<double>(std::max(g.a.y, g.b.y));
-                          const double bx = std::max({gx0 - std::max(p.x, q.x), std::min(p.x, q.x) - gx1, 0.0});
-                          const double by = std::max({gy0 - std::max(p.y, q.y), std::min(p.y, q.y) - gy1, 0.0});
-                          if (bx * bx + by * by >= need * need) return;
-                          if (segment_segment_distance_lower(p, q, g.da(), g.db()) < need) ok = false;
-                        });
+    q_.b->for_each_near(
+        std::min(p.x, q.x) - need, std::min(p.y, q.y) - need, std::max(p.x, q.x) + need,
+        std::max(p.y, q.y) + need, [&](std::size_t k) {
+          if (!ok) return;
+          const Segment& g = q_.b->segments()[k];
+          // Boxes farther apart than `need` cannot hold closer points.
+          const double gx0 = static_cast<double>(std::min(g.a.x, g.b.x));
+          const double gx1 = static_cast<double>(std::max(g.a.x, g.b.x));
+          const double gy0 = static_cast<double>(std::min(g.a.y, g.b.y));
+          const double gy1 = static_cast<double>(std::max(g.a.y, g.b.y));
+          const double bx = std::max({gx0 - std::max(p.x, q.x), std::min(p.x, q.x) - gx1, 0.0});
+          const double by = std::max({gy0 - std::max(p.y, q.y), std::min(p.y, q.y) - gy1, 0.0});
+          if (bx * bx + by * by >= need * need) return;
+          if (segment_segment_distance_lower(p, q, g.da(), g.db()) < need) ok = false;
+        });
     return ok;
   }
 
@@ -172,15 +173,13 @@ class Walker {
     const DPt mid = at(s, 0.5);
     // Deep inside {d(·, A) < level}: every point of the piece is within half its length of the
     // midpoint, so a midpoint closer than level - half - error is proof enough (1-Lipschitz).
-    const double half = 0.5 * std::sqrt((s.q.x - s.p.x) * (s.q.x - s.p.x) +
-                                        (s.q.y - s.p.y) * (s.q.y - s.p.y));
+    const double half =
+        0.5 * std::sqrt((s.q.x - s.p.x) * (s.q.x - s.p.x) + (s.q.y - s.p.y) * (s.q.y - s.p.y));
     const double deep = q_.level - half - s.error - kDistanceSlack;
-    ++stat_pieces;
     // Distance every represented curve point must keep from B's edges.
     const double need = q_.clearance + s.error + kDistanceSlack;
-    if (far_from_b(s, 0.0, 1.0, need) && outside_b(mid)) { ++stat_far; return true; }
-    if (deep > 0.0 && q_.a->distance(mid, deep) < deep) { ++stat_deep; return true; }
-    ++stat_cover;
+    if (far_from_b(s, 0.0, 1.0, need) && outside_b(mid)) return true;
+    if (deep > 0.0 && q_.a->distance(mid, deep) < deep) return true;
     // Near B: drop the parts provably closer than `level` to A, check the remaining gaps.
     std::vector<Interval> forbidden;
     const DPt p = s.p, q = s.q;
@@ -189,25 +188,11 @@ class Walker {
                         [&](std::size_t k) {
                           const Segment& g = q_.b->segments()[k];
                           Interval iv;
-                          if (stadium_interval(s, g.da(), g.db(), need + 1.0, iv)) forbidden.push_back(iv);
+                          if (stadium_interval(s, g.da(), g.db(), need + 1.0, iv))
+                            forbidden.push_back(iv);
                         });
     std::vector<Interval> cover = cover_intervals(s, forbidden);
-    const bool ok = gaps_are_clear(s, cover, need);
-    if (!ok && std::getenv("PENSHAPE_FAST_DEBUG")) {
-      double dmin = 1e300;
-      for (int k = 0; k <= 16; ++k) dmin = std::min(dmin, q_.b->distance(at(s, k / 16.0), 1e9));
-      double da = 1e300;
-      for (int k = 0; k <= 16; ++k) da = std::min(da, q_.a->distance(at(s, k / 16.0), 1e9));
-      std::fprintf(stderr, "piece (%g,%g)-(%g,%g) err %g need %g level %g: min dist to B %g, to A %g, cover %zu\n",
-                   s.p.x, s.p.y, s.q.x, s.q.y, s.error, need, q_.level, dmin, da, cover.size());
-      for (const auto& c : cover) std::fprintf(stderr, "   cover [%g, %g]\n", c.lo, c.hi);
-      for (const auto& c : forbidden) std::fprintf(stderr, "   forbidden [%g, %g]\n", c.lo, c.hi);
-      for (int k = 0; k <= 32; ++k) {
-        const DPt x = at(s, k / 32.0);
-        std::fprintf(stderr, "   t=%.3f dA=%.1f dB=%.1f inA=%d inB=%d\n", k / 32.0, q_.a->distance(x, 1e9), q_.b->distance(x, 1e9), q_.a->winding(round_point(x)), q_.b->winding(round_point(x)));
-      }
-    }
-    return ok;
+    return gaps_are_clear(s, cover, need);
   }
 
   // A piece lying inside B passes only if all of it is provably off the level set.
@@ -221,8 +206,8 @@ class Walker {
   // stops once `wanted` is covered. Returned merged and sorted.
   std::vector<Interval> cover_intervals(const Piece& s, const std::vector<Interval>& wanted) {
     const double l = q_.level;
-    const double radius = l - s.error - 1.0;         // computed with
-    const double verify = l - s.error - 0.5;         // checked against (convexity does the rest)
+    const double radius = l - s.error - 1.0; // computed with
+    const double verify = l - s.error - 0.5; // checked against (convexity does the rest)
     std::vector<Interval> cover;
     const DPt p = s.p, q = s.q;
     bool done = false;
@@ -231,7 +216,6 @@ class Walker {
                           if (done) return;
                           const Segment& g = q_.a->segments()[k];
                           Interval iv;
-                          ++stat_stadium;
                           if (!stadium_interval(s, g.da(), g.db(), radius, iv)) return;
                           if (point_segment_distance(at(s, iv.lo), g.da(), g.db()) > verify ||
                               point_segment_distance(at(s, iv.hi), g.da(), g.db()) > verify) {
@@ -284,8 +268,6 @@ class Walker {
   const LevelSetQuery& q_;
   const CancelHook& cancel_;
   unsigned pieces_ = 0;
- public:
-  std::size_t stat_pieces = 0, stat_deep = 0, stat_far = 0, stat_cover = 0, stat_stadium = 0;
 };
 
 bool segments_intersect(IPt p1, IPt p2, IPt q1, IPt q2) {
@@ -304,9 +286,7 @@ bool segments_intersect(IPt p1, IPt p2, IPt q1, IPt q2) {
 
 bool level_set_avoids(const LevelSetQuery& query, const CancelHook& cancel) {
   Walker w(query, cancel);
-  const bool ok = w.run();
-  if (std::getenv("PENSHAPE_FAST_DEBUG")) std::fprintf(stderr, "  walk: level %g edges %zu pieces %zu deep %zu far %zu cover %zu stadium %zu\n", query.level, query.a->segments().size(), w.stat_pieces, w.stat_deep, w.stat_far, w.stat_cover, w.stat_stadium);
-  return ok;
+  return w.run();
 }
 
 bool rings_are_simple(const SegmentIndex& index) {
@@ -314,31 +294,41 @@ bool rings_are_simple(const SegmentIndex& index) {
   bool ok = true;
   for (std::size_t i = 0; i < segs.size() && ok; ++i) {
     const Segment& s = segs[i];
-    index.for_each_near(static_cast<double>(std::min(s.a.x, s.b.x)),
-                        static_cast<double>(std::min(s.a.y, s.b.y)),
-                        static_cast<double>(std::max(s.a.x, s.b.x)),
-                        static_cast<double>(std::max(s.a.y, s.b.y)), [&](std::size_t j) {
-                          if (!ok || j <= i) return;
-                          const Segment& t = segs[j];
-                          const bool same_ring = s.ring == t.ring;
-                          const bool s_then_t = same_ring && (s.pos + 1) % s.ring_size == t.pos;
-                          const bool t_then_s = same_ring && (t.pos + 1) % t.ring_size == s.pos;
-                          if (s_then_t || t_then_s) {
-                            // Consecutive edges meet at their shared vertex only: no fold-back.
-                            const Segment& first = s_then_t ? s : t;
-                            const Segment& second = s_then_t ? t : s;
-                            if (orientation(first.a, first.b, second.b) == 0) {
-                              const std::int64_t dot =
-                                  (first.b.x - first.a.x) * (second.b.x - second.a.x) +
-                                  (first.b.y - first.a.y) * (second.b.y - second.a.y);
-                              if (dot < 0) ok = false;
-                            }
-                            return;
-                          }
-                          if (segments_intersect(s.a, s.b, t.a, t.b)) ok = false;
-                        });
+    index.for_each_near(
+        static_cast<double>(std::min(s.a.x, s.b.x)), static_cast<double>(std::min(s.a.y, s.b.y)),
+        static_cast<double>(std::max(s.a.x, s.b.x)), static_cast<double>(std::max(s.a.y, s.b.y)),
+        [&](std::size_t j) {
+          if (!ok || j <= i) return;
+          const Segment& t = segs[j];
+          const bool same_ring = s.ring == t.ring;
+          const bool s_then_t = same_ring && (s.pos + 1) % s.ring_size == t.pos;
+          const bool t_then_s = same_ring && (t.pos + 1) % t.ring_size == s.pos;
+          if (s_then_t || t_then_s) {
+            // Consecutive edges meet at their shared vertex only: no fold-back.
+            const Segment& first = s_then_t ? s : t;
+            const Segment& second = s_then_t ? t : s;
+            if (orientation(first.a, first.b, second.b) == 0) {
+              const std::int64_t dot = (first.b.x - first.a.x) * (second.b.x - second.a.x) +
+                                       (first.b.y - first.a.y) * (second.b.y - second.a.y);
+              if (dot < 0) ok = false;
+            }
+            return;
+          }
+          if (segments_intersect(s.a, s.b, t.a, t.b)) ok = false;
+        });
   }
   return ok;
+}
+
+bool rings_are_nested_consistently(const SegmentIndex& index) {
+  const IRings& rings = index.rings();
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    const int expected = twice_area(rings[r]) > 0 ? 0 : 1;
+    if (index.winding_excluding(rings[r].front(), static_cast<std::uint32_t>(r)) != expected) {
+      return false;
+    }
+  }
+  return true;
 }
 
 } // namespace penshape::fast

@@ -28,4 +28,14 @@ bool level_set_avoids(const LevelSetQuery& query, const CancelHook& cancel);
 // edges (exact integer tests; the level-set argument needs it).
 bool rings_are_simple(const SegmentIndex& index);
 
+// Whether simple, disjoint rings bound their region on the left: every counterclockwise ring
+// lies where the other rings wind 0 times, every clockwise ring where they wind once. Then the
+// winding number is 1 just left of every edge and 0 just right of it.
+bool rings_are_nested_consistently(const SegmentIndex& index);
+
+// Both of the above: what the level-set walk needs of A.
+inline bool is_certifiable_region(const SegmentIndex& index) {
+  return rings_are_simple(index) && rings_are_nested_consistently(index);
+}
+
 } // namespace penshape::fast

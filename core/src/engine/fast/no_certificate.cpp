@@ -1,8 +1,6 @@
 #include "no_certificate.hpp"
 
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <vector>
 
 #include "grid_frame.hpp"
@@ -25,10 +23,9 @@ class NoWitnessCheck {
 
   bool run(IPt q) {
     // q ∈ Q: inside Q̃ and farther than η from its boundary (H(Q, Q̃) <= η).
-    const bool dbg = std::getenv("PENSHAPE_FAST_DEBUG") != nullptr;
-    if (in_.q->winding(q) <= 0) { if (dbg) std::fprintf(stderr, " not inside\n"); return false; }
+    if (in_.q->winding(q) <= 0) return false;
     const double clear = kInputRounding + kDistanceSlack;
-    if (in_.q->distance(to_d(q), clear + 1.0) <= clear) { if (dbg) std::fprintf(stderr, " too close\n"); return false; }
+    if (in_.q->distance(to_d(q), clear + 1.0) <= clear) return false;
 
     const double disk = in_.radius + in_.tolerance + kParamRounding;
     std::vector<Cell> stack{{to_d(q), disk}};
@@ -45,7 +42,7 @@ class NoWitnessCheck {
         continue; // misses the disk
       }
       if (has_witness(cell.c, rho)) continue;
-      if (cell.half * std::sqrt(2.0) <= in_.min_cell) { if (dbg) std::fprintf(stderr, " cell fail at %g %g (q %lld %lld) visited %zu\n", cell.c.x, cell.c.y, (long long)q.x, (long long)q.y, visited); return false; }
+      if (cell.half * std::sqrt(2.0) <= in_.min_cell) return false;
       const double h = cell.half / 2.0;
       for (const double dx : {-h, h}) {
         for (const double dy : {-h, h}) stack.push_back({{cell.c.x + dx, cell.c.y + dy}, h});

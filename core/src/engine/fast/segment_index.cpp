@@ -63,8 +63,11 @@ SegmentIndex::SegmentIndex(const IRings& rings, double cell) : rings_(rings) {
   row_items_.resize(row_start_.back());
   std::vector<std::uint32_t> cell_fill(cell_start_.begin(), cell_start_.end() - 1);
   std::vector<std::uint32_t> row_fill(row_start_.begin(), row_start_.end() - 1);
-  visit([&](std::size_t c, std::size_t s) { cell_items_[cell_fill[c]++] = static_cast<std::uint32_t>(s); },
-        [&](std::size_t r, std::size_t s) { row_items_[row_fill[r]++] = static_cast<std::uint32_t>(s); });
+  visit([&](std::size_t c,
+            std::size_t s) { cell_items_[cell_fill[c]++] = static_cast<std::uint32_t>(s); },
+        [&](std::size_t r, std::size_t s) {
+          row_items_[row_fill[r]++] = static_cast<std::uint32_t>(s);
+        });
 }
 
 int SegmentIndex::clamp_col(double x) const {
@@ -78,6 +81,10 @@ int SegmentIndex::clamp_row(double y) const {
 }
 
 int SegmentIndex::winding(IPt p) const {
+  return winding_excluding(p, static_cast<std::uint32_t>(-1));
+}
+
+int SegmentIndex::winding_excluding(IPt p, std::uint32_t ring) const {
   if (segments_.empty()) return 0;
   // Every edge crossing the horizontal line through p spans p.y, so it is listed in p's row
   // (rows are clamped, and an edge's rows cover its whole y-range).
@@ -85,6 +92,7 @@ int SegmentIndex::winding(IPt p) const {
   int w = 0;
   for (std::uint32_t k = row_start_[row]; k < row_start_[row + 1]; ++k) {
     const Segment& g = segments_[row_items_[k]];
+    if (g.ring == ring) continue;
     if (g.a.y <= p.y) {
       if (g.b.y > p.y && orientation(g.a, g.b, p) > 0) ++w;
     } else if (g.b.y <= p.y && orientation(g.a, g.b, p) < 0) {

@@ -50,6 +50,8 @@ class SegmentIndex {
 
   // Exact winding number of p (nonzero = inside). Unspecified for p on an edge.
   [[nodiscard]] int winding(IPt p) const;
+  // The same, ignoring the edges of one ring (p may lie on that ring).
+  [[nodiscard]] int winding_excluding(IPt p, std::uint32_t ring) const;
 
   // Distance from p to the nearest edge, or `cutoff` if no edge is closer than cutoff.
   [[nodiscard]] double distance(DPt p, double cutoff) const;

@@ -1,6 +1,4 @@
 #include "yes_certificate.hpp"
-#include <cstdio>
-#include <cstdlib>
 
 #include <algorithm>
 
@@ -24,29 +22,26 @@ bool within(const SegmentIndex& region, IPt v, double bound) {
 bool verify_yes(const YesCheckInput& in, const IRegion& p, const CancelHook& cancel) {
   if (p.empty()) return false;
   const SegmentIndex pi(flatten(p), in.radius / 2.0);
-  const bool dbg = std::getenv("PENSHAPE_FAST_DEBUG") != nullptr;
-  if (!rings_are_simple(pi)) { if (dbg) std::fprintf(stderr, "P not simple\n"); return false; }
+  if (!is_certifiable_region(pi)) return false;
 
-  const double level_a = in.tolerance - in.eta - kParamRounding; // <= eps - η
-  const double level_b = in.radius + in.tolerance - kParamRounding;       // <= r + eps
+  const double level_a = in.tolerance - in.eta - kParamRounding;    // <= eps - η
+  const double level_b = in.radius + in.tolerance - kParamRounding; // <= r + eps
 
   // (A2) no component of P lies wholly where d(·, Q̃) > level_a.
   for (const IPolygon& poly : p) {
-    if (!within(*in.q, poly.outer.front(), level_a - kDistanceSlack)) { if (dbg) std::fprintf(stderr, "A2\n"); return false; }
+    if (!within(*in.q, poly.outer.front(), level_a - kDistanceSlack)) return false;
   }
   // (B2) no component of Q lies wholly where d(·, P) > level_b (its vertex is within η).
   for (const IPt& v : in.q_component_vertices) {
-    if (!within(pi, v, level_b - kInputRounding - kDistanceSlack)) { if (dbg) std::fprintf(stderr, "B2\n"); return false; }
+    if (!within(pi, v, level_b - kInputRounding - kDistanceSlack)) return false;
   }
   // (A1) the level set {d(·, Q̃) = level_a} keeps distance > r from P.
   if (!level_set_avoids({in.q, level_a, &pi, in.radius + kParamRounding, in.max_sagitta}, cancel)) {
-    if (dbg) std::fprintf(stderr, "A1\n");
     return false;
   }
-  if (dbg) std::fprintf(stderr, "A ok\n");
   // (B1) the level set {d(·, P) = level_b} stays outside Q (distance > η from Q̃).
-  return level_set_avoids({&pi, level_b, in.q, std::max(1.0, in.eta + kParamRounding), in.max_sagitta},
-                          cancel);
+  return level_set_avoids(
+      {&pi, level_b, in.q, std::max(1.0, in.eta + kParamRounding), in.max_sagitta}, cancel);
 }
 
 } // namespace penshape::fast

@@ -13,12 +13,12 @@
 namespace penshape::fast {
 
 struct YesCheckInput {
-  const SegmentIndex* q = nullptr;           // Q̃ or a simplification (simple rings, checked)
-  double eta = 0.0;                          // proven bound on H(Q, that region), grid units
-  std::vector<IPt> q_component_vertices;     // one grid vertex per polygon of Q (its outer ring)
-  double radius = 0.0;                       // r, grid units
-  double tolerance = 0.0;                    // eps, grid units
-  double max_sagitta = 1.0;                  // chord error when walking arcs
+  const SegmentIndex* q = nullptr;       // Q̃ or a simplification (simple rings, checked)
+  double eta = 0.0;                      // proven bound on H(Q, that region), grid units
+  std::vector<IPt> q_component_vertices; // one grid vertex per polygon of Q (its outer ring)
+  double radius = 0.0;                   // r, grid units
+  double tolerance = 0.0;                // eps, grid units
+  double max_sagitta = 1.0;              // chord error when walking arcs
 };
 
 bool verify_yes(const YesCheckInput& in, const IRegion& p, const CancelHook& cancel);
