@@ -178,10 +178,13 @@ class Walker {
     const double deep = q_.level - half - s.error - kDistanceSlack;
     // Distance every represented curve point must keep from B's edges.
     const double need = q_.clearance + s.error + kDistanceSlack;
-    if (far_from_b(s, 0.0, 1.0, need) && outside_b(mid)) return true;
+    const bool far = far_from_b(s, 0.0, 1.0, need);
+    if (far && outside_b(mid)) return true;
     if (deep > 0.0 && q_.a->distance(mid, deep) < deep) return true;
-    // Near B: drop the parts provably closer than `level` to A, check the remaining gaps.
+    // Near or inside B: drop the parts provably closer than `level` to A (all of the piece when
+    // it lies inside B), then check the remaining gaps.
     std::vector<Interval> forbidden;
+    if (far) forbidden.push_back({0.0, 1.0});
     const DPt p = s.p, q = s.q;
     q_.b->for_each_near(std::min(p.x, q.x) - need - 1, std::min(p.y, q.y) - need - 1,
                         std::max(p.x, q.x) + need + 1, std::max(p.y, q.y) + need + 1,
@@ -193,13 +196,6 @@ class Walker {
                         });
     std::vector<Interval> cover = cover_intervals(s, forbidden);
     return gaps_are_clear(s, cover, need);
-  }
-
-  // A piece lying inside B passes only if all of it is provably off the level set.
-  bool covered_entirely(const Piece& s) {
-    std::vector<Interval> all{{0.0, 1.0}};
-    const std::vector<Interval> cover = cover_intervals(s, all);
-    return cover.size() == 1 && cover.front().lo <= 0.0 && cover.front().hi >= 1.0;
   }
 
   // Verified intervals of the piece whose points are closer than `level` to some edge of A;
