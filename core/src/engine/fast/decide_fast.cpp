@@ -20,9 +20,10 @@ namespace {
 
 using namespace penshape::fast;
 
-// Budget of the working precision delta (grid units d): each chain keeps 2·margin of slack for
-// the certificates, disks are drawn with arc tolerance d/4 and P is simplified by d/8; together
-// less than the paper's 2·delta (Theorems 11, 13), so the answers match the literal algorithm's.
+// Budget of the working precision delta (grid units d), see README.md: every stage of each chain
+// loses less than d (the paper allows d per stage, Theorems 11 and 13): stage 1 loses
+// 2·margin + input + arc = 7d/8, stage 2 2·margin + arc = 5d/8, and the YES test of stage 3 is
+// exact up to the simplification of P and the input (d/16 + d/4).
 struct Budget {
   double margin;        // slack left for the certificates on each side
   double arc_tolerance; // chord depth of the round joins
@@ -30,7 +31,7 @@ struct Budget {
   double input;         // Douglas-Peucker tolerance for the copy of Q̃ the chains offset
 };
 
-Budget budget(double d) { return {d / 16.0, d / 2.0, d / 16.0, d / 8.0}; }
+Budget budget(double d) { return {d / 16.0, d / 2.0, d / 16.0, d / 4.0}; }
 
 void check_cancel(const CancelHook& cancel) {
   if (cancel && cancel()) throw Cancelled();

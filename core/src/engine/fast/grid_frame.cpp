@@ -67,11 +67,32 @@ double GridFrame::units(const Rational& length) const {
   return Rational(length * pow2(k_)).get_d();
 }
 
+namespace {
+
+// round(v · 2^k) - t = floor((2 · num · 2^k + den) / (2 · den)) - t with integer operations only
+// (a rational product would pay for a gcd per coordinate).
+std::int64_t round_scaled(const Rational& v, int k, const mpz_class& t, mpz_class& num,
+                          mpz_class& den) {
+  num = v.get_num();
+  den = v.get_den();
+  if (k >= 0) {
+    mpz_mul_2exp(num.get_mpz_t(), num.get_mpz_t(), static_cast<mp_bitcnt_t>(k + 1));
+  } else {
+    mpz_mul_2exp(den.get_mpz_t(), den.get_mpz_t(), static_cast<mp_bitcnt_t>(-k));
+    mpz_mul_2exp(num.get_mpz_t(), num.get_mpz_t(), 1);
+  }
+  num += den;
+  den *= 2;
+  mpz_fdiv_q(num.get_mpz_t(), num.get_mpz_t(), den.get_mpz_t());
+  num -= t;
+  return static_cast<std::int64_t>(num.get_si());
+}
+
+} // namespace
+
 IPt GridFrame::round(const ExactPoint& p) const {
-  const Rational half(1, 2);
-  const mpz_class x = floor_q(p.x * pow2(k_) + half) - tx_;
-  const mpz_class y = floor_q(p.y * pow2(k_) + half) - ty_;
-  return {static_cast<std::int64_t>(x.get_si()), static_cast<std::int64_t>(y.get_si())};
+  mpz_class num, den;
+  return {round_scaled(p.x, k_, tx_, num, den), round_scaled(p.y, k_, ty_, num, den)};
 }
 
 IRings GridFrame::round(const PolygonSet& q) const {
