@@ -40,7 +40,8 @@ TEST(FastEngineParts, GridFrameRoundTripsExactly) {
        {}});
   const DeconstructParams p = params_of(1, Rational(1, 10), Rational(1, 80));
   const fast::GridFrame frame(q, p);
-  const Rational unit = Rational(1) / Rational(mpz_class(1) << frame.scale_exponent());
+  const Rational unit =
+      Rational(1) / Rational(mpz_class(1) << static_cast<mp_bitcnt_t>(frame.scale_exponent()));
   for (const auto& v : q.polygons[0].outer) {
     const ExactPoint back = frame.exact(frame.round(v));
     // Rounding to the grid moves each coordinate by at most half a grid unit.

@@ -194,8 +194,10 @@ class Walker {
                           if (stadium_interval(s, g.da(), g.db(), need + 1.0, iv))
                             forbidden.push_back(iv);
                         });
-    std::vector<Interval> cover = cover_intervals(s, forbidden);
-    return gaps_are_clear(s, cover, need);
+    if (gaps_are_clear(s, cover_intervals(s, forbidden), need)) return true;
+    // A gap may have failed only for lying inside B away from its edges: try to cover it all.
+    const std::vector<Interval> all{{0.0, 1.0}};
+    return gaps_are_clear(s, cover_intervals(s, all), need);
   }
 
   // Verified intervals of the piece whose points are closer than `level` to some edge of A;

@@ -39,9 +39,11 @@ bool verify_yes(const YesCheckInput& in, const IRegion& p, const CancelHook& can
   if (!level_set_avoids({in.q, level_a, &pi, in.radius + kParamRounding, in.max_sagitta}, cancel)) {
     return false;
   }
-  // (B1) the level set {d(·, P) = level_b} stays outside Q (distance > η from Q̃).
+  // (B1) the level set {d(·, P) = level_b} stays outside Q: farther than η0 from Q̃ (the
+  // unsimplified grid input, so the simplification does not eat into this margin).
   return level_set_avoids(
-      {&pi, level_b, in.q, std::max(1.0, in.eta + kParamRounding), in.max_sagitta}, cancel);
+      {&pi, level_b, in.q_grid, std::max(1.0, kInputRounding + kParamRounding), in.max_sagitta},
+      cancel);
 }
 
 } // namespace penshape::fast
