@@ -170,8 +170,7 @@ DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& para
     check_cancel(cancel);
     if (!pi_hat.empty()) {
       const IRegion p = simplify(pi_hat, b.simplify);
-      const YesCheckInput in{&*input.index, input.eta,     &q_index, q_vertices, r,
-                             eps,           b.margin / 4.0};
+      const YesCheckInput in{&*input.index, input.eta, &q_index, q_vertices, r, eps, b.margin};
       if (verify_yes(in, p, cancel)) {
         result.answer = Answer::kYes;
         result.solution = to_polygon_set(frame, p);
