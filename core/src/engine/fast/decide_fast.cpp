@@ -37,13 +37,14 @@ void check_cancel(const CancelHook& cancel) {
   if (cancel && cancel()) throw Cancelled();
 }
 
-// One offset stage, with the disk-size limit enforced before Clipper runs.
+// One offset stage, with the disk-size limit enforced before Clipper runs. `unit` is the number
+// of grid units per input unit (for the message).
 IRegion offset_stage(const IRings& rings, double delta, double tol, const DeconstructLimits& limits,
-                     std::size_t& disk_vertices) {
+                     double unit, std::size_t& disk_vertices) {
   const double steps = std::ceil(round_join_steps(delta, tol));
   if (steps > static_cast<double>(limits.max_disk_vertices)) {
-    throw InvalidInput("fast engine: a disk of radius " + std::to_string(std::fabs(delta)) +
-                       " grid units at tolerance " + std::to_string(tol) + " needs " +
+    throw InvalidInput("fast engine: a disk of radius " + std::to_string(std::fabs(delta) / unit) +
+                       " at tolerance " + std::to_string(tol / unit) + " needs " +
                        std::to_string(static_cast<long long>(steps)) +
                        " vertices, over the limit of " + std::to_string(limits.max_disk_vertices) +
                        " (precision too fine for the radius)");
@@ -146,6 +147,7 @@ DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& para
   const double r = frame.units(params.radius);
   const double eps = frame.units(params.tolerance);
   const double d = frame.units(params.precision);
+  const double unit = frame.units(Rational(1));
 
   const IRings q_grid = frame.round(q);
   if (q_grid.empty()) return finish();
@@ -163,10 +165,10 @@ DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& para
   const double sigma = input.eta - kInputRounding;
   if (input.index) {
     const IRegion q_eps = offset_stage(q_simple, eps - 2 * b.margin - sigma, b.arc_tolerance,
-                                       limits, result.disk_vertices);
+                                       limits, unit, result.disk_vertices);
     check_cancel(cancel);
     const IRegion pi_hat = offset_stage(flatten(q_eps), -(r + 2 * b.margin + b.arc_tolerance),
-                                        b.arc_tolerance, limits, result.disk_vertices);
+                                        b.arc_tolerance, limits, unit, result.disk_vertices);
     check_cancel(cancel);
     if (!pi_hat.empty()) {
       const IRegion p = simplify(pi_hat, b.simplify);
@@ -183,14 +185,14 @@ DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& para
 
   // Exterior chain (Algorithm 3 with margins): Q̂' ⊇ offset(Π, r + eps) with room to spare.
   const IRegion q_eps_out = offset_stage(q_simple, eps + 2 * b.margin + sigma + b.arc_tolerance,
-                                         b.arc_tolerance, limits, result.disk_vertices);
+                                         b.arc_tolerance, limits, unit, result.disk_vertices);
   check_cancel(cancel);
   const IRegion pi_out = offset_stage(flatten(q_eps_out), -(r - 2 * b.margin), b.arc_tolerance,
-                                      limits, result.disk_vertices);
+                                      limits, unit, result.disk_vertices);
   check_cancel(cancel);
   const IRegion q_prime_out =
       offset_stage(flatten(pi_out), r + eps + 2 * b.margin + b.arc_tolerance, b.arc_tolerance,
-                   limits, result.disk_vertices);
+                   limits, unit, result.disk_vertices);
   check_cancel(cancel);
   const IRegion diff = difference(q_grid, flatten(q_prime_out));
   if (diff.empty()) return finish();
