@@ -27,7 +27,7 @@ bool verify_yes(const YesCheckInput& in, const IRegion& p, const CancelHook& can
   const double level_a = in.tolerance - in.eta - kParamRounding;    // <= eps - η
   const double level_b = in.radius + in.tolerance - kParamRounding; // <= r + eps
 
-  // (A2) no component of P lies wholly where d(·, Q̃) > level_a.
+  // (A2) no component of P lies wholly where d(·, Q_s) > level_a (in.q is Q_s or Q̃).
   for (const IPolygon& poly : p) {
     if (!within(*in.q, poly.outer.front(), level_a - kDistanceSlack)) return false;
   }
@@ -35,7 +35,7 @@ bool verify_yes(const YesCheckInput& in, const IRegion& p, const CancelHook& can
   for (const IPt& v : in.q_component_vertices) {
     if (!within(pi, v, level_b - kInputRounding - kDistanceSlack)) return false;
   }
-  // (A1) the level set {d(·, Q̃) = level_a} keeps distance > r from P.
+  // (A1) the level set {d(·, Q_s) = level_a} keeps distance > r from P.
   if (!level_set_avoids({in.q, level_a, &pi, in.radius + kParamRounding, in.max_sagitta}, cancel)) {
     return false;
   }
