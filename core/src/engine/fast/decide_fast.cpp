@@ -171,7 +171,11 @@ DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& para
                                         b.arc_tolerance, limits, unit, result.disk_vertices);
     check_cancel(cancel);
     if (!pi_hat.empty()) {
-      const IRegion p = simplify(pi_hat, b.simplify);
+      // Ring-wise simplification is usually still a valid region; otherwise let Clipper union it.
+      IRegion p = simplify_rings_only(pi_hat, b.simplify);
+      if (p.empty() || !is_certifiable_region(SegmentIndex(flatten(p), r / 2.0))) {
+        p = simplify(pi_hat, b.simplify);
+      }
       const YesCheckInput in{&*input.index, input.eta, &q_index, q_vertices, r, eps, b.margin};
       if (verify_yes(in, p, cancel)) {
         result.answer = Answer::kYes;
