@@ -47,6 +47,14 @@ DeviceProfile build_profile(const DeviceIdentity& id, std::span<const std::uint8
         have_vendor = true;
       }
       break;
+    case Protocol::kWacomBamboo:
+      out.init = spec->init;
+      if (from_descriptor.empty() && spec->x_max > 0) {
+        vendor = wacom_bamboo_pen_layout(*spec);
+        have_vendor = true;
+        out.notes.push_back("Wacom mode switch (feature report) at open; Bamboo pen reports");
+      }
+      break;
     case Protocol::kUcLogic: {
       out.init = spec->init;
       for (const std::uint8_t index : vendor_string_indexes(out.protocol)) {

@@ -121,6 +121,25 @@ PenLayout wacom_graphire_pen_layout(const TabletSpec& spec) {
   return l;
 }
 
+PenLayout wacom_bamboo_pen_layout(const TabletSpec& spec) {
+  PenLayout l;
+  l.origin = "wacom-bamboo";
+  l.report_id = 0x02;
+  l.uses_report_id = true;
+  l.min_report_bytes = 9;
+  l.in_range = bit_flag(1, 6);
+  l.tip = bit_flag(1, 0);
+  l.barrel1 = bit_flag(1, 1);
+  l.barrel2 = bit_flag(1, 2);
+  l.eraser = bit_flag(1, 3);
+  l.x = value(16, 16, 0, spec.x_max);
+  l.y = value(32, 16, 0, spec.y_max);
+  l.pressure = value(48, 16, 0, static_cast<std::int32_t>(spec.pressure_max));
+  l.x_resolution = spec.x_resolution;
+  l.y_resolution = spec.y_resolution;
+  return l;
+}
+
 PenLayout xppen_pen_layout(const TabletSpec& spec) {
   PenLayout l;
   l.origin = "xppen";

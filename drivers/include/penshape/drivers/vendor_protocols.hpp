@@ -37,6 +37,12 @@ PenLayout uclogic_pen_layout(const UcLogicParams& params);
 // plus the low two bits of byte 7. Maxima and resolution from the tablet table row.
 PenLayout wacom_graphire_pen_layout(const TabletSpec& spec);
 
+// Wacom Bamboo-family pen report (ID 2, 9 or 10 bytes; Bamboo, Intuos PT, One by Wacom CTL-472)
+// after the mode-switch feature report 02 02: byte 1 bit 7 in range, bit 6 position valid
+// (proximity), bit 5 pressure and buttons valid, bit 3 eraser, bit 0 tip, bits 1-2 side
+// switches; X, Y, pressure little-endian 16-bit at bytes 2, 4, 6.
+PenLayout wacom_bamboo_pen_layout(const TabletSpec& spec);
+
 // XP-Pen/Ugee vendor-mode pen report after output report 02 B0 02|04 (ID 2, 10 bytes): byte 1
 // 0xA0 in range (bit 6 set: out of range), bit 0 tip, bits 1-2 side switches, 0xF0 pad frames;
 // X, Y, pressure little-endian 16-bit at bytes 2, 4, 6; signed tilt at bytes 8 and 9.
