@@ -44,6 +44,36 @@ TEST(VendorProtocols, WacomBambooAfterModeSwitch) {
   EXPECT_EQ(decode(p, {0x02, 0xE1, 0, 0}, s), DecodeStatus::kJunk); // too short
 }
 
+TEST(VendorProtocols, WacomIntuosScatteredFields) {
+  // Intuos Pro PTH-851: vendor-page descriptors only.
+  const DeviceProfile p = build_profile({Bus::kUsb, 0x056a, 0x0317, ""}, {});
+  EXPECT_EQ(p.protocol, Protocol::kWacomIntuos);
+  EXPECT_EQ(p.info.x_max, 65024);
+  EXPECT_EQ(p.info.pressure_max, 2047U);
+  PenSample s;
+  // General pen packet 0xA1: X = 0x1234 << 1 | 1 (byte 9 bit 1), Y = 0x0567 << 1 | 0,
+  // pressure = 0x80 << 3 | 0b11 << 1 | 1 = 1031, tilt X = (0x20 << 1 | 1) - 64 = 1,
+  // tilt Y = 0x50 - 64 = 16.
+  ASSERT_EQ(decode(p, {0x02, 0xA1, 0x12, 0x34, 0x05, 0x67, 0x80, 0xE0, 0xD0, 0x02}, s),
+            DecodeStatus::kPen);
+  EXPECT_EQ(s.x, 0x2469);
+  EXPECT_EQ(s.y, 0x0ACE);
+  EXPECT_EQ(s.pressure, 1031U);
+  EXPECT_EQ(s.tilt_x, 1);
+  EXPECT_EQ(s.tilt_y, 16);
+  EXPECT_TRUE(s.tip);
+  EXPECT_TRUE(s.in_range);
+  // Side switch 2, hovering with pressure 5 (not above the threshold of 10): no tip.
+  ASSERT_EQ(decode(p, {0x02, 0xA5, 0, 0, 0, 0, 0x00, 0x80, 0x00, 0x00}, s), DecodeStatus::kPen);
+  EXPECT_EQ(s.pressure, 5U);
+  EXPECT_FALSE(s.tip);
+  EXPECT_EQ(s.buttons, static_cast<std::uint32_t>(kBarrel2));
+  // Leaving proximity, then a tool announcement (no position): not a pen sample.
+  ASSERT_EQ(decode(p, {0x02, 0x80, 0, 0, 0, 0, 0, 0, 0, 0}, s), DecodeStatus::kPen);
+  EXPECT_FALSE(s.in_range);
+  EXPECT_EQ(decode(p, {0x02, 0xC2, 0x08, 0x02, 0, 0, 0, 0, 0, 0}, s), DecodeStatus::kOther);
+}
+
 TEST(VendorProtocols, GraphireMouseIsNotThePen) {
   const DeviceProfile p = build_profile({Bus::kUsb, 0x056a, 0x0061, ""}, {});
   PenSample s;
