@@ -1,5 +1,7 @@
 #include "penshape/drivers/recording.hpp"
 
+#include "penshape/drivers/pen_layout.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <cstdio>
@@ -354,6 +356,16 @@ Recording load_recording_file(const std::filesystem::path& path) {
     case RecordingFormat::kUsbhidDump: {
       const UsbhidDump dump = read_usbhid_dump(text);
       int iface = dump.descriptors.empty() ? 0 : dump.descriptors.begin()->first;
+      // Descriptors only: the first interface whose descriptor declares a pen.
+      for (const auto& [i, bytes] : dump.descriptors) {
+        try {
+          if (!find_pen_layouts(parse_report_descriptor(bytes)).empty()) {
+            iface = i;
+            break;
+          }
+        } catch (const DescriptorError&) {
+        }
+      }
       std::size_t most = 0;
       for (const auto& [i, events] : dump.streams) {
         if (events.size() > most) {

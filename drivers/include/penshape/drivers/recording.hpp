@@ -85,7 +85,8 @@ Recording recording_from_dump(const UsbhidDump& dump, int interface, const Devic
 
 // Loads any supported file as a Recording: hid-recorder text; a usbhid-dump (the interface with
 // the most reports, with that interface's descriptor when the dump has one; a dump holding only
-// descriptors gives the first); or raw descriptor bytes (no events). Throws RecordingError.
+// descriptors gives the first that declares a pen, else the first); or raw descriptor bytes (no
+// events). Throws RecordingError.
 Recording load_recording_file(const std::filesystem::path& path);
 
 // Reads a whole file (binary). Throws RecordingError (offset 0) when unreadable or too large.
