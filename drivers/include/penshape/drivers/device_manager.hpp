@@ -85,6 +85,9 @@ struct DeviceManagerOptions {
   SegmenterOptions segmenter;
   std::chrono::milliseconds rescan_interval{3000}; // fallback rescan when no event arrives
   std::chrono::milliseconds read_poll{100};        // bounds each blocking read
+  // A device that just vanished is not reopened sooner than this (a node that keeps failing
+  // right after open must not turn the rescan into a loop).
+  std::chrono::milliseconds reattach_backoff{1000};
 };
 
 class DeviceManager {
@@ -129,6 +132,7 @@ class DeviceManager {
   mutable std::mutex mutex_;
   mutable std::condition_variable changed_;
   std::map<DeviceId, std::unique_ptr<Device>> devices_;
+  std::map<std::string, std::chrono::steady_clock::time_point> gone_at_; // key -> last vanish
   std::atomic<DeviceId> next_id_{1};
   std::atomic<std::uint64_t> next_stroke_id_{1};
   std::atomic<bool> stopping_{false};
