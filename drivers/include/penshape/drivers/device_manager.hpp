@@ -7,9 +7,10 @@
 // ends that stroke cleanly (delivered before its detach event) and comes back as a new attach
 // when it reappears (replug, resume from suspend).
 //
-// Threading: callbacks run on the device's reader thread (attach on the hotplug thread). They
-// must be quick and thread-safe; a daemon typically pushes into its own queues. Events of one
-// device arrive in order: attach, samples and strokes, detach.
+// Threading: callbacks run on the device's reader thread (attach on the hotplug thread, or on
+// the caller's thread for attach_source/attach_replay). They must be quick and thread-safe; a
+// daemon typically pushes into its own queues (DeviceEventQueue). Events of one device arrive
+// in order: attach, samples and strokes, detach.
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
