@@ -155,7 +155,7 @@ std::optional<PolygonSet> simplify_fast_solution(const PolygonSet& q,
   if (!is_certifiable_region(q_index)) return std::nullopt;
   std::vector<IPt> q_vertices;
   for (const auto& poly : q.polygons) q_vertices.push_back(frame.round(poly.outer.front()));
-  const YesCheckInput in{&q_index, kInputRounding, q_vertices, r, eps, d / 32.0};
+  const YesCheckInput in{&q_index, kInputRounding, &q_index, q_vertices, r, eps, d / 32.0};
 
   const IRegion raw = to_grid(frame, solution);
   IRings capped;
