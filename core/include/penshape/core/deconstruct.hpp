@@ -69,12 +69,17 @@ struct DeconstructResult {
 // crossing (within a ring or between rings), every hole inside its outer ring and outside the
 // other holes, polygons pairwise disjoint (one may sit inside another's hole). Orientation is not
 // checked (normalize_orientation fixes it). Throws InvalidInput naming polygon, ring and vertex.
-void validate_region(const PolygonSet& q, std::size_t max_vertices = 200'000);
+// Cost: O(n log n) plus, for the crossing test, O(n·k) with k the number of edges whose x-ranges
+// overlap a vertical line (small for real outlines, up to n for adversarial combs); cancel is
+// checked every 256 edges of that sweep (throws Cancelled).
+void validate_region(const PolygonSet& q, std::size_t max_vertices = 200'000,
+                     const CancelHook& cancel = {});
 
 // Validates Q (simple rings, no repeated vertices, holes inside outers, finite) and the
 // parameters; throws InvalidInput naming the problem.
 void validate_deconstruct_input(const PolygonSet& q, const DeconstructParams& params,
-                                const DeconstructLimits& limits = {});
+                                const DeconstructLimits& limits = {},
+                                const CancelHook& cancel = {});
 
 // APPROXDECIDE(Q, r, eps, delta) with the chosen engine.
 DeconstructResult deconstruct(const PolygonSet& q, const DeconstructParams& params,
