@@ -27,7 +27,7 @@ const char* to_string(EngineKind e) { return e == EngineKind::kFast ? "fast" : "
 DeconstructResult deconstruct(const PolygonSet& q, const DeconstructParams& params,
                               const CancelHook& cancel, const DeconstructLimits& limits) {
   const auto start = std::chrono::steady_clock::now();
-  validate_deconstruct_input(q, params, limits);
+  validate_deconstruct_input(q, params, limits, cancel);
   DeconstructResult result;
   if (params.radius <= params.tolerance) {
     // offset(Q, r) is r-close to Q and r <= eps: P = Q is a solution (paper, Section 2).
