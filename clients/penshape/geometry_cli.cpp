@@ -1,0 +1,113 @@
+#include "geometry_cli.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include "penshape/core/polygon_io.hpp"
+
+namespace penshape::cli {
+
+std::optional<Rational> optional_rational(const ParsedArgs& parsed, const char* name) {
+  const auto text = parsed.value(name);
+  if (!text) return std::nullopt;
+  try {
+    return parse_rational(*text);
+  } catch (const InvalidInput&) {
+    throw UsageError(std::string("option '") + name + "' needs a number, got '" + *text + "'");
+  }
+}
+
+Rational required_rational(const ParsedArgs& parsed, const char* name) {
+  auto v = optional_rational(parsed, name);
+  if (!v) throw UsageError(std::string("option '") + name + "' is required");
+  return *v;
+}
+
+EngineKind engine_option(const ParsedArgs& parsed) {
+  const std::string engine = parsed.value("--engine").value_or("fast");
+  if (engine == "fast") return EngineKind::kFast;
+  if (engine == "reference") return EngineKind::kReference;
+  throw UsageError("option '--engine' must be fast or reference, got '" + engine + "'");
+}
+
+PolygonSet read_polygon_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("cannot read '" + path + "'");
+  std::ostringstream text;
+  text << in.rdbuf();
+  try {
+    return read_polygon_text(text.str());
+  } catch (const InvalidInput& e) {
+    throw InputError(path + ": " + e.what());
+  }
+}
+
+Rational bounding_width(const PolygonSet& q) {
+  if (q.empty() || q.polygons[0].outer.empty()) return Rational(0);
+  Rational lo = q.polygons[0].outer[0].x;
+  Rational hi = lo;
+  for (const auto& p : q.polygons) {
+    for (const auto& v : p.outer) {
+      if (v.x < lo) lo = v.x;
+      if (v.x > hi) hi = v.x;
+    }
+  }
+  return hi - lo;
+}
+
+ReportedSolution report_solution(const PolygonSet& q, const DeconstructResult& raw, bool simplify) {
+  ReportedSolution out;
+  out.result = raw;
+  out.raw_vertices = distinct_vertex_count(raw.solution);
+  out.solution_vertices = out.raw_vertices;
+  if (simplify && raw.answer == Answer::kYes) {
+    SimplifyResult s = simplify_solution(q, raw);
+    out.result = std::move(s.result);
+    out.raw_vertices = s.raw_vertices;
+    out.solution_vertices = s.solution_vertices;
+    out.simplified = s.simplified;
+  }
+  return out;
+}
+
+namespace {
+void ring_json(JsonWriter& json, const Ring& ring) {
+  json.begin_array();
+  for (const auto& p : ring) json.begin_array().number(to_double(p.x)).number(to_double(p.y)).end_array();
+  json.end_array();
+}
+} // namespace
+
+void write_polygon_set(JsonWriter& json, const PolygonSet& set) {
+  json.begin_array();
+  for (const auto& p : set.polygons) {
+    json.begin_object();
+    json.key("outer");
+    ring_json(json, p.outer);
+    json.key("holes").begin_array();
+    for (const auto& h : p.holes) ring_json(json, h);
+    json.end_array();
+    json.end_object();
+  }
+  json.end_array();
+}
+
+void write_solution_keys(JsonWriter& json, const ReportedSolution& s) {
+  json.key("solution");
+  write_polygon_set(json, s.result.solution);
+  json.key("solution_vertices").integer(static_cast<std::int64_t>(s.solution_vertices));
+  json.key("raw_vertices").integer(static_cast<std::int64_t>(s.raw_vertices));
+  json.key("simplified").boolean(s.simplified);
+}
+
+void write_params(JsonWriter& json, const DeconstructParams& params) {
+  json.begin_object();
+  json.key("radius").number(to_double(params.radius));
+  json.key("tolerance").number(to_double(params.tolerance));
+  json.key("precision").number(to_double(params.precision));
+  json.end_object();
+}
+
+double seconds(std::chrono::nanoseconds d) { return std::chrono::duration<double>(d).count(); }
+
+} // namespace penshape::cli

@@ -1,0 +1,53 @@
+#pragma once
+// What the offline geometry subcommands share: exact numeric options, the engine option,
+// reading a polygon file, simplifying a solution, and the JSON shapes of solutions.
+#include <chrono>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "args.hpp"
+#include "json_writer.hpp"
+#include "penshape/core/deconstruct.hpp"
+#include "penshape/core/simplify.hpp"
+
+namespace penshape::cli {
+
+// Bad input that is not a usage error (unreadable or malformed file): exit code 2.
+struct InputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// An option read exactly (decimal or p/q); UsageError when missing (required) or malformed.
+Rational required_rational(const ParsedArgs& parsed, const char* name);
+std::optional<Rational> optional_rational(const ParsedArgs& parsed, const char* name);
+
+// --engine fast|reference (default fast).
+EngineKind engine_option(const ParsedArgs& parsed);
+
+// x-y text or WKT; InputError naming the file (and line) when unreadable or malformed.
+PolygonSet read_polygon_file(const std::string& path);
+
+// Width of the bounding box (x extent); 0 for an empty set.
+Rational bounding_width(const PolygonSet& q);
+
+// The solution a subcommand reports: simplified (when asked and when it helps) with the vertex
+// counts before and after.
+struct ReportedSolution {
+  DeconstructResult result;
+  std::size_t raw_vertices = 0;
+  std::size_t solution_vertices = 0;
+  bool simplified = false;
+};
+ReportedSolution report_solution(const PolygonSet& q, const DeconstructResult& raw, bool simplify);
+
+// [{"outer": [[x,y],...], "holes": [[[x,y],...],...]}, ...]
+void write_polygon_set(JsonWriter& json, const PolygonSet& set);
+// "solution", "solution_vertices", "raw_vertices", "simplified" keys of a reported solution.
+void write_solution_keys(JsonWriter& json, const ReportedSolution& s);
+// {"radius": r, "tolerance": e, "precision": d}
+void write_params(JsonWriter& json, const DeconstructParams& params);
+
+double seconds(std::chrono::nanoseconds d);
+
+} // namespace penshape::cli
