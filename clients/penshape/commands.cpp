@@ -3,9 +3,10 @@
 #include <array>
 
 #include "command.hpp"
+#include "deconstruct_command.hpp"
 #include "hid_describe_command.hpp"
 #include "replay_command.hpp"
-#include "deconstruct_command.hpp"
+#include "search_commands.hpp"
 #include "version_command.hpp"
 
 namespace penshape::cli {
@@ -20,6 +21,12 @@ std::span<const Subcommand> subcommands() {
                  &run_replay},
       Subcommand{"deconstruct", "is a polygon file an approximate offset? (offset deconstruction)",
                  &run_deconstruct},
+      Subcommand{"search-tolerance", "the smallest tolerance for a radius (ε̂ search, certified)",
+                 &run_search_tolerance},
+      Subcommand{"search-radius", "the radii that have a solution for a tolerance ([0, r*])",
+                 &run_search_radius},
+      Subcommand{"suggest-radius", "radii where r / ε̂(r) peaks, with their solutions",
+                 &run_suggest_radius},
   };
   return kCommands;
 }

@@ -8,8 +8,8 @@
 #include <string>
 
 #include "args.hpp"
-#include "geometry_cli.hpp"
 #include "command.hpp"
+#include "geometry_cli.hpp"
 #include "json_writer.hpp"
 #include "penshape/core/arc_offset.hpp"
 #include "penshape/core/deconstruct.hpp"
@@ -80,8 +80,7 @@ void offset_json(JsonWriter& json, const CurvedRegion& region) {
   json.key("offset_max_error").number(region.max_error);
 }
 
-void print_json(const ReportedSolution& rep, std::size_t input_vertices,
-                const CurvedRegion* arcs) {
+void print_json(const ReportedSolution& rep, std::size_t input_vertices, const CurvedRegion* arcs) {
   const DeconstructResult& res = rep.result;
   JsonWriter json;
   json.begin_object();
@@ -104,8 +103,7 @@ void print_json(const ReportedSolution& rep, std::size_t input_vertices,
   std::puts(json.str().c_str());
 }
 
-void print_text(const ReportedSolution& rep, std::size_t input_vertices,
-                const CurvedRegion* arcs) {
+void print_text(const ReportedSolution& rep, std::size_t input_vertices, const CurvedRegion* arcs) {
   const DeconstructResult& res = rep.result;
   std::printf("answer: %s\nengine: %s\nseconds: %.6f\ninput vertices: %zu\n", to_string(res.answer),
               to_string(res.engine), std::chrono::duration<double>(res.elapsed).count(),
@@ -138,9 +136,9 @@ void print_text(const ReportedSolution& rep, std::size_t input_vertices,
 } // namespace
 
 int run_deconstruct(std::span<const std::string_view> args) {
-  const ParsedArgs parsed(
-      args, {.flags = {"--json", "--help", "--arcs", "--simplify", "--no-simplify"},
-             .options = {"--radius", "--tolerance", "--precision", "--engine"}});
+  const ParsedArgs parsed(args,
+                          {.flags = {"--json", "--help", "--arcs", "--simplify", "--no-simplify"},
+                           .options = {"--radius", "--tolerance", "--precision", "--engine"}});
   if (parsed.flag("--help")) {
     std::puts(kHelp);
     return kExitOk;

@@ -73,7 +73,8 @@ ReportedSolution report_solution(const PolygonSet& q, const DeconstructResult& r
 namespace {
 void ring_json(JsonWriter& json, const Ring& ring) {
   json.begin_array();
-  for (const auto& p : ring) json.begin_array().number(to_double(p.x)).number(to_double(p.y)).end_array();
+  for (const auto& p : ring)
+    json.begin_array().number(to_double(p.x)).number(to_double(p.y)).end_array();
   json.end_array();
 }
 } // namespace

@@ -11,9 +11,9 @@
 namespace penshape::cli {
 
 int run_search_radius(std::span<const std::string_view> args) {
-  const ParsedArgs parsed(args, {.flags = {"--json", "--help", "--no-simplify"},
-                                 .options = {"--tolerance", "--precision", "--engine",
-                                             "--max-calls"}});
+  const ParsedArgs parsed(args,
+                          {.flags = {"--json", "--help", "--no-simplify"},
+                           .options = {"--tolerance", "--precision", "--engine", "--max-calls"}});
   if (parsed.flag("--help")) {
     std::puts(
         "usage: penshape search-radius FILE --tolerance E [--precision P] [--max-calls N]\n"
@@ -32,7 +32,8 @@ int run_search_radius(std::span<const std::string_view> args) {
   RadiusSearchOptions opt;
   opt.precision = optional_rational(parsed, "--precision").value_or(tolerance / 4);
   if (const auto calls = parsed.number("--max-calls")) {
-    if (*calls < 1 || *calls > 100000) throw UsageError("option '--max-calls' must be in [1, 100000]");
+    if (*calls < 1 || *calls > 100000)
+      throw UsageError("option '--max-calls' must be in [1, 100000]");
     opt.max_decider_calls = static_cast<std::size_t>(*calls);
   }
   const EngineKind engine = engine_option(parsed);
@@ -60,8 +61,8 @@ int run_search_radius(std::span<const std::string_view> args) {
       std::printf("r* in [%.9g, %.9g]%s (tolerance %g)\n", to_double(res.r_low),
                   to_double(res.r_high), res.converged ? "" : " (not converged)",
                   to_double(tolerance));
-      std::printf("certified solution at r = %.9g: %zu vertices (raw %zu)\n",
-                  to_double(res.r_low), rep.solution_vertices, rep.raw_vertices);
+      std::printf("certified solution at r = %.9g: %zu vertices (raw %zu)\n", to_double(res.r_low),
+                  rep.solution_vertices, rep.raw_vertices);
       std::printf("%zu decider calls (%zu undecided), %.3f s\n", res.decider_calls,
                   res.undecided_calls, seconds(res.elapsed));
     }

@@ -15,12 +15,14 @@ int run_search_tolerance(std::span<const std::string_view> args) {
                                  .options = {"--radius", "--precision", "--engine"}});
   if (parsed.flag("--help")) {
     std::puts(
-        "usage: penshape search-tolerance FILE --radius R [--precision D] [--engine fast|reference]\n"
+        "usage: penshape search-tolerance FILE --radius R [--precision D] [--engine "
+        "fast|reference]\n"
         "                                 [--no-simplify] [--json]\n\n"
         "Finds an interval [eps_low, eps_high] of width <= D (default R/100) holding the\n"
         "smallest tolerance for which FILE is within that Hausdorff distance of an R-offset\n"
         "(APPROXSEARCHEPS), and a certified solution at eps_solution <= that tolerance + D.\n"
-        "--json keys: radius, eps_low, eps_high, eps_solution, answer, solution, solution_vertices,\n"
+        "--json keys: radius, eps_low, eps_high, eps_solution, answer, solution, "
+        "solution_vertices,\n"
         "raw_vertices, simplified, decider_calls, seconds, engine.\n"
         "Exit codes: 0 ok, 2 bad input, 1 internal failure.");
     return kExitOk;
@@ -31,8 +33,7 @@ int run_search_tolerance(std::span<const std::string_view> args) {
   const EngineKind engine = engine_option(parsed);
   try {
     const PolygonSet q = read_polygon_file(parsed.positionals().front());
-    const ToleranceSearchResult res =
-        search_tolerance(make_decider(q, engine), radius, precision);
+    const ToleranceSearchResult res = search_tolerance(make_decider(q, engine), radius, precision);
     const ReportedSolution rep = report_solution(q, res.solution, !parsed.flag("--no-simplify"));
     if (parsed.flag("--json")) {
       JsonWriter json;

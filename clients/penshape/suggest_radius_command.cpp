@@ -18,7 +18,8 @@ int run_suggest_radius(std::span<const std::string_view> args) {
   if (parsed.flag("--help")) {
     std::puts(
         "usage: penshape suggest-radius FILE [--from R0] [--to R1] [--samples N]\n"
-        "                               [--engine fast|reference] [--no-simplify] [--quiet] [--json]\n\n"
+        "                               [--engine fast|reference] [--no-simplify] [--quiet] "
+        "[--json]\n\n"
         "Samples J(r) = r / eps_hat(r) at N radii (default 20) in [R0, R1] (default w/100 to\n"
         "w/5, w the bounding-box width) and suggests the radii at its local maxima, best first,\n"
         "each with a certified solution. Progress goes to stderr (--quiet silences it).\n"
@@ -43,7 +44,8 @@ int run_suggest_radius(std::span<const std::string_view> args) {
     const bool tty = ::isatty(STDERR_FILENO) != 0;
     opt.progress = [&](std::size_t done, std::size_t total) {
       if (show) {
-        std::fprintf(stderr, tty ? "\rsuggest-radius: %zu/%zu radii" : "suggest-radius: %zu/%zu radii\n",
+        std::fprintf(stderr,
+                     tty ? "\rsuggest-radius: %zu/%zu radii" : "suggest-radius: %zu/%zu radii\n",
                      done, total);
         if (tty && done == total) std::fputc('\n', stderr);
       }
@@ -87,8 +89,8 @@ int run_suggest_radius(std::span<const std::string_view> args) {
       for (const auto& s : res.suggestions) {
         const ReportedSolution rep = report_solution(q, s.solution, simplify);
         std::printf("suggested radius %.6g (J = %.4g): solution at eps %.6g, %zu vertices\n",
-                    to_double(s.sample.radius), s.sample.j,
-                    to_double(s.solution.params.tolerance), rep.solution_vertices);
+                    to_double(s.sample.radius), s.sample.j, to_double(s.solution.params.tolerance),
+                    rep.solution_vertices);
       }
       std::printf("%zu decider calls, %.3f s\n", res.decider_calls, seconds(res.elapsed));
     }

@@ -1,6 +1,7 @@
 // Runs the real `penshape` binary as a user would.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
+
+#include "run_command.hpp"
 
 #include <array>
 #include <cstdio>
@@ -8,21 +9,10 @@
 
 namespace {
 
-struct Result {
-  int exit_code = -1;
-  std::string out;
-};
+using Result = penshape::test::CommandResult;
 
 Result run(const std::string& args) {
-  const std::string cmd = std::string(PENSHAPE_CLI) + " " + args + " 2>&1";
-  Result r;
-  FILE* pipe = ::popen(cmd.c_str(), "r");
-  if (pipe == nullptr) return r;
-  std::array<char, 4096> buf{};
-  while (std::fgets(buf.data(), static_cast<int>(buf.size()), pipe) != nullptr) r.out += buf.data();
-  const int status = ::pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  return penshape::test::run_command(std::string(PENSHAPE_CLI) + " " + args);
 }
 
 TEST(Cli, HelpListsSubcommands) {

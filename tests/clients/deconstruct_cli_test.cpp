@@ -1,6 +1,7 @@
 // `penshape deconstruct` run as a user would, on the shared demo polygons.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
+
+#include "run_command.hpp"
 
 #include <array>
 #include <cstdio>
@@ -10,21 +11,10 @@
 
 namespace {
 
-struct Result {
-  int exit_code = -1;
-  std::string out;
-};
+using Result = penshape::test::CommandResult;
 
 Result run(const std::string& args) {
-  const std::string cmd = std::string(PENSHAPE_CLI) + " deconstruct " + args + " 2>&1";
-  Result r;
-  FILE* pipe = ::popen(cmd.c_str(), "r");
-  if (pipe == nullptr) return r;
-  std::array<char, 4096> buf{};
-  while (std::fgets(buf.data(), static_cast<int>(buf.size()), pipe) != nullptr) r.out += buf.data();
-  const int status = ::pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  return penshape::test::run_command(std::string(PENSHAPE_CLI) + " deconstruct " + args);
 }
 
 std::string polygon(const std::string& name) {

@@ -1,31 +1,20 @@
 // `penshape hid describe` and `penshape replay --local`, run as a user would, on real files.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <array>
 #include <cstdio>
 #include <fstream>
 #include <string>
 
+#include "run_command.hpp"
 #include "shared_data.hpp"
 
 namespace {
 
-struct Result {
-  int exit_code = -1;
-  std::string out;
-};
+using Result = penshape::test::CommandResult;
 
 Result run(const std::string& args) {
-  const std::string cmd = std::string(PENSHAPE_CLI) + " " + args + " 2>&1";
-  Result r;
-  FILE* pipe = ::popen(cmd.c_str(), "r");
-  if (pipe == nullptr) return r;
-  std::array<char, 4096> buf{};
-  while (std::fgets(buf.data(), static_cast<int>(buf.size()), pipe) != nullptr) r.out += buf.data();
-  const int status = ::pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  return penshape::test::run_command(std::string(PENSHAPE_CLI) + " " + args);
 }
 
 std::string data(const std::string& rel) {

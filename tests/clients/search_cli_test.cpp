@@ -1,0 +1,94 @@
+// The parameter-search subcommands and `deconstruct --simplify`, run as a user would.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "run_command.hpp"
+
+namespace {
+
+using penshape::test::run_command;
+using penshape::test::shared_data_path;
+
+std::string cli(const std::string& args) { return std::string(PENSHAPE_CLI) + " " + args; }
+
+double json_number(const std::string& json, const std::string& key) {
+  const auto at = json.find("\"" + key + "\":");
+  if (at == std::string::npos) return -1e300;
+  return std::stod(json.substr(at + key.size() + 3));
+}
+
+TEST(SearchCli, ToleranceIntervalAndSolution) {
+  const auto r = run_command(cli("search-tolerance " + shared_data_path("polygons/authors_S.txt") +
+                                 " --radius 10 --precision 0.05 --json"));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const double lo = json_number(r.out, "eps_low");
+  const double hi = json_number(r.out, "eps_high");
+  EXPECT_GE(lo, 0);
+  EXPECT_LE(hi - lo, 0.05 + 1e-12);
+  EXPECT_LE(json_number(r.out, "eps_solution"), lo + 2 * 0.05);
+  for (const char* key : {"\"answer\":\"YES\"", "\"solution\":[{\"outer\":[[", "\"raw_vertices\":",
+                          "\"solution_vertices\":", "\"decider_calls\":", "\"seconds\":"}) {
+    EXPECT_NE(r.out.find(key), std::string::npos) << key << " in " << r.out;
+  }
+  EXPECT_LE(json_number(r.out, "solution_vertices"), json_number(r.out, "raw_vertices"));
+}
+
+TEST(SearchCli, RadiusBounds) {
+  const auto r = run_command(
+      cli("search-radius " + shared_data_path("polygons/authors_S.txt") + " --tolerance 5 --json"));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const double lo = json_number(r.out, "r_low");
+  const double hi = json_number(r.out, "r_high");
+  EXPECT_GE(lo, 5); // r <= ε always has a solution
+  EXPECT_GE(hi, lo);
+  EXPECT_NE(r.out.find("\"converged\":"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"undecided_calls\":"), std::string::npos) << r.out;
+}
+
+TEST(SearchCli, SuggestRadiusReportsProgressAndSuggestions) {
+  const auto r = run_command(
+      cli("suggest-radius " + shared_data_path("polygons/authors_S.txt") + " --samples 5 --json"));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("suggest-radius: 5/5 radii"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"suggestions\":[{\"radius\":"), std::string::npos) << r.out;
+  const auto quiet = run_command(
+      cli("suggest-radius " + shared_data_path("polygons/authors_S.txt") + " --samples 3 --quiet"));
+  EXPECT_EQ(quiet.exit_code, 0);
+  EXPECT_EQ(quiet.out.find("radii"), std::string::npos) << quiet.out;
+}
+
+TEST(SearchCli, DeconstructSimplifiesByDefault) {
+  const std::string file = shared_data_path("polygons/kazakhstan_paper1881.txt");
+  const auto simplified =
+      run_command(cli("deconstruct " + file + " --radius 0.0237 --tolerance 0.0118 --json"));
+  const auto raw = run_command(
+      cli("deconstruct " + file + " --radius 0.0237 --tolerance 0.0118 --json --no-simplify"));
+  ASSERT_EQ(simplified.exit_code, 0) << simplified.out;
+  ASSERT_EQ(raw.exit_code, 0) << raw.out;
+  EXPECT_NE(simplified.out.find("\"simplified\":true"), std::string::npos);
+  EXPECT_NE(raw.out.find("\"simplified\":false"), std::string::npos);
+  EXPECT_LT(json_number(simplified.out, "solution_vertices"),
+            json_number(raw.out, "solution_vertices") / 2);
+}
+
+TEST(SearchCli, BadInputExitsTwo) {
+  EXPECT_EQ(run_command(cli("search-tolerance /nonexistent --radius 1")).exit_code, 2);
+  EXPECT_EQ(run_command(cli("search-tolerance " + shared_data_path("polygons/authors_S.txt") +
+                            " --radius nan"))
+                .exit_code,
+            2);
+  EXPECT_EQ(
+      run_command(cli("search-radius " + shared_data_path("polygons/authors_S.txt"))).exit_code,
+      2); // --tolerance is required
+  EXPECT_EQ(run_command(cli("suggest-radius " + shared_data_path("polygons/authors_S.txt") +
+                            " --samples 2"))
+                .exit_code,
+            2);
+  EXPECT_EQ(run_command(cli("search-tolerance " + shared_data_path("polygons/authors_S.txt") +
+                            " --radius -3"))
+                .exit_code,
+            2);
+}
+
+} // namespace
