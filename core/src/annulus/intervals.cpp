@@ -6,10 +6,10 @@
 
 namespace penshape::annulus::detail {
 
-void clip_linear(double& lo, double& hi, double alpha, double beta) {
+void clip_linear(double& lo, double& hi, double alpha, double beta, bool strict) {
   if (lo > hi) return;
   if (beta == 0.0) {
-    if (alpha > 0.0) hi = lo - 1.0;
+    if (alpha > 0.0 || (strict && alpha == 0.0)) hi = lo - 1.0;
     return;
   }
   const double root = -alpha / beta;

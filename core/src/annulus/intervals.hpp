@@ -15,8 +15,10 @@ struct Interval {
 // Sorted by lo, pairwise disjoint, lo <= hi.
 using IntervalSet = std::vector<Interval>;
 
-// Keeps u in [lo, hi] with alpha + beta * u <= 0 (lo > hi afterwards means empty).
-void clip_linear(double& lo, double& hi, double alpha, double beta);
+// Keeps u in [lo, hi] with alpha + beta * u <= 0 (lo > hi afterwards means empty). With
+// `strict`, a constraint that does not depend on u (beta == 0) must hold strictly: a segment
+// lying on the boundary of an open set is outside it.
+void clip_linear(double& lo, double& hi, double alpha, double beta, bool strict = false);
 
 // {u in [lo, hi] : a u^2 + b u + c <= 0} for a > 0: one interval or none (returns false).
 bool quadratic_leq(double a, double b, double c, double& lo, double& hi);

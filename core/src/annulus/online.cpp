@@ -55,20 +55,6 @@ struct OnlineContainment::State {
     return any;
   }
 
-  bool witness_from(const Structure& s, Placement& pl) const {
-    for (int w = 0; w < 2; ++w) {
-      double g = 0.0;
-      if (!longest_interval_midpoint(s.sets[w], curve(w), g)) continue;
-      const PointD y = curve_point(curve(w), g);
-      pl.tx = pts[s.point].x - y.x;
-      pl.ty = pts[s.point].y - y.y;
-      pl.tan_half_theta = 0.0;
-      pl.theta = 0.0;
-      if (covered_exactly(p, outer, delta, pl, pts).size() == pts.size()) return true;
-    }
-    return false;
-  }
-
   Answer add(PointD q) {
     if (!std::isfinite(q.x) || !std::isfinite(q.y)) {
       throw InvalidInput("point " + std::to_string(pts.size()) + " is not finite");
@@ -117,14 +103,16 @@ struct OnlineContainment::State {
     }
     has_witness = false;
     // Reconcile: apply the queued points a structure has not seen; a non-empty result then holds
-    // exactly the placements with its point on the boundary that contain every point.
+    // exactly the placements with its point on the boundary that contain every point (with the
+    // widened annulus). The first survivor means a witness should exist: search it with the
+    // narrowed annulus (translation.cpp) and check it exactly.
     std::vector<std::size_t> keep;
-    Answer result = Answer::kNo;
+    bool survivor = false;
     for (std::size_t a = 0; a < active.size(); ++a) {
       const std::size_t s = active[a];
       Structure& st = structures[s];
       bool ok = true;
-      if (result != Answer::kYes) {
+      if (!survivor) {
         for (std::size_t t = 0; t < st.missing_until && ok; ++t) ok = apply(st, queue[t]);
         st.missing_until = 0;
       }
@@ -133,14 +121,14 @@ struct OnlineContainment::State {
         continue;
       }
       keep.push_back(s);
-      if (result == Answer::kYes) continue;
-      Placement pl;
-      if (witness_from(st, pl)) {
-        witness = pl;
+      survivor = true;
+    }
+    Answer result = Answer::kNo;
+    if (survivor) {
+      result = Answer::kUndecided;
+      if (find_translation_witness(p, outer, delta, pts, witness)) {
         has_witness = true;
         result = Answer::kYes;
-      } else {
-        result = Answer::kUndecided;
       }
     }
     active.swap(keep);
@@ -159,7 +147,7 @@ OnlineContainment::OnlineContainment(const TemplatePolygon& p, OuterOffset outer
   state_ = std::make_unique<State>(State{p,
                                          outer,
                                          delta,
-                                         prepare(p, outer, delta + margin),
+                                         prepare(p, outer, widened(delta, margin)),
                                          {},
                                          {},
                                          {},

@@ -73,7 +73,8 @@ bool segment_in_halfplanes(const std::vector<Edge>& edges, double off, PointD z0
   lo = 0.0;
   hi = 1.0;
   for (const Edge& e : edges) {
-    clip_linear(lo, hi, dot(e.n, z0) - e.h - off, dot(e.n, w));
+    // The hole (off < 0) is open.
+    clip_linear(lo, hi, dot(e.n, z0) - e.h - off, dot(e.n, w), off < 0.0);
     if (lo > hi) return false;
   }
   return true;
@@ -138,7 +139,8 @@ Box Piece::box() const {
   return {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)};
 }
 
-PreparedAnnulus prepare(const TemplatePolygon& p, OuterOffset outer, double delta) {
+namespace {
+PreparedAnnulus prepare_single(const TemplatePolygon& p, OuterOffset outer, double delta) {
   PreparedAnnulus an;
   an.convex = p.convex();
   an.outer = outer;
@@ -178,6 +180,7 @@ PreparedAnnulus prepare(const TemplatePolygon& p, OuterOffset outer, double delt
         an.outer_curve.push_back(arc_piece(e.a, delta, -std::numbers::pi, std::numbers::pi));
       }
     }
+    an.outer_stride = 2.0;
     an.box = box;
     return an;
   }
@@ -226,6 +229,25 @@ PreparedAnnulus prepare(const TemplatePolygon& p, OuterOffset outer, double delt
   an.box = box;
   return an;
 }
+} // namespace
+
+PreparedAnnulus prepare(const TemplatePolygon& p, OuterOffset outer, double delta,
+                        double curve_delta) {
+  PreparedAnnulus an = prepare_single(p, outer, delta);
+  an.has_hole = !an.inner.empty();
+  if (curve_delta != delta) {
+    PreparedAnnulus c = prepare_single(p, outer, curve_delta);
+    an.inner = std::move(c.inner);
+    an.outer_poly = std::move(c.outer_poly);
+    an.inner_curve = std::move(c.inner_curve);
+    an.outer_curve = std::move(c.outer_curve);
+  }
+  return an;
+}
+
+PreparedAnnulus prepare(const TemplatePolygon& p, OuterOffset outer, double delta) {
+  return prepare(p, outer, delta, delta);
+}
 
 IntervalSet member_set(const PreparedAnnulus& an, const Piece& piece, PointD d) {
   IntervalSet result;
@@ -264,11 +286,13 @@ IntervalSet member_set(const PreparedAnnulus& an, const Piece& piece, PointD d) 
       }
     }
     result.push_back({lo, hi});
-    if (!an.inner.empty()) {
+    if (an.has_hole) {
       double ilo = 0.0;
       double ihi = 0.0;
       if (segment_in_halfplanes(an.edges, -delta, z0, w, ilo, ihi)) {
-        result = subtract_interior(result, IntervalSet{{ilo, ihi}});
+        // Ends clamped by the piece are not boundaries of the open hole: extend them past it.
+        result = subtract_interior(result,
+                                   IntervalSet{{ilo <= 0.0 ? -1.0 : ilo, ihi >= 1.0 ? 2.0 : ihi}});
       }
     }
     return result;
@@ -295,9 +319,13 @@ IntervalSet member_set(const PreparedAnnulus& an, const Piece& piece, PointD d) 
     }
     normalize(result);
   }
-  if (!result.empty() && !an.inner.empty()) {
+  if (!result.empty() && an.has_hole) {
     IntervalSet hole = arc_in_halfplanes(an.edges, -delta, z0, r, piece.phi0, piece.phi1);
-    if (!hole.empty()) result = subtract_interior(result, hole);
+    if (!hole.empty()) {
+      if (hole.front().lo <= piece.phi0) hole.front().lo = piece.phi0 - 1.0;
+      if (hole.back().hi >= piece.phi1) hole.back().hi = piece.phi1 + 1.0;
+      result = subtract_interior(result, hole);
+    }
   }
   return result;
 }
@@ -322,11 +350,11 @@ double annulus_measure(const TemplatePolygon& p, OuterOffset outer, PointD x) {
   return outer == OuterOffset::kLinearized ? fmax : std::sqrt(dmin2);
 }
 
-PointD curve_point(const Curve& c, double g) {
-  double idx = std::floor(g);
+PointD curve_point(const Curve& c, double g, double stride) {
+  double idx = std::floor(g / stride);
   idx = std::clamp(idx, 0.0, static_cast<double>(c.size() - 1));
   const Piece& p = c[static_cast<std::size_t>(idx)];
-  const double f = std::clamp(g - idx, 0.0, 1.0);
+  const double f = std::clamp(g - idx * stride, 0.0, 1.0);
   return p.at(p.lo() + f * (p.hi() - p.lo()));
 }
 

@@ -40,9 +40,12 @@ struct RotationGeometry {
   std::vector<double> dmin, dmax; // distance ranges between curve edges (flattened)
   std::size_t total = 0;
 
-  RotationGeometry(const TemplatePolygon& p, double d) : delta(d) {
+  bool has_hole = false;
+
+  RotationGeometry(const TemplatePolygon& p, DeltaPair d) : delta(d.member) {
     const PreparedAnnulus an = prepare(p, OuterOffset::kLinearized, d);
     edges = an.edges;
+    has_hole = an.has_hole;
     corners[0] = an.outer_poly;
     corners[1] = an.inner;
     for (int c = 0; c < 2; ++c) {
@@ -101,8 +104,8 @@ struct RotationGeometry {
     for (const Edge& e : edges) f = std::max(f, dot(e.n, wm) - e.h);
     // f is 1-Lipschitz and W moves at most `reach` over V.
     if (f > delta + reach) return {};
-    if (f < -delta - reach && !corners[1].empty()) return {};
-    if (f <= delta - reach && (f >= -delta + reach || corners[1].empty())) return V;
+    if (f < -delta - reach && has_hole) return {};
+    if (f <= delta - reach && (f >= -delta + reach || !has_hole)) return V;
     IntervalSet out = V;
     for (const Edge& e : edges) {
       IntervalSet next;
@@ -112,8 +115,8 @@ struct RotationGeometry {
       out.swap(next);
       if (out.empty()) return out;
     }
-    if (corners[1].empty()) return out;
-    IntervalSet hole = out;
+    if (!has_hole) return out;
+    IntervalSet hole = V;
     for (const Edge& e : edges) {
       IntervalSet next;
       for (const Interval& iv : hole) {
@@ -121,6 +124,13 @@ struct RotationGeometry {
       }
       hole.swap(next);
       if (hole.empty()) return out;
+    }
+    // Hole ends clamped by V are not boundaries of the open hole: push them just past.
+    for (Interval& h : hole) {
+      for (const Interval& v : V) {
+        if (h.lo == v.lo) h.lo = std::nextafter(h.lo, -INFINITY);
+        if (h.hi == v.hi) h.hi = std::nextafter(h.hi, INFINITY);
+      }
     }
     return subtract_interior(out, hole);
   }
@@ -159,6 +169,7 @@ struct Search {
   const WeightedPoints& wp;
   const RotationGeometry& g;
   bool decide;                   // decision mode: every point must be contained
+  bool verify;                   // decision mode: check witnesses exactly (else any survivor)
   const std::vector<bool>* hull; // decision mode: outer contacts only on hull points
   std::vector<std::size_t> order;
   double tol;
@@ -199,6 +210,10 @@ struct Search {
         if (S[x].hi - S[x].lo > S[bi].hi - S[bi].lo) bi = x;
       }
       const Placement pl = placement_at(f, qi, 0.5 * (S[bi].lo + S[bi].hi));
+      if (!verify) {
+        found = true;
+        return true;
+      }
       if (covered_exactly(p, OuterOffset::kLinearized, delta_check, pl, original).size() ==
           original.size()) {
         best_placement = pl;
@@ -324,17 +339,25 @@ DecisionResult decide_rotation_core(const TemplatePolygon& p, double delta,
       return r;
     }
   }
-  const RotationGeometry g(p, delta + r.margin);
-  Search s{p,        points, wp, g,     true,  &hull, std::move(order),
-           r.margin, 0,      {}, false, false, delta, {}};
+  // NO with the widened annulus, witnesses from the narrowed one (see translation.cpp).
+  {
+    const RotationGeometry wide(p, widened(delta, r.margin));
+    Search s{p, points, wp,    wide,  true,  false, &hull, std::move(order), 10.0 * r.margin,
+             0, {},     false, false, delta, {}};
+    s.enumerate();
+    order = std::move(s.order);
+    if (!s.found) {
+      r.answer = Answer::kNo;
+      return r;
+    }
+  }
+  const RotationGeometry narrow(p, narrowed(delta, r.margin));
+  Search s{p, points, wp,    narrow, true,  true, &hull, std::move(order), 10.0 * r.margin,
+           0, {},     false, false,  delta, {}};
   s.enumerate();
   order = std::move(s.order);
-  if (s.found) {
-    r.answer = Answer::kYes;
-    r.placement = s.best_placement;
-  } else {
-    r.answer = s.undecided ? Answer::kUndecided : Answer::kNo;
-  }
+  r.answer = s.found ? Answer::kYes : Answer::kUndecided;
+  if (s.found) r.placement = s.best_placement;
   return r;
 }
 
@@ -348,12 +371,19 @@ MaxCoverResult max_cover_rotation(const TemplatePolygon& p, double delta,
   validate_rotation(p, points, limits);
   validate_delta(delta, limits);
   const WeightedPoints wp = merge_duplicates(points);
-  const RotationGeometry g(p, delta);
-  Search s{p, points, wp,    g,     false, nullptr, {}, annulus_margin(p, delta, points),
-           0, {},     false, false, delta, {}};
-  s.enumerate();
+  const double margin = annulus_margin(p, delta, points);
   MaxCoverResult res;
-  res.sweep_count = s.best;
+  {
+    const RotationGeometry wide(p, widened(delta, margin));
+    Search s{p, points, wp,    wide,  false, false, nullptr, {}, 10.0 * margin,
+             0, {},     false, false, delta, {}};
+    s.enumerate();
+    res.upper_bound = s.best;
+  }
+  const RotationGeometry narrow(p, narrowed(delta, margin));
+  Search s{p, points, wp,    narrow, false, false, nullptr, {}, 10.0 * margin,
+           0, {},     false, false,  delta, {}};
+  s.enumerate();
   res.placement = s.best_placement;
   res.covered = covered_exactly(p, OuterOffset::kLinearized, delta, res.placement, points);
   return res;

@@ -89,20 +89,12 @@ Problem make_problem(const TemplatePolygon& p, OuterOffset outer,
   return pr;
 }
 
-DecisionResult decide_core(Problem& pr, double delta) {
-  DecisionResult r;
-  r.margin = annulus_margin(pr.p, delta, pr.original);
-  // A cheap witness first.
-  const Placement guess = centred_placement(pr.p, pr.original);
-  if (width_at(pr.p, pr.outer, guess, pr.original) <= delta &&
-      covered_exactly(pr.p, pr.outer, delta, guess, pr.original).size() == pr.original.size()) {
-    r.answer = Answer::kYes;
-    r.placement = guess;
-    return r;
-  }
-  const PreparedAnnulus an = prepare(pr.p, pr.outer, delta + r.margin);
+// Anchored sweeps that intersect the containing sets of all points along each anchor curve.
+// Calls accept(placement) for each anchor curve whose set stays non-empty, in order, until it
+// returns true. Returns whether some placement was accepted.
+template <typename Accept>
+bool find_survivor(Problem& pr, const PreparedAnnulus& an, Accept&& accept) {
   const auto& pts = pr.wp.points;
-  bool undecided = false;
   std::vector<IntervalSet> sets;
   for (std::size_t i = 0; i < pts.size(); ++i) {
     for (int which = 0; which < 2; ++which) {
@@ -128,22 +120,45 @@ DecisionResult decide_core(Problem& pr, double delta) {
           std::swap(pr.order[t], pr.order[0]);
         }
       }
-      if (!alive) continue;
       double g = 0.0;
-      if (!longest_interval_midpoint(sets, curve, g)) continue;
+      if (!alive || !longest_interval_midpoint(sets, curve, g)) continue;
       const PointD y = curve_point(curve, g);
       Placement pl;
       pl.tx = pts[i].x - y.x;
       pl.ty = pts[i].y - y.y;
-      if (covered_exactly(pr.p, pr.outer, delta, pl, pr.original).size() == pr.original.size()) {
-        r.answer = Answer::kYes;
-        r.placement = pl;
-        return r;
-      }
-      undecided = true;
+      if (accept(pl)) return true;
     }
   }
-  r.answer = undecided ? Answer::kUndecided : Answer::kNo;
+  return false;
+}
+
+DecisionResult decide_core(Problem& pr, double delta) {
+  DecisionResult r;
+  r.margin = annulus_margin(pr.p, delta, pr.original);
+  // A cheap witness first.
+  const Placement guess = centred_placement(pr.p, pr.original);
+  if (width_at(pr.p, pr.outer, guess, pr.original) <= delta &&
+      covered_exactly(pr.p, pr.outer, delta, guess, pr.original).size() == pr.original.size()) {
+    r.answer = Answer::kYes;
+    r.placement = guess;
+    return r;
+  }
+  // NO is decided with the widened annulus: rounding cannot hide a placement from it.
+  const PreparedAnnulus wide = prepare(pr.p, pr.outer, widened(delta, r.margin));
+  if (!find_survivor(pr, wide, [](const Placement&) { return true; })) {
+    r.answer = Answer::kNo;
+    return r;
+  }
+  // Witnesses come from the narrowed annulus, where they are inside with room to spare.
+  const PreparedAnnulus narrow = prepare(pr.p, pr.outer, narrowed(delta, r.margin));
+  const bool yes = find_survivor(pr, narrow, [&](const Placement& pl) {
+    if (covered_exactly(pr.p, pr.outer, delta, pl, pr.original).size() != pr.original.size()) {
+      return false;
+    }
+    r.placement = pl;
+    return true;
+  });
+  r.answer = yes ? Answer::kYes : Answer::kUndecided;
   return r;
 }
 
@@ -156,6 +171,19 @@ void validate_all(const TemplatePolygon& p, OuterOffset outer, const std::vector
 }
 
 } // namespace
+
+bool find_translation_witness(const TemplatePolygon& p, OuterOffset outer, double delta,
+                              const std::vector<PointD>& points, Placement& placement) {
+  Problem pr = make_problem(p, outer, points);
+  const double margin = annulus_margin(p, delta, points);
+  const PreparedAnnulus narrow = prepare(p, outer, narrowed(delta, margin));
+  return find_survivor(pr, narrow, [&](const Placement& pl) {
+    if (covered_exactly(p, outer, delta, pl, points).size() != points.size()) return false;
+    placement = pl;
+    return true;
+  });
+}
+
 } // namespace detail
 
 using namespace detail;
@@ -203,29 +231,32 @@ MinWidthResult min_width_translation(const TemplatePolygon& p, OuterOffset outer
   return res;
 }
 
-MaxCoverResult max_cover_translation(const TemplatePolygon& p, OuterOffset outer, double delta,
-                                     const std::vector<PointD>& points,
-                                     const MaxCoverOptions& options, const Limits& limits) {
-  validate_all(p, outer, points, limits);
-  validate_delta(delta, limits);
-  const PreparedAnnulus an = prepare(p, outer, delta);
-  const WeightedPoints wp = merge_duplicates(points);
+namespace detail {
+namespace {
+
+struct SweepBest {
+  std::size_t count = 0;
+  Placement placement;
+};
+
+// Fig. 3: for every point, sweep both boundaries of its annulus and track the depth.
+SweepBest anchored_sweep(const PreparedAnnulus& an, const WeightedPoints& wp, bool bucketing) {
   const auto& pts = wp.points;
   const std::size_t n = pts.size();
   const BucketGrid grid(pts, an.box.x1 - an.box.x0, an.box.y1 - an.box.y0);
-
   struct Event {
     double pos;
     long weight;
   };
   std::vector<Event> events;
   std::vector<std::size_t> nb;
-  std::size_t best = 0;
+  IntervalSet along;
+  SweepBest best;
   std::size_t best_i = 0;
   const Curve* best_curve = nullptr;
   double best_g = 0.5;
   for (std::size_t i = 0; i < n; ++i) {
-    if (options.bucketing) {
+    if (bucketing) {
       grid.neighbours(i, nb);
     } else {
       nb.clear();
@@ -235,17 +266,25 @@ MaxCoverResult max_cover_translation(const TemplatePolygon& p, OuterOffset outer
     }
     for (const Curve* curve : {&an.inner_curve, &an.outer_curve}) {
       if (curve->empty()) continue;
+      const double stride = curve == &an.outer_curve ? an.outer_stride : 1.0;
       events.clear();
       for (std::size_t j : nb) {
         const PointD d = sub(pts[j], pts[i]);
         const long w = static_cast<long>(wp.weight[j]);
+        // Global intervals of j, merged across piece ends so j is never counted twice.
+        along.clear();
         for (std::size_t k = 0; k < curve->size(); ++k) {
           const Piece& pc = (*curve)[k];
           const double span = pc.hi() - pc.lo();
           for (const Interval& iv : member_set(an, pc, d)) {
-            events.push_back({static_cast<double>(k) + (iv.lo - pc.lo()) / span, w});
-            events.push_back({static_cast<double>(k) + (iv.hi - pc.lo()) / span, -w});
+            const double base = static_cast<double>(k) * stride;
+            along.push_back({base + (iv.lo - pc.lo()) / span, base + (iv.hi - pc.lo()) / span});
           }
+        }
+        normalize(along);
+        for (const Interval& iv : along) {
+          events.push_back({iv.lo, w});
+          events.push_back({iv.hi, -w});
         }
       }
       // Entries before exits at equal positions: the annulus is closed.
@@ -253,16 +292,16 @@ MaxCoverResult max_cover_translation(const TemplatePolygon& p, OuterOffset outer
         return a.pos < b.pos || (a.pos == b.pos && a.weight > b.weight);
       });
       long cur = static_cast<long>(wp.weight[i]);
-      if (static_cast<std::size_t>(cur) > best) {
-        best = static_cast<std::size_t>(cur);
+      if (static_cast<std::size_t>(cur) > best.count) {
+        best.count = static_cast<std::size_t>(cur);
         best_i = i;
         best_curve = curve;
         best_g = events.empty() ? 0.5 : 0.5 * events.front().pos;
       }
       for (std::size_t e = 0; e < events.size(); ++e) {
         cur += events[e].weight;
-        if (cur > 0 && static_cast<std::size_t>(cur) > best) {
-          best = static_cast<std::size_t>(cur);
+        if (cur > 0 && static_cast<std::size_t>(cur) > best.count) {
+          best.count = static_cast<std::size_t>(cur);
           best_i = i;
           best_curve = curve;
           const double next = e + 1 < events.size() ? events[e + 1].pos : events[e].pos;
@@ -271,13 +310,31 @@ MaxCoverResult max_cover_translation(const TemplatePolygon& p, OuterOffset outer
       }
     }
   }
-  MaxCoverResult res;
-  res.sweep_count = best;
   if (best_curve != nullptr) {
-    const PointD y = curve_point(*best_curve, best_g);
-    res.placement.tx = pts[best_i].x - y.x;
-    res.placement.ty = pts[best_i].y - y.y;
+    const PointD y =
+        curve_point(*best_curve, best_g, best_curve == &an.outer_curve ? an.outer_stride : 1.0);
+    best.placement.tx = pts[best_i].x - y.x;
+    best.placement.ty = pts[best_i].y - y.y;
   }
+  return best;
+}
+
+} // namespace
+} // namespace detail
+
+MaxCoverResult max_cover_translation(const TemplatePolygon& p, OuterOffset outer, double delta,
+                                     const std::vector<PointD>& points,
+                                     const MaxCoverOptions& options, const Limits& limits) {
+  validate_all(p, outer, points, limits);
+  validate_delta(delta, limits);
+  const WeightedPoints wp = merge_duplicates(points);
+  const double margin = annulus_margin(p, delta, points);
+  MaxCoverResult res;
+  res.upper_bound =
+      anchored_sweep(prepare(p, outer, widened(delta, margin)), wp, options.bucketing).count;
+  const SweepBest inner =
+      anchored_sweep(prepare(p, outer, narrowed(delta, margin)), wp, options.bucketing);
+  res.placement = inner.placement;
   res.covered = covered_exactly(p, outer, delta, res.placement, points);
   return res;
 }

@@ -22,4 +22,9 @@ bool longest_interval_midpoint(const std::vector<IntervalSet>& sets, const Curve
 double certify_width(const TemplatePolygon& p, OuterOffset outer, const Placement& placement,
                      double width, double margin, const std::vector<PointD>& points);
 
+// A placement whose delta-annulus holds every point, verified exactly, from anchored sweeps with
+// the annulus narrowed by the margin; false if none was found.
+bool find_translation_witness(const TemplatePolygon& p, OuterOffset outer, double delta,
+                              const std::vector<PointD>& points, Placement& placement);
+
 } // namespace penshape::annulus::detail

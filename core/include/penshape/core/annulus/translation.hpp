@@ -58,11 +58,13 @@ struct MaxCoverOptions {
 
 struct MaxCoverResult {
   Placement placement;
-  // Exactly verified: the points in the delta-annulus of `placement`, ascending indices.
+  // Exactly verified: the points in the delta-annulus of `placement`, ascending indices. The
+  // witness comes from a sweep with the annulus narrowed by the margin, so it is robust.
   std::vector<std::size_t> covered;
-  // The depth the sweep found (duplicates counted). It equals covered.size() unless the best
-  // placement is degenerate (a single touching position that rounding moved off).
-  std::size_t sweep_count = 0;
+  // Robust upper bound on the optimum: the best count with the annulus widened by the margin
+  // (duplicates counted). covered.size() == upper_bound certifies that the count is optimal; it
+  // is smaller only when the best placements form a sliver thinner than the margin.
+  std::size_t upper_bound = 0;
 };
 
 // A translation maximising the number of points in the delta-annulus (anchored sweep of both
