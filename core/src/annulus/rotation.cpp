@@ -19,7 +19,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 inline PointD perp(PointD d) { return {d.y, -d.x}; } // R(-theta) d = cos * d + sin * perp(d)
-inline double norm(PointD a) { return std::hypot(a.x, a.y); }
+inline double norm(PointD a) { return std::sqrt(a.x * a.x + a.y * a.y); }
 
 // A boundary edge of the inner (hole) or outer linearized offset, template frame.
 struct CurveEdge {
