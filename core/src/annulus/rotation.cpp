@@ -400,6 +400,64 @@ DecisionResult decide_rotation_core(const TemplatePolygon& p, double delta,
   return r;
 }
 
+// Clarkson-style iteration: decide on a small subset first. A robust NO for the subset is a NO
+// for all points; a subset witness that misses points brings the worst missed points in.
+DecisionResult decide_rotation_iterative(const TemplatePolygon& p, double delta,
+                                         const std::vector<PointD>& points, const Placement* hint) {
+  const std::size_t n = points.size();
+  std::vector<char> taken(n, 0);
+  std::vector<PointD> subset;
+  auto take = [&](std::size_t i) {
+    if (!taken[i]) {
+      taken[i] = 1;
+      subset.push_back(points[i]);
+    }
+  };
+  for (int k = 0; k < 8; ++k) {
+    const double a = kPi * k / 4.0;
+    const PointD dir{std::cos(a), std::sin(a)};
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < n; ++i) {
+      if (dot(points[i], dir) > dot(points[best], dir)) best = i;
+    }
+    take(best);
+    take(static_cast<std::size_t>(k) * n / 8);
+  }
+  std::optional<Placement> last;
+  if (hint) last = *hint;
+  for (;;) {
+    const WeightedPoints wp = merge_duplicates(subset);
+    const std::vector<bool> hull = hull_boundary(wp.points);
+    std::vector<std::size_t> order(wp.points.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    DecisionResult r =
+        decide_rotation_core(p, delta, subset, wp, hull, order, last ? &*last : nullptr);
+    if (r.answer == Answer::kNo) return r;
+    if (r.answer == Answer::kUndecided && subset.size() == n) return r;
+    if (r.answer == Answer::kYes) {
+      const auto covered = covered_exactly(p, OuterOffset::kLinearized, delta, r.placement, points);
+      if (covered.size() == n) return r;
+      last = r.placement;
+      // The worst missed points join the subset.
+      std::vector<std::pair<double, std::size_t>> missed;
+      std::size_t c = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (c < covered.size() && covered[c] == i) {
+          ++c;
+          continue;
+        }
+        missed.push_back({-width_at(p, OuterOffset::kLinearized, r.placement, {points[i]}), i});
+      }
+      const std::size_t take_n = std::min<std::size_t>(8, missed.size());
+      std::partial_sort(missed.begin(), missed.begin() + static_cast<std::ptrdiff_t>(take_n),
+                        missed.end());
+      for (std::size_t k = 0; k < take_n; ++k) take(missed[k].second);
+    } else {
+      for (std::size_t i = 0; i < n; ++i) take(i); // undecided on the subset: use everything
+    }
+  }
+}
+
 } // namespace
 } // namespace detail
 
@@ -439,20 +497,12 @@ DecisionResult decide_rotation(const TemplatePolygon& p, double delta,
                                const std::vector<PointD>& points, const Limits& limits) {
   validate_rotation(p, points, limits);
   validate_delta(delta, limits);
-  const WeightedPoints wp = merge_duplicates(points);
-  const std::vector<bool> hull = hull_boundary(wp.points);
-  std::vector<std::size_t> order(wp.points.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  return decide_rotation_core(p, delta, points, wp, hull, order, nullptr);
+  return decide_rotation_iterative(p, delta, points, nullptr);
 }
 
 MinWidthResult min_width_rotation(const TemplatePolygon& p, const std::vector<PointD>& points,
                                   const MinWidthOptions& options, const Limits& limits) {
   validate_rotation(p, points, limits);
-  const WeightedPoints wp = merge_duplicates(points);
-  const std::vector<bool> hull = hull_boundary(wp.points);
-  std::vector<std::size_t> order(wp.points.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   const OuterOffset lin = OuterOffset::kLinearized;
   MinWidthResult res;
   res.placement = centred_placement(p, points);
@@ -465,7 +515,7 @@ MinWidthResult min_width_rotation(const TemplatePolygon& p, const std::vector<Po
   double search_lo = 0.0;
   while (hi - search_lo > tol && res.decisions < options.max_decisions) {
     const double mid = 0.5 * (search_lo + hi);
-    const DecisionResult r = decide_rotation_core(p, mid, points, wp, hull, order, &res.placement);
+    const DecisionResult r = decide_rotation_iterative(p, mid, points, &res.placement);
     ++res.decisions;
     if (r.answer == Answer::kYes) {
       const double w = width_at(p, lin, r.placement, points);
