@@ -53,6 +53,27 @@ TEST(RotationVsOracle, MinimumWidthMatchesBruteForce) {
   }
 }
 
+TEST(RotationVsOracle, DecisionMatchesBruteForce) {
+  std::mt19937 rng(43);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (unsigned trial = 0; trial < 3; ++trial) {
+    const auto poly = oracle::random_convex(rng, 3 + trial % 2, 1.0);
+    const TemplatePolygon tp = make_convex_template(poly);
+    const auto pts = oracle::points_near(rng, poly, 6, 0.15, {u(rng), u(rng), 6.3 * u(rng)});
+    double lo = 0, hi = 2.0;
+    while (hi - lo > 1e-6) {
+      const double mid = 0.5 * (lo + hi);
+      (oracle::max_cover_rotation(tp.vertices(), mid, pts) == pts.size() ? hi : lo) = mid;
+    }
+    EXPECT_EQ(decide_rotation(tp, hi * 0.95, pts).answer, Answer::kNo) << "trial " << trial;
+    const DecisionResult yes = decide_rotation(tp, hi * 1.05, pts);
+    ASSERT_EQ(yes.answer, Answer::kYes) << "trial " << trial;
+    EXPECT_EQ(oracle::count(tp.vertices(), oracle::Kind::kLinearized, hi * 1.05,
+                            pose_of(yes.placement), pts, 1e-12),
+              pts.size());
+  }
+}
+
 TEST(Rotation, RotatedSquareIsRecovered) {
   // Corners of a square rotated by 30 degrees: exact fit (width 0) only with rotation.
   const TemplatePolygon sq = make_convex_template({{-1, -1}, {1, -1}, {1, 1}, {-1, 1}});
