@@ -277,6 +277,22 @@ IntervalSet member_set(const PreparedAnnulus& an, const Piece& piece, PointD d) 
     }
     if (inside) return result;
   }
+  // Lipschitz filter: the annulus measure is 1-Lipschitz and every point of the piece is within
+  // `reach` of its middle, so a middle far inside or far outside decides the whole piece.
+  {
+    const double mid_t = 0.5 * (piece.lo() + piece.hi());
+    const PointD z = add(piece.at(mid_t), d);
+    const double reach = piece.arc
+                             ? piece.r * 0.5 * (piece.phi1 - piece.phi0)
+                             : 0.5 * std::sqrt(dot(sub(piece.b, piece.a), sub(piece.b, piece.a)));
+    const double m = prepared_measure(an, z);
+    const double slack = 1e-12 * (std::abs(z.x) + std::abs(z.y) + reach + an.delta) + 1e-300;
+    if (m + reach < an.delta - slack) {
+      result.push_back({piece.lo(), piece.hi()});
+      return result;
+    }
+    if (m - reach > an.delta + slack) return result;
+  }
   const double delta = an.delta;
   if (!piece.arc) {
     const PointD z0 = add(piece.a, d);
@@ -372,6 +388,21 @@ double annulus_measure(const TemplatePolygon& p, OuterOffset outer, PointD x) {
   if (!p.convex()) return std::sqrt(dmin2);
   if (fmax <= 0.0) return -fmax; // inside: distance to the nearest edge line
   return outer == OuterOffset::kLinearized ? fmax : std::sqrt(dmin2);
+}
+
+double prepared_measure(const PreparedAnnulus& an, PointD x) {
+  double fmax = -INFINITY;
+  for (const Edge& e : an.edges) fmax = std::max(fmax, dot(e.n, x) - e.h);
+  if (an.convex && fmax <= 0.0) return -fmax;
+  if (an.convex && an.outer == OuterOffset::kLinearized) return fmax;
+  double dmin2 = INFINITY;
+  for (const Edge& e : an.edges) {
+    const PointD r = sub(x, e.a);
+    const double t = std::clamp(dot(r, e.v) / e.len2, 0.0, 1.0);
+    const PointD q = sub(r, mul(e.v, t));
+    dmin2 = std::min(dmin2, dot(q, q));
+  }
+  return std::sqrt(dmin2);
 }
 
 PointD curve_point(const Curve& c, double g, double stride) {

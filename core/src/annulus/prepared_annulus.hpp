@@ -90,6 +90,9 @@ inline PreparedAnnulus prepare(const TemplatePolygon& p, OuterOffset outer, Delt
 // Parameters t of `piece` with piece.at(t) + d in the annulus (closed), sorted and disjoint.
 IntervalSet member_set(const PreparedAnnulus& an, const Piece& piece, PointD d);
 
+// The same measure from the prepared edges (doubles).
+double prepared_measure(const PreparedAnnulus& an, PointD x);
+
 // Distance-to-boundary measure in the template frame: the least delta whose annulus holds x.
 double annulus_measure(const TemplatePolygon& p, OuterOffset outer, PointD x);
 
