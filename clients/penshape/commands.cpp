@@ -3,6 +3,7 @@
 #include <array>
 
 #include "command.hpp"
+#include "recognize_command.hpp"
 #include "version_command.hpp"
 
 namespace penshape::cli {
@@ -11,6 +12,8 @@ std::span<const Subcommand> subcommands() {
   static constexpr std::array kCommands{
       Subcommand{"version", "print the version and the libraries penshape was built with",
                  &run_version},
+      Subcommand{"recognize", "name the shape of pen strokes, snapping only with a certificate",
+                 &run_recognize},
   };
   return kCommands;
 }

@@ -1,0 +1,217 @@
+// recognize(): tolerance rule, family fits, certification and the choice of the winner.
+#include "classifier.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "certificate.hpp"
+
+namespace penshape::recognize_detail {
+namespace {
+
+// A candidate's rank: its certified bound in units of epsilon plus a price per free parameter,
+// so a simpler shape wins unless a richer one fits clearly better (by 0.05 epsilon per
+// parameter). Regular polygons are priced as 6 parameters: with many sides they approach the
+// circle, and the circle is the simpler reading of a round stroke.
+constexpr double kPricePerParameter = 0.15;
+// Fits whose estimate exceeds this many epsilons are not certified at all (saves time; their
+// certificate could not pass because the estimate is measured on points of the stroke).
+constexpr double kCertifyIfBelow = 1.25;
+
+bool segments_cross(PointD a, PointD b, PointD c, PointD d) {
+  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
+  const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+  return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
+}
+
+bool self_crossing(const std::vector<PointD>& path) {
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    for (std::size_t j = i + 2; j + 1 < path.size(); ++j) {
+      if (segments_cross(path[i], path[i + 1], path[j], path[j + 1])) return true;
+    }
+  }
+  return false;
+}
+
+// Net over total turning of the stroke, measured on a coarse resampling (pen jitter averages out).
+double turning_monotonicity(const PreparedStroke& s) {
+  const std::vector<PointD> q = resample(s.points, 24);
+  double net = 0, total = 0;
+  for (std::size_t i = 1; i + 1 < q.size(); ++i) {
+    const PointD u = q[i] - q[i - 1];
+    const PointD v = q[i + 1] - q[i];
+    const double a = std::atan2(cross(u, v), dot(u, v));
+    net += a;
+    total += std::abs(a);
+  }
+  return total > 0 ? std::abs(net) / total : 1.0;
+}
+
+// Why a certified candidate is not a plausible snap (empty when it is); rules in recognize.hpp.
+std::string implausibility(const PreparedStroke& s, const Fit& f, const Certificate& c,
+                           const RecognizerConfig& config) {
+  const bool straight_open = f.shape == ShapeClass::kSegment || f.shape == ShapeClass::kPolyline;
+  if (straight_open && c.bound > config.straight_fraction * c.epsilon) {
+    return "a straight open shape must fit within straight_fraction * epsilon";
+  }
+  if (f.shape == ShapeClass::kPolyline && self_crossing(f.clean.path)) {
+    return "the open polyline crosses itself (a gesture, not a shape)";
+  }
+  if (f.shape == ShapeClass::kArc && turning_monotonicity(s) < config.arc_monotone_turning) {
+    return "the stroke turns both ways (not an arc)";
+  }
+  return {};
+}
+
+std::vector<PointD> display_path(const CleanShape& c, double size) {
+  if (c.kind == CleanShape::Kind::kPolyline) return c.path;
+  return c.sample(size / 40.0);
+}
+
+} // namespace
+
+double degrees_of_freedom(const Fit& fit) {
+  switch (fit.shape) {
+    case ShapeClass::kSegment:
+      return 4;
+    case ShapeClass::kPolyline:
+      return 2.0 * static_cast<double>(fit.params.vertices.size());
+    case ShapeClass::kTriangle:
+      return 6;
+    case ShapeClass::kQuadrilateral:
+      return 8;
+    case ShapeClass::kRectangle:
+      return 5;
+    case ShapeClass::kSquare:
+      return 4;
+    case ShapeClass::kDiamond:
+      return 4;
+    case ShapeClass::kRegularPolygon:
+      return 6;
+    case ShapeClass::kCircle:
+      return 3;
+    case ShapeClass::kEllipse:
+      return 5;
+    case ShapeClass::kArc:
+      return 5;
+    case ShapeClass::kFreeform:
+      break;
+  }
+  return 0;
+}
+
+bool is_closed(const PreparedStroke& s, double epsilon) {
+  const std::size_t n = s.fit_points.size();
+  const std::size_t fifth = n / 5 + 1;
+  const std::span<const PointD> pts(s.fit_points);
+  const double limit = kClosureEpsilons * epsilon;
+  return polyline_distance(pts.back(), pts.first(fifth)) <= limit ||
+         polyline_distance(pts.front(), pts.last(fifth)) <= limit;
+}
+
+std::vector<Fit> fit_all(const PreparedStroke& s, const RecognizerConfig& config, double epsilon) {
+  std::vector<Fit> fits;
+  auto add = [&fits](std::optional<Fit> f) {
+    if (f && std::isfinite(f->fit_error)) fits.push_back(std::move(*f));
+  };
+  if (!is_closed(s, epsilon)) {
+    add(fit_segment(s));
+    for (std::size_t k = 2; k <= config.max_polyline_segments; ++k) add(fit_polyline(s, k));
+    add(fit_arc(s));
+    return fits;
+  }
+  add(fit_polygon(s, 3));
+  std::optional<Fit> quad = fit_polygon(s, 4);
+  if (quad) {
+    for (Fit& f : fit_rectangles(s, *quad)) add(std::move(f));
+    add(std::move(quad));
+  }
+  std::optional<Fit> circle = fit_circle(s);
+  if (circle) {
+    for (std::size_t n = 5; n <= 8; ++n) {
+      add(fit_regular_polygon(s, n, circle->params.center, circle->params.radius_x));
+    }
+    add(std::move(circle));
+  }
+  add(fit_ellipse(s));
+  return fits;
+}
+
+Recognition classify(const PreparedStroke& s, std::vector<Fit> fits, double epsilon,
+                     double pen_radius, const RecognizerConfig& config) {
+  Recognition out;
+  out.epsilon = epsilon;
+  out.pen_radius = pen_radius;
+  out.certificate.epsilon = epsilon;
+  out.certificate.pen_radius = pen_radius;
+  std::vector<std::pair<double, Candidate>> ranked;
+  for (Fit& f : fits) {
+    Candidate c;
+    c.shape = f.shape;
+    c.params = f.params;
+    if (f.fit_error <= kCertifyIfBelow * epsilon) {
+      c.certificate = certify(s.points, f.clean, epsilon, pen_radius, s.size);
+    } else {
+      c.certificate.epsilon = epsilon;
+      c.certificate.pen_radius = pen_radius;
+      c.certificate.bound = f.fit_error; // not certified; the fit's estimate for ranking
+    }
+    if (c.certificate.certified) c.rejected = implausibility(s, f, c.certificate, config);
+    c.clean = display_path(f.clean, s.size);
+    const double rank = c.certificate.bound / epsilon + kPricePerParameter * degrees_of_freedom(f);
+    const bool snap = c.certificate.certified && c.rejected.empty();
+    ranked.emplace_back(snap ? rank : rank + 1e6, std::move(c));
+  }
+  std::stable_sort(ranked.begin(), ranked.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::size_t first_alternative = 0;
+  if (!ranked.empty() && ranked.front().first < 1e6) {
+    Candidate& w = ranked.front().second;
+    out.shape = w.shape;
+    out.params = w.params;
+    out.clean = w.clean;
+    out.certificate = w.certificate;
+    out.confidence = std::clamp(1.0 - w.certificate.bound / (2.0 * epsilon), 0.0, 1.0);
+    first_alternative = 1;
+  }
+  for (std::size_t i = first_alternative; i < ranked.size(); ++i) {
+    out.alternatives.push_back(std::move(ranked[i].second));
+  }
+  return out;
+}
+
+} // namespace penshape::recognize_detail
+
+namespace penshape {
+
+using recognize_detail::PreparedStroke;
+
+ToleranceChoice choose_tolerance(const std::vector<StrokePoint>& samples,
+                                 const RecognizerConfig& config) {
+  ToleranceChoice t;
+  if (samples.empty()) return t;
+  double xlo = samples[0].x, xhi = xlo, ylo = samples[0].y, yhi = ylo;
+  for (const StrokePoint& s : samples) {
+    xlo = std::min(xlo, s.x);
+    xhi = std::max(xhi, s.x);
+    ylo = std::min(ylo, s.y);
+    yhi = std::max(yhi, s.y);
+  }
+  t.size = std::hypot(xhi - xlo, yhi - ylo);
+  t.pen_radius =
+      config.pen_radius > 0 ? config.pen_radius : config.default_pen_radius_fraction * t.size;
+  t.epsilon = config.tolerance > 0 ? config.tolerance
+                                   : std::min(config.tolerance_pen_radii * t.pen_radius,
+                                              config.max_tolerance_fraction * t.size);
+  return t;
+}
+
+Recognition recognize(const std::vector<StrokePoint>& samples, const RecognizerConfig& config) {
+  recognize_detail::validate_samples(samples, config);
+  const ToleranceChoice tol = choose_tolerance(samples, config);
+  const PreparedStroke s = recognize_detail::prepare(samples);
+  return recognize_detail::classify(s, recognize_detail::fit_all(s, config, tol.epsilon),
+                                    tol.epsilon, tol.pen_radius, config);
+}
+
+} // namespace penshape
