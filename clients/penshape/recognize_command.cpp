@@ -162,6 +162,8 @@ int run_recognize(std::span<const std::string_view> args) {
         if (labels) json.key("label").string(label);
         json.key("class").string(got);
         json.key("confidence").number(r.confidence);
+        json.key("bound").number(r.certificate.bound);
+        json.key("rms").number(r.rms);
         json.key("params");
         write_params(json, r.shape, r.params);
         json.key("alternatives").begin_array();
@@ -170,6 +172,8 @@ int run_recognize(std::span<const std::string_view> args) {
           json.key("class").string(to_string(c.shape));
           json.key("certified").boolean(c.certificate.certified);
           json.key("bound").number(c.certificate.bound);
+          json.key("rms").number(c.rms);
+          if (!c.rejected.empty()) json.key("rejected").string(c.rejected);
           json.end_object();
         }
         json.end_array();

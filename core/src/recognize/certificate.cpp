@@ -47,7 +47,7 @@ Certificate certify(std::span<const PointD> stroke, const CleanShape& shape, dou
   const double stroke_len = path_length(stroke);
   std::vector<PointD> probe = shape.sample(extent); // coarse, only to measure the shape's length
   const double shape_len = path_length(probe);
-  double h = epsilon / 8.0;
+  double h = epsilon / 6.0;
   h = std::max({h, stroke_len / kMaxSamples, shape_len / kMaxSamples, 1e-12 * extent});
   cert.sample_spacing = h;
 

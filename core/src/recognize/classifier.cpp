@@ -3,17 +3,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "certificate.hpp"
 
 namespace penshape::recognize_detail {
 namespace {
 
-// A candidate's rank: its certified bound in units of epsilon plus a price per free parameter,
-// so a simpler shape wins unless a richer one fits clearly better (by 0.05 epsilon per
-// parameter). Regular polygons are priced as 6 parameters: with many sides they approach the
+// A candidate's rank (recognize.hpp): its certified bound and twice its RMS distance in units of
+// epsilon, plus a price per free parameter, so a simpler shape wins unless a richer one fits
+// clearly better. Regular polygons are priced as 6 parameters: with many sides they approach the
 // circle, and the circle is the simpler reading of a round stroke.
 constexpr double kPricePerParameter = 0.15;
+constexpr double kRmsWeight = 2.0;
 // Fits whose estimate exceeds this many epsilons are not certified at all (saves time; their
 // certificate could not pass because the estimate is measured on points of the stroke).
 constexpr double kCertifyIfBelow = 1.25;
@@ -56,6 +58,24 @@ std::string implausibility(const PreparedStroke& s, const Fit& f, const Certific
   }
   if (f.shape == ShapeClass::kPolyline && self_crossing(f.clean.path)) {
     return "the open polyline crosses itself (a gesture, not a shape)";
+  }
+  if (f.shape == ShapeClass::kTriangle || f.shape == ShapeClass::kQuadrilateral) {
+    const std::vector<PointD>& v = f.params.vertices;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      if (distance(v[i], v[(i + 1) % v.size()]) < c.epsilon) {
+        return "a side is shorter than epsilon (a corner drawn round, not a side)";
+      }
+      const PointD prev = v[(i + v.size() - 1) % v.size()];
+      if (segment_distance(v[i], prev, v[(i + 1) % v.size()]) < c.epsilon) {
+        return "a corner is within epsilon of its neighbours' chord (not a corner)";
+      }
+    }
+  }
+  if (f.shape == ShapeClass::kRegularPolygon) {
+    const double n = static_cast<double>(f.params.vertices.size());
+    if (f.params.radius_x * (1.0 - std::cos(std::numbers::pi / n)) < 0.5 * c.epsilon) {
+      return "the regular polygon's corners stand out from its circle by less than epsilon / 2";
+    }
   }
   if (f.shape == ShapeClass::kArc && turning_monotonicity(s) < config.arc_monotone_turning) {
     return "the stroke turns both ways (not an arc)";
@@ -128,7 +148,7 @@ std::vector<Fit> fit_all(const PreparedStroke& s, const RecognizerConfig& config
   }
   std::optional<Fit> circle = fit_circle(s);
   if (circle) {
-    for (std::size_t n = 5; n <= 8; ++n) {
+    for (const std::size_t n : {5, 6, 8}) {
       add(fit_regular_polygon(s, n, circle->params.center, circle->params.radius_x));
     }
     add(std::move(circle));
@@ -157,8 +177,10 @@ Recognition classify(const PreparedStroke& s, std::vector<Fit> fits, double epsi
       c.certificate.bound = f.fit_error; // not certified; the fit's estimate for ranking
     }
     if (c.certificate.certified) c.rejected = implausibility(s, f, c.certificate, config);
+    c.rms = rms_distance(s.fit_points, f.clean);
     c.clean = display_path(f.clean, s.size);
-    const double rank = c.certificate.bound / epsilon + kPricePerParameter * degrees_of_freedom(f);
+    const double rank = (c.certificate.bound + kRmsWeight * c.rms) / epsilon +
+                        kPricePerParameter * degrees_of_freedom(f);
     const bool snap = c.certificate.certified && c.rejected.empty();
     ranked.emplace_back(snap ? rank : rank + 1e6, std::move(c));
   }
@@ -171,6 +193,7 @@ Recognition classify(const PreparedStroke& s, std::vector<Fit> fits, double epsi
     out.params = w.params;
     out.clean = w.clean;
     out.certificate = w.certificate;
+    out.rms = w.rms;
     out.confidence = std::clamp(1.0 - w.certificate.bound / (2.0 * epsilon), 0.0, 1.0);
     first_alternative = 1;
   }

@@ -90,10 +90,41 @@ double CleanShape::distance_to(PointD p) const {
   return INFINITY;
 }
 
+double approximate_ellipse_distance(PointD p, const CleanShape& e) {
+  const PointD d = p - e.center;
+  const double c = std::cos(e.rotation);
+  const double s = std::sin(e.rotation);
+  const double x = (c * d.x + s * d.y) / e.rx;
+  const double y = (-s * d.x + c * d.y) / e.ry;
+  // Sampson's first-order distance to F = x^2 + y^2 - 1 in the scaled frame.
+  const double g = 2.0 * std::sqrt(x * x / (e.rx * e.rx) + y * y / (e.ry * e.ry));
+  const double f = std::abs(x * x + y * y - 1.0);
+  return g > 0 ? f / g : std::max(e.rx, e.ry);
+}
+
 double max_distance(std::span<const PointD> points, const CleanShape& shape) {
   double worst = 0.0;
+  if (shape.kind == CleanShape::Kind::kEllipse) {
+    for (const PointD& p : points) worst = std::max(worst, approximate_ellipse_distance(p, shape));
+    return worst;
+  }
   for (const PointD& p : points) worst = std::max(worst, shape.distance_to(p));
   return worst;
+}
+
+} // namespace penshape::recognize_detail
+
+namespace penshape::recognize_detail {
+
+double rms_distance(std::span<const PointD> points, const CleanShape& shape) {
+  double sum = 0.0;
+  for (const PointD& p : points) {
+    const double d = shape.kind == CleanShape::Kind::kEllipse
+                         ? approximate_ellipse_distance(p, shape)
+                         : shape.distance_to(p);
+    sum += d * d;
+  }
+  return points.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(points.size()));
 }
 
 } // namespace penshape::recognize_detail

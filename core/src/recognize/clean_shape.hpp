@@ -38,7 +38,14 @@ double arc_distance(PointD p, const CleanShape& circle);
 // Distance from p to a point of the full ellipse near its foot point (an upper bound).
 double ellipse_distance(PointD p, const CleanShape& ellipse);
 
-// Max of distance_to over `points`.
+// Sampson's first-order distance to an ellipse: fast, accurate near it, not a bound.
+double approximate_ellipse_distance(PointD p, const CleanShape& ellipse);
+
+// Max of distance_to over `points` (for ellipses: of the Sampson distance); the fitters'
+// objective, an estimate, never a certificate.
 double max_distance(std::span<const PointD> points, const CleanShape& shape);
+
+// Root-mean-square distance of `points` to the shape (Sampson distance for ellipses).
+double rms_distance(std::span<const PointD> points, const CleanShape& shape);
 
 } // namespace penshape::recognize_detail

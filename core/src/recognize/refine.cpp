@@ -29,7 +29,7 @@ Refinement refine_minimax(const PreparedStroke& stroke, std::vector<double> para
   double step = initial_step;
   const double min_step = initial_step / 32.0;
   // Evaluation budget: the search is a local polish of a least-squares start, not a solver.
-  const std::size_t budget = 24 * params.size();
+  const std::size_t budget = 16 * params.size();
   std::size_t evaluations = 1;
   while (step >= min_step && evaluations < budget) {
     bool improved = false;

@@ -39,13 +39,20 @@
 //     (people draw straight strokes far more precisely than round ones; a curve that merely
 //     stays near a few segments is a letter or a brace, not a polyline);
 //   - an open polyline must not cross itself (x, alpha, delete marks are gestures);
+//   - every side of a triangle or quadrilateral is at least epsilon long, and every corner is at
+//     least epsilon from the chord of its two neighbours (otherwise the polygon with one corner
+//     less says the same within tolerance: a corner drawn round, or a bump on a side);
+//   - a regular polygon's corners must stand out from its circumcircle by at least epsilon / 2
+//     (R (1 - cos(pi / n)) >= epsilon / 2), or the circle says the same thing more simply;
 //   - an arc must turn one way only (its net turning is most of its total turning; a brace or
 //     an S turns both ways) and sweep less than a full turn.
-// Among the plausible certified candidates the lowest rank wins, rank = bound / epsilon +
-// 0.15 * (free parameters): a square (4) before a rectangle (5) before a quadrilateral (8), a
-// circle (3) before an ellipse (5), unless the richer shape fits clearly better.
-// `alternatives` lists every other candidate with its certificate (and why it was rejected).
-// Strokes with no plausible certified candidate are `freeform`.
+// Among the plausible certified candidates the lowest rank wins,
+//     rank = (bound + 2 rms) / epsilon + 0.15 * (free parameters),
+// with rms the root-mean-square distance of the stroke to the clean shape (the mean error tells
+// a sloppy circle from a sloppy square better than the worst error does): a square (4) before a
+// rectangle (5) before a quadrilateral (8), a circle (3) before an ellipse (5), unless the richer
+// shape fits clearly better. `alternatives` lists every other candidate with its certificate (and
+// why it was rejected). Strokes with no plausible certified candidate are `freeform`.
 //
 // Limits (explicit, InvalidInput when exceeded): at least 2 samples with distinct positions,
 // at most RecognizerConfig::max_samples samples, finite coordinates with |x|, |y| <= 1e9.
@@ -68,7 +75,7 @@ enum class ShapeClass {
   kRectangle,
   kSquare,
   kDiamond,        // a rhombus whose diagonals are near the x and y axes
-  kRegularPolygon, // 5..8 equal sides and angles
+  kRegularPolygon, // 5, 6 or 8 equal sides and angles
   kCircle,
   kEllipse,
   kArc, // an open circular arc
@@ -100,7 +107,7 @@ struct RecognizerConfig {
   // ... bounded by this fraction of the drawing size, so a small mark never snaps coarsely.
   double max_tolerance_fraction = 0.125;
   // Straight open shapes (segment, polyline) must certify within this fraction of epsilon.
-  double straight_fraction = 0.4;
+  double straight_fraction = 0.35;
   // Arcs: net turning / total turning at least this (1 = turns strictly one way).
   double arc_monotone_turning = 0.8;
   // Open polylines have at most this many segments (more is handwriting, not a shape).
@@ -137,12 +144,14 @@ struct Candidate {
                              // point at the end; circles/ellipses densely sampled)
   Certificate certificate;
   std::string rejected; // why a certified candidate is not a snap (empty: plausible)
+  double rms = 0.0;     // root-mean-square distance of the stroke to the clean path (ranking)
 };
 
 struct Recognition {
   ShapeClass shape = ShapeClass::kFreeform; // kFreeform when nothing certifies
   ShapeParams params;
   std::vector<PointD> clean;           // empty for freeform
+  double rms = 0.0;                    // of the winner, see Candidate::rms
   double confidence = 0.0;             // 1 - bound / (2 epsilon) of the winner (0.5..1), 0 freeform
   Certificate certificate;             // of the winner (certified == false for freeform)
   std::vector<Candidate> alternatives; // the other candidates tried, best bound first
