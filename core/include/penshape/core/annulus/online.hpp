@@ -1,0 +1,41 @@
+#pragma once
+// On-line containment decision under translation (paper Section 4): points arrive one at a time;
+// after each point the answer says whether a translate of the delta-annulus of a convex template
+// contains all points so far. NO is final (more points cannot help) and is given as soon as it
+// holds. Each point keeps the placements with it on the inner/outer boundary that contain all
+// points applied to it; a point whose set empties is discarded and queued (pruning, Sec. 4.3), and
+// queued points are applied lazily to the surviving sets before a YES is given.
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+#include "penshape/core/annulus/annulus_template.hpp"
+
+namespace penshape::annulus {
+
+class OnlineContainment {
+ public:
+  // Throws InvalidInput for a non-convex template or a bad delta. The robustness margin is fixed
+  // from the template, delta and `coordinate_magnitude` (the expected largest |x|, |y| of points).
+  OnlineContainment(const TemplatePolygon& p, OuterOffset outer, double delta,
+                    double coordinate_magnitude = 0.0, const Limits& limits = {});
+  ~OnlineContainment();
+  OnlineContainment(OnlineContainment&&) noexcept;
+  OnlineContainment& operator=(OnlineContainment&&) noexcept;
+
+  // Adds a point (InvalidInput if not finite) and returns the answer for all points so far:
+  // kYes with an exactly verified placement(), kNo (final), or kUndecided (within the margin).
+  Answer add(PointD q);
+
+  [[nodiscard]] Answer answer() const;
+  [[nodiscard]] const Placement& placement() const; // valid when answer() == kYes
+  [[nodiscard]] std::size_t points() const;
+  [[nodiscard]] std::size_t active_structures() const;     // h_i of the paper
+  [[nodiscard]] std::size_t max_active_structures() const; // h
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+} // namespace penshape::annulus

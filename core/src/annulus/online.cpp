@@ -1,0 +1,172 @@
+// On-line containment decision under translation (Section 4) with the pruning of Section 4.3.
+#include "penshape/core/annulus/online.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "prepared_annulus.hpp"
+#include "translation_internal.hpp"
+
+namespace penshape::annulus {
+
+using namespace detail;
+
+struct OnlineContainment::State {
+  // Placements with `point` on the inner (0) or outer (1) boundary containing every point
+  // applied so far, per boundary piece. Points deleted before this structure was created are
+  // applied lazily (queue[0, missing_until)).
+  struct Structure {
+    std::size_t point = 0;
+    std::size_t missing_until = 0;
+    std::vector<IntervalSet> sets[2];
+  };
+
+  TemplatePolygon p;
+  OuterOffset outer;
+  double delta;
+  PreparedAnnulus an;
+  std::vector<PointD> pts;
+  std::vector<Structure> structures; // one per point, by index
+  std::vector<std::size_t> active;
+  std::vector<std::size_t> queue; // deleted points in order of deletion
+  Answer answer = Answer::kUndecided;
+  Placement witness;
+  bool has_witness = false;
+  std::size_t max_active = 0;
+
+  const Curve& curve(int which) const { return which == 0 ? an.inner_curve : an.outer_curve; }
+
+  // Intersects structure s with the containing sets of point j; false when it became empty.
+  bool apply(Structure& s, std::size_t j) const {
+    const PointD d = sub(pts[j], pts[s.point]);
+    bool any = false;
+    for (int w = 0; w < 2; ++w) {
+      const Curve& c = curve(w);
+      for (std::size_t k = 0; k < c.size(); ++k) {
+        if (s.sets[w][k].empty()) continue;
+        if (d.x == 0.0 && d.y == 0.0) {
+          any = true; // the same location is contained wherever the anchor is
+          continue;
+        }
+        s.sets[w][k] = intersect(s.sets[w][k], member_set(an, c[k], d));
+        any = any || !s.sets[w][k].empty();
+      }
+    }
+    return any;
+  }
+
+  Answer add(PointD q) {
+    if (!std::isfinite(q.x) || !std::isfinite(q.y)) {
+      throw InvalidInput("point " + std::to_string(pts.size()) + " is not finite");
+    }
+    const std::size_t idx = pts.size();
+    pts.push_back(q);
+    structures.emplace_back();
+    if (answer == Answer::kNo) return answer; // final
+    // Update the active structures with the new point; discard the ones that empty.
+    std::vector<std::size_t> survivors;
+    for (std::size_t s : active) {
+      if (apply(structures[s], idx)) {
+        survivors.push_back(s);
+      } else {
+        queue.push_back(s);
+      }
+    }
+    // The new point's own structure, updated by the active points only.
+    Structure& ns = structures[idx];
+    ns.point = idx;
+    ns.missing_until = queue.size();
+    bool alive = true;
+    for (int w = 0; w < 2; ++w) {
+      const Curve& c = curve(w);
+      ns.sets[w].resize(c.size());
+      for (std::size_t k = 0; k < c.size(); ++k) ns.sets[w][k] = {{c[k].lo(), c[k].hi()}};
+      if (c.empty()) ns.sets[w].clear();
+    }
+    for (std::size_t s : survivors) {
+      if (!apply(ns, s)) {
+        alive = false;
+        break;
+      }
+    }
+    if (alive) {
+      survivors.push_back(idx);
+    } else {
+      queue.push_back(idx);
+    }
+    active.swap(survivors);
+    max_active = std::max(max_active, active.size());
+    if (active.empty()) return answer = Answer::kNo;
+    // The last witness may still hold.
+    if (has_witness && annulus_contains_exactly(p, outer, delta, witness, q)) {
+      return answer = Answer::kYes;
+    }
+    has_witness = false;
+    // Reconcile: apply the queued points a structure has not seen; a non-empty result then holds
+    // exactly the placements with its point on the boundary that contain every point (with the
+    // widened annulus). The first survivor means a witness should exist: search it with the
+    // narrowed annulus (translation.cpp) and check it exactly.
+    std::vector<std::size_t> keep;
+    bool survivor = false;
+    for (std::size_t a = 0; a < active.size(); ++a) {
+      const std::size_t s = active[a];
+      Structure& st = structures[s];
+      bool ok = true;
+      if (!survivor) {
+        for (std::size_t t = 0; t < st.missing_until && ok; ++t) ok = apply(st, queue[t]);
+        st.missing_until = 0;
+      }
+      if (!ok) {
+        queue.push_back(s);
+        continue;
+      }
+      keep.push_back(s);
+      survivor = true;
+    }
+    Answer result = Answer::kNo;
+    if (survivor) {
+      result = Answer::kUndecided;
+      if (find_translation_witness(p, outer, delta, pts, witness)) {
+        has_witness = true;
+        result = Answer::kYes;
+      }
+    }
+    active.swap(keep);
+    return answer = result;
+  }
+};
+
+OnlineContainment::OnlineContainment(const TemplatePolygon& p, OuterOffset outer, double delta,
+                                     double coordinate_magnitude, const Limits& limits) {
+  if (!p.convex()) throw InvalidInput("the on-line decision needs a convex template");
+  validate_delta(delta, limits);
+  if (!std::isfinite(coordinate_magnitude) || coordinate_magnitude < 0.0) {
+    throw InvalidInput("coordinate magnitude must be finite and non-negative");
+  }
+  const double margin = annulus_margin(p, delta, {PointD{coordinate_magnitude, 0.0}});
+  state_ = std::make_unique<State>(State{p,
+                                         outer,
+                                         delta,
+                                         prepare(p, outer, widened(delta, margin)),
+                                         {},
+                                         {},
+                                         {},
+                                         {},
+                                         Answer::kUndecided,
+                                         {},
+                                         false,
+                                         0});
+}
+
+OnlineContainment::~OnlineContainment() = default;
+OnlineContainment::OnlineContainment(OnlineContainment&&) noexcept = default;
+OnlineContainment& OnlineContainment::operator=(OnlineContainment&&) noexcept = default;
+
+Answer OnlineContainment::add(PointD q) { return state_->add(q); }
+Answer OnlineContainment::answer() const { return state_->answer; }
+const Placement& OnlineContainment::placement() const { return state_->witness; }
+std::size_t OnlineContainment::points() const { return state_->pts.size(); }
+std::size_t OnlineContainment::active_structures() const { return state_->active.size(); }
+std::size_t OnlineContainment::max_active_structures() const { return state_->max_active; }
+
+} // namespace penshape::annulus

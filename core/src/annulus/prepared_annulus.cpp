@@ -1,0 +1,361 @@
+#include "prepared_annulus.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace penshape::annulus::detail {
+namespace {
+
+bool overlaps(const Box& a, const Box& b) {
+  return a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1;
+}
+
+Box shifted(Box b, PointD d) { return {b.x0 + d.x, b.y0 + d.y, b.x1 + d.x, b.y1 + d.y}; }
+
+// Sutherland-Hodgman clip of a convex polygon by n . x <= h.
+std::vector<PointD> clip(const std::vector<PointD>& poly, PointD n, double h) {
+  std::vector<PointD> out;
+  const std::size_t m = poly.size();
+  for (std::size_t i = 0; i < m; ++i) {
+    const PointD a = poly[i];
+    const PointD b = poly[(i + 1) % m];
+    const double sa = dot(n, a) - h;
+    const double sb = dot(n, b) - h;
+    if (sa <= 0.0) out.push_back(a);
+    if ((sa < 0.0 && sb > 0.0) || (sa > 0.0 && sb < 0.0)) {
+      const double t = sa / (sa - sb);
+      out.push_back(add(a, mul(sub(b, a), t)));
+    }
+  }
+  return out;
+}
+
+double polygon_area2(const std::vector<PointD>& poly) {
+  double s = 0.0;
+  for (std::size_t i = 0; i < poly.size(); ++i) s += cross(poly[i], poly[(i + 1) % poly.size()]);
+  return s;
+}
+
+Curve polygon_curve(const std::vector<PointD>& poly) {
+  Curve c;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    Piece p;
+    p.a = poly[i];
+    p.b = poly[(i + 1) % poly.size()];
+    c.push_back(p);
+  }
+  return c;
+}
+
+Piece arc_piece(PointD center, double r, double phi0, double phi1) {
+  Piece p;
+  p.arc = true;
+  p.c = center;
+  p.r = r;
+  p.phi0 = phi0;
+  p.phi1 = phi1;
+  return p;
+}
+
+// Intersects every interval of `cur` with {A cos + B sin <= C}.
+void intersect_trig(IntervalSet& cur, double A, double B, double C) {
+  IntervalSet out;
+  for (const Interval& iv : cur) trig_leq(A, B, C, iv.lo, iv.hi, out);
+  cur.swap(out);
+}
+
+// --- segment pieces: z(u) = z0 + u w, u in [0, 1] ---
+
+// u-interval of the segment inside {n . z <= h + off for every edge}; false if empty.
+bool segment_in_halfplanes(const std::vector<Edge>& edges, double off, PointD z0, PointD w,
+                           double& lo, double& hi) {
+  lo = 0.0;
+  hi = 1.0;
+  for (const Edge& e : edges) {
+    // The hole (off < 0) is open.
+    clip_linear(lo, hi, dot(e.n, z0) - e.h - off, dot(e.n, w), off < 0.0);
+    if (lo > hi) return false;
+  }
+  return true;
+}
+
+// u-interval of the segment inside the stadium of edge e (rectangle part and the disk at e.a).
+void segment_in_stadium(const Edge& e, double delta, PointD z0, PointD w, IntervalSet& out) {
+  double lo = 0.0;
+  double hi = 1.0;
+  const PointD r0 = sub(z0, e.a);
+  clip_linear(lo, hi, -dot(r0, e.v), -dot(w, e.v));
+  clip_linear(lo, hi, dot(r0, e.v) - e.len2, dot(w, e.v));
+  clip_linear(lo, hi, dot(e.n, r0) - delta, dot(e.n, w));
+  clip_linear(lo, hi, -dot(e.n, r0) - delta, -dot(e.n, w));
+  if (lo <= hi) out.push_back({lo, hi});
+  const double ww = dot(w, w);
+  if (ww > 0.0) {
+    double qlo = 0.0;
+    double qhi = 1.0;
+    if (quadratic_leq(ww, 2.0 * dot(w, r0), dot(r0, r0) - delta * delta, qlo, qhi)) {
+      out.push_back({qlo, qhi});
+    }
+  } else if (dot(r0, r0) <= delta * delta) {
+    out.push_back({0.0, 1.0});
+  }
+}
+
+// --- arc pieces: z(phi) = z0 + r (cos phi, sin phi) ---
+
+IntervalSet arc_in_halfplanes(const std::vector<Edge>& edges, double off, PointD z0, double r,
+                              double lo, double hi) {
+  IntervalSet cur{{lo, hi}};
+  for (const Edge& e : edges) {
+    intersect_trig(cur, r * e.n.x, r * e.n.y, e.h + off - dot(e.n, z0));
+    if (cur.empty()) break;
+  }
+  return cur;
+}
+
+void arc_in_stadium(const Edge& e, double delta, PointD z0, double r, double lo, double hi,
+                    IntervalSet& out) {
+  const PointD r0 = sub(z0, e.a);
+  IntervalSet cur{{lo, hi}};
+  intersect_trig(cur, -r * e.v.x, -r * e.v.y, dot(r0, e.v));
+  if (!cur.empty()) intersect_trig(cur, r * e.v.x, r * e.v.y, e.len2 - dot(r0, e.v));
+  if (!cur.empty()) intersect_trig(cur, r * e.n.x, r * e.n.y, delta - dot(e.n, r0));
+  if (!cur.empty()) intersect_trig(cur, -r * e.n.x, -r * e.n.y, delta + dot(e.n, r0));
+  out.insert(out.end(), cur.begin(), cur.end());
+  // |r0 + r u|^2 <= delta^2  <=>  2 r u . r0 <= delta^2 - r^2 - |r0|^2
+  trig_leq(2.0 * r * r0.x, 2.0 * r * r0.y, delta * delta - r * r - dot(r0, r0), lo, hi, out);
+}
+
+} // namespace
+
+PointD Piece::at(double t) const {
+  if (arc) return {c.x + r * std::cos(t), c.y + r * std::sin(t)};
+  return {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+}
+
+Box Piece::box() const {
+  if (arc) return {c.x - r, c.y - r, c.x + r, c.y + r};
+  return {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)};
+}
+
+namespace {
+PreparedAnnulus prepare_single(const TemplatePolygon& p, OuterOffset outer, double delta) {
+  PreparedAnnulus an;
+  an.convex = p.convex();
+  an.outer = outer;
+  an.delta = delta;
+  const auto& v = p.vertices();
+  const std::size_t m = v.size();
+  for (std::size_t k = 0; k < m; ++k) {
+    Edge e;
+    e.a = v[k];
+    e.v = sub(v[(k + 1) % m], v[k]);
+    e.len2 = dot(e.v, e.v);
+    const double len = std::sqrt(e.len2);
+    e.n = {e.v.y / len, -e.v.x / len};
+    e.h = dot(e.n, e.a);
+    an.edges.push_back(e);
+    const PointD b = v[(k + 1) % m];
+    an.stadium_boxes.push_back({std::min(e.a.x, b.x) - delta, std::min(e.a.y, b.y) - delta,
+                                std::max(e.a.x, b.x) + delta, std::max(e.a.y, b.y) + delta});
+  }
+  Box box = an.stadium_boxes.front();
+  for (const Box& b : an.stadium_boxes) {
+    box = {std::min(box.x0, b.x0), std::min(box.y0, b.y0), std::max(box.x1, b.x1),
+           std::max(box.y1, b.y1)};
+  }
+  if (!p.convex()) {
+    // Every piece of every stadium boundary: a superset of the annulus boundary (Section 5).
+    for (const Edge& e : an.edges) {
+      const PointD b = add(e.a, e.v);
+      for (double side : {1.0, -1.0}) {
+        Piece s;
+        s.a = add(e.a, mul(e.n, side * delta));
+        s.b = add(b, mul(e.n, side * delta));
+        an.outer_curve.push_back(s);
+        if (delta == 0.0) break;
+      }
+      if (delta > 0.0) {
+        an.outer_curve.push_back(arc_piece(e.a, delta, -std::numbers::pi, std::numbers::pi));
+      }
+    }
+    an.outer_stride = 2.0;
+    an.box = box;
+    return an;
+  }
+  // Inner offset: P clipped by every edge line moved inwards by delta.
+  std::vector<PointD> inner = v;
+  for (const Edge& e : an.edges) {
+    inner = clip(inner, e.n, e.h - delta);
+    if (inner.size() < 3) break;
+  }
+  double extent = 0.0;
+  for (const PointD& q : v) extent = std::max({extent, std::abs(q.x), std::abs(q.y)});
+  if (inner.size() >= 3 && polygon_area2(inner) > 1e-24 * extent * extent) {
+    an.inner = inner;
+    an.inner_curve = polygon_curve(inner);
+  }
+  // Linearized outer offset: consecutive edge lines moved outwards by delta meet at a miter.
+  for (std::size_t k = 0; k < m; ++k) {
+    const Edge& prev = an.edges[(k + m - 1) % m];
+    const Edge& cur = an.edges[k];
+    const double s = delta / (1.0 + dot(prev.n, cur.n));
+    an.outer_poly.push_back(add(v[k], mul(add(prev.n, cur.n), s)));
+  }
+  if (outer == OuterOffset::kLinearized) {
+    an.outer_curve = polygon_curve(an.outer_poly);
+    box = {an.outer_poly[0].x, an.outer_poly[0].y, an.outer_poly[0].x, an.outer_poly[0].y};
+    for (const PointD& q : an.outer_poly) {
+      box = {std::min(box.x0, q.x), std::min(box.y0, q.y), std::max(box.x1, q.x),
+             std::max(box.y1, q.y)};
+    }
+  } else {
+    for (std::size_t k = 0; k < m; ++k) {
+      const Edge& e = an.edges[k];
+      const Edge& next = an.edges[(k + 1) % m];
+      Piece s;
+      s.a = add(e.a, mul(e.n, delta));
+      s.b = add(add(e.a, e.v), mul(e.n, delta));
+      an.outer_curve.push_back(s);
+      if (delta > 0.0) {
+        const double phi0 = std::atan2(e.n.y, e.n.x);
+        double phi1 = std::atan2(next.n.y, next.n.x);
+        if (phi1 < phi0) phi1 += 2.0 * std::numbers::pi;
+        an.outer_curve.push_back(arc_piece(next.a, delta, phi0, phi1));
+      }
+    }
+  }
+  an.box = box;
+  return an;
+}
+} // namespace
+
+PreparedAnnulus prepare(const TemplatePolygon& p, OuterOffset outer, double delta,
+                        double curve_delta) {
+  PreparedAnnulus an = prepare_single(p, outer, delta);
+  an.has_hole = !an.inner.empty();
+  if (curve_delta != delta) {
+    PreparedAnnulus c = prepare_single(p, outer, curve_delta);
+    an.inner = std::move(c.inner);
+    an.outer_poly = std::move(c.outer_poly);
+    an.inner_curve = std::move(c.inner_curve);
+    an.outer_curve = std::move(c.outer_curve);
+  }
+  return an;
+}
+
+PreparedAnnulus prepare(const TemplatePolygon& p, OuterOffset outer, double delta) {
+  return prepare(p, outer, delta, delta);
+}
+
+IntervalSet member_set(const PreparedAnnulus& an, const Piece& piece, PointD d) {
+  IntervalSet result;
+  const Box pb = shifted(piece.box(), d);
+  if (!overlaps(pb, an.box)) return result;
+  const double delta = an.delta;
+  if (!piece.arc) {
+    const PointD z0 = add(piece.a, d);
+    const PointD w = sub(piece.b, piece.a);
+    if (!an.convex) {
+      for (std::size_t k = 0; k < an.edges.size(); ++k) {
+        if (overlaps(pb, an.stadium_boxes[k]))
+          segment_in_stadium(an.edges[k], delta, z0, w, result);
+      }
+      normalize(result);
+      return result;
+    }
+    double lo = 0.0;
+    double hi = 0.0;
+    if (an.outer == OuterOffset::kLinearized) {
+      if (!segment_in_halfplanes(an.edges, delta, z0, w, lo, hi)) return result;
+    } else {
+      // P + disk(delta) is convex, so its trace on the segment is one interval: the hull of the
+      // traces of P and of the stadiums that make it up.
+      IntervalSet parts;
+      if (segment_in_halfplanes(an.edges, 0.0, z0, w, lo, hi)) parts.push_back({lo, hi});
+      for (std::size_t k = 0; k < an.edges.size(); ++k) {
+        if (overlaps(pb, an.stadium_boxes[k])) segment_in_stadium(an.edges[k], delta, z0, w, parts);
+      }
+      if (parts.empty()) return result;
+      lo = parts.front().lo;
+      hi = parts.front().hi;
+      for (const Interval& iv : parts) {
+        lo = std::min(lo, iv.lo);
+        hi = std::max(hi, iv.hi);
+      }
+    }
+    result.push_back({lo, hi});
+    if (an.has_hole) {
+      double ilo = 0.0;
+      double ihi = 0.0;
+      if (segment_in_halfplanes(an.edges, -delta, z0, w, ilo, ihi)) {
+        // Ends clamped by the piece are not boundaries of the open hole: extend them past it.
+        result = subtract_interior(result,
+                                   IntervalSet{{ilo <= 0.0 ? -1.0 : ilo, ihi >= 1.0 ? 2.0 : ihi}});
+      }
+    }
+    return result;
+  }
+  const PointD z0 = add(piece.c, d);
+  const double r = piece.r;
+  if (!an.convex) {
+    for (std::size_t k = 0; k < an.edges.size(); ++k) {
+      if (overlaps(pb, an.stadium_boxes[k])) {
+        arc_in_stadium(an.edges[k], delta, z0, r, piece.phi0, piece.phi1, result);
+      }
+    }
+    normalize(result);
+    return result;
+  }
+  if (an.outer == OuterOffset::kLinearized) {
+    result = arc_in_halfplanes(an.edges, delta, z0, r, piece.phi0, piece.phi1);
+  } else {
+    result = arc_in_halfplanes(an.edges, 0.0, z0, r, piece.phi0, piece.phi1);
+    for (std::size_t k = 0; k < an.edges.size(); ++k) {
+      if (overlaps(pb, an.stadium_boxes[k])) {
+        arc_in_stadium(an.edges[k], delta, z0, r, piece.phi0, piece.phi1, result);
+      }
+    }
+    normalize(result);
+  }
+  if (!result.empty() && an.has_hole) {
+    IntervalSet hole = arc_in_halfplanes(an.edges, -delta, z0, r, piece.phi0, piece.phi1);
+    if (!hole.empty()) {
+      if (hole.front().lo <= piece.phi0) hole.front().lo = piece.phi0 - 1.0;
+      if (hole.back().hi >= piece.phi1) hole.back().hi = piece.phi1 + 1.0;
+      result = subtract_interior(result, hole);
+    }
+  }
+  return result;
+}
+
+double annulus_measure(const TemplatePolygon& p, OuterOffset outer, PointD x) {
+  const auto& v = p.vertices();
+  const std::size_t m = v.size();
+  double fmax = -INFINITY; // max signed distance to the edge lines (convex)
+  double dmin2 = INFINITY; // squared distance to the boundary
+  for (std::size_t k = 0; k < m; ++k) {
+    const PointD a = v[k];
+    const PointD e = sub(v[(k + 1) % m], a);
+    const PointD r = sub(x, a);
+    const double len2 = dot(e, e);
+    if (p.convex()) fmax = std::max(fmax, -cross(e, r) / std::sqrt(len2));
+    const double t = std::clamp(dot(r, e) / len2, 0.0, 1.0);
+    const PointD q = sub(r, mul(e, t));
+    dmin2 = std::min(dmin2, dot(q, q));
+  }
+  if (!p.convex()) return std::sqrt(dmin2);
+  if (fmax <= 0.0) return -fmax; // inside: distance to the nearest edge line
+  return outer == OuterOffset::kLinearized ? fmax : std::sqrt(dmin2);
+}
+
+PointD curve_point(const Curve& c, double g, double stride) {
+  double idx = std::floor(g / stride);
+  idx = std::clamp(idx, 0.0, static_cast<double>(c.size() - 1));
+  const Piece& p = c[static_cast<std::size_t>(idx)];
+  const double f = std::clamp(g - idx * stride, 0.0, 1.0);
+  return p.at(p.lo() + f * (p.hi() - p.lo()));
+}
+
+} // namespace penshape::annulus::detail

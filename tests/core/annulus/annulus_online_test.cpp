@@ -1,0 +1,68 @@
+// The on-line decision equals the off-line decision on every prefix.
+#include <gtest/gtest.h>
+
+#include "annulus_oracle.hpp"
+#include "penshape/core/annulus/online.hpp"
+#include "penshape/core/annulus/translation.hpp"
+
+namespace penshape::annulus {
+namespace {
+
+class OnlineVsOffline : public ::testing::TestWithParam<OuterOffset> {};
+
+TEST_P(OnlineVsOffline, EveryPrefixAgrees) {
+  const OuterOffset outer = GetParam();
+  std::mt19937 rng(41 + static_cast<int>(outer));
+  std::uniform_real_distribution<double> u(0, 1);
+  std::size_t no_answers = 0;
+  std::size_t yes_answers = 0;
+  for (int trial = 0; trial < 25; ++trial) {
+    const auto poly = oracle::random_convex(rng, 3 + trial % 5, 1.0);
+    const TemplatePolygon tp = make_convex_template(poly);
+    auto pts = oracle::points_near(rng, poly, 30, 0.12, {2 * u(rng), u(rng), 0.0}, 0.03);
+    const double delta = 0.08 + 0.08 * u(rng);
+    OnlineContainment online(tp, outer, delta, 10.0);
+    std::vector<PointD> prefix;
+    for (const PointD& q : pts) {
+      prefix.push_back(q);
+      const Answer on = online.add(q);
+      const Answer off = decide_translation(tp, outer, delta, prefix).answer;
+      ASSERT_EQ(on, off) << "trial " << trial << " prefix " << prefix.size();
+      if (on == Answer::kYes) {
+        ++yes_answers;
+        EXPECT_EQ(covered_exactly(tp, outer, delta, online.placement(), prefix).size(),
+                  prefix.size());
+        // Independent check of the witness.
+        const oracle::Pose pose{online.placement().tx, online.placement().ty, 0};
+        EXPECT_EQ(oracle::count(tp.vertices(),
+                                outer == OuterOffset::kRound ? oracle::Kind::kRound
+                                                             : oracle::Kind::kLinearized,
+                                delta, pose, prefix, 1e-12),
+                  prefix.size());
+      }
+      no_answers += on == Answer::kNo ? 1 : 0;
+    }
+    EXPECT_LE(online.max_active_structures(), pts.size());
+  }
+  // The inputs exercise both answers.
+  EXPECT_GT(no_answers, 20u);
+  EXPECT_GT(yes_answers, 20u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Outer, OnlineVsOffline,
+                         ::testing::Values(OuterOffset::kRound, OuterOffset::kLinearized));
+
+TEST(Online, PruningKeepsFewStructures) {
+  // Many points on a square's boundary: most points cannot touch the annulus boundary of a
+  // containing placement, so they are discarded (Section 4.3).
+  const TemplatePolygon sq = make_convex_template({{0, 0}, {10, 0}, {10, 10}, {0, 10}});
+  std::mt19937 rng(3);
+  const auto pts = oracle::points_near(rng, sq.vertices(), 400, 0.2, {3, 4, 0});
+  OnlineContainment online(sq, OuterOffset::kRound, 0.5, 20.0);
+  for (const PointD& q : pts) EXPECT_EQ(online.add(q), Answer::kYes);
+  EXPECT_LT(online.active_structures(), 100u);
+  EXPECT_EQ(online.points(), 400u);
+}
+
+} // namespace
+} // namespace penshape::annulus

@@ -1,0 +1,132 @@
+// Real pen strokes ($1 gesture logs in ../shared/data/strokes/dollar1): rectangles fitted with a
+// rectangle template; results cross-checked by independent computations.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "annulus_oracle.hpp"
+#include "penshape/core/annulus/online.hpp"
+#include "penshape/core/annulus/rotation.hpp"
+#include "penshape/core/annulus/translation.hpp"
+
+namespace penshape::annulus {
+namespace {
+
+std::filesystem::path data_dir() {
+  if (const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR")) return env;
+  return PENSHAPE_SHARED_DATA_DIR;
+}
+
+std::vector<PointD> read_gesture(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string text = ss.str();
+  std::vector<PointD> pts;
+  for (std::size_t pos = text.find("<Point "); pos != std::string::npos;
+       pos = text.find("<Point ", pos + 1)) {
+    const std::size_t x = text.find("X=\"", pos);
+    const std::size_t y = text.find("Y=\"", pos);
+    pts.push_back({std::stod(text.substr(x + 3)), std::stod(text.substr(y + 3))});
+  }
+  return pts;
+}
+
+std::vector<std::filesystem::path> strokes(const std::string& name, int count) {
+  std::vector<std::filesystem::path> out;
+  for (const char* subject : {"s02", "s03", "s04", "s05", "s06"}) {
+    for (int k = 1; k <= count; ++k) {
+      const auto f = data_dir() / "strokes/dollar1" / subject / "medium" /
+                     (name + (k < 10 ? "0" : "") + std::to_string(k) + ".xml");
+      if (std::filesystem::exists(f)) out.push_back(f);
+    }
+  }
+  return out;
+}
+
+TemplatePolygon bbox_rectangle(const std::vector<PointD>& pts) {
+  double x0 = pts[0].x, x1 = x0, y0 = pts[0].y, y1 = y0;
+  for (const PointD& q : pts) {
+    x0 = std::min(x0, q.x);
+    x1 = std::max(x1, q.x);
+    y0 = std::min(y0, q.y);
+    y1 = std::max(y1, q.y);
+  }
+  return make_convex_template({{0, 0}, {x1 - x0, 0}, {x1 - x0, y1 - y0}, {0, y1 - y0}});
+}
+
+TEST(AnnulusRealData, RectangleStrokesFitRectangleTemplates) {
+  const auto files = strokes("rectangle", 3);
+  ASSERT_GE(files.size(), 10u) << "missing data in " << data_dir();
+  for (const auto& f : files) {
+    const auto pts = read_gesture(f);
+    ASSERT_GT(pts.size(), 20u) << f;
+    const TemplatePolygon tp = bbox_rectangle(pts);
+    const double side = std::min(tp.vertices()[2].x, tp.vertices()[2].y);
+    for (OuterOffset outer : {OuterOffset::kRound, OuterOffset::kLinearized}) {
+      const MinWidthResult r = min_width_translation(tp, outer, pts);
+      const oracle::Kind kind =
+          outer == OuterOffset::kRound ? oracle::Kind::kRound : oracle::Kind::kLinearized;
+      // Hand-drawn rectangles stay within a fifth of the short side of their box.
+      EXPECT_LT(r.delta_upper, 0.2 * side) << f;
+      EXPECT_EQ(oracle::count(tp.vertices(), kind, r.delta_upper,
+                              {r.placement.tx, r.placement.ty, 0}, pts, 1e-12),
+                pts.size())
+          << f;
+      EXPECT_EQ(decide_translation(tp, outer, r.delta_upper * 1.001, pts).answer, Answer::kYes);
+      EXPECT_EQ(decide_translation(tp, outer, r.delta_lower * 0.999, pts).answer, Answer::kNo);
+      // Max-cover at the optimum covers everything; at half of it, not.
+      EXPECT_EQ(max_cover_translation(tp, outer, r.delta_upper * 1.001, pts).covered.size(),
+                pts.size());
+      const MaxCoverResult half = max_cover_translation(tp, outer, r.delta_upper * 0.5, pts);
+      EXPECT_LT(half.covered.size(), pts.size());
+      EXPECT_EQ(half.covered.size(), half.upper_bound);
+    }
+  }
+}
+
+TEST(AnnulusRealData, OnlineFollowsTheStroke) {
+  for (const auto& f : strokes("rectangle", 2)) {
+    const auto pts = read_gesture(f);
+    const TemplatePolygon tp = bbox_rectangle(pts);
+    const double delta = min_width_translation(tp, OuterOffset::kRound, pts).delta_upper * 0.8;
+    OnlineContainment online(tp, OuterOffset::kRound, delta, 1000.0);
+    std::vector<PointD> prefix;
+    for (const PointD& q : pts) {
+      prefix.push_back(q);
+      const Answer a = online.add(q);
+      if (prefix.size() % 10 == 0 || a == Answer::kNo) {
+        EXPECT_EQ(a, decide_translation(tp, OuterOffset::kRound, delta, prefix).answer) << f;
+      }
+      if (a == Answer::kNo) break; // final
+    }
+    EXPECT_EQ(online.answer(), Answer::kNo) << f; // 0.8 of the optimum cannot hold them all
+  }
+}
+
+TEST(AnnulusRealData, RotationHelpsATriangle) {
+  const auto files = strokes("triangle", 1);
+  ASSERT_FALSE(files.empty());
+  const auto pts = read_gesture(files.front());
+  // An equilateral triangle template of the stroke's size.
+  double x0 = pts[0].x, x1 = x0;
+  for (const PointD& q : pts) {
+    x0 = std::min(x0, q.x);
+    x1 = std::max(x1, q.x);
+  }
+  const double s = x1 - x0;
+  const TemplatePolygon tri = make_convex_template({{0, 0}, {s, 0}, {s / 2, s * 0.866}});
+  const MinWidthResult t = min_width_translation(tri, OuterOffset::kLinearized, pts);
+  const MinWidthResult r = min_width_rotation(tri, pts);
+  EXPECT_LE(r.delta_upper, t.delta_upper + 1e-6);
+  EXPECT_EQ(oracle::count(tri.vertices(), oracle::Kind::kLinearized, r.delta_upper,
+                          {r.placement.tx, r.placement.ty, r.placement.theta}, pts, 1e-9),
+            pts.size());
+}
+
+} // namespace
+} // namespace penshape::annulus
