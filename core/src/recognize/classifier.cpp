@@ -16,6 +16,12 @@ namespace {
 // circle, and the circle is the simpler reading of a round stroke.
 constexpr double kPricePerParameter = 0.15;
 constexpr double kRmsWeight = 2.0;
+// A shape is drawn once: the stroke may be at most this much longer than the clean shape
+// (overshoot, a closing overlap and wobble stay well below).
+constexpr double kMaxTracing = 1.6;
+// ... and turns at most half a turn more than the clean shape does (end hooks, a closing
+// overlap), measured on 16 points along the stroke (pen jitter averages out).
+constexpr double kMaxExtraTurning = std::numbers::pi;
 // Fits whose estimate exceeds this many epsilons are not certified at all (saves time; their
 // certificate could not pass because the estimate is measured on points of the stroke).
 constexpr double kCertifyIfBelow = 1.25;
@@ -37,7 +43,7 @@ bool self_crossing(const std::vector<PointD>& path) {
 
 // Net over total turning of the stroke, measured on a coarse resampling (pen jitter averages out).
 double turning_monotonicity(const PreparedStroke& s) {
-  const std::vector<PointD> q = resample(s.points, 24);
+  const std::vector<PointD> q = resample(s.points, 16);
   double net = 0, total = 0;
   for (std::size_t i = 1; i + 1 < q.size(); ++i) {
     const PointD u = q[i] - q[i - 1];
@@ -49,9 +55,43 @@ double turning_monotonicity(const PreparedStroke& s) {
   return total > 0 ? std::abs(net) / total : 1.0;
 }
 
+// Total absolute turning of the stroke on a coarse resampling (radians).
+double stroke_turning(const PreparedStroke& s) {
+  const std::vector<PointD> q = resample(s.points, 16);
+  double total = 0;
+  for (std::size_t i = 1; i + 1 < q.size(); ++i) {
+    const PointD u = q[i] - q[i - 1];
+    const PointD v = q[i + 1] - q[i];
+    total += std::abs(std::atan2(cross(u, v), dot(u, v)));
+  }
+  return total;
+}
+
+// Total absolute turning of the clean shape (radians).
+double shape_turning(const Fit& f) {
+  if (f.clean.kind != CleanShape::Kind::kPolyline) return std::abs(f.clean.sweep);
+  std::vector<PointD> p = f.clean.path;
+  const bool closed = p.size() > 2 && p.front() == p.back();
+  if (closed) p.push_back(p[1]); // the turn at the first vertex
+  double total = 0;
+  for (std::size_t i = 1; i + 1 < p.size(); ++i) {
+    const PointD u = p[i] - p[i - 1];
+    const PointD v = p[i + 1] - p[i];
+    total += std::abs(std::atan2(cross(u, v), dot(u, v)));
+  }
+  return total;
+}
+
 // Why a certified candidate is not a plausible snap (empty when it is); rules in recognize.hpp.
 std::string implausibility(const PreparedStroke& s, const Fit& f, const Certificate& c,
                            const RecognizerConfig& config) {
+  const double clean_length = path_length(f.clean.sample(s.size / 64.0));
+  if (s.length > kMaxTracing * clean_length) {
+    return "the stroke is much longer than the shape (traced over, a scribble or writing)";
+  }
+  if (stroke_turning(s) > shape_turning(f) + kMaxExtraTurning) {
+    return "the stroke turns far more than the shape (wiggles: writing or a scribble)";
+  }
   const bool straight_open = f.shape == ShapeClass::kSegment || f.shape == ShapeClass::kPolyline;
   if (straight_open && c.bound > config.straight_fraction * c.epsilon) {
     return "a straight open shape must fit within straight_fraction * epsilon";
@@ -129,44 +169,63 @@ bool is_closed(const PreparedStroke& s, double epsilon) {
          polyline_distance(pts.front(), pts.last(fifth)) <= limit;
 }
 
-std::vector<Fit> fit_all(const PreparedStroke& s, const RecognizerConfig& config, double epsilon) {
+Family family_of(const Fit& f) {
+  if (f.shape == ShapeClass::kPolyline || f.shape == ShapeClass::kRegularPolygon) {
+    return {f.shape, f.params.vertices.size()};
+  }
+  return {f.shape, 0};
+}
+
+std::vector<Fit> fit_all(const PreparedStroke& s, const RecognizerConfig& config, double epsilon,
+                         const std::vector<Family>& skip) {
+  auto wanted = [&skip](ShapeClass c, std::size_t n = 0) {
+    return std::find(skip.begin(), skip.end(), Family{c, n}) == skip.end();
+  };
   std::vector<Fit> fits;
   auto add = [&fits](std::optional<Fit> f) {
     if (f && std::isfinite(f->fit_error)) fits.push_back(std::move(*f));
   };
   if (!is_closed(s, epsilon)) {
-    add(fit_segment(s));
-    for (std::size_t k = 2; k <= config.max_polyline_segments; ++k) add(fit_polyline(s, k));
-    add(fit_arc(s));
+    if (wanted(ShapeClass::kSegment)) add(fit_segment(s));
+    for (std::size_t k = 2; k <= config.max_polyline_segments; ++k) {
+      if (wanted(ShapeClass::kPolyline, k + 1)) add(fit_polyline(s, k));
+    }
+    if (wanted(ShapeClass::kArc)) add(fit_arc(s));
     return fits;
   }
-  add(fit_polygon(s, 3));
-  std::optional<Fit> quad = fit_polygon(s, 4);
-  if (quad) {
-    for (Fit& f : fit_rectangles(s, *quad)) add(std::move(f));
-    add(std::move(quad));
+  if (wanted(ShapeClass::kTriangle)) add(fit_polygon(s, 3));
+  const bool rectangles =
+      wanted(ShapeClass::kRectangle) || wanted(ShapeClass::kSquare) || wanted(ShapeClass::kDiamond);
+  if (rectangles || wanted(ShapeClass::kQuadrilateral)) {
+    std::optional<Fit> quad = fit_polygon(s, 4);
+    if (quad) {
+      if (rectangles) {
+        for (Fit& f : fit_rectangles(s, *quad)) {
+          if (wanted(f.shape)) add(std::move(f));
+        }
+      }
+      if (wanted(ShapeClass::kQuadrilateral)) add(std::move(quad));
+    }
   }
   std::optional<Fit> circle = fit_circle(s);
   if (circle) {
     for (const std::size_t n : {5, 6, 8}) {
-      add(fit_regular_polygon(s, n, circle->params.center, circle->params.radius_x));
+      if (wanted(ShapeClass::kRegularPolygon, n)) {
+        add(fit_regular_polygon(s, n, circle->params.center, circle->params.radius_x));
+      }
     }
-    add(std::move(circle));
+    if (wanted(ShapeClass::kCircle)) add(std::move(circle));
   }
-  add(fit_ellipse(s));
+  if (wanted(ShapeClass::kEllipse)) add(fit_ellipse(s));
   return fits;
 }
 
-Recognition classify(const PreparedStroke& s, std::vector<Fit> fits, double epsilon,
-                     double pen_radius, const RecognizerConfig& config) {
-  Recognition out;
-  out.epsilon = epsilon;
-  out.pen_radius = pen_radius;
-  out.certificate.epsilon = epsilon;
-  out.certificate.pen_radius = pen_radius;
-  std::vector<std::pair<double, Candidate>> ranked;
+std::vector<Scored> evaluate(const PreparedStroke& s, std::vector<Fit> fits, double epsilon,
+                             double pen_radius, const RecognizerConfig& config) {
+  std::vector<Scored> out;
   for (Fit& f : fits) {
-    Candidate c;
+    Scored sc;
+    Candidate& c = sc.candidate;
     c.shape = f.shape;
     c.params = f.params;
     if (f.fit_error <= kCertifyIfBelow * epsilon) {
@@ -179,16 +238,28 @@ Recognition classify(const PreparedStroke& s, std::vector<Fit> fits, double epsi
     if (c.certificate.certified) c.rejected = implausibility(s, f, c.certificate, config);
     c.rms = rms_distance(s.fit_points, f.clean);
     c.clean = display_path(f.clean, s.size);
-    const double rank = (c.certificate.bound + kRmsWeight * c.rms) / epsilon +
-                        kPricePerParameter * degrees_of_freedom(f);
-    const bool snap = c.certificate.certified && c.rejected.empty();
-    ranked.emplace_back(snap ? rank : rank + 1e6, std::move(c));
+    sc.rank = (c.certificate.bound + kRmsWeight * c.rms) / epsilon +
+              kPricePerParameter * degrees_of_freedom(f);
+    sc.snap = c.certificate.certified && c.rejected.empty();
+    sc.fit = std::move(f);
+    out.push_back(std::move(sc));
   }
-  std::stable_sort(ranked.begin(), ranked.end(),
-                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::stable_sort(out.begin(), out.end(), [](const Scored& a, const Scored& b) {
+    if (a.snap != b.snap) return a.snap;
+    return a.rank < b.rank;
+  });
+  return out;
+}
+
+Recognition choose(std::vector<Scored> scored, double epsilon, double pen_radius) {
+  Recognition out;
+  out.epsilon = epsilon;
+  out.pen_radius = pen_radius;
+  out.certificate.epsilon = epsilon;
+  out.certificate.pen_radius = pen_radius;
   std::size_t first_alternative = 0;
-  if (!ranked.empty() && ranked.front().first < 1e6) {
-    Candidate& w = ranked.front().second;
+  if (!scored.empty() && scored.front().snap) {
+    Candidate& w = scored.front().candidate;
     out.shape = w.shape;
     out.params = w.params;
     out.clean = w.clean;
@@ -197,8 +268,8 @@ Recognition classify(const PreparedStroke& s, std::vector<Fit> fits, double epsi
     out.confidence = std::clamp(1.0 - w.certificate.bound / (2.0 * epsilon), 0.0, 1.0);
     first_alternative = 1;
   }
-  for (std::size_t i = first_alternative; i < ranked.size(); ++i) {
-    out.alternatives.push_back(std::move(ranked[i].second));
+  for (std::size_t i = first_alternative; i < scored.size(); ++i) {
+    out.alternatives.push_back(std::move(scored[i].candidate));
   }
   return out;
 }
@@ -233,8 +304,10 @@ Recognition recognize(const std::vector<StrokePoint>& samples, const RecognizerC
   recognize_detail::validate_samples(samples, config);
   const ToleranceChoice tol = choose_tolerance(samples, config);
   const PreparedStroke s = recognize_detail::prepare(samples);
-  return recognize_detail::classify(s, recognize_detail::fit_all(s, config, tol.epsilon),
-                                    tol.epsilon, tol.pen_radius, config);
+  return recognize_detail::choose(
+      recognize_detail::evaluate(s, recognize_detail::fit_all(s, config, tol.epsilon), tol.epsilon,
+                                 tol.pen_radius, config),
+      tol.epsilon, tol.pen_radius);
 }
 
 } // namespace penshape

@@ -35,6 +35,10 @@
 // open ones (segment, polyline of 2..max_polyline_segments segments, arc).
 //
 // A snap needs the certificate AND a plausible reading (so handwriting and gestures stay ink):
+//   - the shape is drawn once: the stroke is at most 1.6 times as long as the clean shape
+//     (scribbles and writing go over the same region many times), and its total absolute
+//     turning (on 16 points along it) exceeds the shape's by at most half a turn (writing
+//     wiggles);
 //   - straight open shapes (segment, polyline) must certify within straight_fraction * epsilon
 //     (people draw straight strokes far more precisely than round ones; a curve that merely
 //     stays near a few segments is a letter or a brace, not a polyline);
