@@ -55,11 +55,14 @@ double turning_monotonicity(const PreparedStroke& s) {
   return total > 0 ? std::abs(net) / total : 1.0;
 }
 
-// Total absolute turning of the stroke on a coarse resampling (radians).
-double stroke_turning(const PreparedStroke& s) {
+// Total absolute turning of the stroke on a coarse resampling (radians), counting only the
+// turns that matter at the tolerance's scale: a vertex within epsilon / 4 of its neighbours'
+// chord is pen jitter, not a turn.
+double stroke_turning(const PreparedStroke& s, double epsilon) {
   const std::vector<PointD> q = resample(s.points, 16);
   double total = 0;
   for (std::size_t i = 1; i + 1 < q.size(); ++i) {
+    if (segment_distance(q[i], q[i - 1], q[i + 1]) < 0.25 * epsilon) continue;
     const PointD u = q[i] - q[i - 1];
     const PointD v = q[i + 1] - q[i];
     total += std::abs(std::atan2(cross(u, v), dot(u, v)));
@@ -86,15 +89,24 @@ double shape_turning(const Fit& f) {
 std::string implausibility(const PreparedStroke& s, const Fit& f, const Certificate& c,
                            const RecognizerConfig& config) {
   const double clean_length = path_length(f.clean.sample(s.size / 64.0));
-  if (s.length > kMaxTracing * clean_length) {
+  // Measured on the fit points (48 along the stroke) so that sample jitter does not count.
+  if (path_length(s.fit_points) > kMaxTracing * clean_length) {
     return "the stroke is much longer than the shape (traced over, a scribble or writing)";
   }
-  if (stroke_turning(s) > shape_turning(f) + kMaxExtraTurning) {
+  if (stroke_turning(s, c.epsilon) > shape_turning(f) + kMaxExtraTurning) {
     return "the stroke turns far more than the shape (wiggles: writing or a scribble)";
   }
   const bool straight_open = f.shape == ShapeClass::kSegment || f.shape == ShapeClass::kPolyline;
   if (straight_open && c.bound > config.straight_fraction * c.epsilon) {
     return "a straight open shape must fit within straight_fraction * epsilon";
+  }
+  if (f.shape == ShapeClass::kPolyline) {
+    const std::vector<PointD>& v = f.params.vertices;
+    for (std::size_t i = 1; i + 1 < v.size(); ++i) {
+      if (segment_distance(v[i], v[i - 1], v[i + 1]) < 0.5 * c.epsilon) {
+        return "a polyline corner is within epsilon / 2 of its neighbours' chord (not a corner)";
+      }
+    }
   }
   if (f.shape == ShapeClass::kPolyline && self_crossing(f.clean.path)) {
     return "the open polyline crosses itself (a gesture, not a shape)";

@@ -10,11 +10,11 @@ double fit_objective(const PreparedStroke& stroke, const CleanShape& shape, bool
   if (!use_key_points) return worst;
   if (shape.kind == CleanShape::Kind::kPolyline) {
     for (const PointD& v : shape.path) {
-      worst = std::max(worst, polyline_distance(v, stroke.fit_points));
+      worst = std::max(worst, polyline_distance(v, stroke.points));
     }
   } else if (!shape.full_curve()) {
-    worst = std::max(worst, polyline_distance(shape.at(shape.t0), stroke.fit_points));
-    worst = std::max(worst, polyline_distance(shape.at(shape.t0 + shape.sweep), stroke.fit_points));
+    worst = std::max(worst, polyline_distance(shape.at(shape.t0), stroke.points));
+    worst = std::max(worst, polyline_distance(shape.at(shape.t0 + shape.sweep), stroke.points));
   }
   return worst;
 }

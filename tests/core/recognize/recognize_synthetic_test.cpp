@@ -110,8 +110,13 @@ TEST(RecognizeSynthetic, NoisyShapesSnapToTheirClass) {
   for (unsigned seed = 1; seed <= 3; ++seed) {
     for (const Case& c : clean_cases(1.5, seed)) {
       const Recognition r = recognize(c.points);
+      std::string why;
+      for (const Candidate& a : r.alternatives) {
+        why += std::string(" ") + to_string(a.shape) + ":" + std::to_string(a.certificate.bound) +
+               (a.rejected.empty() ? "" : "(" + a.rejected + ")");
+      }
       EXPECT_EQ(to_string(r.shape), std::string(to_string(c.expected)))
-          << c.name << " seed " << seed;
+          << c.name << " seed " << seed << " epsilon " << r.epsilon << why;
       if (r.shape != ShapeClass::kFreeform) expect_certified_snap(c, r);
     }
   }

@@ -37,11 +37,13 @@
 // A snap needs the certificate AND a plausible reading (so handwriting and gestures stay ink):
 //   - the shape is drawn once: the stroke is at most 1.6 times as long as the clean shape
 //     (scribbles and writing go over the same region many times), and its total absolute
-//     turning (on 16 points along it) exceeds the shape's by at most half a turn (writing
-//     wiggles);
+//     turning (on 16 points along it, ignoring turns within epsilon / 4 of a straight run) exceeds
+//     the shape's by at most half a turn (writing wiggles);
 //   - straight open shapes (segment, polyline) must certify within straight_fraction * epsilon
 //     (people draw straight strokes far more precisely than round ones; a curve that merely
 //     stays near a few segments is a letter or a brace, not a polyline);
+//   - every interior corner of an open polyline is at least epsilon / 2 from the chord of its
+//     neighbours;
 //   - an open polyline must not cross itself (x, alpha, delete marks are gestures);
 //   - every side of a triangle or quadrilateral is at least epsilon long, and every corner is at
 //     least epsilon from the chord of its two neighbours (otherwise the polygon with one corner
