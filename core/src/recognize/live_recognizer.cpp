@@ -115,7 +115,9 @@ struct LiveRecognizer::State {
         try {
           const annulus::TemplatePolygon t = annulus::make_convex_template(sc.fit.params.vertices);
           c.online.emplace(t, annulus::OuterOffset::kRound, tol.epsilon, magnitude);
-          for (const PointD& p : points) c.online->add(p);
+          // Seeded with the fit points (48 along the stroke so far; the certificate already
+          // covers every sample at the fitted placement), then fed every new sample.
+          for (const PointD& p : s.fit_points) c.online->add(p);
           if (c.online->answer() == Answer::kNo) continue; // cannot happen for a certified fit
         } catch (const InvalidInput&) {
           c.online.reset(); // degenerate template: fall back to the fixed placement

@@ -7,8 +7,9 @@
 // candidate stays alive while new samples arrive:
 //   - convex polygon candidates (triangle, quadrilateral, rectangle, square, diamond, regular
 //     polygon) run the on-line annulus decision (penshape/core/annulus/online.hpp): the
-//     candidate is the template, delta = epsilon; it dies as soon as NO translate of its
-//     epsilon-annulus contains every sample so far (a final NO);
+//     candidate is the template, delta = epsilon, seeded with the 48 fit points of the stroke
+//     at the time of the fit; it dies as soon as NO translate of its epsilon-annulus contains
+//     them and every later sample (a final NO for that template);
 //   - the other candidates (segment, polyline, circle, ellipse, arc) die when a new sample lies
 //     farther than epsilon from them at their fitted placement.
 // A refit of every family runs when nothing is alive (at most every `refit_interval` samples),
