@@ -35,6 +35,16 @@ std::vector<PointD> resample(std::span<const PointD> path, std::size_t count) {
 }
 
 void validate_samples(const std::vector<StrokePoint>& samples, const RecognizerConfig& config) {
+  auto finite_non_negative = [](double v) { return std::isfinite(v) && v >= 0.0; };
+  auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
+  if (!finite_non_negative(config.pen_radius) || !finite_non_negative(config.tolerance)) {
+    throw InvalidInput("recognize: pen radius and tolerance must be finite and >= 0 (0 = default)");
+  }
+  if (!positive(config.default_pen_radius_fraction) || !positive(config.tolerance_pen_radii) ||
+      !positive(config.max_tolerance_fraction) || !positive(config.straight_fraction) ||
+      !std::isfinite(config.arc_monotone_turning)) {
+    throw InvalidInput("recognize: the configuration's fractions must be finite and positive");
+  }
   if (samples.empty()) throw InvalidInput("recognize: the stroke has no samples");
   if (samples.size() > config.max_samples) {
     throw InvalidInput("recognize: the stroke has " + std::to_string(samples.size()) +

@@ -243,3 +243,22 @@ TEST(RecognizeBadInput, TwoPointsAreASegment) {
 
 } // namespace
 } // namespace penshape
+
+namespace penshape {
+namespace {
+
+TEST(RecognizeBadInput, BadConfiguration) {
+  const std::vector<StrokePoint> p{{0, 0, 0}, {100, 0, 1}};
+  RecognizerConfig c;
+  c.tolerance = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW((void)recognize(p, c), InvalidInput);
+  c = {};
+  c.pen_radius = -1;
+  EXPECT_THROW((void)recognize(p, c), InvalidInput);
+  c = {};
+  c.max_tolerance_fraction = 0;
+  EXPECT_THROW((void)recognize(p, c), InvalidInput);
+}
+
+} // namespace
+} // namespace penshape
