@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "annulus_polish.hpp"
 #include "certificate.hpp"
 
 namespace penshape::recognize_detail {
@@ -316,10 +317,12 @@ Recognition recognize(const std::vector<StrokePoint>& samples, const RecognizerC
   recognize_detail::validate_samples(samples, config);
   const ToleranceChoice tol = choose_tolerance(samples, config);
   const PreparedStroke s = recognize_detail::prepare(samples);
-  return recognize_detail::choose(
-      recognize_detail::evaluate(s, recognize_detail::fit_all(s, config, tol.epsilon), tol.epsilon,
-                                 tol.pen_radius, config),
-      tol.epsilon, tol.pen_radius);
+  std::vector<recognize_detail::Scored> scored = recognize_detail::evaluate(
+      s, recognize_detail::fit_all(s, config, tol.epsilon), tol.epsilon, tol.pen_radius, config);
+  if (!scored.empty() && scored.front().snap) {
+    recognize_detail::polish_with_annulus(s, scored.front(), config);
+  }
+  return recognize_detail::choose(std::move(scored), tol.epsilon, tol.pen_radius);
 }
 
 } // namespace penshape

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "annulus_polish.hpp"
 #include "classifier.hpp"
 #include "penshape/core/annulus/online.hpp"
 
@@ -249,6 +250,9 @@ Recognition LiveRecognizer::finish() {
     if (a.snap != b.snap) return a.snap;
     return a.rank < b.rank;
   });
+  if (!kept.empty() && kept.front().snap) {
+    recognize_detail::polish_with_annulus(s, kept.front(), st.config);
+  }
   Recognition out = recognize_detail::choose(std::move(kept), tol.epsilon, tol.pen_radius);
   const LiveStats stats = st.stats;
   reset();
