@@ -36,7 +36,7 @@ bool quadratic_leq(double a, double b, double c, double& lo, double& hi) {
 
 void trig_leq(double A, double B, double C, double lo, double hi, IntervalSet& out) {
   if (lo > hi) return;
-  const double r = std::hypot(A, B);
+  const double r = std::sqrt(A * A + B * B); // coordinates are bounded (Limits): no overflow
   if (r == 0.0 || C >= r) {
     if (r == 0.0 && C < 0.0) return;
     out.push_back({lo, hi});

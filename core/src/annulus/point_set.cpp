@@ -53,7 +53,7 @@ std::vector<bool> hull_boundary(const std::vector<PointD>& points) {
 }
 
 BucketGrid::BucketGrid(const std::vector<PointD>& points, double cell_w, double cell_h)
-    : points_(points), x0_(0), y0_(0), w_(cell_w), h_(cell_h) {
+    : x0_(0), y0_(0), w_(cell_w), h_(cell_h) {
   if (!points.empty()) {
     x0_ = points[0].x;
     y0_ = points[0].y;

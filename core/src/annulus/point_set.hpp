@@ -28,7 +28,6 @@ class BucketGrid {
 
  private:
   [[nodiscard]] std::int64_t key(std::int64_t cx, std::int64_t cy) const;
-  const std::vector<PointD>& points_;
   double x0_, y0_, w_, h_;
   std::vector<std::int64_t> cx_, cy_;
   std::unordered_map<std::int64_t, std::vector<std::size_t>> cells_;

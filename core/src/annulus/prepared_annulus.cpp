@@ -235,6 +235,17 @@ PreparedAnnulus prepare(const TemplatePolygon& p, OuterOffset outer, double delt
                         double curve_delta) {
   PreparedAnnulus an = prepare_single(p, outer, delta);
   an.has_hole = !an.inner.empty();
+  if (an.has_hole) {
+    // Vertex centroid of the hole and its distance to the nearest hole edge line, shrunk a
+    // little so rounding cannot put the disk outside the open hole.
+    PointD c{0.0, 0.0};
+    for (const PointD& q : an.inner) c = add(c, q);
+    c = mul(c, 1.0 / static_cast<double>(an.inner.size()));
+    double r = INFINITY;
+    for (const Edge& e : an.edges) r = std::min(r, e.h - delta - dot(e.n, c));
+    an.hole_centre = c;
+    an.hole_radius = r > 0.0 ? r * (1.0 - 1e-9) : 0.0;
+  }
   if (curve_delta != delta) {
     PreparedAnnulus c = prepare_single(p, outer, curve_delta);
     an.inner = std::move(c.inner);
@@ -253,6 +264,19 @@ IntervalSet member_set(const PreparedAnnulus& an, const Piece& piece, PointD d) 
   IntervalSet result;
   const Box pb = shifted(piece.box(), d);
   if (!overlaps(pb, an.box)) return result;
+  if (an.hole_radius > 0.0) {
+    // Every corner of the piece's box inside the disk: the piece is inside the open hole.
+    const double r2 = an.hole_radius * an.hole_radius;
+    bool inside = true;
+    for (double x : {pb.x0, pb.x1}) {
+      for (double y : {pb.y0, pb.y1}) {
+        const double dx = x - an.hole_centre.x;
+        const double dy = y - an.hole_centre.y;
+        inside = inside && dx * dx + dy * dy < r2;
+      }
+    }
+    if (inside) return result;
+  }
   const double delta = an.delta;
   if (!piece.arc) {
     const PointD z0 = add(piece.a, d);

@@ -50,6 +50,8 @@ struct PreparedAnnulus {
   OuterOffset outer = OuterOffset::kRound;
   double delta = 0.0;
   std::vector<Edge> edges;        // of the template
+  PointD hole_centre{};           // a disk inside the open hole (membership delta): pieces
+  double hole_radius = 0.0;       // inside it are rejected in O(1)
   bool has_hole = false;          // I_{P,delta} has interior (membership delta)
   std::vector<PointD> inner;      // I_{P,curve_delta} (convex), empty without interior
   std::vector<PointD> outer_poly; // linearized O_{P,delta} (convex)

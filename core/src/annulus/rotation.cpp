@@ -3,8 +3,10 @@
 #include "penshape/core/annulus/rotation.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "point_set.hpp"
 #include "prepared_annulus.hpp"
@@ -17,7 +19,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 inline PointD perp(PointD d) { return {d.y, -d.x}; } // R(-theta) d = cos * d + sin * perp(d)
-inline double norm(PointD a) { return std::hypot(a.x, a.y); }
+inline double norm(PointD a) { return std::sqrt(a.x * a.x + a.y * a.y); }
 
 // A boundary edge of the inner (hole) or outer linearized offset, template frame.
 struct CurveEdge {
@@ -106,22 +108,35 @@ struct RotationGeometry {
     if (f > delta + reach) return {};
     if (f < -delta - reach && has_hole) return {};
     if (f <= delta - reach && (f >= -delta + reach || !has_hole)) return V;
+    // Per constraint: n . W moves at most (|n.kc| + |n.ks|) * half over V; constraints that hold
+    // (or fail) on all of V need no trigonometry.
+    const double half = 0.5 * (hi - lo);
     IntervalSet out = V;
     for (const Edge& e : edges) {
+      const double A = dot(e.n, kc);
+      const double B = dot(e.n, ks);
+      const double C = e.h + delta - dot(e.n, k0);
+      const double v = dot(e.n, wm) - e.h - delta; // <= 0 inside
+      const double r = (std::abs(A) + std::abs(B)) * half;
+      if (v + r < 0.0) continue;
+      if (v - r > 0.0) return {};
       IntervalSet next;
-      for (const Interval& iv : out) {
-        trig_leq(dot(e.n, kc), dot(e.n, ks), e.h + delta - dot(e.n, k0), iv.lo, iv.hi, next);
-      }
+      for (const Interval& iv : out) trig_leq(A, B, C, iv.lo, iv.hi, next);
       out.swap(next);
       if (out.empty()) return out;
     }
     if (!has_hole) return out;
     IntervalSet hole = V;
     for (const Edge& e : edges) {
+      const double A = dot(e.n, kc);
+      const double B = dot(e.n, ks);
+      const double C = e.h - delta - dot(e.n, k0);
+      const double v = dot(e.n, wm) - e.h + delta;
+      const double r = (std::abs(A) + std::abs(B)) * half;
+      if (v + r < 0.0) continue;
+      if (v - r > 0.0) return out; // the hole misses all of V
       IntervalSet next;
-      for (const Interval& iv : hole) {
-        trig_leq(dot(e.n, kc), dot(e.n, ks), e.h - delta - dot(e.n, k0), iv.lo, iv.hi, next);
-      }
+      for (const Interval& iv : hole) trig_leq(A, B, C, iv.lo, iv.hi, next);
       hole.swap(next);
       if (hole.empty()) return out;
     }
@@ -164,6 +179,20 @@ Placement placement_at(const Family& f, PointD qi, double theta) {
 }
 
 struct Search {
+  Search(const TemplatePolygon& p_, const std::vector<PointD>& original_, const WeightedPoints& wp_,
+         const RotationGeometry& g_, bool decide_, bool verify_, const std::vector<bool>* hull_,
+         std::vector<std::size_t> order_, double tol_, double delta_check_)
+      : p(p_),
+        original(original_),
+        wp(wp_),
+        g(g_),
+        decide(decide_),
+        verify(verify_),
+        hull(hull_),
+        order(std::move(order_)),
+        tol(tol_),
+        delta_check(delta_check_) {}
+
   const TemplatePolygon& p;
   const std::vector<PointD>& original;
   const WeightedPoints& wp;
@@ -184,6 +213,11 @@ struct Search {
     long w;
   };
   std::vector<Event> events;
+  // Which family gave the best count (i, j, edge or corner indices), and a filter that makes
+  // enumerate() visit only that family (used to re-find the witness in the narrowed annulus).
+  std::array<std::size_t, 4> best_key{};
+  std::optional<std::array<std::size_t, 4>> only;
+  std::array<std::size_t, 4> key{};
 
   // Returns true to stop the search (decision found).
   bool run(const Family& f) {
@@ -243,6 +277,7 @@ struct Search {
     if (static_cast<std::size_t>(cur) > best) {
       best = static_cast<std::size_t>(cur);
       best_placement = placement_at(f, qi, 0.5 * (f.V.front().lo + f.V.front().hi));
+      best_key = key;
       found = true;
     }
     for (std::size_t e = 0; e < events.size(); ++e) {
@@ -251,6 +286,7 @@ struct Search {
         best = static_cast<std::size_t>(cur);
         const double next = e + 1 < events.size() ? events[e + 1].pos : events[e].pos;
         best_placement = placement_at(f, qi, 0.5 * (events[e].pos + next));
+        best_key = key;
         found = true;
       }
     }
@@ -266,6 +302,9 @@ struct Search {
       for (int c = 0; c < 2; ++c) {
         if (c == 0 && decide && !(*hull)[i]) continue;
         for (const PointD& z : g.corners[c]) {
+          key = {i, SIZE_MAX, static_cast<std::size_t>(c),
+                 static_cast<std::size_t>(&z - &g.corners[c][0])};
+          if (only && *only != key) continue;
           if (run(Family{i, SIZE_MAX, z, {0, 0}, {0, 0}, full})) return;
         }
       }
@@ -305,6 +344,8 @@ struct Search {
             restrict_trig(V, -tc, -ts, t0);     // j's position on edge b >= 0
             restrict_trig(V, tc, ts, 1.0 - t0); // <= 1
             if (V.empty()) continue;
+            key = {i, j, x, y};
+            if (only && *only != key) continue;
             if (run(Family{i, j, Z0, Zc, Zs, V})) return;
           }
         }
@@ -342,8 +383,7 @@ DecisionResult decide_rotation_core(const TemplatePolygon& p, double delta,
   // NO with the widened annulus, witnesses from the narrowed one (see translation.cpp).
   {
     const RotationGeometry wide(p, widened(delta, r.margin));
-    Search s{p, points, wp,    wide,  true,  false, &hull, std::move(order), 10.0 * r.margin,
-             0, {},     false, false, delta, {}};
+    Search s(p, points, wp, wide, true, false, &hull, std::move(order), 10.0 * r.margin, delta);
     s.enumerate();
     order = std::move(s.order);
     if (!s.found) {
@@ -352,8 +392,7 @@ DecisionResult decide_rotation_core(const TemplatePolygon& p, double delta,
     }
   }
   const RotationGeometry narrow(p, narrowed(delta, r.margin));
-  Search s{p, points, wp,    narrow, true,  true, &hull, std::move(order), 10.0 * r.margin,
-           0, {},     false, false,  delta, {}};
+  Search s(p, points, wp, narrow, true, true, &hull, std::move(order), 10.0 * r.margin, delta);
   s.enumerate();
   order = std::move(s.order);
   r.answer = s.found ? Answer::kYes : Answer::kUndecided;
@@ -373,18 +412,25 @@ MaxCoverResult max_cover_rotation(const TemplatePolygon& p, double delta,
   const WeightedPoints wp = merge_duplicates(points);
   const double margin = annulus_margin(p, delta, points);
   MaxCoverResult res;
+  std::array<std::size_t, 4> best_key{};
   {
     const RotationGeometry wide(p, widened(delta, margin));
-    Search s{p, points, wp,    wide,  false, false, nullptr, {}, 10.0 * margin,
-             0, {},     false, false, delta, {}};
+    Search s(p, points, wp, wide, false, false, nullptr, {}, 10.0 * margin, delta);
     s.enumerate();
     res.upper_bound = s.best;
+    best_key = s.best_key;
   }
+  // The witness: first only the family that gave the upper bound, in the narrowed annulus.
   const RotationGeometry narrow(p, narrowed(delta, margin));
-  Search s{p, points, wp,    narrow, false, false, nullptr, {}, 10.0 * margin,
-           0, {},     false, false,  delta, {}};
+  Search s(p, points, wp, narrow, false, false, nullptr, {}, 10.0 * margin, delta);
+  s.only = best_key;
   s.enumerate();
   res.placement = s.best_placement;
+  if (s.best < res.upper_bound) {
+    Search full(p, points, wp, narrow, false, false, nullptr, {}, 10.0 * margin, delta);
+    full.enumerate();
+    res.placement = full.best_placement;
+  }
   res.covered = covered_exactly(p, OuterOffset::kLinearized, delta, res.placement, points);
   return res;
 }

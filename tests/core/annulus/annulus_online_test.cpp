@@ -12,11 +12,11 @@ class OnlineVsOffline : public ::testing::TestWithParam<OuterOffset> {};
 
 TEST_P(OnlineVsOffline, EveryPrefixAgrees) {
   const OuterOffset outer = GetParam();
-  std::mt19937 rng(41 + static_cast<int>(outer));
+  std::mt19937 rng(41u + static_cast<unsigned>(outer));
   std::uniform_real_distribution<double> u(0, 1);
   std::size_t no_answers = 0;
   std::size_t yes_answers = 0;
-  for (int trial = 0; trial < 25; ++trial) {
+  for (unsigned trial = 0; trial < 25; ++trial) {
     const auto poly = oracle::random_convex(rng, 3 + trial % 5, 1.0);
     const TemplatePolygon tp = make_convex_template(poly);
     auto pts = oracle::points_near(rng, poly, 30, 0.12, {2 * u(rng), u(rng), 0.0}, 0.03);

@@ -12,7 +12,7 @@ oracle::Pose pose_of(const Placement& p) { return {p.tx, p.ty, p.theta}; }
 TEST(RotationVsOracle, MaxCoverCountsEqualBruteForce) {
   std::mt19937 rng(31);
   std::uniform_real_distribution<double> u(0, 1);
-  for (int trial = 0; trial < 12; ++trial) {
+  for (unsigned trial = 0; trial < 12; ++trial) {
     const auto poly = oracle::random_convex(rng, 3 + trial % 2, 1.0);
     const TemplatePolygon tp = make_convex_template(poly);
     const auto pts = oracle::points_near(rng, poly, 5, 0.2, {u(rng), u(rng), 6.3 * u(rng)}, 0.3);
@@ -31,7 +31,7 @@ TEST(RotationVsOracle, MaxCoverCountsEqualBruteForce) {
 TEST(RotationVsOracle, MinimumWidthMatchesBruteForce) {
   std::mt19937 rng(37);
   std::uniform_real_distribution<double> u(0, 1);
-  for (int trial = 0; trial < 5; ++trial) {
+  for (unsigned trial = 0; trial < 5; ++trial) {
     const auto poly = oracle::random_convex(rng, 3 + trial % 2, 1.0);
     const TemplatePolygon tp = make_convex_template(poly);
     const auto pts = oracle::points_near(rng, poly, 5, 0.15, {u(rng), u(rng), 6.3 * u(rng)});

@@ -24,7 +24,7 @@ TEST(SimpleTemplateVsOracle, MaxCoverCountsEqualBruteForce) {
   std::mt19937 rng(53);
   std::uniform_real_distribution<double> u(0, 1);
   int nonconvex = 0;
-  for (int trial = 0; trial < 30; ++trial) {
+  for (unsigned trial = 0; trial < 30; ++trial) {
     const auto poly = random_star(rng, 5 + trial % 3);
     const TemplatePolygon tp = make_simple_template(poly);
     bool convex = true;
@@ -51,7 +51,7 @@ TEST(SimpleTemplateVsOracle, MaxCoverCountsEqualBruteForce) {
 TEST(SimpleTemplateVsOracle, MinimumWidthMatchesBruteForce) {
   std::mt19937 rng(59);
   std::uniform_real_distribution<double> u(0, 1);
-  for (int trial = 0; trial < 8; ++trial) {
+  for (unsigned trial = 0; trial < 8; ++trial) {
     const auto poly = random_star(rng, 5 + trial % 2);
     const TemplatePolygon tp = make_simple_template(poly);
     const auto pts = oracle::points_near(rng, poly, 5, 0.15, {u(rng), u(rng), 0.0});

@@ -30,9 +30,9 @@ class TranslationVsOracle : public ::testing::TestWithParam<OuterOffset> {};
 
 TEST_P(TranslationVsOracle, MaxCoverCountsEqualBruteForce) {
   const OuterOffset outer = GetParam();
-  std::mt19937 rng(7 + static_cast<int>(outer));
+  std::mt19937 rng(7u + static_cast<unsigned>(outer));
   std::uniform_real_distribution<double> u(0, 1);
-  for (int trial = 0; trial < 40; ++trial) {
+  for (unsigned trial = 0; trial < 40; ++trial) {
     const std::size_t m = 3 + trial % 4;
     const auto poly = oracle::random_convex(rng, m, 1.0);
     const TemplatePolygon tp = make_convex_template(poly);
@@ -52,9 +52,9 @@ TEST_P(TranslationVsOracle, MaxCoverCountsEqualBruteForce) {
 
 TEST_P(TranslationVsOracle, MinimumWidthMatchesBruteForce) {
   const OuterOffset outer = GetParam();
-  std::mt19937 rng(11 + static_cast<int>(outer));
+  std::mt19937 rng(11u + static_cast<unsigned>(outer));
   std::uniform_real_distribution<double> u(0, 1);
-  for (int trial = 0; trial < 15; ++trial) {
+  for (unsigned trial = 0; trial < 15; ++trial) {
     const auto poly = oracle::random_convex(rng, 3 + trial % 3, 1.0);
     const TemplatePolygon tp = make_convex_template(poly);
     const auto pts = oracle::points_near(rng, poly, 4 + trial % 3, 0.2, {u(rng), u(rng), 0.0});
@@ -74,9 +74,9 @@ TEST_P(TranslationVsOracle, MinimumWidthMatchesBruteForce) {
 
 TEST_P(TranslationVsOracle, DecisionMatchesBruteForce) {
   const OuterOffset outer = GetParam();
-  std::mt19937 rng(23 + static_cast<int>(outer));
+  std::mt19937 rng(23u + static_cast<unsigned>(outer));
   std::uniform_real_distribution<double> u(0, 1);
-  for (int trial = 0; trial < 20; ++trial) {
+  for (unsigned trial = 0; trial < 20; ++trial) {
     const auto poly = oracle::random_convex(rng, 3 + trial % 4, 1.0);
     const TemplatePolygon tp = make_convex_template(poly);
     const auto pts = oracle::points_near(rng, poly, 5, 0.2, {u(rng), u(rng), 0.0});

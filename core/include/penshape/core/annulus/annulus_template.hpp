@@ -17,8 +17,13 @@
 //
 // Number types: inputs are doubles; every double converts exactly to a rational. Searches run in
 // doubles; every YES, every placement and every reported covered set is checked with exact
-// rationals (GMP) against the exact definition above. NO answers are robust: they are made with
-// the annulus widened by a margin (annulus_margin) far above the rounding error of the searches.
+// rationals (GMP) against the exact definition above (a double filter skips the rationals when
+// the answer is clear by far). NO answers and max-cover upper bounds are robust: the search runs
+// with the annulus widened by a margin (annulus_margin, 1e-10 of the coordinates' magnitude), far
+// above the rounding error of the search, and anchors a margin inside the widened annulus so that
+// degenerate contacts (collinear integer samples) are decided with room to spare. Witnesses come
+// from the same search with the annulus narrowed by the margin. Consequence: for delta within
+// about a margin of the optimum the answer may be UNDECIDED, never wrong.
 #include <cstddef>
 #include <vector>
 
@@ -72,7 +77,7 @@ struct Placement {
 };
 
 // Throws InvalidInput for an empty point set, a non-finite/too large coordinate, too many points,
-// and a delta that is not finite or negative. `what` names the caller in the message.
+// and a delta that is not finite, too large or negative; the message names the point and field.
 void validate_points(const std::vector<PointD>& points, const Limits& limits = {});
 void validate_delta(double delta, const Limits& limits = {});
 

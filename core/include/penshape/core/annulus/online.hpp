@@ -4,7 +4,11 @@
 // contains all points so far. NO is final (more points cannot help) and is given as soon as it
 // holds. Each point keeps the placements with it on the inner/outer boundary that contain all
 // points applied to it; a point whose set empties is discarded and queued (pruning, Sec. 4.3), and
-// queued points are applied lazily to the surviving sets before a YES is given.
+// queued points are applied lazily to the surviving sets before a YES is given. A YES keeps its
+// witness placement; while new points fall inside it the answer costs one exact check, otherwise
+// a new witness is searched over all points (anchored sweeps, narrowed annulus, exact check).
+// Cost per point O(h m^2) for the structures (h = active structures, Sec. 4.3), plus the witness
+// search when the witness breaks. Convex templates only (simple ones: use decide_translation).
 #include <cstddef>
 #include <memory>
 #include <vector>

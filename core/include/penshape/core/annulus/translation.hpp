@@ -12,7 +12,8 @@ namespace penshape::annulus {
 
 struct DecisionResult {
   // kYes: `placement` is verified exactly (all points in the delta-annulus).
-  // kNo: no placement contains all points even with delta + margin (robust, see header).
+  // kNo: no placement contains all points even with delta + margin (robust, see
+  //      annulus_template.hpp).
   // kUndecided: delta is within the margin of the optimum and no exact witness was found.
   Answer answer = Answer::kUndecided;
   Placement placement; // meaningful with kYes
@@ -68,7 +69,10 @@ struct MaxCoverResult {
 };
 
 // A translation maximising the number of points in the delta-annulus (anchored sweep of both
-// boundaries around every point, Fig. 3). O(n k m^2) with k points per bucket neighbourhood.
+// boundaries around every point, Fig. 3; duplicates are merged and weighted). O(n k m^2) time,
+// O(n + m) space, k = points per 3x3 bucket block; a piece of a boundary that falls inside the
+// other point's hole or outside its box costs O(1). Simple templates sweep every offset piece
+// (2m segments, m circles) of every point: O(n k m^2) as in Section 5.
 MaxCoverResult max_cover_translation(const TemplatePolygon& p, OuterOffset outer, double delta,
                                      const std::vector<PointD>& points,
                                      const MaxCoverOptions& options = {},
