@@ -70,7 +70,11 @@ Certificate certify(std::span<const PointD> stroke, const CleanShape& shape, dou
   StrokeDistance to_stroke{stroke};
   for (const PointD& s : shape.sample(h)) worst = std::max(worst, to_stroke(s));
 
-  const double margin = 1e-9 * std::max(extent, 1e-300);
+  // Rounding: each distance is a few operations on coordinates of magnitude <= `magnitude`, so
+  // its error is a small multiple of 1e-16 * magnitude; the margin is far above that.
+  double magnitude = extent;
+  for (const PointD& p : stroke) magnitude = std::max({magnitude, std::abs(p.x), std::abs(p.y)});
+  const double margin = 1e-9 * std::max(magnitude, 1e-300);
   cert.bound = worst + h / 2.0 + margin;
   cert.certified = std::isfinite(cert.bound) && cert.bound <= epsilon;
   return cert;

@@ -222,7 +222,7 @@ std::vector<Fit> fit_all(const PreparedStroke& s, const RecognizerConfig& config
   }
   std::optional<Fit> circle = fit_circle(s);
   if (circle) {
-    for (const std::size_t n : {5, 6, 8}) {
+    for (const std::size_t n : {std::size_t{5}, std::size_t{6}, std::size_t{8}}) {
       if (wanted(ShapeClass::kRegularPolygon, n)) {
         add(fit_regular_polygon(s, n, circle->params.center, circle->params.radius_x));
       }

@@ -17,8 +17,9 @@
 //   - sup_{b in B} d(b, A): B is sampled with arc-length spacing <= h (for an ellipse the speed
 //     |B'(t)| <= max(a, b) bounds the arc length of a parameter step), and d(b, A) <= d(s, A) +
 //     h/2 with d(s, A) the exact distance to the polyline A.
-// Every distance is computed in double precision; a margin of 1e-9 times the drawing's extent
-// (far above the rounding error of these few operations on coordinates of that size) is added.
+// Every distance is computed in double precision; a margin of 1e-9 times the larger of the
+// drawing's extent and its largest coordinate magnitude (far above the rounding error of these
+// few operations on such coordinates) is added.
 // The certified bound is therefore  bound = max(both one-sided maxima) + h/2 + margin  >= H(A, B)
 // >= H(inks) by (1). A stroke snaps to a clean shape only when bound <= epsilon.
 //
