@@ -71,10 +71,11 @@ Certificate certify(std::span<const PointD> stroke, const CleanShape& shape, dou
   for (const PointD& s : shape.sample(h)) worst = std::max(worst, to_stroke(s));
 
   // Rounding: each distance is a few operations on coordinates of magnitude <= `magnitude`, so
-  // its error is a small multiple of 1e-16 * magnitude; the margin is far above that.
+  // its error is a small multiple of 2^-52 * magnitude (about 2.2e-16 * magnitude); the margin
+  // 1e-13 * magnitude + 1e-9 * extent is far above that.
   double magnitude = extent;
   for (const PointD& p : stroke) magnitude = std::max({magnitude, std::abs(p.x), std::abs(p.y)});
-  const double margin = 1e-9 * std::max(magnitude, 1e-300);
+  const double margin = 1e-13 * magnitude + 1e-9 * extent;
   cert.bound = worst + h / 2.0 + margin;
   cert.certified = std::isfinite(cert.bound) && cert.bound <= epsilon;
   return cert;

@@ -112,7 +112,9 @@ std::string implausibility(const PreparedStroke& s, const Fit& f, const Certific
   if (f.shape == ShapeClass::kPolyline && self_crossing(f.clean.path)) {
     return "the open polyline crosses itself (a gesture, not a shape)";
   }
-  if (f.shape == ShapeClass::kTriangle || f.shape == ShapeClass::kQuadrilateral) {
+  if (f.shape == ShapeClass::kTriangle || f.shape == ShapeClass::kQuadrilateral ||
+      f.shape == ShapeClass::kRectangle || f.shape == ShapeClass::kSquare ||
+      f.shape == ShapeClass::kDiamond) {
     const std::vector<PointD>& v = f.params.vertices;
     for (std::size_t i = 0; i < v.size(); ++i) {
       if (distance(v[i], v[(i + 1) % v.size()]) < c.epsilon) {

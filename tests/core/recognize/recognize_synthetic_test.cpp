@@ -262,3 +262,28 @@ TEST(RecognizeBadInput, BadConfiguration) {
 
 } // namespace
 } // namespace penshape
+
+namespace penshape {
+namespace {
+
+TEST(RecognizeBadInput, DegenerateStrokesGiveAnswersNotCrashes) {
+  // Back and forth along one line (closed, but with no area): no closed shape can hold.
+  std::vector<StrokePoint> back_and_forth;
+  for (int k = 0; k <= 100; ++k) back_and_forth.push_back({k * 1.0, 0, k * 0.01});
+  for (int k = 100; k >= 0; --k) back_and_forth.push_back({k * 1.0, 0, 2 - k * 0.01});
+  const Recognition r = recognize(back_and_forth);
+  EXPECT_TRUE(r.shape == ShapeClass::kFreeform || r.shape == ShapeClass::kSegment)
+      << to_string(r.shape);
+  // Far from the origin, tiny: the rounding margin follows the coordinates.
+  std::vector<StrokePoint> far;
+  for (int k = 0; k <= 50; ++k) far.push_back({9e8 + k * 0.01, -9e8 + k * 0.02, k * 0.01});
+  const Recognition f = recognize(far);
+  EXPECT_EQ(f.shape, ShapeClass::kSegment);
+  EXPECT_TRUE(f.certificate.certified);
+  // Repeated samples between distinct ones.
+  const Recognition d = recognize({{0, 0, 0}, {0, 0, 1}, {50, 0, 2}, {50, 0, 3}, {100, 0, 4}});
+  EXPECT_EQ(d.shape, ShapeClass::kSegment);
+}
+
+} // namespace
+} // namespace penshape

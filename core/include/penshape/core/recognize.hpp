@@ -17,9 +17,9 @@
 //   - sup_{b in B} d(b, A): B is sampled with arc-length spacing <= h (for an ellipse the speed
 //     |B'(t)| <= max(a, b) bounds the arc length of a parameter step), and d(b, A) <= d(s, A) +
 //     h/2 with d(s, A) the exact distance to the polyline A.
-// Every distance is computed in double precision; a margin of 1e-9 times the larger of the
-// drawing's extent and its largest coordinate magnitude (far above the rounding error of these
-// few operations on such coordinates) is added.
+// Every distance is computed in double precision; a margin of 1e-13 times the largest coordinate
+// magnitude plus 1e-9 times the drawing's extent (far above the rounding error of these few
+// operations, a small multiple of 2.2e-16 times the magnitude) is added.
 // The certified bound is therefore  bound = max(both one-sided maxima) + h/2 + margin  >= H(A, B)
 // >= H(inks) by (1). A stroke snaps to a clean shape only when bound <= epsilon.
 //
@@ -46,9 +46,10 @@
 //   - every interior corner of an open polyline is at least epsilon / 2 from the chord of its
 //     neighbours;
 //   - an open polyline must not cross itself (x, alpha, delete marks are gestures);
-//   - every side of a triangle or quadrilateral is at least epsilon long, and every corner is at
-//     least epsilon from the chord of its two neighbours (otherwise the polygon with one corner
-//     less says the same within tolerance: a corner drawn round, or a bump on a side);
+//   - every side of a polygon (triangle, quadrilateral, rectangle, square, diamond) is at least
+//     epsilon long, and every corner is at least epsilon from the chord of its two neighbours
+//     (otherwise the polygon with one corner less says the same within tolerance: a corner drawn
+//     round, or a bump on a side);
 //   - a regular polygon's corners must stand out from its circumcircle by at least epsilon / 2
 //     (R (1 - cos(pi / n)) >= epsilon / 2), or the circle says the same thing more simply;
 //   - an arc must turn one way only (its net turning is most of its total turning; a brace or
