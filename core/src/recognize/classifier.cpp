@@ -184,6 +184,26 @@ bool is_closed(const PreparedStroke& s, double epsilon) {
          polyline_distance(pts.front(), pts.last(fifth)) <= limit;
 }
 
+std::vector<Family> all_families(const RecognizerConfig& config) {
+  std::vector<Family> out{{ShapeClass::kSegment, 0},        {ShapeClass::kArc, 0},
+                          {ShapeClass::kTriangle, 0},       {ShapeClass::kQuadrilateral, 0},
+                          {ShapeClass::kRectangle, 0},      {ShapeClass::kSquare, 0},
+                          {ShapeClass::kDiamond, 0},        {ShapeClass::kCircle, 0},
+                          {ShapeClass::kEllipse, 0},        {ShapeClass::kRegularPolygon, 5},
+                          {ShapeClass::kRegularPolygon, 6}, {ShapeClass::kRegularPolygon, 8}};
+  for (std::size_t k = 2; k <= config.max_polyline_segments; ++k) {
+    out.push_back({ShapeClass::kPolyline, k + 1});
+  }
+  return out;
+}
+
+double minimum_rank(const Family& family) {
+  Fit f;
+  f.shape = family.shape;
+  f.params.vertices.resize(family.vertices);
+  return kPricePerParameter * degrees_of_freedom(f);
+}
+
 Family family_of(const Fit& f) {
   if (f.shape == ShapeClass::kPolyline || f.shape == ShapeClass::kRegularPolygon) {
     return {f.shape, f.params.vertices.size()};

@@ -43,5 +43,8 @@ Recognition choose(std::vector<Scored> scored, double epsilon, double pen_radius
 
 // Model complexity used to prefer simpler shapes (number of free parameters).
 double degrees_of_freedom(const Fit& fit);
+// Every family fit_all can produce, and the lowest rank a candidate of a family can have.
+std::vector<Family> all_families(const RecognizerConfig& config);
+double minimum_rank(const Family& family);
 
 } // namespace penshape::recognize_detail

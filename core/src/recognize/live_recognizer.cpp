@@ -242,6 +242,14 @@ Recognition LiveRecognizer::finish() {
     kept.push_back(std::move(sc));
   }
   st.stats.reused_at_finish = kept.size();
+  // Families that cannot beat the best survivor are not fitted again: a rank is at least the
+  // family's price for its parameters.
+  if (!kept.empty()) {
+    const double best = kept.front().rank;
+    for (const Family& fam : recognize_detail::all_families(st.config)) {
+      if (recognize_detail::minimum_rank(fam) >= best) have.push_back(fam);
+    }
+  }
   std::vector<Scored> fresh =
       recognize_detail::evaluate(s, recognize_detail::fit_all(s, st.config, tol.epsilon, have),
                                  tol.epsilon, tol.pen_radius, st.config);
