@@ -5,6 +5,7 @@
 #include "command.hpp"
 #include "deconstruct_command.hpp"
 #include "hid_describe_command.hpp"
+#include "recognize_command.hpp"
 #include "replay_command.hpp"
 #include "search_commands.hpp"
 #include "version_command.hpp"
@@ -27,6 +28,8 @@ std::span<const Subcommand> subcommands() {
                  &run_search_radius},
       Subcommand{"suggest-radius", "radii where r / ε̂(r) peaks, with their solutions",
                  &run_suggest_radius},
+      Subcommand{"recognize", "name the shape of pen strokes, snapping only with a certificate",
+                 &run_recognize},
   };
   return kCommands;
 }

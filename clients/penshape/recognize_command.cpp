@@ -1,0 +1,241 @@
+// `penshape recognize`: the certified stroke recognizer on stroke files (formats in
+// stroke_files.hpp), with an optional confusion table against labels.
+#include "recognize_command.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <set>
+#include <string>
+
+#include "args.hpp"
+#include "command.hpp"
+#include "json_writer.hpp"
+#include "penshape/core/recognize.hpp"
+#include "stroke_files.hpp"
+
+namespace penshape::cli {
+namespace {
+
+constexpr const char* kHelp =
+    "usage: penshape recognize [--pen-radius R] [--tolerance E] [--json] [--labels] FILE|DIR...\n"
+    "\n"
+    "Names the shape each stroke was meant to be (segment, polyline, triangle, quadrilateral,\n"
+    "rectangle, square, diamond, regular_polygon, circle, ellipse, arc) and snaps only when the\n"
+    "clean shape's ink is certified within Hausdorff distance E of the stroke's ink; otherwise\n"
+    "`freeform`.\n"
+    "\n"
+    "Input: $1 gesture logs (.xml: <Gesture Name=...><Point X= Y= T=/>...</Gesture>) and JSON\n"
+    "lines (.jsonl/.ndjson, one stroke per line: {\"points\":[[x,y,t],...],\"name\":\"...\",\n"
+    "\"label\":\"...\"}, t in seconds and optional). Directories are searched recursively.\n"
+    "\n"
+    "  --pen-radius R  pen radius in the file's unit (default: 2% of each drawing's size)\n"
+    "  --tolerance E   Hausdorff tolerance (default: min(4.5 R, 10% of the drawing's size))\n"
+    "  --json          one object per stroke: file, line, name, class, confidence, params,\n"
+    "                  alternatives, certified, certificate, seconds (and label with --labels);\n"
+    "                  with --labels a final {\"summary\": ...} object\n"
+    "  --labels        expected class from the gesture name (triangle03 -> triangle, circle ->\n"
+    "                  circle, rectangle -> rectangle, others -> freeform) or the JSON \"label\";\n"
+    "                  prints a confusion table. Accepted as correct: the label itself, and\n"
+    "                  circle/ellipse, rectangle/square/quadrilateral, diamond/square.\n"
+    "\n"
+    "Exit codes: 0 ok, 2 bad input (message names file and line), 1 internal failure.";
+
+std::string label_for(const FileStroke& s) {
+  std::string name = s.label.empty() ? s.name : s.label;
+  if (shape_class_from_string(name)) return name;
+  while (!name.empty() && std::isdigit(static_cast<unsigned char>(name.back()))) name.pop_back();
+  if (name == "triangle" || name == "circle" || name == "rectangle") return name;
+  return "freeform";
+}
+
+bool accepted(const std::string& label, const std::string& got) {
+  if (label == got) return true;
+  static const std::map<std::string, std::set<std::string>> kFamilies{
+      {"circle", {"ellipse"}},
+      {"rectangle", {"square", "quadrilateral"}},
+      {"square", {"rectangle", "quadrilateral", "diamond"}},
+      {"diamond", {"square", "quadrilateral"}},
+      {"ellipse", {"circle"}},
+  };
+  const auto it = kFamilies.find(label);
+  return it != kFamilies.end() && it->second.contains(got);
+}
+
+void write_point(JsonWriter& json, PointD p) {
+  json.begin_array().number(p.x).number(p.y).end_array();
+}
+
+void write_params(JsonWriter& json, ShapeClass c, const ShapeParams& p) {
+  json.begin_object();
+  if (!p.vertices.empty()) {
+    json.key("vertices").begin_array();
+    for (const PointD& v : p.vertices) write_point(json, v);
+    json.end_array();
+  }
+  if (c == ShapeClass::kFreeform) return void(json.end_object());
+  json.key("center");
+  write_point(json, p.center);
+  if (p.radius_x > 0) json.key("radius_x").number(p.radius_x);
+  if (p.radius_y > 0) json.key("radius_y").number(p.radius_y);
+  json.key("rotation").number(p.rotation);
+  if (c == ShapeClass::kArc) {
+    json.key("start_angle").number(p.start_angle);
+    json.key("sweep_angle").number(p.sweep_angle);
+  }
+  json.end_object();
+}
+
+void write_certificate(JsonWriter& json, const Certificate& c) {
+  json.begin_object();
+  json.key("certified").boolean(c.certified);
+  json.key("bound").number(c.bound);
+  json.key("epsilon").number(c.epsilon);
+  json.key("pen_radius").number(c.pen_radius);
+  json.key("sample_spacing").number(c.sample_spacing);
+  json.end_object();
+}
+
+} // namespace
+
+int run_recognize(std::span<const std::string_view> args) {
+  const ParsedArgs parsed(args, {.flags = {"--json", "--labels", "--help"},
+                                 .options = {"--pen-radius", "--tolerance"}});
+  if (parsed.flag("--help")) {
+    std::puts(kHelp);
+    return kExitOk;
+  }
+  RecognizerConfig config;
+  if (const auto r = parsed.number("--pen-radius")) {
+    if (!(*r > 0)) throw UsageError("--pen-radius must be positive");
+    config.pen_radius = *r;
+  }
+  if (const auto e = parsed.number("--tolerance")) {
+    if (!(*e > 0)) throw UsageError("--tolerance must be positive");
+    config.tolerance = *e;
+  }
+  if (parsed.positionals().empty()) throw UsageError("no FILE or DIR given");
+  const bool json_out = parsed.flag("--json");
+  const bool labels = parsed.flag("--labels");
+
+  std::vector<std::string> files;
+  try {
+    files = collect_stroke_files(parsed.positionals());
+  } catch (const StrokeFileError& e) {
+    std::fprintf(stderr, "penshape recognize: %s\n", e.what());
+    return kExitBadInput;
+  }
+  std::map<std::string, std::map<std::string, std::size_t>> confusion;
+  std::size_t strokes = 0, correct = 0;
+  for (const std::string& file : files) {
+    std::vector<FileStroke> batch;
+    try {
+      batch = read_stroke_file(file);
+    } catch (const StrokeFileError& e) {
+      std::fprintf(stderr, "penshape recognize: %s\n", e.what());
+      return kExitBadInput;
+    }
+    for (const FileStroke& s : batch) {
+      Recognition r;
+      const auto t0 = std::chrono::steady_clock::now();
+      try {
+        r = recognize(s.points, config);
+      } catch (const InvalidInput& e) {
+        std::fprintf(stderr, "penshape recognize: %s:%zu: %s\n", s.file.c_str(), s.line, e.what());
+        return kExitBadInput;
+      }
+      const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const std::string got = to_string(r.shape);
+      const std::string label = labels ? label_for(s) : "";
+      ++strokes;
+      if (labels) {
+        ++confusion[label][got];
+        if (accepted(label, got)) ++correct;
+      }
+      if (json_out) {
+        JsonWriter json;
+        json.begin_object();
+        json.key("file").string(s.file);
+        json.key("line").integer(static_cast<std::int64_t>(s.line));
+        json.key("name").string(s.name);
+        if (labels) json.key("label").string(label);
+        json.key("class").string(got);
+        json.key("confidence").number(r.confidence);
+        json.key("bound").number(r.certificate.bound);
+        json.key("rms").number(r.rms);
+        json.key("params");
+        write_params(json, r.shape, r.params);
+        json.key("alternatives").begin_array();
+        for (const Candidate& c : r.alternatives) {
+          json.begin_object();
+          json.key("class").string(to_string(c.shape));
+          json.key("certified").boolean(c.certificate.certified);
+          json.key("bound").number(c.certificate.bound);
+          json.key("rms").number(c.rms);
+          if (!c.rejected.empty()) json.key("rejected").string(c.rejected);
+          json.end_object();
+        }
+        json.end_array();
+        json.key("certified").boolean(r.certificate.certified);
+        json.key("certificate");
+        write_certificate(json, r.certificate);
+        json.key("seconds").number(seconds);
+        json.end_object();
+        std::puts(json.str().c_str());
+      } else {
+        std::printf("%s:%zu %s -> %s", s.file.c_str(), s.line, s.name.c_str(), got.c_str());
+        if (r.certificate.certified) {
+          std::printf(" (confidence %.2f, bound %.3g <= eps %.3g)", r.confidence,
+                      r.certificate.bound, r.epsilon);
+        }
+        if (labels)
+          std::printf(" [label %s%s]", label.c_str(), accepted(label, got) ? "" : ", WRONG");
+        std::printf(" %.3f ms\n", seconds * 1e3);
+      }
+    }
+  }
+  if (labels) {
+    std::set<std::string> columns;
+    for (const auto& [label, row] : confusion) {
+      for (const auto& [got, n] : row) columns.insert(got);
+    }
+    if (json_out) {
+      JsonWriter json;
+      json.begin_object().key("summary").begin_object();
+      json.key("strokes").integer(static_cast<std::int64_t>(strokes));
+      json.key("correct").integer(static_cast<std::int64_t>(correct));
+      json.key("confusion").begin_object();
+      for (const auto& [label, row] : confusion) {
+        json.key(label).begin_object();
+        for (const auto& [got, n] : row) json.key(got).integer(static_cast<std::int64_t>(n));
+        json.end_object();
+      }
+      json.end_object().end_object().end_object();
+      std::puts(json.str().c_str());
+    } else {
+      std::printf("\n%-12s", "label\\class");
+      for (const auto& c : columns) std::printf(" %10.10s", c.c_str());
+      std::printf(" %8s\n", "correct");
+      for (const auto& [label, row] : confusion) {
+        std::size_t total = 0, ok = 0;
+        std::printf("%-12s", label.c_str());
+        for (const auto& c : columns) {
+          const auto it = row.find(c);
+          const std::size_t n = it == row.end() ? 0 : it->second;
+          total += n;
+          if (accepted(label, c)) ok += n;
+          std::printf(" %10zu", n);
+        }
+        std::printf(" %7.1f%%\n",
+                    total ? 100.0 * static_cast<double>(ok) / static_cast<double>(total) : 0.0);
+      }
+      std::printf(
+          "overall: %zu / %zu correct (%.1f%%)\n", correct, strokes,
+          strokes ? 100.0 * static_cast<double>(correct) / static_cast<double>(strokes) : 0.0);
+    }
+  }
+  return kExitOk;
+}
+
+} // namespace penshape::cli

@@ -1,0 +1,188 @@
+#pragma once
+// The certified stroke recognizer: name the shape a pen stroke was meant to be, and snap to it
+// only when the snap is proven close to what was drawn.
+//
+// What "proven" means (the certificate). Let A be the stroke's pen path (the samples joined by
+// straight segments) and B the clean shape's path (segment, polyline, closed polygon, circle,
+// ellipse or arc). Drawn with the same pen disk D (radius r), the inks are A ⊕ D and B ⊕ D, and
+//     H(A ⊕ D, B ⊕ D) <= H(A, B)                                                        (1)
+// (a point a + d of A ⊕ D lies within |a - b| of b + d, with b the nearest point of B to a; the
+// same the other way round). So an upper bound on the Hausdorff distance H(A, B) of the two
+// *paths* bounds the distance of the two *inks*. We bound each one-sided distance by sampling:
+//   - sup_{a in A} d(a, B): every segment of A is sampled with spacing <= h, so every a in A is
+//     within h/2 of a sample s; d(., B) is 1-Lipschitz, hence d(a, B) <= d(s, B) + h/2. For
+//     polygonal B, d(s, B) is the exact point-segment distance; for a circular arc it is the
+//     exact | |s - c| - R | (or the distance to an end); for an ellipse it is |s - e| for a
+//     point e ON the ellipse (Newton's foot point), which can only over-estimate d(s, B).
+//   - sup_{b in B} d(b, A): B is sampled with arc-length spacing <= h (for an ellipse the speed
+//     |B'(t)| <= max(a, b) bounds the arc length of a parameter step), and d(b, A) <= d(s, A) +
+//     h/2 with d(s, A) the exact distance to the polyline A.
+// Every distance is computed in double precision; a margin of 1e-13 times the largest coordinate
+// magnitude plus 1e-9 times the drawing's extent (far above the rounding error of these few
+// operations, a small multiple of 2.2e-16 times the magnitude) is added.
+// The certified bound is therefore  bound = max(both one-sided maxima) + h/2 + margin  >= H(A, B)
+// >= H(inks) by (1). A stroke snaps to a clean shape only when bound <= epsilon.
+//
+// Tolerance epsilon (RecognizerConfig): epsilon = min(tolerance_pen_radii * r,
+// max_tolerance_fraction * size), where size is the diagonal of the stroke's bounding box. It is
+// measured in pen radii because the ink of a wider pen hides larger wobbles; it is bounded by the
+// drawing size so a small mark (a letter, a dot) cannot snap to a coarse shape. When no pen
+// radius is given, r = default_pen_radius_fraction * size.
+//
+// Classes. A stroke is closed when its end comes back near its start: the last point is within
+// 2 epsilon of the first fifth of the path, or the first point within 2 epsilon of the last fifth
+// (an overshooting circle passes its start). Closed strokes try the closed families (triangle,
+// quadrilateral, rectangle, square, diamond, regular polygon, circle, ellipse), open strokes the
+// open ones (segment, polyline of 2..max_polyline_segments segments, arc).
+//
+// A snap needs the certificate AND a plausible reading (so handwriting and gestures stay ink):
+//   - the shape is drawn once: the stroke is at most 1.6 times as long as the clean shape
+//     (scribbles and writing go over the same region many times), and its total absolute
+//     turning (on 16 points along it, ignoring turns within epsilon / 4 of a straight run) exceeds
+//     the shape's by at most half a turn (writing wiggles);
+//   - straight open shapes (segment, polyline) must certify within straight_fraction * epsilon
+//     (people draw straight strokes far more precisely than round ones; a curve that merely
+//     stays near a few segments is a letter or a brace, not a polyline);
+//   - every interior corner of an open polyline is at least epsilon / 2 from the chord of its
+//     neighbours;
+//   - an open polyline must not cross itself (x, alpha, delete marks are gestures);
+//   - every side of a polygon (triangle, quadrilateral, rectangle, square, diamond) is at least
+//     epsilon long, and every corner is at least epsilon from the chord of its two neighbours
+//     (otherwise the polygon with one corner less says the same within tolerance: a corner drawn
+//     round, or a bump on a side);
+//   - a regular polygon's corners must stand out from its circumcircle by at least epsilon / 2
+//     (R (1 - cos(pi / n)) >= epsilon / 2), or the circle says the same thing more simply;
+//   - an arc must turn one way only (its net turning is most of its total turning; a brace or
+//     an S turns both ways) and sweep less than a full turn.
+// Among the plausible certified candidates the lowest rank wins,
+//     rank = (bound + 2 rms) / epsilon + 0.15 * (free parameters),
+// with rms the root-mean-square distance of the stroke to the clean shape (the mean error tells
+// a sloppy circle from a sloppy square better than the worst error does): a square (4) before a
+// rectangle (5) before a quadrilateral (8), a circle (3) before an ellipse (5), unless the richer
+// shape fits clearly better. `alternatives` lists every other candidate with its certificate (and
+// why it was rejected). Strokes with no plausible certified candidate are `freeform`.
+//
+// Limits (explicit, InvalidInput when exceeded): at least 2 samples with distinct positions,
+// at most RecognizerConfig::max_samples samples, finite coordinates with |x|, |y| <= 1e9, and a
+// configuration with finite, non-negative pen radius and tolerance and positive fractions.
+//
+// Input is the pen path (samples). The ink polygon and the deconstruction's skeleton P of the
+// engine are not inputs yet: the certificate is stated for the exact ink of the sampled path.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "penshape/core/deconstruct.hpp" // InvalidInput
+#include "penshape/core/polygon_set.hpp" // PointD
+
+namespace penshape {
+
+enum class ShapeClass {
+  kFreeform,
+  kSegment,
+  kPolyline, // open, 2..max_polyline_segments segments
+  kTriangle,
+  kQuadrilateral,
+  kRectangle,
+  kSquare,
+  kDiamond,        // a rhombus whose diagonals are near the x and y axes
+  kRegularPolygon, // 5, 6 or 8 equal sides and angles
+  kCircle,
+  kEllipse,
+  kArc, // an open circular arc
+};
+
+const char* to_string(ShapeClass c); // "freeform", "segment", ..., "regular_polygon", ...
+std::optional<ShapeClass> shape_class_from_string(const std::string& name);
+
+// One pen sample as the recognizer sees it: position in any unit (device units, px, mm) and a
+// time in seconds (used only for ordering; may be 0).
+struct StrokePoint {
+  double x = 0.0;
+  double y = 0.0;
+  double t = 0.0;
+};
+
+struct RecognizerConfig {
+  // Pen radius in the samples' unit; <= 0 means default_pen_radius_fraction * drawing size.
+  double pen_radius = 0.0;
+  // Tolerance epsilon in the samples' unit; <= 0 means the default rule below.
+  double tolerance = 0.0;
+  // Default pen radius relative to the drawing size (the bounding-box diagonal), used when the
+  // caller knows no pen: 2.5% of a 10 cm drawing is a 2.5 mm pen, a felt tip or wide stylus.
+  double default_pen_radius_fraction = 0.025;
+  // Default epsilon = tolerance_pen_radii * r: hand-drawn shapes wobble, leave small gaps and
+  // round their corners by a few pen widths; 5 radii (2.5 pen widths) accepts a quick sloppy
+  // hand (measured on the $1 logs: 98% of circles, rectangles and triangles certify as their
+  // shape) while writing and gestures stay ink through the plausibility rules above.
+  double tolerance_pen_radii = 5.0;
+  // ... bounded by this fraction of the drawing size, so a wide pen on a small mark never snaps
+  // coarsely (with the default pen both terms are 12.5% of the size).
+  double max_tolerance_fraction = 0.125;
+  // Straight open shapes (segment, polyline) must certify within this fraction of epsilon.
+  double straight_fraction = 0.35;
+  // Arcs: net turning / total turning at least this (1 = turns strictly one way).
+  double arc_monotone_turning = 0.8;
+  // Open polylines have at most this many segments (more is handwriting, not a shape).
+  std::size_t max_polyline_segments = 3;
+  // Input limit.
+  std::size_t max_samples = 100'000;
+};
+
+// The certificate: an upper bound on the Hausdorff distance between the clean shape's ink and
+// the stroke's ink (same pen radius), and what it was computed with.
+struct Certificate {
+  bool certified = false;      // bound <= epsilon
+  double bound = 0.0;          // >= H(clean ink, stroke ink), see the header comment
+  double epsilon = 0.0;        // the tolerance it was checked against
+  double pen_radius = 0.0;     // r used
+  double sample_spacing = 0.0; // h of the sampling argument
+};
+
+struct ShapeParams {
+  std::vector<PointD> vertices; // segment ends, polyline vertices, polygon corners (CCW or
+                                // as drawn), empty for circle/ellipse
+  PointD center;                // circle, ellipse, arc, polygons (centroid of the corners)
+  double radius_x = 0.0;        // circle/arc radius, ellipse semi-axis along `rotation`
+  double radius_y = 0.0;        // ellipse semi-axis across `rotation` (== radius_x for circles)
+  double rotation = 0.0;        // radians: ellipse/rectangle/square/diamond orientation
+  double start_angle = 0.0;     // arc: start and signed sweep, radians
+  double sweep_angle = 0.0;
+};
+
+struct Candidate {
+  ShapeClass shape = ShapeClass::kFreeform;
+  ShapeParams params;
+  std::vector<PointD> clean; // the clean shape as a path (closed shapes repeat the first
+                             // point at the end; circles/ellipses densely sampled)
+  Certificate certificate;
+  std::string rejected; // why a certified candidate is not a snap (empty: plausible)
+  double rms = 0.0;     // root-mean-square distance of the stroke to the clean path (ranking)
+};
+
+struct Recognition {
+  ShapeClass shape = ShapeClass::kFreeform; // kFreeform when nothing certifies
+  ShapeParams params;
+  std::vector<PointD> clean;           // empty for freeform
+  double rms = 0.0;                    // of the winner, see Candidate::rms
+  double confidence = 0.0;             // 1 - bound / (2 epsilon) of the winner (0.5..1), 0 freeform
+  Certificate certificate;             // of the winner (certified == false for freeform)
+  std::vector<Candidate> alternatives; // the other candidates tried, best bound first
+  double epsilon = 0.0;
+  double pen_radius = 0.0;
+};
+
+// Throws InvalidInput (naming the problem) for bad input; see the limits above.
+Recognition recognize(const std::vector<StrokePoint>& samples, const RecognizerConfig& config = {});
+
+// The tolerance and pen radius the recognizer uses for these samples (the rule above).
+struct ToleranceChoice {
+  double pen_radius = 0.0;
+  double epsilon = 0.0;
+  double size = 0.0; // bounding-box diagonal
+};
+ToleranceChoice choose_tolerance(const std::vector<StrokePoint>& samples,
+                                 const RecognizerConfig& config);
+
+} // namespace penshape

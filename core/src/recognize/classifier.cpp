@@ -1,0 +1,350 @@
+// recognize(): tolerance rule, family fits, certification and the choice of the winner.
+#include "classifier.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "annulus_polish.hpp"
+#include "certificate.hpp"
+
+namespace penshape::recognize_detail {
+namespace {
+
+// A candidate's rank (recognize.hpp): its certified bound and twice its RMS distance in units of
+// epsilon, plus a price per free parameter, so a simpler shape wins unless a richer one fits
+// clearly better. Regular polygons are priced as 6 parameters: with many sides they approach the
+// circle, and the circle is the simpler reading of a round stroke.
+constexpr double kPricePerParameter = 0.15;
+constexpr double kRmsWeight = 2.0;
+// A shape is drawn once: the stroke may be at most this much longer than the clean shape
+// (overshoot, a closing overlap and wobble stay well below).
+constexpr double kMaxTracing = 1.6;
+// ... and turns at most half a turn more than the clean shape does (end hooks, a closing
+// overlap), measured on 16 points along the stroke (pen jitter averages out).
+constexpr double kMaxExtraTurning = std::numbers::pi;
+// Fits whose estimate exceeds this many epsilons are not certified at all (saves time; their
+// certificate could not pass because the estimate is measured on points of the stroke).
+constexpr double kCertifyIfBelow = 1.25;
+
+bool segments_cross(PointD a, PointD b, PointD c, PointD d) {
+  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
+  const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+  return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
+}
+
+bool self_crossing(const std::vector<PointD>& path) {
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    for (std::size_t j = i + 2; j + 1 < path.size(); ++j) {
+      if (segments_cross(path[i], path[i + 1], path[j], path[j + 1])) return true;
+    }
+  }
+  return false;
+}
+
+// Net over total turning of the stroke, measured on a coarse resampling (pen jitter averages out).
+double turning_monotonicity(const PreparedStroke& s) {
+  const std::vector<PointD> q = resample(s.points, 16);
+  double net = 0, total = 0;
+  for (std::size_t i = 1; i + 1 < q.size(); ++i) {
+    const PointD u = q[i] - q[i - 1];
+    const PointD v = q[i + 1] - q[i];
+    const double a = std::atan2(cross(u, v), dot(u, v));
+    net += a;
+    total += std::abs(a);
+  }
+  return total > 0 ? std::abs(net) / total : 1.0;
+}
+
+// Total absolute turning of the stroke on a coarse resampling (radians), counting only the
+// turns that matter at the tolerance's scale: a vertex within epsilon / 4 of its neighbours'
+// chord is pen jitter, not a turn.
+double stroke_turning(const PreparedStroke& s, double epsilon) {
+  const std::vector<PointD> q = resample(s.points, 16);
+  double total = 0;
+  for (std::size_t i = 1; i + 1 < q.size(); ++i) {
+    if (segment_distance(q[i], q[i - 1], q[i + 1]) < 0.25 * epsilon) continue;
+    const PointD u = q[i] - q[i - 1];
+    const PointD v = q[i + 1] - q[i];
+    total += std::abs(std::atan2(cross(u, v), dot(u, v)));
+  }
+  return total;
+}
+
+// Total absolute turning of the clean shape (radians).
+double shape_turning(const Fit& f) {
+  if (f.clean.kind != CleanShape::Kind::kPolyline) return std::abs(f.clean.sweep);
+  std::vector<PointD> p = f.clean.path;
+  const bool closed = p.size() > 2 && p.front() == p.back();
+  if (closed) p.push_back(p[1]); // the turn at the first vertex
+  double total = 0;
+  for (std::size_t i = 1; i + 1 < p.size(); ++i) {
+    const PointD u = p[i] - p[i - 1];
+    const PointD v = p[i + 1] - p[i];
+    total += std::abs(std::atan2(cross(u, v), dot(u, v)));
+  }
+  return total;
+}
+
+// Why a certified candidate is not a plausible snap (empty when it is); rules in recognize.hpp.
+std::string implausibility(const PreparedStroke& s, const Fit& f, const Certificate& c,
+                           const RecognizerConfig& config) {
+  const double clean_length = path_length(f.clean.sample(s.size / 64.0));
+  // Measured on the fit points (48 along the stroke) so that sample jitter does not count.
+  if (path_length(s.fit_points) > kMaxTracing * clean_length) {
+    return "the stroke is much longer than the shape (traced over, a scribble or writing)";
+  }
+  if (stroke_turning(s, c.epsilon) > shape_turning(f) + kMaxExtraTurning) {
+    return "the stroke turns far more than the shape (wiggles: writing or a scribble)";
+  }
+  const bool straight_open = f.shape == ShapeClass::kSegment || f.shape == ShapeClass::kPolyline;
+  if (straight_open && c.bound > config.straight_fraction * c.epsilon) {
+    return "a straight open shape must fit within straight_fraction * epsilon";
+  }
+  if (f.shape == ShapeClass::kPolyline) {
+    const std::vector<PointD>& v = f.params.vertices;
+    for (std::size_t i = 1; i + 1 < v.size(); ++i) {
+      if (segment_distance(v[i], v[i - 1], v[i + 1]) < 0.5 * c.epsilon) {
+        return "a polyline corner is within epsilon / 2 of its neighbours' chord (not a corner)";
+      }
+    }
+  }
+  if (f.shape == ShapeClass::kPolyline && self_crossing(f.clean.path)) {
+    return "the open polyline crosses itself (a gesture, not a shape)";
+  }
+  if (f.shape == ShapeClass::kTriangle || f.shape == ShapeClass::kQuadrilateral ||
+      f.shape == ShapeClass::kRectangle || f.shape == ShapeClass::kSquare ||
+      f.shape == ShapeClass::kDiamond) {
+    const std::vector<PointD>& v = f.params.vertices;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      if (distance(v[i], v[(i + 1) % v.size()]) < c.epsilon) {
+        return "a side is shorter than epsilon (a corner drawn round, not a side)";
+      }
+      const PointD prev = v[(i + v.size() - 1) % v.size()];
+      if (segment_distance(v[i], prev, v[(i + 1) % v.size()]) < c.epsilon) {
+        return "a corner is within epsilon of its neighbours' chord (not a corner)";
+      }
+    }
+  }
+  if (f.shape == ShapeClass::kRegularPolygon) {
+    const double n = static_cast<double>(f.params.vertices.size());
+    if (f.params.radius_x * (1.0 - std::cos(std::numbers::pi / n)) < 0.5 * c.epsilon) {
+      return "the regular polygon's corners stand out from its circle by less than epsilon / 2";
+    }
+  }
+  if (f.shape == ShapeClass::kArc && turning_monotonicity(s) < config.arc_monotone_turning) {
+    return "the stroke turns both ways (not an arc)";
+  }
+  return {};
+}
+
+std::vector<PointD> display_path(const CleanShape& c, double size) {
+  if (c.kind == CleanShape::Kind::kPolyline) return c.path;
+  return c.sample(size / 40.0);
+}
+
+} // namespace
+
+double degrees_of_freedom(const Fit& fit) {
+  switch (fit.shape) {
+    case ShapeClass::kSegment:
+      return 4;
+    case ShapeClass::kPolyline:
+      return 2.0 * static_cast<double>(fit.params.vertices.size());
+    case ShapeClass::kTriangle:
+      return 6;
+    case ShapeClass::kQuadrilateral:
+      return 8;
+    case ShapeClass::kRectangle:
+      return 5;
+    case ShapeClass::kSquare:
+      return 4;
+    case ShapeClass::kDiamond:
+      return 4;
+    case ShapeClass::kRegularPolygon:
+      return 6;
+    case ShapeClass::kCircle:
+      return 3;
+    case ShapeClass::kEllipse:
+      return 5;
+    case ShapeClass::kArc:
+      return 5;
+    case ShapeClass::kFreeform:
+      break;
+  }
+  return 0;
+}
+
+bool is_closed(const PreparedStroke& s, double epsilon) {
+  const std::size_t n = s.fit_points.size();
+  const std::size_t fifth = n / 5 + 1;
+  const std::span<const PointD> pts(s.fit_points);
+  const double limit = kClosureEpsilons * epsilon;
+  return polyline_distance(pts.back(), pts.first(fifth)) <= limit ||
+         polyline_distance(pts.front(), pts.last(fifth)) <= limit;
+}
+
+std::vector<Family> all_families(const RecognizerConfig& config) {
+  std::vector<Family> out{{ShapeClass::kSegment, 0},        {ShapeClass::kArc, 0},
+                          {ShapeClass::kTriangle, 0},       {ShapeClass::kQuadrilateral, 0},
+                          {ShapeClass::kRectangle, 0},      {ShapeClass::kSquare, 0},
+                          {ShapeClass::kDiamond, 0},        {ShapeClass::kCircle, 0},
+                          {ShapeClass::kEllipse, 0},        {ShapeClass::kRegularPolygon, 5},
+                          {ShapeClass::kRegularPolygon, 6}, {ShapeClass::kRegularPolygon, 8}};
+  for (std::size_t k = 2; k <= config.max_polyline_segments; ++k) {
+    out.push_back({ShapeClass::kPolyline, k + 1});
+  }
+  return out;
+}
+
+double minimum_rank(const Family& family) {
+  Fit f;
+  f.shape = family.shape;
+  f.params.vertices.resize(family.vertices);
+  return kPricePerParameter * degrees_of_freedom(f);
+}
+
+Family family_of(const Fit& f) {
+  if (f.shape == ShapeClass::kPolyline || f.shape == ShapeClass::kRegularPolygon) {
+    return {f.shape, f.params.vertices.size()};
+  }
+  return {f.shape, 0};
+}
+
+std::vector<Fit> fit_all(const PreparedStroke& s, const RecognizerConfig& config, double epsilon,
+                         const std::vector<Family>& skip) {
+  auto wanted = [&skip](ShapeClass c, std::size_t n = 0) {
+    return std::find(skip.begin(), skip.end(), Family{c, n}) == skip.end();
+  };
+  std::vector<Fit> fits;
+  auto add = [&fits](std::optional<Fit> f) {
+    if (f && std::isfinite(f->fit_error)) fits.push_back(std::move(*f));
+  };
+  if (!is_closed(s, epsilon)) {
+    if (wanted(ShapeClass::kSegment)) add(fit_segment(s));
+    for (std::size_t k = 2; k <= config.max_polyline_segments; ++k) {
+      if (wanted(ShapeClass::kPolyline, k + 1)) add(fit_polyline(s, k));
+    }
+    if (wanted(ShapeClass::kArc)) add(fit_arc(s));
+    return fits;
+  }
+  if (wanted(ShapeClass::kTriangle)) add(fit_polygon(s, 3));
+  const bool rectangles =
+      wanted(ShapeClass::kRectangle) || wanted(ShapeClass::kSquare) || wanted(ShapeClass::kDiamond);
+  if (rectangles || wanted(ShapeClass::kQuadrilateral)) {
+    std::optional<Fit> quad = fit_polygon(s, 4);
+    if (quad) {
+      if (rectangles) {
+        for (Fit& f : fit_rectangles(s, *quad)) {
+          if (wanted(f.shape)) add(std::move(f));
+        }
+      }
+      if (wanted(ShapeClass::kQuadrilateral)) add(std::move(quad));
+    }
+  }
+  std::optional<Fit> circle = fit_circle(s);
+  if (circle) {
+    for (const std::size_t n : {std::size_t{5}, std::size_t{6}, std::size_t{8}}) {
+      if (wanted(ShapeClass::kRegularPolygon, n)) {
+        add(fit_regular_polygon(s, n, circle->params.center, circle->params.radius_x));
+      }
+    }
+    if (wanted(ShapeClass::kCircle)) add(std::move(circle));
+  }
+  if (wanted(ShapeClass::kEllipse)) add(fit_ellipse(s));
+  return fits;
+}
+
+std::vector<Scored> evaluate(const PreparedStroke& s, std::vector<Fit> fits, double epsilon,
+                             double pen_radius, const RecognizerConfig& config) {
+  std::vector<Scored> out;
+  for (Fit& f : fits) {
+    Scored sc;
+    Candidate& c = sc.candidate;
+    c.shape = f.shape;
+    c.params = f.params;
+    if (f.fit_error <= kCertifyIfBelow * epsilon) {
+      c.certificate = certify(s.points, f.clean, epsilon, pen_radius, s.size);
+    } else {
+      c.certificate.epsilon = epsilon;
+      c.certificate.pen_radius = pen_radius;
+      c.certificate.bound = f.fit_error; // not certified; the fit's estimate for ranking
+    }
+    if (c.certificate.certified) c.rejected = implausibility(s, f, c.certificate, config);
+    c.rms = rms_distance(s.fit_points, f.clean);
+    c.clean = display_path(f.clean, s.size);
+    sc.rank = (c.certificate.bound + kRmsWeight * c.rms) / epsilon +
+              kPricePerParameter * degrees_of_freedom(f);
+    sc.snap = c.certificate.certified && c.rejected.empty();
+    sc.fit = std::move(f);
+    out.push_back(std::move(sc));
+  }
+  std::stable_sort(out.begin(), out.end(), [](const Scored& a, const Scored& b) {
+    if (a.snap != b.snap) return a.snap;
+    return a.rank < b.rank;
+  });
+  return out;
+}
+
+Recognition choose(std::vector<Scored> scored, double epsilon, double pen_radius) {
+  Recognition out;
+  out.epsilon = epsilon;
+  out.pen_radius = pen_radius;
+  out.certificate.epsilon = epsilon;
+  out.certificate.pen_radius = pen_radius;
+  std::size_t first_alternative = 0;
+  if (!scored.empty() && scored.front().snap) {
+    Candidate& w = scored.front().candidate;
+    out.shape = w.shape;
+    out.params = w.params;
+    out.clean = w.clean;
+    out.certificate = w.certificate;
+    out.rms = w.rms;
+    out.confidence = std::clamp(1.0 - w.certificate.bound / (2.0 * epsilon), 0.0, 1.0);
+    first_alternative = 1;
+  }
+  for (std::size_t i = first_alternative; i < scored.size(); ++i) {
+    out.alternatives.push_back(std::move(scored[i].candidate));
+  }
+  return out;
+}
+
+} // namespace penshape::recognize_detail
+
+namespace penshape {
+
+using recognize_detail::PreparedStroke;
+
+ToleranceChoice choose_tolerance(const std::vector<StrokePoint>& samples,
+                                 const RecognizerConfig& config) {
+  ToleranceChoice t;
+  if (samples.empty()) return t;
+  double xlo = samples[0].x, xhi = xlo, ylo = samples[0].y, yhi = ylo;
+  for (const StrokePoint& s : samples) {
+    xlo = std::min(xlo, s.x);
+    xhi = std::max(xhi, s.x);
+    ylo = std::min(ylo, s.y);
+    yhi = std::max(yhi, s.y);
+  }
+  t.size = std::hypot(xhi - xlo, yhi - ylo);
+  t.pen_radius =
+      config.pen_radius > 0 ? config.pen_radius : config.default_pen_radius_fraction * t.size;
+  t.epsilon = config.tolerance > 0 ? config.tolerance
+                                   : std::min(config.tolerance_pen_radii * t.pen_radius,
+                                              config.max_tolerance_fraction * t.size);
+  return t;
+}
+
+Recognition recognize(const std::vector<StrokePoint>& samples, const RecognizerConfig& config) {
+  recognize_detail::validate_samples(samples, config);
+  const ToleranceChoice tol = choose_tolerance(samples, config);
+  const PreparedStroke s = recognize_detail::prepare(samples);
+  std::vector<recognize_detail::Scored> scored = recognize_detail::evaluate(
+      s, recognize_detail::fit_all(s, config, tol.epsilon), tol.epsilon, tol.pen_radius, config);
+  if (!scored.empty() && scored.front().snap) {
+    recognize_detail::polish_with_annulus(s, scored.front(), config);
+  }
+  return recognize_detail::choose(std::move(scored), tol.epsilon, tol.pen_radius);
+}
+
+} // namespace penshape

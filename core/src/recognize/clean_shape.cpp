@@ -1,0 +1,130 @@
+// Sampling and distances of clean shapes.
+#include "clean_shape.hpp"
+
+#include <cmath>
+
+namespace penshape::recognize_detail {
+
+PointD CleanShape::at(double t) const {
+  const double c = std::cos(rotation);
+  const double s = std::sin(rotation);
+  const double ex = rx * std::cos(t);
+  const double ey = (kind == Kind::kCircle ? rx : ry) * std::sin(t);
+  return {center.x + c * ex - s * ey, center.y + s * ex + c * ey};
+}
+
+std::vector<PointD> CleanShape::sample(double h) const {
+  std::vector<PointD> out;
+  if (kind == Kind::kPolyline) {
+    if (path.empty()) return out;
+    out.push_back(path.front());
+    for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+      const double len = distance(path[i], path[i + 1]);
+      const auto pieces = static_cast<std::size_t>(std::max(1.0, std::ceil(len / h)));
+      for (std::size_t k = 1; k <= pieces; ++k) {
+        const double f = static_cast<double>(k) / static_cast<double>(pieces);
+        out.push_back(path[i] + f * (path[i + 1] - path[i]));
+      }
+    }
+    return out;
+  }
+  // |d/dt at(t)| <= max(rx, ry): a parameter step of h / max(rx, ry) moves at most h along it.
+  const double speed = std::max(rx, kind == Kind::kCircle ? rx : ry);
+  const auto pieces =
+      static_cast<std::size_t>(std::max(8.0, std::ceil(std::abs(sweep) * speed / h)));
+  out.reserve(pieces + 1);
+  for (std::size_t k = 0; k <= pieces; ++k) {
+    out.push_back(at(t0 + sweep * static_cast<double>(k) / static_cast<double>(pieces)));
+  }
+  return out;
+}
+
+double arc_distance(PointD p, const CleanShape& circle) {
+  const PointD d = p - circle.center;
+  const double r = norm(d);
+  if (circle.full_curve()) return std::abs(r - circle.rx);
+  // Inside the swept angular range the nearest point is radial; outside, an arc end.
+  const double a = std::atan2(d.y, d.x);
+  const double lo = std::min(circle.t0, circle.t0 + circle.sweep);
+  const double span = std::abs(circle.sweep);
+  double rel = std::fmod(a - lo, 2.0 * std::numbers::pi);
+  if (rel < 0) rel += 2.0 * std::numbers::pi;
+  if (rel <= span) return std::abs(r - circle.rx);
+  const double e0 = distance(p, circle.at(circle.t0));
+  const double e1 = distance(p, circle.at(circle.t0 + circle.sweep));
+  return std::min(e0, e1);
+}
+
+double ellipse_distance(PointD p, const CleanShape& e) {
+  // Into the ellipse's frame, first quadrant (the distance is symmetric in both axes).
+  const PointD d = p - e.center;
+  const double c = std::cos(e.rotation);
+  const double s = std::sin(e.rotation);
+  const double x = std::abs(c * d.x + s * d.y);
+  const double y = std::abs(-s * d.x + c * d.y);
+  const double a = e.rx;
+  const double b = e.ry;
+  // Newton on the foot-point condition g(t) = (a^2 - b^2) sin t cos t - a x sin t + b y cos t = 0
+  // for t in [0, pi/2]; whatever t it ends with, (a cos t, b sin t) lies on the ellipse, so the
+  // distance to it is an upper bound (exact when converged).
+  double t = std::atan2(a * y, b * x);
+  for (int it = 0; it < 6; ++it) {
+    const double st = std::sin(t), ct = std::cos(t);
+    const double g = (a * a - b * b) * st * ct - a * x * st + b * y * ct;
+    const double dg = (a * a - b * b) * (ct * ct - st * st) - a * x * ct - b * y * st;
+    if (dg == 0.0) break;
+    t = std::clamp(t - g / dg, 0.0, std::numbers::pi / 2);
+  }
+  return std::hypot(x - a * std::cos(t), y - b * std::sin(t));
+}
+
+double CleanShape::distance_to(PointD p) const {
+  switch (kind) {
+    case Kind::kPolyline:
+      return polyline_distance(p, path);
+    case Kind::kCircle:
+      return arc_distance(p, *this);
+    case Kind::kEllipse:
+      return ellipse_distance(p, *this);
+  }
+  return INFINITY;
+}
+
+double approximate_ellipse_distance(PointD p, const CleanShape& e) {
+  const PointD d = p - e.center;
+  const double c = std::cos(e.rotation);
+  const double s = std::sin(e.rotation);
+  const double x = (c * d.x + s * d.y) / e.rx;
+  const double y = (-s * d.x + c * d.y) / e.ry;
+  // Sampson's first-order distance to F = x^2 + y^2 - 1 in the scaled frame.
+  const double g = 2.0 * std::sqrt(x * x / (e.rx * e.rx) + y * y / (e.ry * e.ry));
+  const double f = std::abs(x * x + y * y - 1.0);
+  return g > 0 ? f / g : std::max(e.rx, e.ry);
+}
+
+double max_distance(std::span<const PointD> points, const CleanShape& shape) {
+  double worst = 0.0;
+  if (shape.kind == CleanShape::Kind::kEllipse) {
+    for (const PointD& p : points) worst = std::max(worst, approximate_ellipse_distance(p, shape));
+    return worst;
+  }
+  for (const PointD& p : points) worst = std::max(worst, shape.distance_to(p));
+  return worst;
+}
+
+} // namespace penshape::recognize_detail
+
+namespace penshape::recognize_detail {
+
+double rms_distance(std::span<const PointD> points, const CleanShape& shape) {
+  double sum = 0.0;
+  for (const PointD& p : points) {
+    const double d = shape.kind == CleanShape::Kind::kEllipse
+                         ? approximate_ellipse_distance(p, shape)
+                         : shape.distance_to(p);
+    sum += d * d;
+  }
+  return points.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(points.size()));
+}
+
+} // namespace penshape::recognize_detail

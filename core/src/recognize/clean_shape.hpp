@@ -1,0 +1,51 @@
+#pragma once
+// The clean shape a candidate proposes, in the form the certificate and the fitters measure:
+// a polyline (segments, polylines, polygons), a circular arc or full circle, or an elliptic arc
+// or full ellipse.
+#include <numbers>
+#include <span>
+#include <vector>
+
+#include "geometry.hpp"
+
+namespace penshape::recognize_detail {
+
+struct CleanShape {
+  enum class Kind { kPolyline, kCircle, kEllipse };
+  Kind kind = Kind::kPolyline;
+  std::vector<PointD> path; // kPolyline: vertices in order; closed shapes repeat the first
+  PointD center;            // kCircle, kEllipse
+  double rx = 0.0;          // circle radius; ellipse semi-axis along `rotation`
+  double ry = 0.0;          // ellipse semi-axis across `rotation`
+  double rotation = 0.0;
+  double t0 = 0.0;                       // parameter range [t0, t0 + sweep]; sweep
+  double sweep = 2.0 * std::numbers::pi; // may be negative; |sweep| = 2 pi: full curve
+
+  [[nodiscard]] bool full_curve() const {
+    return std::abs(std::abs(sweep) - 2.0 * std::numbers::pi) < 1e-12;
+  }
+  [[nodiscard]] PointD at(double t) const; // curve point at parameter t (not for kPolyline)
+  // The path sampled with arc-length steps <= h (polyline vertices always included).
+  [[nodiscard]] std::vector<PointD> sample(double h) const;
+  // Distance from p to the shape: exact for polylines and circular arcs; for (full) ellipses
+  // the distance to a point of the ellipse found by Newton's method, an upper bound that is
+  // exact when Newton converges.
+  [[nodiscard]] double distance_to(PointD p) const;
+};
+
+// Distance from p to a circular arc (exact formula).
+double arc_distance(PointD p, const CleanShape& circle);
+// Distance from p to a point of the full ellipse near its foot point (an upper bound).
+double ellipse_distance(PointD p, const CleanShape& ellipse);
+
+// Sampson's first-order distance to an ellipse: fast, accurate near it, not a bound.
+double approximate_ellipse_distance(PointD p, const CleanShape& ellipse);
+
+// Max of distance_to over `points` (for ellipses: of the Sampson distance); the fitters'
+// objective, an estimate, never a certificate.
+double max_distance(std::span<const PointD> points, const CleanShape& shape);
+
+// Root-mean-square distance of `points` to the shape (Sampson distance for ellipses).
+double rms_distance(std::span<const PointD> points, const CleanShape& shape);
+
+} // namespace penshape::recognize_detail

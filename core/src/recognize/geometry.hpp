@@ -1,0 +1,68 @@
+#pragma once
+// Small double-precision plane geometry shared by the recognizer's fitters and its certificate.
+#include <algorithm>
+#include <cmath>
+#include <span>
+#include <vector>
+
+#include "penshape/core/polygon_set.hpp"
+
+namespace penshape::recognize_detail {
+
+inline PointD operator+(PointD a, PointD b) { return {a.x + b.x, a.y + b.y}; }
+inline PointD operator-(PointD a, PointD b) { return {a.x - b.x, a.y - b.y}; }
+inline PointD operator*(double s, PointD a) { return {s * a.x, s * a.y}; }
+inline double dot(PointD a, PointD b) { return a.x * b.x + a.y * b.y; }
+inline double cross(PointD a, PointD b) { return a.x * b.y - a.y * b.x; }
+inline double norm(PointD a) { return std::sqrt(a.x * a.x + a.y * a.y); }
+inline double distance(PointD a, PointD b) { return norm(a - b); }
+
+// Squared distance from p to the segment [a, b] (a == b allowed).
+inline double segment_distance2(PointD p, PointD a, PointD b) {
+  const PointD ab = b - a;
+  const PointD ap = p - a;
+  const double len2 = dot(ab, ab);
+  const double t = len2 > 0.0 ? std::clamp(dot(ap, ab) / len2, 0.0, 1.0) : 0.0;
+  const PointD d = ap - t * ab;
+  return dot(d, d);
+}
+inline double segment_distance(PointD p, PointD a, PointD b) {
+  return std::sqrt(segment_distance2(p, a, b));
+}
+
+// Distance from p to the polyline through `path` (one point: distance to it).
+inline double polyline_distance(PointD p, std::span<const PointD> path) {
+  if (path.size() == 1) return distance(p, path[0]);
+  double best = INFINITY;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    best = std::min(best, segment_distance2(p, path[i], path[i + 1]));
+  }
+  return std::sqrt(best);
+}
+
+// Intersection of the lines p + s u and q + t v; false when (nearly) parallel.
+inline bool line_intersection(PointD p, PointD u, PointD q, PointD v, PointD& out) {
+  const double d = cross(u, v);
+  if (std::abs(d) < 1e-9 * norm(u) * norm(v)) return false;
+  const double s = cross(q - p, v) / d;
+  out = p + s * u;
+  return true;
+}
+
+inline double path_length(std::span<const PointD> path) {
+  double len = 0.0;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) len += distance(path[i], path[i + 1]);
+  return len;
+}
+
+// Points along `path` with arc-length spacing exactly length / (count - 1), both ends kept.
+std::vector<PointD> resample(std::span<const PointD> path, std::size_t count);
+
+// A closed path (first point repeated at the end) from a ring of corners.
+inline std::vector<PointD> closed_ring(const std::vector<PointD>& corners) {
+  std::vector<PointD> ring = corners;
+  if (!ring.empty()) ring.push_back(ring.front());
+  return ring;
+}
+
+} // namespace penshape::recognize_detail

@@ -1,0 +1,39 @@
+// Names of the shape classes (CLI, JSON, labels).
+#include <array>
+#include <utility>
+
+#include "penshape/core/recognize.hpp"
+
+namespace penshape {
+namespace {
+constexpr std::array<std::pair<ShapeClass, const char*>, 12> kNames{{
+    {ShapeClass::kFreeform, "freeform"},
+    {ShapeClass::kSegment, "segment"},
+    {ShapeClass::kPolyline, "polyline"},
+    {ShapeClass::kTriangle, "triangle"},
+    {ShapeClass::kQuadrilateral, "quadrilateral"},
+    {ShapeClass::kRectangle, "rectangle"},
+    {ShapeClass::kSquare, "square"},
+    {ShapeClass::kDiamond, "diamond"},
+    {ShapeClass::kRegularPolygon, "regular_polygon"},
+    {ShapeClass::kCircle, "circle"},
+    {ShapeClass::kEllipse, "ellipse"},
+    {ShapeClass::kArc, "arc"},
+}};
+} // namespace
+
+const char* to_string(ShapeClass c) {
+  for (const auto& [k, name] : kNames) {
+    if (k == c) return name;
+  }
+  return "freeform";
+}
+
+std::optional<ShapeClass> shape_class_from_string(const std::string& name) {
+  for (const auto& [k, n] : kNames) {
+    if (name == n) return k;
+  }
+  return std::nullopt;
+}
+
+} // namespace penshape

@@ -1,0 +1,107 @@
+// `penshape recognize` run as a user would: $1 logs, JSON lines, --json, --labels, bad input.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace {
+
+struct Result {
+  int exit_code = -1;
+  std::string out;
+};
+
+Result run(const std::string& args) {
+  const std::string cmd = std::string(PENSHAPE_CLI) + " recognize " + args + " 2>&1";
+  Result r;
+  FILE* pipe = ::popen(cmd.c_str(), "r");
+  if (pipe == nullptr) return r;
+  std::array<char, 4096> buf{};
+  while (std::fgets(buf.data(), static_cast<int>(buf.size()), pipe) != nullptr) r.out += buf.data();
+  const int status = ::pclose(pipe);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::filesystem::path data_dir() {
+  if (const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR")) return env;
+  return PENSHAPE_SHARED_DATA_DIR;
+}
+
+std::string quoted(const std::filesystem::path& p) {
+  std::string out(1, '\'');
+  out.append(p.string());
+  out.push_back('\'');
+  return out;
+}
+
+std::filesystem::path write_temp(const std::string& name, const std::string& text) {
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("penshape_recognize_cli_" + std::to_string(::getpid()) + "_" + name);
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(RecognizeCli, DollarLogToJson) {
+  const auto file = data_dir() / "strokes" / "dollar1" / "s02" / "medium" / "triangle01.xml";
+  const Result r = run("--json " + quoted(file));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  for (const char* key : {"\"file\":", "\"class\":\"triangle\"",
+                          "\"confidence\":", "\"params\":{\"vertices\":", "\"alternatives\":[",
+                          "\"certified\":true", "\"seconds\":"}) {
+    EXPECT_NE(r.out.find(key), std::string::npos) << key << " in " << r.out;
+  }
+}
+
+TEST(RecognizeCli, JsonLinesWithLabelsPrintsAConfusionTable) {
+  const auto file =
+      write_temp("ok.jsonl",
+                 "{\"points\":[[0,0,0],[100,0,0.1],[200,0,0.2]],\"label\":\"segment\"}\n"
+                 "\n"
+                 "{\"name\":\"box\",\"points\":[[0,0],[100,0],[100,100],[0,100],[0,0]],\"label\":"
+                 "\"square\"}\n");
+  const Result r = run("--labels " + quoted(file));
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("-> segment"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("-> square"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("overall: 2 / 2 correct"), std::string::npos) << r.out;
+  std::filesystem::remove(file);
+}
+
+TEST(RecognizeCli, BadInputNamesFileAndLine) {
+  const auto bad_json =
+      write_temp("bad.jsonl", "{\"points\":[[0,0],[1,1]]}\n{\"points\":[[0,0],[1,]]}\n");
+  Result r = run(quoted(bad_json));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find(bad_json.string() + ":2:"), std::string::npos) << r.out;
+
+  const auto single = write_temp("single.jsonl", "{\"points\":[[5,5,0]]}\n");
+  r = run(quoted(single));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find(single.string() + ":1:"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("two distinct"), std::string::npos) << r.out;
+
+  const auto nan = write_temp("nan.xml",
+                              "<Gesture Name=\"circle01\">\n<Point X=\"1\" Y=\"2\" T=\"0\" />\n"
+                              "<Point X=\"nan\" Y=\"2\" T=\"1\" />\n</Gesture>\n");
+  r = run(quoted(nan));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find(nan.string() + ":3:"), std::string::npos) << r.out;
+
+  const auto truncated = write_temp("cut.xml", "<Gesture Name=\"x\">\n<Point X=\"1\" Y=\"2\" ");
+  r = run(quoted(truncated));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("unterminated"), std::string::npos) << r.out;
+
+  EXPECT_EQ(run("/nonexistent/stroke.jsonl").exit_code, 2);
+  EXPECT_EQ(run("").exit_code, 2);
+  EXPECT_EQ(run("--pen-radius -1 " + quoted(single)).exit_code, 2);
+  for (const auto& f : {bad_json, single, nan, truncated}) std::filesystem::remove(f);
+}
+
+} // namespace

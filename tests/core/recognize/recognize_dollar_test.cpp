@@ -1,0 +1,102 @@
+// The recognizer on the shared $1 gesture logs (subjects s01..s06, all speeds): shapes named
+// right, non-shape gestures left as ink, and every snap's certificate checked independently.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <map>
+#include <set>
+
+#include "penshape/core/recognize.hpp"
+#include "test_support.hpp"
+
+namespace penshape {
+namespace {
+
+const std::map<std::string, std::set<std::string>> kShapeTargets{
+    {"circle", {"circle", "ellipse"}},
+    {"rectangle", {"rectangle", "square", "quadrilateral"}},
+    {"triangle", {"triangle"}},
+};
+const std::set<std::string> kNonShapes{"pigtail", "question_mark", "left_curly_brace",
+                                       "right_curly_brace", "delete_mark"};
+
+TEST(RecognizeDollar, ConfusionTableAndTargets) {
+  const std::vector<test::Gesture> gestures = test::all_dollar_gestures();
+  ASSERT_EQ(gestures.size(), 2880U) << "expected 6 subjects x 3 speeds x 16 classes x 10";
+  std::map<std::string, std::map<std::string, int>> confusion;
+  int shapes = 0, shapes_ok = 0, non_shapes = 0, non_shape_snaps = 0, snaps = 0;
+  for (const test::Gesture& g : gestures) {
+    const Recognition r = recognize(g.points);
+    const std::string got = to_string(r.shape);
+    ++confusion[g.kind][got];
+    if (kShapeTargets.contains(g.kind)) {
+      ++shapes;
+      if (kShapeTargets.at(g.kind).contains(got)) ++shapes_ok;
+    }
+    if (kNonShapes.contains(g.kind)) {
+      ++non_shapes;
+      if (r.shape != ShapeClass::kFreeform) ++non_shape_snaps;
+    }
+    if (r.shape == ShapeClass::kFreeform) {
+      EXPECT_FALSE(r.certificate.certified) << g.file;
+      continue;
+    }
+    // Every snap: certified, and an independent dense Hausdorff estimate of the two paths stays
+    // within the certified bound (which must be within epsilon).
+    ++snaps;
+    ASSERT_TRUE(r.certificate.certified) << g.file;
+    EXPECT_LE(r.certificate.bound, r.epsilon) << g.file;
+    const test::IndependentCheck check = test::independent_hausdorff(g.points, r, r.epsilon / 20);
+    EXPECT_LE(check.hausdorff - check.slack, r.certificate.bound * (1 + 1e-9))
+        << g.file << " " << got << ": independent Hausdorff " << check.hausdorff
+        << " exceeds the certified bound " << r.certificate.bound;
+  }
+  // The confusion table: rows are gesture names, columns the classes given.
+  std::set<std::string> columns;
+  for (const auto& [kind, row] : confusion) {
+    for (const auto& [c, n] : row) columns.insert(c);
+  }
+  std::printf("%-18s", "gesture\\class");
+  for (const auto& c : columns) std::printf(" %9.9s", c.c_str());
+  std::printf("\n");
+  for (const auto& [kind, row] : confusion) {
+    std::printf("%-18s", kind.c_str());
+    for (const auto& c : columns) {
+      const auto it = row.find(c);
+      std::printf(" %9d", it == row.end() ? 0 : it->second);
+    }
+    std::printf("\n");
+  }
+  const double shape_rate = static_cast<double>(shapes_ok) / shapes;
+  const double snap_rate = static_cast<double>(non_shape_snaps) / non_shapes;
+  std::printf(
+      "shapes correct: %d / %d = %.1f%%; non-shape snaps: %d / %d = %.1f%%; snaps checked: "
+      "%d\n",
+      shapes_ok, shapes, 100 * shape_rate, non_shape_snaps, non_shapes, 100 * snap_rate, snaps);
+  EXPECT_EQ(shapes, 540);
+  EXPECT_EQ(non_shapes, 900);
+  EXPECT_GE(shape_rate, 0.97);
+  EXPECT_LE(snap_rate, 0.02);
+}
+
+// The ink-level claim on a sample of snaps: points of one ink are within the bound of the other
+// ink (spot-checked with the pen disk's boundary directions).
+TEST(RecognizeDollar, InkDistanceWithinCertifiedBound) {
+  int checked = 0;
+  for (const char* name :
+       {"s02/medium/circle01.xml", "s03/fast/rectangle04.xml", "s04/slow/triangle07.xml",
+        "s05/medium/caret02.xml", "s06/fast/v05.xml", "s02/slow/left_sq_bracket03.xml"}) {
+    const test::Gesture g =
+        test::read_gesture(test::shared_data_dir() / "strokes" / "dollar1" / name);
+    ASSERT_FALSE(g.points.empty()) << name;
+    const Recognition r = recognize(g.points);
+    if (r.shape == ShapeClass::kFreeform) continue;
+    ++checked;
+    const double ink = test::ink_distance_lower_estimate(g.points, r, r.epsilon / 20);
+    EXPECT_LE(ink, r.certificate.bound) << name;
+  }
+  EXPECT_GE(checked, 4);
+}
+
+} // namespace
+} // namespace penshape

@@ -1,0 +1,192 @@
+#pragma once
+// Test helpers for the recognizer, written independently of the recognizer's code: a $1 log
+// reader, the shared data directory, and an independent Hausdorff check of a snap.
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "penshape/core/recognize.hpp"
+
+namespace penshape::test {
+
+inline std::filesystem::path shared_data_dir() {
+  if (const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR")) return env;
+  return PENSHAPE_SHARED_DATA_DIR;
+}
+
+struct Gesture {
+  std::string file;
+  std::string name; // e.g. "triangle03"
+  std::string kind; // the name without its digits
+  std::vector<StrokePoint> points;
+};
+
+inline Gesture read_gesture(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string text = ss.str();
+  Gesture g;
+  g.file = path.string();
+  std::smatch m;
+  if (std::regex_search(text, m, std::regex("Name=\"([^\"]*)\""))) g.name = m[1];
+  g.kind = std::regex_replace(g.name, std::regex("[0-9]+$"), "");
+  const std::regex point("<Point X=\"(-?[0-9.]+)\" Y=\"(-?[0-9.]+)\" T=\"(-?[0-9.]+)\"");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), point);
+       it != std::sregex_iterator(); ++it) {
+    g.points.push_back({std::stod((*it)[1]), std::stod((*it)[2]), std::stod((*it)[3]) / 1000.0});
+  }
+  return g;
+}
+
+// Every $1 gesture of subjects s01..s06 (all speeds), sorted by path.
+inline std::vector<Gesture> all_dollar_gestures() {
+  std::vector<std::filesystem::path> files;
+  for (const auto& e :
+       std::filesystem::recursive_directory_iterator(shared_data_dir() / "strokes" / "dollar1")) {
+    if (e.is_regular_file() && e.path().extension() == ".xml") files.push_back(e.path());
+  }
+  std::sort(files.begin(), files.end());
+  std::vector<Gesture> out;
+  for (const auto& f : files) out.push_back(read_gesture(f));
+  return out;
+}
+
+// ---- Independent distance computations (brute force, no shared code with the recognizer) ----
+
+inline double dist_point_segment(PointD p, PointD a, PointD b) {
+  const double vx = b.x - a.x, vy = b.y - a.y;
+  const double wx = p.x - a.x, wy = p.y - a.y;
+  const double l2 = vx * vx + vy * vy;
+  double t = l2 > 0 ? (wx * vx + wy * vy) / l2 : 0.0;
+  t = t < 0 ? 0 : (t > 1 ? 1 : t);
+  return std::hypot(wx - t * vx, wy - t * vy);
+}
+
+inline double dist_point_path(PointD p, const std::vector<PointD>& path) {
+  if (path.size() == 1) return std::hypot(p.x - path[0].x, p.y - path[0].y);
+  double best = INFINITY;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    best = std::min(best, dist_point_segment(p, path[i], path[i + 1]));
+  }
+  return best;
+}
+
+// Points along a path, at most `step` apart, ends included.
+inline std::vector<PointD> densify(const std::vector<PointD>& path, double step) {
+  std::vector<PointD> out;
+  if (path.empty()) return out;
+  out.push_back(path[0]);
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    const double len = std::hypot(path[i + 1].x - path[i].x, path[i + 1].y - path[i].y);
+    const int n = std::max(1, static_cast<int>(std::ceil(len / step)));
+    for (int k = 1; k <= n; ++k) {
+      const double f = static_cast<double>(k) / n;
+      out.push_back({path[i].x + f * (path[i + 1].x - path[i].x),
+                     path[i].y + f * (path[i + 1].y - path[i].y)});
+    }
+  }
+  return out;
+}
+
+// The clean shape as a fine polyline rebuilt from its parameters (circles, ellipses, arcs), or
+// its vertex path (polygons close back to the first vertex).
+inline std::vector<PointD> clean_path_from_params(const Recognition& r, std::size_t steps) {
+  const ShapeParams& p = r.params;
+  std::vector<PointD> out;
+  auto ellipse_point = [&](double t, double a, double b) {
+    const double c = std::cos(p.rotation), s = std::sin(p.rotation);
+    const double x = a * std::cos(t), y = b * std::sin(t);
+    return PointD{p.center.x + c * x - s * y, p.center.y + s * x + c * y};
+  };
+  switch (r.shape) {
+    case ShapeClass::kCircle:
+    case ShapeClass::kEllipse:
+      for (std::size_t k = 0; k <= steps; ++k) {
+        out.push_back(ellipse_point(
+            2 * std::numbers::pi * static_cast<double>(k) / static_cast<double>(steps), p.radius_x,
+            p.radius_y));
+      }
+      return out;
+    case ShapeClass::kArc:
+      for (std::size_t k = 0; k <= steps; ++k) {
+        const double t =
+            p.start_angle + p.sweep_angle * static_cast<double>(k) / static_cast<double>(steps);
+        out.push_back(
+            {p.center.x + p.radius_x * std::cos(t), p.center.y + p.radius_x * std::sin(t)});
+      }
+      return out;
+    case ShapeClass::kSegment:
+    case ShapeClass::kPolyline:
+      return p.vertices;
+    default:
+      out = p.vertices;
+      out.push_back(p.vertices.front());
+      return out;
+  }
+}
+
+// Independent estimate of the Hausdorff distance between the stroke's path and the snap's clean
+// path: dense samples of each against the other path (brute force). For curves the clean path
+// is a fine chord polygon rebuilt from the parameters; `chord_error` bounds how far its chords
+// stray from the curve, so the estimate is within chord_error + step/2 of the true distance.
+struct IndependentCheck {
+  double hausdorff = 0.0;
+  double slack = 0.0; // how far `hausdorff` may exceed the true distance
+};
+
+inline IndependentCheck independent_hausdorff(const std::vector<StrokePoint>& samples,
+                                              const Recognition& r, double step) {
+  std::vector<PointD> stroke;
+  for (const auto& s : samples) stroke.push_back({s.x, s.y});
+  const std::size_t steps = 4096;
+  const std::vector<PointD> clean = clean_path_from_params(r, steps);
+  double chord_error = 0.0;
+  if (r.shape == ShapeClass::kCircle || r.shape == ShapeClass::kEllipse ||
+      r.shape == ShapeClass::kArc) {
+    const double rmax = std::max(r.params.radius_x, r.params.radius_y);
+    const double sweep =
+        r.shape == ShapeClass::kArc ? std::abs(r.params.sweep_angle) : 2 * std::numbers::pi;
+    const double chord = rmax * sweep / static_cast<double>(steps);
+    chord_error = chord / 2; // a chord point is within half a chord of a curve point
+  }
+  IndependentCheck out;
+  for (const PointD& p : densify(stroke, step)) {
+    out.hausdorff = std::max(out.hausdorff, dist_point_path(p, clean));
+  }
+  for (const PointD& q : densify(clean, step)) {
+    out.hausdorff = std::max(out.hausdorff, dist_point_path(q, stroke));
+  }
+  out.slack = chord_error;
+  return out;
+}
+
+// Ink-level spot check: points of the clean ink (clean path + pen disk) and their distance to
+// the stroke's ink, d(x, stroke ink) = max(0, d(x, stroke path) - r); and the other way round.
+inline double ink_distance_lower_estimate(const std::vector<StrokePoint>& samples,
+                                          const Recognition& r, double step) {
+  std::vector<PointD> stroke_points;
+  for (const auto& s : samples) stroke_points.push_back({s.x, s.y});
+  const std::vector<PointD>& stroke = stroke_points;
+  const std::vector<PointD> clean = clean_path_from_params(r, 2048);
+  const double pen = r.pen_radius;
+  double worst = 0.0;
+  for (const auto& [from, to] : {std::pair{&clean, &stroke}, std::pair{&stroke, &clean}}) {
+    for (const PointD& q : densify(*from, step)) {
+      for (int k = 0; k < 8; ++k) {
+        const double a = k * std::numbers::pi / 4;
+        const PointD x{q.x + pen * std::cos(a), q.y + pen * std::sin(a)};
+        worst = std::max(worst, std::max(0.0, dist_point_path(x, *to) - pen));
+      }
+    }
+  }
+  return worst;
+}
+
+} // namespace penshape::test
