@@ -8,6 +8,7 @@
 #include "recognize_command.hpp"
 #include "replay_command.hpp"
 #include "search_commands.hpp"
+#include "synthesize_recording_command.hpp"
 #include "version_command.hpp"
 
 namespace penshape::cli {
@@ -30,6 +31,9 @@ std::span<const Subcommand> subcommands() {
                  &run_suggest_radius},
       Subcommand{"recognize", "name the shape of pen strokes, snapping only with a certificate",
                  &run_recognize},
+      Subcommand{"synthesize-recording",
+                 "write real strokes as a tablet's reports (a hid-recorder file)",
+                 &run_synthesize_recording},
   };
   return kCommands;
 }
