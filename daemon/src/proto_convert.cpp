@@ -29,7 +29,7 @@ Rational checked_coordinate(double v, const std::string& field, const Limits& li
 Ring ring_from_proto(const v1::Ring& ring, const std::string& field, const Limits& limits) {
   const int n = ring.points_size();
   const int m = ring.exact_points_size();
-  if (m != 0 && m != n) {
+  if (m != 0 && n != 0 && m != n) {
     throw FieldError(field + ".exact_points has " + std::to_string(m) + " entries but points has " +
                      std::to_string(n));
   }
