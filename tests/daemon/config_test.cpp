@@ -63,7 +63,8 @@ TEST(Config, ErrorsNameTheLineAndTheKey) {
   EXPECT_EQ(error_of("max_subscribers = 0"),
             "test.conf:1: max_subscribers: expected an integer in 1..4096, got '0'");
   EXPECT_EQ(error_of("colour = blue"), "test.conf:1: colour: unknown key");
-  EXPECT_EQ(error_of("pen_radius_mm = 1\npen_radius_mm = 2"), "test.conf:2: pen_radius_mm: set twice");
+  EXPECT_EQ(error_of("pen_radius_mm = 1\npen_radius_mm = 2"),
+            "test.conf:2: pen_radius_mm: set twice");
   EXPECT_EQ(error_of("pen_radius_mm = 100"),
             "test.conf:1: pen_radius_mm is 100, outside [0.05, 50]");
   EXPECT_EQ(error_of("pen_radius_mm = nan"),

@@ -217,7 +217,8 @@ TEST(ProtoConvert, StrokesAreValidated) {
     s->set_y(50);
     s->set_tip(i < 2);
   }
-  const penshape::Stroke converted = penshape::daemon::stroke_from_proto(stroke, "stroke", {}, true);
+  const penshape::Stroke converted =
+      penshape::daemon::stroke_from_proto(stroke, "stroke", {}, true);
   ASSERT_EQ(converted.samples.size(), 3U);
   EXPECT_EQ(converted.samples[2].x, 20);
   EXPECT_FALSE(converted.samples[2].tip);
@@ -226,7 +227,8 @@ TEST(ProtoConvert, StrokesAreValidated) {
   EXPECT_EQ(back.SerializeAsString(), stroke.SerializeAsString());
 
   auto message = [](const v1::Stroke& s, bool needs_resolution = true) {
-    return error_of([&] { penshape::daemon::stroke_from_proto(s, "stroke", {}, needs_resolution); });
+    return error_of(
+        [&] { penshape::daemon::stroke_from_proto(s, "stroke", {}, needs_resolution); });
   };
   v1::Stroke bad = stroke;
   bad.mutable_samples(2)->set_time_us(10);
