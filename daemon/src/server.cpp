@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <mutex>
 #include <stdexcept>
+#include <thread>
 
 #include "config_service.hpp"
 #include "daemon_state.hpp"
@@ -20,6 +21,11 @@
 #include "unix_socket.hpp"
 
 namespace penshape::daemon {
+namespace {
+
+constexpr std::chrono::seconds kShutdownGrace{5};
+
+} // namespace
 
 struct PenshapeServer::Impl {
   Impl(const ServerOptions& options, ServerParts parts)
@@ -95,8 +101,15 @@ void PenshapeServer::shutdown() {
     if (impl.source) impl.source->stop(); // strokes in progress are finished into the pipeline
     impl.pipeline.wait_idle();            // their analyses are published
     impl.state.hub.close();               // subscribers drain their queues, then end with OK
-    // Calls still running after the grace period are cancelled; their jobs see IsCancelled().
-    impl.server->Shutdown(std::chrono::system_clock::now() + std::chrono::seconds(5));
+    // A grace period for streams to deliver their queues and geometry calls to finish; then the
+    // rest is cancelled (their jobs see IsCancelled()). Shutdown(deadline) itself would also wait
+    // for idle client connections until the deadline, so the waiting is done here.
+    const auto grace_end = std::chrono::steady_clock::now() + kShutdownGrace;
+    while ((impl.state.hub.subscriber_count() > 0 || impl.state.pool.busy() > 0) &&
+           std::chrono::steady_clock::now() < grace_end) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    impl.server->Shutdown(std::chrono::system_clock::now());
     impl.server->Wait();
     impl.state.pool.drain();
     if (!impl.socket_path.empty()) ::unlink(impl.socket_path.c_str());

@@ -42,6 +42,11 @@ std::size_t WorkerPool::queued() const {
   return queue_.size();
 }
 
+std::size_t WorkerPool::busy() const {
+  std::lock_guard lock(mutex_);
+  return queue_.size() + running_;
+}
+
 bool WorkerPool::accepting() const {
   std::lock_guard lock(mutex_);
   return accepting_;

@@ -48,8 +48,8 @@ class PenshapeServer {
   void wait(); // blocks until shutdown() has completed (call it from another thread)
   // Graceful and idempotent: stops the source (its strokes in progress finish), lets the workers
   // finish every accepted job, ends each subscription once its queue is delivered (streams end
-  // with OK), then stops the server (calls still running after 5 s are cancelled) and removes the
-  // unix socket.
+  // with OK), then stops the server (calls still running after a 5 s grace are cancelled) and
+  // removes the unix socket.
   void shutdown();
 
   [[nodiscard]] const std::vector<std::string>& addresses() const;

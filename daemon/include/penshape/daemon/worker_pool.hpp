@@ -56,6 +56,8 @@ class WorkerPool {
   [[nodiscard]] std::size_t thread_count() const { return threads_.size(); }
   [[nodiscard]] std::size_t queued() const;
   [[nodiscard]] bool accepting() const;
+  // Jobs queued or running.
+  [[nodiscard]] std::size_t busy() const;
 
  private:
   struct Entry {
