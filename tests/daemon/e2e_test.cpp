@@ -248,7 +248,6 @@ TEST_F(DaemonE2E, SixtyFourClientsKeepUpWhileOneSubscriberNeverReads) {
   auto slow = slow_live->Subscribe(&slow_ctx, slow_request);
 
   std::vector<std::future<Received>> readers;
-  std::atomic<int> ready{0};
   for (int c = 0; c < kClients; ++c) {
     readers.push_back(std::async(std::launch::async, [&] {
       auto live = v1::Live::NewStub(channel());
