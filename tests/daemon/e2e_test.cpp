@@ -229,6 +229,42 @@ TEST_F(DaemonE2E, SubscribeDeliversTheSourcesStrokesWithTheirAnalysis) {
   watch_ctx.TryCancel();
 }
 
+TEST_F(DaemonE2E, PreviewsArriveWhileAStrokeIsDrawn) {
+  auto source = std::make_shared<FakeSampleSource>();
+  auto analyzer = std::make_shared<penshape::testing::BoundingBoxAnalyzer>();
+  start({source, nullptr, analyzer});
+  auto live = v1::Live::NewStub(channel());
+  grpc::ClientContext ctx;
+  ctx.set_deadline(in(30s));
+  v1::SubscribeRequest request;
+  request.set_include_previews(true);
+  auto reader = live->Subscribe(&ctx, request);
+  wait_for_subscribers(1);
+  source->attach("pen0");
+  source->emit_stroke("pen0", 40, 2ms); // the first sample already asks for a preview
+
+  std::vector<double> confidences;
+  bool shape = false;
+  v1::LiveEvent event;
+  while (!(shape && static_cast<int>(confidences.size()) == analyzer->previews.load()) &&
+         reader->Read(&event)) {
+    if (event.has_shape()) shape = true;
+    if (!event.has_preview()) continue;
+    EXPECT_EQ(event.preview().stroke_id(), 1U);
+    ASSERT_EQ(event.preview().candidates_size(), 1);
+    EXPECT_EQ(event.preview().candidates(0).kind(), v1::SHAPE_KIND_CIRCLE);
+    confidences.push_back(event.preview().candidates(0).confidence());
+  }
+  ASSERT_TRUE(shape);
+  ASSERT_GE(confidences.size(), 1U);
+  EXPECT_EQ(confidences.front(), 1.0); // asked at the first sample
+  for (std::size_t i = 1; i < confidences.size(); ++i) {
+    EXPECT_GT(confidences[i], confidences[i - 1]); // later previews see more samples
+  }
+  EXPECT_LE(confidences.back(), 40.0);
+  ctx.TryCancel();
+}
+
 TEST_F(DaemonE2E, SixtyFourClientsKeepUpWhileOneSubscriberNeverReads) {
   config_.limits.subscriber_queue_events = 4096;
   auto source = std::make_shared<FakeSampleSource>();
