@@ -113,6 +113,28 @@ TEST_F(DaemonE2E, HealthIsServingOnAnOwnerOnlySocketRemovedAtShutdown) {
   EXPECT_FALSE(std::filesystem::exists(socket_path()));
 }
 
+// A source that cannot start (e.g. an unreadable recording).
+class BrokenSource final : public penshape::daemon::SampleSource {
+ public:
+  void start(penshape::daemon::SampleSink& /*sink*/) override {
+    throw std::runtime_error("cannot open the recording");
+  }
+  void stop() override {}
+  [[nodiscard]] std::vector<penshape::daemon::DeviceDescriptor> devices() const override {
+    return {};
+  }
+};
+
+TEST_F(DaemonE2E, ASourceThatCannotStartLeavesNoSocket) {
+  try {
+    start({std::make_shared<BrokenSource>(), nullptr, nullptr});
+    ADD_FAILURE() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "cannot open the recording");
+  }
+  EXPECT_FALSE(std::filesystem::exists(socket_path()));
+}
+
 TEST_F(DaemonE2E, ConfigGetAndSetPerDevice) {
   config_.device_settings["056a:0010"].tolerance_fraction = 0.25;
   start();
