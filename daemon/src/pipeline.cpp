@@ -69,8 +69,7 @@ void Pipeline::maybe_preview(const std::string& device_id, Drawing& drawing) {
   if (drawing.preview_running || now - drawing.last_preview < kPreviewInterval) return;
   drawing.preview_running = true;
   drawing.last_preview = now;
-  const PenSettings settings = state_.settings.effective(
-      device_key(drawing.partial.tablet.vendor_id, drawing.partial.tablet.product_id));
+  const PenSettings settings = settings_for(state_, drawing.partial.tablet);
   auto job = [this, device_id, partial = drawing.partial, settings](const StopCondition& stop) {
     try {
       std::vector<v1::Shape> candidates =
@@ -116,8 +115,7 @@ void Pipeline::stroke_finished(const std::string& device_id, Stroke stroke) {
                    "this build has no stroke analyzer (ink polygon and recognizer)", {});
     return;
   }
-  const PenSettings settings =
-      state_.settings.effective(device_key(stroke.tablet.vendor_id, stroke.tablet.product_id));
+  const PenSettings settings = settings_for(state_, stroke.tablet);
   const auto submitted = std::chrono::steady_clock::now();
   // The job owns its copy of the stroke; the reader thread returns at once.
   auto job = [this, device_id, stroke, settings, submitted](const StopCondition& stop) {

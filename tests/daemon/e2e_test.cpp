@@ -631,6 +631,7 @@ TEST_F(DaemonE2E, StreamSamplesCutsTheAppsStrokesAndAnswersEach) {
 }
 
 TEST_F(DaemonE2E, SubmitStrokeAnswersAndPublishes) {
+  config_.device_settings["056a:0010"].pen_radius_mm = 2.0; // the test tablet's model
   auto analyzer = std::make_shared<penshape::testing::BoundingBoxAnalyzer>();
   start({nullptr, nullptr, analyzer});
   auto live = v1::Live::NewStub(channel());
@@ -662,6 +663,14 @@ TEST_F(DaemonE2E, SubmitStrokeAnswersAndPublishes) {
   EXPECT_EQ(event.device_id(), "app");
   EXPECT_EQ(event.stroke_finished().stroke().id(), response.stroke_id());
   sub_ctx.TryCancel();
+
+  // Without settings in the request, the tablet model's own settings apply (radius 2 mm).
+  request.clear_settings();
+  request.set_publish(false);
+  grpc::ClientContext ctx2;
+  ASSERT_TRUE(live->SubmitStroke(&ctx2, request, &response).ok());
+  EXPECT_DOUBLE_EQ(response.ink_polygon().polygons(0).outer().points(0).x(), 3.0);
+  EXPECT_DOUBLE_EQ(response.ink_polygon().polygons(0).outer().points(2).y(), 9.0);
 }
 
 } // namespace

@@ -189,6 +189,12 @@ TEST(Penshaped, BadConfigAndCommandLineExitWithTwo) {
   EXPECT_EQ(exit_code(pid), 2);
   EXPECT_NE(box.stderr_text().find("not a loopback address"), std::string::npos);
 
+  // A recording that cannot be replayed: a clear message naming it, exit 1, no socket left.
+  pid = box.spawn({"--replay", box.path("missing.rec")}, {"XDG_RUNTIME_DIR=" + box.dir()});
+  EXPECT_EQ(exit_code(pid), 1);
+  EXPECT_NE(box.stderr_text().find("missing.rec"), std::string::npos) << box.stderr_text();
+  EXPECT_FALSE(std::filesystem::exists(box.path("penshape.sock")));
+
   pid = box.spawn({"--frobnicate"}, {"XDG_RUNTIME_DIR=" + box.dir()});
   EXPECT_EQ(exit_code(pid), 2);
   EXPECT_FALSE(std::filesystem::exists(box.path("penshape.sock")));
