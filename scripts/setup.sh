@@ -9,6 +9,7 @@ PACKAGES=(
   libhidapi-dev libusb-1.0-0-dev libudev-dev
   libprotobuf-dev protobuf-compiler libgrpc++-dev protobuf-compiler-grpc
   libgtest-dev libgmock-dev libbenchmark-dev
+  libpolyclipping-dev
 )
 
 missing=()

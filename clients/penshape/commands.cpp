@@ -3,6 +3,9 @@
 #include <array>
 
 #include "command.hpp"
+#include "hid_describe_command.hpp"
+#include "replay_command.hpp"
+#include "deconstruct_command.hpp"
 #include "version_command.hpp"
 
 namespace penshape::cli {
@@ -11,6 +14,12 @@ std::span<const Subcommand> subcommands() {
   static constexpr std::array kCommands{
       Subcommand{"version", "print the version and the libraries penshape was built with",
                  &run_version},
+      Subcommand{"hid describe", "print a HID report descriptor's layouts and pen fields",
+                 &run_hid_describe},
+      Subcommand{"replay", "decode a recorded tablet stream into samples and strokes (--local)",
+                 &run_replay},
+      Subcommand{"deconstruct", "is a polygon file an approximate offset? (offset deconstruction)",
+                 &run_deconstruct},
   };
   return kCommands;
 }
