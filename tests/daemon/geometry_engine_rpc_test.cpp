@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "penshape/core/deconstruct.hpp"
+#include "penshape/core/search.hpp"
 #include "penshape/daemon/geometry_backend.hpp"
 #include "penshape/daemon/proto_convert.hpp"
 #include "penshape/daemon/server.hpp"
@@ -191,6 +192,67 @@ TEST_F(GeometryEngineRpc, IncludeOffsetReturnsSegmentsAndArcs) {
   }
   EXPECT_EQ(arcs, 4);
   EXPECT_EQ(segments, 4);
+}
+
+} // namespace
+
+namespace {
+
+TEST_F(GeometryEngineRpc, SearchToleranceEqualsTheCoreSearch) {
+  v1::SearchToleranceRequest request;
+  *request.mutable_polygon() = read_exact_polygon("authors_S.txt");
+  request.mutable_radius()->set_rational("10");
+  request.mutable_width()->set_rational("1/4");
+  grpc::ClientContext ctx;
+  ctx.set_deadline(std::chrono::system_clock::now() + 120s);
+  auto stream = stub_->SearchTolerance(&ctx, request);
+  v1::SearchToleranceResponse message;
+  v1::SearchToleranceResult result;
+  int results = 0;
+  while (stream->Read(&message)) {
+    if (message.has_result()) {
+      result = message.result();
+      ++results;
+    }
+  }
+  const grpc::Status status = stream->Finish();
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  ASSERT_EQ(results, 1);
+
+  const penshape::daemon::Limits limits;
+  const penshape::PolygonSet q =
+      penshape::daemon::polygon_set_from_proto(request.polygon(), "polygon", limits);
+  const auto direct =
+      penshape::search_tolerance(penshape::make_decider(q, penshape::EngineKind::kFast),
+                                 penshape::Rational(10), penshape::Rational(1, 4));
+  EXPECT_EQ(result.lower().rational(), direct.eps_low.get_str(10));
+  EXPECT_EQ(result.upper().rational(), direct.eps_high.get_str(10));
+  EXPECT_EQ(result.params().tolerance().rational(), direct.solution.params.tolerance.get_str(10));
+  // The interval is as narrow as asked and the solution is certified at its upper side or above.
+  EXPECT_LE(
+      penshape::Rational(result.upper().rational()) - penshape::Rational(result.lower().rational()),
+      penshape::Rational(1, 4));
+  EXPECT_GT(result.solution().polygons_size(), 0);
+}
+
+TEST_F(GeometryEngineRpc, ACancelledSuggestRadiusStopsPromptly) {
+  v1::SuggestRadiusRequest request;
+  *request.mutable_polygon() = read_exact_polygon("kazakhstan_paper1881.txt");
+  request.mutable_min_radius()->set_rational("1/1000");
+  request.mutable_max_radius()->set_rational("1/10");
+  request.set_samples(40);
+  grpc::ClientContext ctx;
+  auto stream = stub_->SuggestRadius(&ctx, request);
+  std::this_thread::sleep_for(300ms);
+  ctx.TryCancel();
+  v1::SuggestRadiusResponse message;
+  while (stream->Read(&message)) {
+  }
+  const grpc::Status status = stream->Finish();
+  EXPECT_EQ(status.error_code(), grpc::StatusCode::CANCELLED);
+  // The search itself stopped: the workers drain (a search that ignored the cancel would keep the
+  // pool busy for many seconds and this would hang).
+  server_->shutdown();
 }
 
 } // namespace
