@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -253,6 +254,55 @@ TEST_F(GeometryEngineRpc, ACancelledSuggestRadiusStopsPromptly) {
   // The search itself stopped: the workers drain (a search that ignored the cancel would keep the
   // pool busy for many seconds and this would hang).
   server_->shutdown();
+}
+
+} // namespace
+
+#include "penshape/daemon/ink_analyzer.hpp"
+#include "penshape/v1/live.grpc.pb.h"
+
+namespace {
+
+TEST(InkAnalyzerRpc, SubmitStrokeReturnsTheInkPolygon) {
+  penshape::daemon::ServerOptions options;
+  options.address = "unix-abstract:penshape-ink-test-" + std::to_string(::getpid());
+  penshape::daemon::PenshapeServer server(
+      options, {nullptr, nullptr, penshape::daemon::make_ink_analyzer()});
+  auto live =
+      v1::Live::NewStub(grpc::CreateChannel(options.address, grpc::InsecureChannelCredentials()));
+  // A straight 10 mm stroke (100 units per mm) with a 1 mm pen: a 12 x 2 mm stadium.
+  v1::SubmitStrokeRequest request;
+  auto* tablet = request.mutable_stroke()->mutable_tablet();
+  tablet->set_x_max(30000);
+  tablet->set_y_max(30000);
+  tablet->set_x_resolution(100);
+  tablet->set_y_resolution(100);
+  for (int i = 0; i <= 10; ++i) {
+    auto* s = request.mutable_stroke()->add_samples();
+    s->set_time_us(i * 1000);
+    s->set_x(1000 + 100 * i);
+    s->set_y(1000);
+    s->set_tip(i < 10);
+  }
+  request.mutable_settings()->set_pen_radius_mm(1.0);
+  grpc::ClientContext ctx;
+  v1::SubmitStrokeResponse response;
+  const grpc::Status status = live->SubmitStroke(&ctx, request, &response);
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  EXPECT_EQ(response.shape().kind(), v1::SHAPE_KIND_UNSPECIFIED); // no recognizer yet
+  ASSERT_EQ(response.ink_polygon().polygons_size(), 1);
+  double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
+  for (const auto& p : response.ink_polygon().polygons(0).outer().points()) {
+    x0 = std::min(x0, p.x());
+    x1 = std::max(x1, p.x());
+    y0 = std::min(y0, p.y());
+    y1 = std::max(y1, p.y());
+  }
+  const double error = 1.0 / 50; // InkOptions' default bound: radius / 50
+  EXPECT_NEAR(x0, 9.0, error);
+  EXPECT_NEAR(x1, 21.0, error);
+  EXPECT_NEAR(y0, 9.0, error);
+  EXPECT_NEAR(y1, 11.0, error);
 }
 
 } // namespace
