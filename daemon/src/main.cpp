@@ -1,30 +1,64 @@
 // penshaped: the penshape daemon. Serves the penshape.v1 API on a unix socket.
+#include <pthread.h>
 #include <unistd.h>
+
+#include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <future>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <thread>
 
+#include "log.hpp"
 #include "penshape/core/version.hpp"
+#include "penshape/daemon/config.hpp"
+#include "penshape/daemon/device_manager_source.hpp"
 #include "penshape/daemon/server.hpp"
+#include "penshape/drivers/recording.hpp"
+#include "sd_notify.hpp"
+#include "sources.hpp"
 
 namespace {
 
-constexpr const char* kUsage = R"(usage: penshaped [--listen ADDRESS] [--help] [--version]
+constexpr const char* kUsage = R"(usage: penshaped [options]
 
-The penshape daemon: serves the penshape.v1 gRPC API (health and reflection included).
+The penshape daemon: reads pen tablets, recognizes the shapes drawn, and serves the penshape.v1
+gRPC API (Geometry, Live, Config, Info, grpc.health.v1 and server reflection).
 
 options:
-  --listen ADDRESS   gRPC address: unix:PATH, unix-abstract:NAME or HOST:PORT
-                     (default: unix:$XDG_RUNTIME_DIR/penshape.sock)
-  --help             this text
-  --version          the version
+  --config FILE              read settings and limits from FILE (format: see the README or
+                             daemon/include/penshape/daemon/config.hpp). Default:
+                             $XDG_CONFIG_HOME/penshape/penshaped.conf if it exists, else the
+                             built-in defaults
+  --listen ADDRESS           gRPC address: unix:PATH, unix-abstract:NAME or HOST:PORT
+                             (default: unix:$XDG_RUNTIME_DIR/penshape.sock, owner-only)
+  --tcp HOST:PORT            also listen on TCP; loopback hosts only unless
+  --tcp-allow-non-loopback   is given too
+  --replay FILE              replay a recording (hid-recorder format) at its recorded pace as
+                             the only tablet, instead of the tablets attached to this machine
+  --replay-delay SECONDS     wait this long after startup before replaying (default 0)
+  --help                     this text
+  --version                  the version
 
-Stops gracefully on SIGINT or SIGTERM and removes its socket.
+Logs go to stderr. Stops gracefully on SIGINT or SIGTERM: strokes in progress finish and are
+delivered, then the socket is removed. Tells systemd when it is ready (Type=notify).
+exit codes: 0 stopped cleanly, 2 bad command line or config, 1 could not start.
 )";
+
+struct CommandLine {
+  std::string config_path;
+  std::string listen;
+  std::string tcp;
+  bool tcp_allow_non_loopback = false;
+  std::string replay;
+  double replay_delay_seconds = 0;
+};
 
 // Blocks SIGINT/SIGTERM in every thread, then waits for one on a dedicated thread, so the
 // shutdown runs in ordinary code rather than in a signal handler.
@@ -37,12 +71,34 @@ sigset_t block_termination_signals() {
   return set;
 }
 
+using penshape::daemon::log;
+using penshape::daemon::LogLevel;
+
+// $XDG_CONFIG_HOME/penshape/penshaped.conf (~/.config when unset) when that file exists, else "".
+std::string default_config_path() {
+  std::string base;
+  if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg != nullptr && *xdg != '\0') {
+    base = xdg;
+  } else if (const char* home = std::getenv("HOME"); home != nullptr && *home != '\0') {
+    base = std::string(home) + "/.config";
+  } else {
+    return "";
+  }
+  const std::string path = base + "/penshape/penshaped.conf";
+  return ::access(path.c_str(), F_OK) == 0 ? path : "";
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
-  std::string address = penshape::daemon::default_address();
+  CommandLine cli;
   for (int i = 1; i < argc; ++i) {
     const std::string_view arg = argv[i];
+    auto value = [&](std::string* out) {
+      if (i + 1 >= argc) return false;
+      *out = argv[++i];
+      return true;
+    };
     if (arg == "--help" || arg == "-h") {
       std::fputs(kUsage, stdout);
       return 0;
@@ -51,32 +107,100 @@ int main(int argc, char** argv) {
       std::printf("penshaped %s\n", penshape::version().c_str());
       return 0;
     }
-    if (arg == "--listen" && i + 1 < argc) {
-      address = argv[++i];
+    if (arg == "--tcp-allow-non-loopback") {
+      cli.tcp_allow_non_loopback = true;
+      continue;
+    }
+    if (arg == "--replay-delay" && i + 1 < argc) {
+      char* end = nullptr;
+      cli.replay_delay_seconds = std::strtod(argv[++i], &end);
+      if (*end != '\0' || !(cli.replay_delay_seconds >= 0 && cli.replay_delay_seconds <= 3600)) {
+        std::fprintf(stderr, "penshaped: --replay-delay wants seconds in [0, 3600], got '%s'\n",
+                     argv[i]);
+        return 2;
+      }
+      continue;
+    }
+    if ((arg == "--config" && value(&cli.config_path)) ||
+        (arg == "--listen" && value(&cli.listen)) || (arg == "--tcp" && value(&cli.tcp)) ||
+        (arg == "--replay" && value(&cli.replay))) {
       continue;
     }
     std::fprintf(stderr, "penshaped: unknown or incomplete option '%s' (see --help)\n", argv[i]);
     return 2;
   }
 
+  penshape::daemon::ServerOptions options;
+  try {
+    if (cli.config_path.empty()) cli.config_path = default_config_path();
+    if (!cli.config_path.empty()) {
+      options.config = penshape::daemon::load_config_file(cli.config_path);
+      log(LogLevel::kInfo, "config: " + cli.config_path);
+    }
+    if (!cli.tcp.empty()) options.config.tcp = cli.tcp;
+    options.config.tcp_allow_non_loopback |= cli.tcp_allow_non_loopback;
+    if (!options.config.tcp.empty()) {
+      penshape::daemon::validate_tcp_address(options.config.tcp,
+                                             options.config.tcp_allow_non_loopback);
+    }
+  } catch (const penshape::daemon::ConfigError& e) {
+    log(LogLevel::kError, e.what());
+    return 2;
+  }
+  options.address = !cli.listen.empty()              ? cli.listen
+                    : !options.config.listen.empty() ? options.config.listen
+                                                     : penshape::daemon::default_address();
+
   const sigset_t signals = block_termination_signals();
   try {
-    penshape::daemon::PenshapeServer server({address});
-    std::fprintf(stderr, "penshaped %s: listening on %s\n", penshape::version().c_str(),
-                 address.c_str());
-    std::thread waiter([&server, signals] {
+    // With --replay the recording is the only device (read now, so a bad file fails before the
+    // daemon serves); otherwise the tablets attached to this machine, with hotplug.
+    std::optional<penshape::drivers::Recording> recording;
+    if (!cli.replay.empty()) {
+      try {
+        recording = penshape::drivers::load_recording_file(cli.replay);
+      } catch (const std::exception& e) {
+        throw std::runtime_error("--replay " + cli.replay + ": " + e.what());
+      }
+    }
+    auto source = std::make_shared<penshape::daemon::DeviceManagerSource>(
+        recording ? nullptr : penshape::drivers::make_hidraw_backend());
+    penshape::daemon::ServerParts parts;
+    parts.source = source;
+    parts.geometry = penshape::daemon::make_geometry_backend();
+    parts.analyzer = penshape::daemon::make_stroke_analyzer();
+    if (!parts.geometry) log(LogLevel::kWarning, "no deconstruction engine in this build");
+    if (!parts.analyzer) {
+      log(LogLevel::kWarning, "no stroke analyzer in this build: strokes without shapes");
+    }
+
+    penshape::daemon::PenshapeServer server(options, parts);
+    std::string where;
+    for (const auto& a : server.addresses()) where += (where.empty() ? "" : ", ") + a;
+    log(LogLevel::kInfo, "penshaped " + penshape::version() + " listening on " + where);
+    penshape::daemon::sd_notify_state("READY=1\nSTATUS=listening on " + where);
+    std::promise<void> stopping;
+    std::shared_future<void> stopped = stopping.get_future().share();
+    std::thread waiter([&server, &stopping, signals] {
       int sig = 0;
       sigwait(&signals, &sig);
-      std::fprintf(stderr, "penshaped: %s, shutting down\n", strsignal(sig));
+      log(LogLevel::kInfo, std::string(strsignal(sig)) + ", shutting down");
+      penshape::daemon::sd_notify_state("STOPPING=1");
+      stopping.set_value();
       server.shutdown();
     });
+    // Clients get --replay-delay to connect before the first report; a signal cancels the replay.
+    if (recording && stopped.wait_for(std::chrono::duration<double>(cli.replay_delay_seconds)) ==
+                         std::future_status::timeout) {
+      source->replay(*recording, penshape::drivers::ReplaySpeed::kOriginal);
+      log(LogLevel::kInfo, "replaying " + cli.replay + " at its recorded pace");
+    }
     server.wait();
     waiter.join();
+    log(LogLevel::kInfo, "stopped");
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "penshaped: %s\n", e.what());
+    log(LogLevel::kError, e.what());
     return 1;
   }
-  // gRPC unlinks a stale socket on bind but not at exit.
-  if (address.rfind("unix:", 0) == 0) ::unlink(address.substr(5).c_str());
   return 0;
 }
