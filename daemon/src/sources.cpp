@@ -1,14 +1,14 @@
 #include "sources.hpp"
 
 #include "penshape/daemon/ink_analyzer.hpp"
+#include "penshape/daemon/recognizing_analyzer.hpp"
 
 namespace penshape::daemon {
 
-// The recognizer (annulus fits) plugs in here: an adapter implementing StrokeAnalyzer (ink
-// polygon, shape, previews). Until then: ink polygons only.
+// Ink polygons and certified shapes (recognizing_analyzer.cpp), with the engine built in.
 std::shared_ptr<StrokeAnalyzer> make_stroke_analyzer() {
 #ifdef PENSHAPE_DAEMON_WITH_ENGINE
-  return make_ink_analyzer();
+  return make_recognizing_analyzer();
 #else
   return nullptr;
 #endif

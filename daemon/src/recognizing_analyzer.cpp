@@ -1,0 +1,194 @@
+#include "penshape/daemon/recognizing_analyzer.hpp"
+
+#include <map>
+#include <mutex>
+
+#include "penshape/core/ink.hpp"
+#include "penshape/core/live_recognizer.hpp"
+#include "penshape/daemon/proto_convert.hpp"
+
+namespace penshape::daemon {
+namespace {
+
+v1::ShapeKind kind_of(ShapeClass c) {
+  switch (c) {
+    case ShapeClass::kFreeform:
+      return v1::SHAPE_KIND_NONE;
+    case ShapeClass::kSegment:
+      return v1::SHAPE_KIND_SEGMENT;
+    case ShapeClass::kPolyline:
+      return v1::SHAPE_KIND_POLYLINE;
+    case ShapeClass::kTriangle:
+      return v1::SHAPE_KIND_TRIANGLE;
+    case ShapeClass::kQuadrilateral:
+      return v1::SHAPE_KIND_QUADRILATERAL;
+    case ShapeClass::kRectangle:
+      return v1::SHAPE_KIND_RECTANGLE;
+    case ShapeClass::kSquare:
+      return v1::SHAPE_KIND_SQUARE;
+    case ShapeClass::kDiamond:
+      return v1::SHAPE_KIND_DIAMOND;
+    case ShapeClass::kRegularPolygon:
+      return v1::SHAPE_KIND_REGULAR_POLYGON;
+    case ShapeClass::kCircle:
+      return v1::SHAPE_KIND_CIRCLE;
+    case ShapeClass::kEllipse:
+      return v1::SHAPE_KIND_ELLIPSE;
+    case ShapeClass::kArc:
+      return v1::SHAPE_KIND_ARC;
+  }
+  return v1::SHAPE_KIND_UNSPECIFIED;
+}
+
+void set_point(PointD p, v1::Point* out) {
+  out->set_x(p.x);
+  out->set_y(p.y);
+}
+
+// The pen path in millimetres: only samples with the tip down draw.
+std::vector<StrokePoint> path_mm(const Stroke& stroke) {
+  const double rx = stroke.tablet.x_resolution > 0 ? stroke.tablet.x_resolution : 1.0;
+  const double ry = stroke.tablet.y_resolution > 0 ? stroke.tablet.y_resolution : 1.0;
+  std::vector<StrokePoint> out;
+  out.reserve(stroke.samples.size());
+  for (const PenSample& s : stroke.samples) {
+    if (s.tip) out.push_back({s.x / rx, s.y / ry, static_cast<double>(s.time_us) * 1e-6});
+  }
+  return out;
+}
+
+RecognizerConfig config_for(const PenSettings& settings) {
+  RecognizerConfig config;
+  config.pen_radius = settings.pen_radius_mm;
+  return config;
+}
+
+bool has_distinct_points(const std::vector<StrokePoint>& pts) {
+  for (const auto& p : pts) {
+    if (p.x != pts.front().x || p.y != pts.front().y) return true;
+  }
+  return false;
+}
+
+class RecognizingAnalyzer final : public StrokeAnalyzer {
+ public:
+  StrokeAnalysis analyze(const Stroke& stroke, const PenSettings& settings,
+                         const CancelHook& cancel) override {
+    InkOptions options;
+    options.radius_mm = settings.pen_radius_mm;
+    const InkPolygon ink = ink_polygon(stroke, options);
+    if (cancel && cancel()) throw Cancelled();
+    StrokeAnalysis analysis;
+    to_proto(ink.region, &analysis.ink_polygon);
+    forget(stroke.id);
+
+    const std::vector<StrokePoint> pts = path_mm(stroke);
+    if (pts.size() < 2 || !has_distinct_points(pts)) {
+      analysis.shape.set_kind(v1::SHAPE_KIND_NONE); // a dot: nothing to snap to
+      return analysis;
+    }
+    const Recognition r = recognize(pts, config_for(settings));
+    if (cancel && cancel()) throw Cancelled();
+    analysis.shape = to_proto_shape(r.shape, r.params, r.clean, r.certificate, r.confidence);
+    for (const Candidate& c : r.alternatives) {
+      if (!c.certificate.certified || !c.rejected.empty()) continue;
+      analysis.alternatives.push_back(to_proto_shape(
+          c.shape, c.params, c.clean, c.certificate,
+          c.certificate.epsilon > 0 ? 1 - c.certificate.bound / (2 * c.certificate.epsilon) : 0));
+    }
+    return analysis;
+  }
+
+  std::vector<v1::Shape> preview(const Stroke& partial, const PenSettings& settings,
+                                 const CancelHook& /*cancel*/) override {
+    const std::vector<StrokePoint> pts = path_mm(partial);
+    std::lock_guard lock(mutex_);
+    auto it = live_.find(partial.id);
+    if (it == live_.end()) {
+      // One live recognizer per stroke in progress; strokes seldom overlap, keep few.
+      if (live_.size() > 64) live_.clear();
+      it = live_.emplace(partial.id, State{LiveRecognizer(config_for(settings)), 0}).first;
+    }
+    State& st = it->second;
+    for (; st.fed < pts.size(); ++st.fed) st.live.add(pts[st.fed]);
+    std::vector<v1::Shape> out;
+    const LivePreview& p = st.live.preview();
+    if (p.shape != ShapeClass::kFreeform) {
+      // A preview is a candidate, not yet certified: no certificate, confidence 0.
+      v1::Shape shape = to_proto_shape(p.shape, p.params, p.clean, Certificate{}, 0.0);
+      shape.clear_certificate();
+      out.push_back(std::move(shape));
+    }
+    return out;
+  }
+
+ private:
+  struct State {
+    LiveRecognizer live;
+    std::size_t fed = 0;
+  };
+  void forget(std::uint64_t stroke_id) {
+    std::lock_guard lock(mutex_);
+    live_.erase(stroke_id);
+  }
+  std::mutex mutex_;
+  std::map<std::uint64_t, State> live_;
+};
+
+} // namespace
+
+v1::Shape to_proto_shape(ShapeClass shape, const ShapeParams& params,
+                         const std::vector<PointD>& clean, const Certificate& certificate,
+                         double confidence) {
+  v1::Shape out;
+  out.set_kind(kind_of(shape));
+  if (shape == ShapeClass::kFreeform) return out;
+  switch (shape) {
+    case ShapeClass::kCircle: {
+      auto* c = out.mutable_circle();
+      set_point(params.center, c->mutable_center());
+      c->set_radius(params.radius_x);
+      break;
+    }
+    case ShapeClass::kEllipse: {
+      auto* e = out.mutable_ellipse();
+      set_point(params.center, e->mutable_center());
+      e->set_semi_major(std::max(params.radius_x, params.radius_y));
+      e->set_semi_minor(std::min(params.radius_x, params.radius_y));
+      e->set_rotation_rad(params.rotation);
+      break;
+    }
+    case ShapeClass::kArc: {
+      auto* a = out.mutable_arc();
+      set_point(params.center, a->mutable_center());
+      a->set_radius(params.radius_x);
+      a->set_start_rad(params.start_angle);
+      a->set_sweep_rad(params.sweep_angle);
+      break;
+    }
+    default: {
+      auto* v = out.mutable_vertices();
+      for (const PointD& p : params.vertices) set_point(p, v->add_vertices());
+      break;
+    }
+  }
+  // The clean path as straight pieces (circles come densely sampled from the recognizer).
+  for (std::size_t i = 0; i + 1 < clean.size(); ++i) {
+    auto* seg = out.mutable_clean_path()->add_pieces()->mutable_segment();
+    set_point(clean[i], seg->mutable_start());
+    set_point(clean[i + 1], seg->mutable_end());
+  }
+  out.set_confidence(confidence);
+  auto* cert = out.mutable_certificate();
+  to_proto(exact(certificate.pen_radius), cert->mutable_pen_radius());
+  to_proto(exact(certificate.epsilon), cert->mutable_tolerance());
+  to_proto(exact(certificate.bound), cert->mutable_hausdorff_bound());
+  cert->set_method("path-hausdorff-sampling");
+  return out;
+}
+
+std::shared_ptr<StrokeAnalyzer> make_recognizing_analyzer() {
+  return std::make_shared<RecognizingAnalyzer>();
+}
+
+} // namespace penshape::daemon
