@@ -3,6 +3,7 @@
 #include <array>
 
 #include "command.hpp"
+#include "live_commands.hpp"
 #include "version_command.hpp"
 
 namespace penshape::cli {
@@ -11,6 +12,10 @@ std::span<const Subcommand> subcommands() {
   static constexpr std::array kCommands{
       Subcommand{"version", "print the version and the libraries penshape was built with",
                  &run_version},
+      Subcommand{"devices", "list the tablets penshaped reads (live)", &run_devices},
+      Subcommand{"watch", "print strokes and shapes as they are drawn (live)", &run_watch},
+      Subcommand{"record", "record a tablet's pen samples to a hid-recorder file (live)",
+                 &run_record},
   };
   return kCommands;
 }
