@@ -1,5 +1,6 @@
 // penshaped: the penshape daemon. Serves the penshape.v1 API on a unix socket.
-#include <unistd.h>
+#include <pthread.h>
+
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -8,23 +9,43 @@
 #include <string_view>
 #include <thread>
 
+#include "log.hpp"
 #include "penshape/core/version.hpp"
+#include "penshape/daemon/config.hpp"
 #include "penshape/daemon/server.hpp"
+#include "sd_notify.hpp"
+#include "sources.hpp"
 
 namespace {
 
-constexpr const char* kUsage = R"(usage: penshaped [--listen ADDRESS] [--help] [--version]
+constexpr const char* kUsage = R"(usage: penshaped [options]
 
-The penshape daemon: serves the penshape.v1 gRPC API (health and reflection included).
+The penshape daemon: reads pen tablets, recognizes the shapes drawn, and serves the penshape.v1
+gRPC API (Geometry, Live, Config, Info, grpc.health.v1 and server reflection).
 
 options:
-  --listen ADDRESS   gRPC address: unix:PATH, unix-abstract:NAME or HOST:PORT
-                     (default: unix:$XDG_RUNTIME_DIR/penshape.sock)
-  --help             this text
-  --version          the version
+  --config FILE              read settings and limits from FILE (format: daemon/include/penshape/
+                             daemon/config.hpp; without it the defaults apply)
+  --listen ADDRESS           gRPC address: unix:PATH, unix-abstract:NAME or HOST:PORT
+                             (default: unix:$XDG_RUNTIME_DIR/penshape.sock, owner-only)
+  --tcp HOST:PORT            also listen on TCP; loopback hosts only unless
+  --tcp-allow-non-loopback   is given too
+  --replay FILE              replay a recording as if it were a live tablet
+  --help                     this text
+  --version                  the version
 
-Stops gracefully on SIGINT or SIGTERM and removes its socket.
+Logs go to stderr. Stops gracefully on SIGINT or SIGTERM: strokes in progress finish and are
+delivered, then the socket is removed. Tells systemd when it is ready (Type=notify).
+exit codes: 0 stopped cleanly, 2 bad command line or config, 1 could not start.
 )";
+
+struct CommandLine {
+  std::string config_path;
+  std::string listen;
+  std::string tcp;
+  bool tcp_allow_non_loopback = false;
+  std::string replay;
+};
 
 // Blocks SIGINT/SIGTERM in every thread, then waits for one on a dedicated thread, so the
 // shutdown runs in ordinary code rather than in a signal handler.
@@ -37,12 +58,20 @@ sigset_t block_termination_signals() {
   return set;
 }
 
+using penshape::daemon::log;
+using penshape::daemon::LogLevel;
+
 } // namespace
 
 int main(int argc, char** argv) {
-  std::string address = penshape::daemon::default_address();
+  CommandLine cli;
   for (int i = 1; i < argc; ++i) {
     const std::string_view arg = argv[i];
+    auto value = [&](std::string* out) {
+      if (i + 1 >= argc) return false;
+      *out = argv[++i];
+      return true;
+    };
     if (arg == "--help" || arg == "-h") {
       std::fputs(kUsage, stdout);
       return 0;
@@ -51,32 +80,67 @@ int main(int argc, char** argv) {
       std::printf("penshaped %s\n", penshape::version().c_str());
       return 0;
     }
-    if (arg == "--listen" && i + 1 < argc) {
-      address = argv[++i];
+    if (arg == "--tcp-allow-non-loopback") {
+      cli.tcp_allow_non_loopback = true;
+      continue;
+    }
+    if ((arg == "--config" && value(&cli.config_path)) ||
+        (arg == "--listen" && value(&cli.listen)) || (arg == "--tcp" && value(&cli.tcp)) ||
+        (arg == "--replay" && value(&cli.replay))) {
       continue;
     }
     std::fprintf(stderr, "penshaped: unknown or incomplete option '%s' (see --help)\n", argv[i]);
     return 2;
   }
 
+  penshape::daemon::ServerOptions options;
+  try {
+    if (!cli.config_path.empty()) {
+      options.config = penshape::daemon::load_config_file(cli.config_path);
+    }
+    if (!cli.tcp.empty()) options.config.tcp = cli.tcp;
+    options.config.tcp_allow_non_loopback |= cli.tcp_allow_non_loopback;
+    if (!options.config.tcp.empty()) {
+      penshape::daemon::validate_tcp_address(options.config.tcp,
+                                             options.config.tcp_allow_non_loopback);
+    }
+  } catch (const penshape::daemon::ConfigError& e) {
+    log(LogLevel::kError, e.what());
+    return 2;
+  }
+  options.address = !cli.listen.empty()              ? cli.listen
+                    : !options.config.listen.empty() ? options.config.listen
+                                                     : penshape::daemon::default_address();
+
   const sigset_t signals = block_termination_signals();
   try {
-    penshape::daemon::PenshapeServer server({address});
-    std::fprintf(stderr, "penshaped %s: listening on %s\n", penshape::version().c_str(),
-                 address.c_str());
+    penshape::daemon::ServerParts parts;
+    parts.source = cli.replay.empty() ? penshape::daemon::make_device_source()
+                                      : penshape::daemon::make_replay_source(cli.replay);
+    parts.geometry = penshape::daemon::make_geometry_backend();
+    parts.analyzer = penshape::daemon::make_stroke_analyzer();
+    if (!parts.source) log(LogLevel::kWarning, "no device manager in this build: no tablets");
+    if (!parts.geometry) log(LogLevel::kWarning, "no deconstruction engine in this build");
+    if (!parts.analyzer) log(LogLevel::kWarning, "no stroke analyzer in this build");
+
+    penshape::daemon::PenshapeServer server(options, parts);
+    std::string where;
+    for (const auto& a : server.addresses()) where += (where.empty() ? "" : ", ") + a;
+    log(LogLevel::kInfo, "penshaped " + penshape::version() + " listening on " + where);
+    penshape::daemon::sd_notify_state("READY=1\nSTATUS=listening on " + where);
     std::thread waiter([&server, signals] {
       int sig = 0;
       sigwait(&signals, &sig);
-      std::fprintf(stderr, "penshaped: %s, shutting down\n", strsignal(sig));
+      log(LogLevel::kInfo, std::string(strsignal(sig)) + ", shutting down");
+      penshape::daemon::sd_notify_state("STOPPING=1");
       server.shutdown();
     });
     server.wait();
     waiter.join();
+    log(LogLevel::kInfo, "stopped");
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "penshaped: %s\n", e.what());
+    log(LogLevel::kError, e.what());
     return 1;
   }
-  // gRPC unlinks a stale socket on bind but not at exit.
-  if (address.rfind("unix:", 0) == 0) ::unlink(address.substr(5).c_str());
   return 0;
 }

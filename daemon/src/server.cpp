@@ -3,37 +3,128 @@
 #include <grpcpp/ext/proto_server_reflection_plugin.h>
 #include <grpcpp/grpcpp.h>
 #include <grpcpp/health_check_service_interface.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
+#include <chrono>
 #include <cstdlib>
+#include <mutex>
 #include <stdexcept>
+#include <thread>
 
+#include "config_service.hpp"
+#include "daemon_state.hpp"
+#include "geometry_service.hpp"
 #include "info_service.hpp"
+#include "live_service.hpp"
+#include "pipeline.hpp"
+#include "unix_socket.hpp"
 
 namespace penshape::daemon {
+namespace {
+
+constexpr std::chrono::seconds kShutdownGrace{5};
+
+} // namespace
 
 struct PenshapeServer::Impl {
+  Impl(const ServerOptions& options, ServerParts parts)
+      : state(options.config.limits, options.config.settings, options.config.device_settings),
+        pipeline(state),
+        geometry(state),
+        live(state),
+        config(state),
+        source(std::move(parts.source)) {
+    state.geometry = std::move(parts.geometry);
+    state.analyzer = std::move(parts.analyzer);
+    addresses.push_back(options.address);
+    if (!options.config.tcp.empty()) addresses.push_back(options.config.tcp);
+  }
+
+  // Destroyed in reverse: the server first (no handler runs), then the services and the state.
+  DaemonState state;
+  Pipeline pipeline;
   InfoServiceImpl info;
+  GeometryServiceImpl geometry;
+  LiveServiceImpl live;
+  ConfigServiceImpl config;
+  std::shared_ptr<SampleSource> source;
+  std::vector<std::string> addresses;
+  std::string socket_path;
   std::unique_ptr<grpc::Server> server;
+  std::once_flag shutdown_once;
+  std::mutex done_mutex;
+  std::condition_variable done_cv;
+  bool done = false;
 };
 
-PenshapeServer::PenshapeServer(const ServerOptions& options) : impl_(std::make_unique<Impl>()) {
+PenshapeServer::PenshapeServer(const ServerOptions& options, ServerParts parts)
+    : impl_(std::make_unique<Impl>(options, std::move(parts))) {
+  const Limits& limits = options.config.limits;
+  impl_->socket_path = unix_socket_path(options.address);
+  if (!impl_->socket_path.empty()) refuse_if_in_use(impl_->socket_path);
+
   grpc::EnableDefaultHealthCheckService(true);
   grpc::reflection::InitProtoReflectionServerBuilderPlugin();
   grpc::ServerBuilder builder;
-  int bound_port = 0;
-  builder.AddListeningPort(options.address, grpc::InsecureServerCredentials(), &bound_port);
+  for (const std::string& address : impl_->addresses) {
+    builder.AddListeningPort(address, grpc::InsecureServerCredentials());
+  }
+  builder.SetMaxReceiveMessageSize(static_cast<int>(limits.max_message_bytes));
   builder.RegisterService(&impl_->info);
+  builder.RegisterService(&impl_->geometry);
+  builder.RegisterService(&impl_->live);
+  builder.RegisterService(&impl_->config);
+  // The socket is created owner-only from the start (umask), not just chmod-ed afterwards.
+  const mode_t previous_umask = ::umask(0077);
   impl_->server = builder.BuildAndStart();
-  if (!impl_->server) throw std::runtime_error("cannot listen on " + options.address);
+  ::umask(previous_umask);
+  if (!impl_->server) {
+    std::string all;
+    for (const auto& a : impl_->addresses) all += (all.empty() ? "" : ", ") + a;
+    throw std::runtime_error("cannot listen on " + all);
+  }
+  if (!impl_->socket_path.empty()) make_owner_only(impl_->socket_path);
+  if (impl_->source) impl_->source->start(impl_->pipeline);
 }
 
 PenshapeServer::~PenshapeServer() { shutdown(); }
 
-void PenshapeServer::wait() { impl_->server->Wait(); }
+void PenshapeServer::wait() {
+  std::unique_lock lock(impl_->done_mutex);
+  impl_->done_cv.wait(lock, [this] { return impl_->done; });
+}
 
 void PenshapeServer::shutdown() {
-  if (impl_->server) impl_->server->Shutdown();
+  std::call_once(impl_->shutdown_once, [this] {
+    Impl& impl = *impl_;
+    if (impl.source) impl.source->stop(); // strokes in progress are finished into the pipeline
+    impl.pipeline.wait_idle();            // their analyses are published
+    impl.state.hub.close();               // subscribers drain their queues, then end with OK
+    // A grace period for streams to deliver their queues and geometry calls to finish; then the
+    // rest is cancelled (their jobs see IsCancelled()). Shutdown(deadline) itself would also wait
+    // for idle client connections until the deadline, so the waiting is done here.
+    const auto grace_end = std::chrono::steady_clock::now() + kShutdownGrace;
+    while ((impl.state.hub.subscriber_count() > 0 || impl.state.pool.busy() > 0) &&
+           std::chrono::steady_clock::now() < grace_end) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    impl.server->Shutdown(std::chrono::system_clock::now());
+    impl.server->Wait();
+    impl.state.pool.drain();
+    if (!impl.socket_path.empty()) ::unlink(impl.socket_path.c_str());
+    {
+      std::lock_guard lock(impl.done_mutex);
+      impl.done = true;
+    }
+    impl.done_cv.notify_all();
+  });
 }
+
+const std::vector<std::string>& PenshapeServer::addresses() const { return impl_->addresses; }
+ShapeHub& PenshapeServer::hub() { return impl_->state.hub; }
+WorkerPool& PenshapeServer::pool() { return impl_->state.pool; }
+SettingsStore& PenshapeServer::settings() { return impl_->state.settings; }
 
 std::string default_address() {
   const char* runtime = std::getenv("XDG_RUNTIME_DIR");

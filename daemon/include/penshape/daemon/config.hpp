@@ -1,0 +1,52 @@
+#pragma once
+// penshaped's configuration: a small "key = value" file with optional per-device sections.
+//
+//   # comments start with '#'; blank lines are ignored; keys are unique per section
+//   listen = unix:/run/user/1000/penshape.sock   # gRPC address (default: $XDG_RUNTIME_DIR/...)
+//   tcp = 127.0.0.1:7433             # also listen on TCP (default: off)
+//   tcp_allow_non_loopback = false   # must be true for a tcp host other than loopback
+//   max_message_bytes = 16777216     # and every other key of Limits (limits.hpp), integers
+//   pen_radius_mm = 1.0              # default pen settings (pen_settings.hpp for the ranges)
+//   tolerance_fraction = 0.5
+//   precision_fraction = 0.125
+//
+//   [device 056a:0010]               # settings for one tablet model (vendor:product, hex)
+//   pen_radius_mm = 0.8
+//
+// Every error names the file, the line and the key; unknown keys are errors (typos must not pass
+// silently). With no file the defaults apply.
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include "penshape/daemon/limits.hpp"
+#include "penshape/daemon/pen_settings.hpp"
+
+namespace penshape::daemon {
+
+struct DaemonConfig {
+  std::string listen; // "" = default_address()
+  std::string tcp;    // "" = no TCP; else HOST:PORT
+  bool tcp_allow_non_loopback = false;
+  Limits limits;
+  PenSettings settings;
+  std::map<std::string, PenSettingsUpdate> device_settings; // by device key "vvvv:pppp"
+};
+
+struct ConfigError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Parses a config text; `origin` names it in messages ("penshaped.conf:12: ...").
+DaemonConfig parse_config(std::string_view text, const std::string& origin);
+
+// Reads and parses a file; throws ConfigError when it cannot be read or is invalid.
+DaemonConfig load_config_file(const std::string& path);
+
+// Checks a TCP address "HOST:PORT" (IPv4, [IPv6] or "localhost"); throws ConfigError unless the
+// host is loopback or `allow_non_loopback` is set.
+void validate_tcp_address(const std::string& address, bool allow_non_loopback);
+
+} // namespace penshape::daemon

@@ -1,0 +1,36 @@
+#pragma once
+// What the Geometry service computes with. The real backend forwards to the core library
+// (core_geometry_backend.cpp, linked when the engine is built); tests substitute their own.
+#include <memory>
+#include <stdexcept>
+
+#include "penshape/core/deconstruct.hpp"
+#include "penshape/core/polygon_set.hpp"
+#include "penshape/v1/types.pb.h"
+
+namespace penshape::daemon {
+
+// Thrown for a computation this build does not contain; the service answers UNIMPLEMENTED
+// with the message.
+struct NotAvailable : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+class GeometryBackend {
+ public:
+  virtual ~GeometryBackend() = default;
+  // penshape::deconstruct() semantics: throws InvalidInput, Cancelled.
+  virtual DeconstructResult deconstruct(const PolygonSet& q, const DeconstructParams& params,
+                                        const CancelHook& cancel,
+                                        const DeconstructLimits& limits) = 0;
+  // The boundary of offset(p, radius) as segments and circular arcs (display doubles). Throws
+  // NotAvailable unless the backend can compute it.
+  virtual v1::CurvedRegion offset_boundary(const PolygonSet& p, const Rational& radius,
+                                           const CancelHook& cancel);
+};
+
+// The core library's engines (penshape::deconstruct). Defined in core_geometry_backend.cpp,
+// which is compiled only when PENSHAPE_DAEMON_WITH_ENGINE is ON (the engine is linked).
+std::unique_ptr<GeometryBackend> make_core_geometry_backend();
+
+} // namespace penshape::daemon

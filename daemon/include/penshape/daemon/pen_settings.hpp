@@ -1,0 +1,59 @@
+#pragma once
+// Pen radius and tolerances, and the store that keeps them per device model.
+#include <map>
+#include <mutex>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace penshape::daemon {
+
+// eps = tolerance_fraction * pen_radius_mm, delta = precision_fraction * eps.
+struct PenSettings {
+  double pen_radius_mm = 1.0;        // in [0.05, 50]
+  double tolerance_fraction = 0.5;   // in [0.01, 4]
+  double precision_fraction = 0.125; // in [1/1024, 1/2]
+  friend bool operator==(const PenSettings&, const PenSettings&) = default;
+};
+
+// A partial update: the fields present are changed.
+struct PenSettingsUpdate {
+  std::optional<double> pen_radius_mm;
+  std::optional<double> tolerance_fraction;
+  std::optional<double> precision_fraction;
+};
+
+// Thrown for a value out of range; the message names the field (prefixed by `field_prefix`).
+struct SettingsError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+// Checks the ranges above; throws SettingsError naming e.g. "settings.pen_radius_mm".
+void validate(const PenSettingsUpdate& update, const std::string& field_prefix);
+PenSettings apply(PenSettings base, const PenSettingsUpdate& update);
+
+// A device key is "" (the defaults) or "vvvv:pppp", four lowercase hex digits each.
+bool is_valid_device_key(const std::string& key);
+std::string device_key(unsigned vendor_id, unsigned product_id);
+
+// Thread-safe: read by the geometry workers, written by the Config service.
+class SettingsStore {
+ public:
+  explicit SettingsStore(PenSettings defaults = {},
+                         std::map<std::string, PenSettingsUpdate> per_device = {});
+
+  [[nodiscard]] PenSettings effective(const std::string& key) const;
+  [[nodiscard]] bool overridden(const std::string& key) const;
+  // Applies a validated update to the defaults (key "") or to one device key.
+  PenSettings update(const std::string& key, const PenSettingsUpdate& update, bool reset);
+  [[nodiscard]] std::vector<std::string> overridden_keys() const;
+
+ private:
+  mutable std::mutex mutex_;
+  PenSettings defaults_;
+  // Per device, only the fields it sets; the rest follow the defaults.
+  std::map<std::string, PenSettingsUpdate> per_device_;
+};
+
+} // namespace penshape::daemon

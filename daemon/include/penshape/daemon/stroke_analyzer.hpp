@@ -1,0 +1,31 @@
+#pragma once
+// Turns a finished stroke into its ink polygon and recognized shape. The recognizer side
+// implements it (ink polygon Q = stroke ⊕ pen disk, deconstruction, annulus fits) and converts
+// its results to the penshape.v1 messages; the daemon runs it on the geometry workers for live
+// strokes, SubmitStroke, StreamSamples and Geometry.Recognize.
+#include <vector>
+
+#include "penshape/core/deconstruct.hpp"
+#include "penshape/daemon/pen_settings.hpp"
+#include "penshape/types/stroke.hpp"
+#include "penshape/v1/shape.pb.h"
+#include "penshape/v1/types.pb.h"
+
+namespace penshape::daemon {
+
+struct StrokeAnalysis {
+  v1::PolygonSet ink_polygon; // mm
+  v1::Shape shape;            // kind SHAPE_KIND_NONE when nothing is certified
+  std::vector<v1::Shape> alternatives;
+};
+
+class StrokeAnalyzer {
+ public:
+  virtual ~StrokeAnalyzer() = default;
+  // Called from worker threads, concurrently: must be thread-safe. Throws InvalidInput for a
+  // stroke it refuses and Cancelled when `cancel` asks to stop.
+  virtual StrokeAnalysis analyze(const Stroke& stroke, const PenSettings& settings,
+                                 const CancelHook& cancel) = 0;
+};
+
+} // namespace penshape::daemon

@@ -1,0 +1,61 @@
+#include "daemon_state.hpp"
+
+#include "penshape/daemon/proto_convert.hpp"
+
+namespace penshape::daemon {
+
+void DeviceRegistry::add(const DeviceDescriptor& device) {
+  std::lock_guard lock(mutex_);
+  devices_[device.id] = device;
+}
+
+void DeviceRegistry::remove(const std::string& id) {
+  std::lock_guard lock(mutex_);
+  devices_.erase(id);
+}
+
+std::vector<DeviceDescriptor> DeviceRegistry::list() const {
+  std::lock_guard lock(mutex_);
+  std::vector<DeviceDescriptor> out;
+  for (const auto& [id, device] : devices_) out.push_back(device);
+  return out;
+}
+
+bool DeviceRegistry::find(const std::string& id, DeviceDescriptor* out) const {
+  std::lock_guard lock(mutex_);
+  const auto it = devices_.find(id);
+  if (it == devices_.end()) return false;
+  *out = it->second;
+  return true;
+}
+
+void to_proto(const DeviceDescriptor& device, v1::DeviceInfo* out) {
+  out->set_id(device.id);
+  out->set_settings_key(device_key(device.tablet.vendor_id, device.tablet.product_id));
+  to_proto(device.tablet, out->mutable_tablet());
+  out->set_source(device.source);
+  out->set_replay(device.replay);
+}
+
+void publish_stroke(ShapeHub& hub, const std::string& device_id, const Stroke& stroke,
+                    const StrokeAnalysis* analysis, const std::string& not_analysed,
+                    const v1::Timings& timings) {
+  v1::LiveEvent finished;
+  finished.set_device_id(device_id);
+  v1::StrokeFinished* f = finished.mutable_stroke_finished();
+  to_proto(stroke, f->mutable_stroke());
+  if (analysis != nullptr) *f->mutable_ink_polygon() = analysis->ink_polygon;
+  f->set_not_analysed(not_analysed);
+  hub.publish(std::move(finished));
+  if (analysis == nullptr) return;
+  v1::LiveEvent shape;
+  shape.set_device_id(device_id);
+  v1::ShapeRecognized* s = shape.mutable_shape();
+  s->set_stroke_id(stroke.id);
+  *s->mutable_shape() = analysis->shape;
+  for (const auto& alternative : analysis->alternatives) *s->add_alternatives() = alternative;
+  *s->mutable_timings() = timings;
+  hub.publish(std::move(shape));
+}
+
+} // namespace penshape::daemon

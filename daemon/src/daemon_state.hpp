@@ -1,0 +1,62 @@
+#pragma once
+// What the services share: limits, the worker pool, the hub, the settings, the pluggable parts.
+#include <atomic>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "penshape/daemon/geometry_backend.hpp"
+#include "penshape/daemon/limits.hpp"
+#include "penshape/daemon/pen_settings.hpp"
+#include "penshape/daemon/sample_source.hpp"
+#include "penshape/daemon/shape_hub.hpp"
+#include "penshape/daemon/stroke_analyzer.hpp"
+#include "penshape/daemon/worker_pool.hpp"
+
+namespace penshape::daemon {
+
+// The devices attached now, as the pipeline saw them attach.
+class DeviceRegistry {
+ public:
+  void add(const DeviceDescriptor& device);
+  void remove(const std::string& id);
+  [[nodiscard]] std::vector<DeviceDescriptor> list() const;
+  // The device's tablet and settings key; false when unknown.
+  bool find(const std::string& id, DeviceDescriptor* out) const;
+
+ private:
+  mutable std::mutex mutex_;
+  std::map<std::string, DeviceDescriptor> devices_;
+};
+
+struct DaemonState {
+  DaemonState(const Limits& l, const PenSettings& defaults,
+              std::map<std::string, PenSettingsUpdate> per_device)
+      : limits(l),
+        pool(l.worker_threads, l.worker_queue_jobs),
+        hub(l.max_subscribers),
+        settings(defaults, std::move(per_device)) {}
+
+  const Limits limits;
+  WorkerPool pool;
+  ShapeHub hub;
+  SettingsStore settings;
+  DeviceRegistry devices;
+  std::shared_ptr<GeometryBackend> geometry; // null: Deconstruct is UNIMPLEMENTED
+  std::shared_ptr<StrokeAnalyzer> analyzer;  // null: no ink polygons or shapes
+  // Ids for strokes the daemon numbers itself (SubmitStroke, StreamSamples), from 2^63 up so
+  // they never meet a source's ids.
+  std::atomic<std::uint64_t> next_stroke_id{std::uint64_t{1} << 63U};
+};
+
+void to_proto(const DeviceDescriptor& device, v1::DeviceInfo* out);
+
+// Publishes a stroke's StrokeFinished (with the analysis when there is one) and ShapeRecognized.
+void publish_stroke(ShapeHub& hub, const std::string& device_id, const Stroke& stroke,
+                    const StrokeAnalysis* analysis, const std::string& not_analysed,
+                    const v1::Timings& timings);
+
+} // namespace penshape::daemon

@@ -1,0 +1,237 @@
+#include "live_service.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <optional>
+
+#include "call_runner.hpp"
+#include "geometry_service.hpp"
+#include "penshape/daemon/proto_convert.hpp"
+
+namespace penshape::daemon {
+namespace {
+
+// How often a waiting stream looks at its call's cancellation.
+constexpr std::chrono::milliseconds kCancelPoll{50};
+
+// Forwards a subscription's events until the client goes away (CANCELLED) or the hub closes and
+// the queue is drained (OK: the daemon stopped after delivering everything).
+template <typename Writer>
+grpc::Status pump(Subscription& subscription, grpc::ServerContext* context, Writer* writer) {
+  for (;;) {
+    if (context->IsCancelled()) return grpc::Status::CANCELLED;
+    Subscription::Delivery delivery = subscription.next(kCancelPoll);
+    if (!delivery.event) {
+      if (subscription.finished()) return grpc::Status::OK;
+      continue;
+    }
+    if (delivery.dropped != 0) {
+      v1::LiveEvent notice;
+      notice.set_published_us(monotonic_us());
+      notice.mutable_dropped()->set_count(delivery.dropped);
+      notice.mutable_dropped()->set_total(delivery.dropped_total);
+      if (!writer->Write(notice)) return grpc::Status::CANCELLED;
+    }
+    if (!writer->Write(*delivery.event)) return grpc::Status::CANCELLED;
+  }
+}
+
+std::size_t queue_capacity(std::uint32_t requested, const Limits& limits) {
+  if (requested == 0) return limits.subscriber_queue_events;
+  return std::min<std::size_t>(requested, limits.subscriber_queue_events);
+}
+
+} // namespace
+
+grpc::Status LiveServiceImpl::subscribe(EventFilter filter, std::size_t capacity,
+                                        std::unique_ptr<Subscription>* out) {
+  ShapeHub::Refusal why = ShapeHub::Refusal::kNone;
+  *out = state_.hub.subscribe(std::move(filter), capacity, &why);
+  if (*out) return grpc::Status::OK;
+  if (why == ShapeHub::Refusal::kClosed) {
+    return {grpc::StatusCode::UNAVAILABLE, "the daemon is shutting down"};
+  }
+  return {grpc::StatusCode::RESOURCE_EXHAUSTED, "too many subscribers (limit max_subscribers = " +
+                                                    std::to_string(state_.limits.max_subscribers) +
+                                                    ")"};
+}
+
+grpc::Status LiveServiceImpl::ListDevices(grpc::ServerContext* /*context*/,
+                                          const v1::ListDevicesRequest* /*request*/,
+                                          v1::ListDevicesResponse* response) {
+  for (const DeviceDescriptor& device : state_.devices.list()) {
+    to_proto(device, response->add_devices());
+  }
+  return grpc::Status::OK;
+}
+
+grpc::Status LiveServiceImpl::WatchDevices(grpc::ServerContext* context,
+                                           const v1::WatchDevicesRequest* /*request*/,
+                                           grpc::ServerWriter<v1::LiveEvent>* writer) {
+  EventFilter filter;
+  filter.devices = true;
+  filter.strokes = false;
+  std::unique_ptr<Subscription> subscription;
+  // Subscribe before listing so no attach is missed (one may then appear twice).
+  if (grpc::Status s = subscribe(filter, state_.limits.subscriber_queue_events, &subscription);
+      !s.ok()) {
+    return s;
+  }
+  for (const DeviceDescriptor& device : state_.devices.list()) {
+    v1::LiveEvent event;
+    event.set_published_us(monotonic_us());
+    event.set_device_id(device.id);
+    to_proto(device, event.mutable_device_attached()->mutable_device());
+    if (!writer->Write(event)) return grpc::Status::CANCELLED;
+  }
+  return pump(*subscription, context, writer);
+}
+
+grpc::Status LiveServiceImpl::Subscribe(grpc::ServerContext* context,
+                                        const v1::SubscribeRequest* request,
+                                        grpc::ServerWriter<v1::LiveEvent>* writer) {
+  EventFilter filter;
+  filter.samples = request->include_samples();
+  filter.previews = request->include_previews();
+  filter.device_ids.insert(request->device_ids().begin(), request->device_ids().end());
+  std::unique_ptr<Subscription> subscription;
+  if (grpc::Status s = subscribe(
+          filter, queue_capacity(request->max_queued_events(), state_.limits), &subscription);
+      !s.ok()) {
+    return s;
+  }
+  // Headers now, so the client knows it is subscribed before the first event.
+  writer->SendInitialMetadata();
+  return pump(*subscription, context, writer);
+}
+
+grpc::Status LiveServiceImpl::SubmitStroke(grpc::ServerContext* context,
+                                           const v1::SubmitStrokeRequest* request,
+                                           v1::SubmitStrokeResponse* response) {
+  Stroke stroke;
+  PenSettings settings;
+  try {
+    stroke = stroke_from_proto(request->stroke(), "stroke", state_.limits, true);
+    settings = apply(state_.settings.effective(""),
+                     settings_update_from_proto(request->settings(), "settings"));
+  } catch (...) {
+    return status_from_current_exception(nullptr);
+  }
+  stroke.id = state_.next_stroke_id.fetch_add(1);
+  StrokeAnalysis analysis;
+  v1::Timings timings;
+  const grpc::Status status =
+      analyze_stroke(state_, context, stroke, settings, &analysis, &timings);
+  if (!status.ok()) return status;
+  if (request->publish()) publish_stroke(state_.hub, "app", stroke, &analysis, "", timings);
+  response->set_stroke_id(stroke.id);
+  *response->mutable_ink_polygon() = std::move(analysis.ink_polygon);
+  *response->mutable_shape() = std::move(analysis.shape);
+  for (auto& alternative : analysis.alternatives) *response->add_alternatives() = alternative;
+  *response->mutable_timings() = timings;
+  return grpc::Status::OK;
+}
+
+grpc::Status LiveServiceImpl::StreamSamples(
+    grpc::ServerContext* context,
+    grpc::ServerReaderWriter<v1::LiveEvent, v1::StreamSamplesRequest>* stream) {
+  // A slot among the subscribers (the limit counts every live stream); it receives nothing.
+  EventFilter nothing;
+  nothing.strokes = false;
+  std::unique_ptr<Subscription> slot;
+  if (grpc::Status s = subscribe(nothing, 1, &slot); !s.ok()) return s;
+
+  v1::StreamSamplesRequest message;
+  if (!stream->Read(&message)) return grpc::Status::OK;
+  if (message.kind_case() != v1::StreamSamplesRequest::kStart) {
+    return {grpc::StatusCode::INVALID_ARGUMENT, "start: the first message must be a StreamStart"};
+  }
+  TabletInfo tablet;
+  PenSettings settings;
+  try {
+    tablet = tablet_from_proto(message.start().tablet(), "start.tablet", true);
+    settings = apply(state_.settings.effective(""),
+                     settings_update_from_proto(message.start().settings(), "start.settings"));
+  } catch (...) {
+    return status_from_current_exception(nullptr);
+  }
+
+  // Strokes run from tip down to tip up (stroke.hpp), the segmenter's rule for one pen.
+  std::optional<Stroke> current;
+  std::int64_t last_time = INT64_MIN;
+  auto write_event = [&](v1::LiveEvent event) {
+    event.set_published_us(monotonic_us());
+    event.set_device_id("stream");
+    return stream->Write(event);
+  };
+  auto finish_stroke = [&]() -> grpc::Status {
+    Stroke stroke = std::move(*current);
+    current.reset();
+    StrokeAnalysis analysis;
+    v1::Timings timings;
+    std::string not_analysed;
+    if (state_.analyzer) {
+      const grpc::Status s = analyze_stroke(state_, context, stroke, settings, &analysis, &timings);
+      if (!s.ok()) return s;
+    } else {
+      not_analysed = "this build has no stroke analyzer (ink polygon and recognizer)";
+    }
+    v1::LiveEvent finished;
+    v1::StrokeFinished* f = finished.mutable_stroke_finished();
+    to_proto(stroke, f->mutable_stroke());
+    f->set_not_analysed(not_analysed);
+    if (state_.analyzer) *f->mutable_ink_polygon() = analysis.ink_polygon;
+    if (!write_event(std::move(finished))) return grpc::Status::CANCELLED;
+    if (state_.analyzer) {
+      v1::LiveEvent shape;
+      v1::ShapeRecognized* r = shape.mutable_shape();
+      r->set_stroke_id(stroke.id);
+      *r->mutable_shape() = std::move(analysis.shape);
+      for (auto& alternative : analysis.alternatives) *r->add_alternatives() = alternative;
+      *r->mutable_timings() = timings;
+      if (!write_event(std::move(shape))) return grpc::Status::CANCELLED;
+    }
+    return grpc::Status::OK;
+  };
+
+  std::size_t batch_index = 0;
+  while (stream->Read(&message)) {
+    ++batch_index;
+    const std::string field = "samples (message " + std::to_string(batch_index) + ")";
+    if (message.kind_case() != v1::StreamSamplesRequest::kSamples) {
+      return {grpc::StatusCode::INVALID_ARGUMENT, field + ": only the first message is a start"};
+    }
+    for (int i = 0; i < message.samples().samples_size(); ++i) {
+      const PenSample sample = sample_from_proto(message.samples().samples(i));
+      const std::string at = field + ".samples[" + std::to_string(i) + "]";
+      if (sample.time_us < last_time) {
+        return {grpc::StatusCode::INVALID_ARGUMENT, at + ".time_us goes back in time"};
+      }
+      last_time = sample.time_us;
+      if (sample.tip && !current) {
+        current.emplace();
+        current->id = state_.next_stroke_id.fetch_add(1);
+        current->tablet = tablet;
+        v1::LiveEvent started;
+        started.mutable_stroke_started()->set_stroke_id(current->id);
+        to_proto(tablet, started.mutable_stroke_started()->mutable_tablet());
+        if (!write_event(std::move(started))) return grpc::Status::CANCELLED;
+      }
+      if (!current) continue;
+      if (current->samples.size() >= state_.limits.max_stroke_samples) {
+        return {grpc::StatusCode::INVALID_ARGUMENT,
+                at + ": the stroke exceeds the limit max_stroke_samples = " +
+                    std::to_string(state_.limits.max_stroke_samples)};
+      }
+      current->samples.push_back(sample);
+      if (!sample.tip) {
+        if (grpc::Status s = finish_stroke(); !s.ok()) return s;
+      }
+    }
+  }
+  // The client finished sending: a stroke still down ends here.
+  if (current) return finish_stroke();
+  return grpc::Status::OK;
+}
+
+} // namespace penshape::daemon

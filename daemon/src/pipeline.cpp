@@ -1,0 +1,103 @@
+#include "pipeline.hpp"
+
+#include <chrono>
+
+#include "call_runner.hpp"
+#include "penshape/daemon/proto_convert.hpp"
+
+namespace penshape::daemon {
+
+void Pipeline::device_attached(const DeviceDescriptor& device) {
+  state_.devices.add(device);
+  v1::LiveEvent event;
+  event.set_device_id(device.id);
+  to_proto(device, event.mutable_device_attached()->mutable_device());
+  state_.hub.publish(std::move(event));
+}
+
+void Pipeline::device_detached(const std::string& device_id) {
+  state_.devices.remove(device_id);
+  v1::LiveEvent event;
+  event.set_device_id(device_id);
+  event.mutable_device_detached()->set_device_id(device_id);
+  state_.hub.publish(std::move(event));
+}
+
+void Pipeline::stroke_started(const std::string& device_id, std::uint64_t stroke_id) {
+  v1::LiveEvent event;
+  event.set_device_id(device_id);
+  v1::StrokeStarted* started = event.mutable_stroke_started();
+  started->set_stroke_id(stroke_id);
+  DeviceDescriptor device;
+  if (state_.devices.find(device_id, &device)) to_proto(device.tablet, started->mutable_tablet());
+  state_.hub.publish(std::move(event));
+}
+
+void Pipeline::sample(const std::string& device_id, std::uint64_t stroke_id,
+                      const PenSample& sample) {
+  v1::LiveEvent event;
+  event.set_device_id(device_id);
+  v1::SamplesBatch* batch = event.mutable_samples();
+  batch->set_stroke_id(stroke_id);
+  to_proto(sample, batch->add_samples());
+  state_.hub.publish(std::move(event));
+}
+
+void Pipeline::stroke_finished(const std::string& device_id, Stroke stroke) {
+  if (!state_.analyzer) {
+    publish_stroke(state_.hub, device_id, stroke, nullptr,
+                   "this build has no stroke analyzer (ink polygon and recognizer)", {});
+    return;
+  }
+  const PenSettings settings =
+      state_.settings.effective(device_key(stroke.tablet.vendor_id, stroke.tablet.product_id));
+  const auto submitted = std::chrono::steady_clock::now();
+  // The job owns its copy of the stroke; the reader thread returns at once.
+  auto job = [this, device_id, stroke, settings, submitted](const StopCondition& stop) {
+    using std::chrono::duration_cast;
+    using std::chrono::microseconds;
+    const auto started = std::chrono::steady_clock::now();
+    v1::Timings timings;
+    timings.set_queued_us(
+        static_cast<std::uint64_t>(duration_cast<microseconds>(started - submitted).count()));
+    try {
+      const StrokeAnalysis analysis = state_.analyzer->analyze(stroke, settings, cancel_hook(stop));
+      const auto now = std::chrono::steady_clock::now();
+      timings.set_compute_us(
+          static_cast<std::uint64_t>(duration_cast<microseconds>(now - started).count()));
+      timings.set_total_us(
+          static_cast<std::uint64_t>(duration_cast<microseconds>(now - submitted).count()));
+      publish_stroke(state_.hub, device_id, stroke, &analysis, "", timings);
+    } catch (const std::exception& e) {
+      publish_stroke(state_.hub, device_id, stroke, nullptr,
+                     std::string("analysis failed: ") + e.what(), timings);
+    } catch (...) {
+      publish_stroke(state_.hub, device_id, stroke, nullptr, "analysis failed", timings);
+    }
+    job_done();
+  };
+  const StopCondition stop(
+      std::chrono::steady_clock::now() + std::chrono::seconds(state_.limits.max_call_seconds), {});
+  {
+    std::lock_guard lock(mutex_);
+    ++in_flight_;
+  }
+  if (!state_.pool.submit(std::move(job), stop)) {
+    job_done();
+    // Never block the reader and never lose the stroke: publish it without its analysis.
+    publish_stroke(state_.hub, device_id, stroke, nullptr,
+                   "the geometry queue was full; the stroke was not analysed", {});
+  }
+}
+
+void Pipeline::job_done() {
+  std::lock_guard lock(mutex_);
+  if (--in_flight_ == 0) idle_.notify_all();
+}
+
+void Pipeline::wait_idle() {
+  std::unique_lock lock(mutex_);
+  idle_.wait(lock, [this] { return in_flight_ == 0; });
+}
+
+} // namespace penshape::daemon

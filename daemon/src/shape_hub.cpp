@@ -1,0 +1,137 @@
+#include "penshape/daemon/shape_hub.hpp"
+
+#include <time.h>
+
+#include <algorithm>
+
+namespace penshape::daemon {
+
+std::int64_t monotonic_us() {
+  timespec ts{};
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000 + ts.tv_nsec / 1'000;
+}
+
+bool EventFilter::accepts(const v1::LiveEvent& event) const {
+  switch (event.kind_case()) {
+    case v1::LiveEvent::kDeviceAttached:
+    case v1::LiveEvent::kDeviceDetached:
+      if (!devices) return false;
+      break;
+    case v1::LiveEvent::kSamples:
+      if (!samples) return false;
+      break;
+    case v1::LiveEvent::kPreview:
+      if (!previews) return false;
+      break;
+    case v1::LiveEvent::kStrokeStarted:
+    case v1::LiveEvent::kStrokeFinished:
+    case v1::LiveEvent::kShape:
+      if (!strokes) return false;
+      break;
+    default:
+      return false;
+  }
+  return device_ids.empty() || device_ids.count(event.device_id()) != 0;
+}
+
+Subscription::Subscription(ShapeHub& hub, EventFilter filter, std::size_t capacity)
+    : hub_(hub), filter_(std::move(filter)), capacity_(std::max<std::size_t>(capacity, 1)) {}
+
+Subscription::~Subscription() { hub_.unsubscribe(this); }
+
+void Subscription::push(const EventPtr& event) {
+  if (!filter_.accepts(*event)) return;
+  {
+    std::lock_guard lock(mutex_);
+    if (closed_) return;
+    if (queue_.size() >= capacity_) {
+      queue_.pop_front();
+      ++dropped_pending_;
+      ++dropped_total_;
+    }
+    queue_.push_back(event);
+  }
+  ready_.notify_one();
+}
+
+void Subscription::close() {
+  {
+    std::lock_guard lock(mutex_);
+    closed_ = true;
+  }
+  ready_.notify_all();
+}
+
+Subscription::Delivery Subscription::next(std::chrono::milliseconds timeout) {
+  std::unique_lock lock(mutex_);
+  ready_.wait_for(lock, timeout, [this] { return !queue_.empty() || closed_; });
+  Delivery delivery;
+  if (queue_.empty()) return delivery;
+  delivery.event = std::move(queue_.front());
+  queue_.pop_front();
+  delivery.dropped = dropped_pending_;
+  delivery.dropped_total = dropped_total_;
+  dropped_pending_ = 0;
+  return delivery;
+}
+
+bool Subscription::finished() const {
+  std::lock_guard lock(mutex_);
+  return closed_ && queue_.empty();
+}
+
+std::uint64_t Subscription::dropped_total() const {
+  std::lock_guard lock(mutex_);
+  return dropped_total_;
+}
+
+ShapeHub::ShapeHub(std::size_t max_subscribers) : max_subscribers_(max_subscribers) {}
+
+ShapeHub::~ShapeHub() { close(); }
+
+std::unique_ptr<Subscription> ShapeHub::subscribe(EventFilter filter, std::size_t capacity,
+                                                  Refusal* why) {
+  std::unique_lock lock(mutex_);
+  Refusal refusal = Refusal::kNone;
+  if (closed_)
+    refusal = Refusal::kClosed;
+  else if (subscribers_.size() >= max_subscribers_)
+    refusal = Refusal::kFull;
+  if (why != nullptr) *why = refusal;
+  if (refusal != Refusal::kNone) return nullptr;
+  std::unique_ptr<Subscription> subscription(new Subscription(*this, std::move(filter), capacity));
+  subscribers_.push_back(subscription.get());
+  return subscription;
+}
+
+void ShapeHub::unsubscribe(Subscription* subscription) {
+  std::unique_lock lock(mutex_);
+  subscribers_.erase(std::remove(subscribers_.begin(), subscribers_.end(), subscription),
+                     subscribers_.end());
+}
+
+void ShapeHub::publish(v1::LiveEvent event) {
+  std::lock_guard order(publish_mutex_);
+  std::shared_lock lock(mutex_);
+  if (closed_) return;
+  event.set_sequence(sequence_.fetch_add(1) + 1);
+  event.set_published_us(monotonic_us());
+  const EventPtr shared = std::make_shared<const v1::LiveEvent>(std::move(event));
+  for (Subscription* s : subscribers_) s->push(shared);
+}
+
+void ShapeHub::close() {
+  std::unique_lock lock(mutex_);
+  closed_ = true;
+  for (Subscription* s : subscribers_) s->close();
+}
+
+std::size_t ShapeHub::subscriber_count() const {
+  std::shared_lock lock(mutex_);
+  return subscribers_.size();
+}
+
+std::uint64_t ShapeHub::published() const { return sequence_.load(); }
+
+} // namespace penshape::daemon

@@ -1,0 +1,101 @@
+#include "penshape/daemon/config.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace {
+
+using penshape::daemon::ConfigError;
+using penshape::daemon::parse_config;
+
+std::string error_of(const std::string& text) {
+  try {
+    parse_config(text, "test.conf");
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(Config, EmptyTextGivesTheDocumentedDefaults) {
+  const auto config = parse_config("", "test.conf");
+  EXPECT_EQ(config.listen, "");
+  EXPECT_EQ(config.tcp, "");
+  EXPECT_EQ(config.limits.max_subscribers, 128U);
+  EXPECT_EQ(config.limits.subscriber_queue_events, 1024U);
+  EXPECT_EQ(config.limits.max_message_bytes, 16U * 1024U * 1024U);
+  EXPECT_EQ(config.limits.max_vertices, 200'000U);
+  EXPECT_EQ(config.settings.pen_radius_mm, 1.0);
+  EXPECT_EQ(config.settings.tolerance_fraction, 0.5);
+  EXPECT_EQ(config.settings.precision_fraction, 0.125);
+  EXPECT_TRUE(config.device_settings.empty());
+}
+
+TEST(Config, ReadsEveryKindOfLine) {
+  const auto config = parse_config(
+      "# a comment\n"
+      "listen = unix:/run/x.sock   # trailing comment\n"
+      "\n"
+      "tcp = 127.0.0.1:7433\n"
+      "max_subscribers = 7\n"
+      "subscriber_queue_events=9\n"
+      "  pen_radius_mm = 0.75\n"
+      "[device 056a:0010]\n"
+      "pen_radius_mm = 2\r\n"
+      "[ device 28bd:0913 ]\n"
+      "tolerance_fraction = 0.25\n",
+      "test.conf");
+  EXPECT_EQ(config.listen, "unix:/run/x.sock");
+  EXPECT_EQ(config.tcp, "127.0.0.1:7433");
+  EXPECT_EQ(config.limits.max_subscribers, 7U);
+  EXPECT_EQ(config.limits.subscriber_queue_events, 9U);
+  EXPECT_EQ(config.settings.pen_radius_mm, 0.75);
+  ASSERT_EQ(config.device_settings.size(), 2U);
+  EXPECT_EQ(config.device_settings.at("056a:0010").pen_radius_mm, 2.0);
+  EXPECT_FALSE(config.device_settings.at("056a:0010").tolerance_fraction.has_value());
+  EXPECT_EQ(config.device_settings.at("28bd:0913").tolerance_fraction, 0.25);
+}
+
+TEST(Config, ErrorsNameTheLineAndTheKey) {
+  EXPECT_EQ(error_of("\n\nmax_subscribers = abc\n"),
+            "test.conf:3: max_subscribers: expected an integer in 1..4096, got 'abc'");
+  EXPECT_EQ(error_of("max_subscribers = 0"),
+            "test.conf:1: max_subscribers: expected an integer in 1..4096, got '0'");
+  EXPECT_EQ(error_of("colour = blue"), "test.conf:1: colour: unknown key");
+  EXPECT_EQ(error_of("pen_radius_mm = 1\npen_radius_mm = 2"),
+            "test.conf:2: pen_radius_mm: set twice");
+  EXPECT_EQ(error_of("pen_radius_mm = 100"),
+            "test.conf:1: pen_radius_mm is 100, outside [0.05, 50]");
+  EXPECT_EQ(error_of("pen_radius_mm = nan"),
+            "test.conf:1: pen_radius_mm: expected a number, got 'nan'");
+  EXPECT_EQ(error_of("just words"), "test.conf:1: expected 'key = value'");
+  EXPECT_EQ(error_of("[device 56a:10]"),
+            "test.conf:1: device key '56a:10' is not vvvv:pppp (four lowercase hex digits each)");
+  EXPECT_EQ(error_of("[printer]"),
+            "test.conf:1: unknown section '[printer]' (expected [device vvvv:pppp])");
+  EXPECT_EQ(error_of("[device 056a:0010]\nmax_subscribers = 3"),
+            "test.conf:2: max_subscribers: unknown key in a [device] section (pen_radius_mm, "
+            "tolerance_fraction, precision_fraction)");
+  EXPECT_EQ(error_of("tcp_allow_non_loopback = yes"),
+            "test.conf:1: tcp_allow_non_loopback: expected true or false, got 'yes'");
+}
+
+TEST(Config, TcpIsLoopbackOnlyUnlessAllowed) {
+  EXPECT_NO_THROW(parse_config("tcp = 127.0.0.1:1", "t"));
+  EXPECT_NO_THROW(parse_config("tcp = [::1]:1", "t"));
+  EXPECT_NO_THROW(parse_config("tcp = localhost:50051", "t"));
+  EXPECT_EQ(error_of("tcp = 0.0.0.0:50051"),
+            "test.conf:1: tcp: '0.0.0.0' is not a loopback address; set tcp_allow_non_loopback = "
+            "true (or pass --tcp-allow-non-loopback) to listen beyond this machine");
+  EXPECT_NO_THROW(parse_config("tcp = 0.0.0.0:50051\ntcp_allow_non_loopback = true", "t"));
+  EXPECT_EQ(error_of("tcp = 127.0.0.1:99999"), "test.conf:1: tcp: port '99999' is not in 0..65535");
+  EXPECT_EQ(error_of("tcp = example.org:80"),
+            "test.conf:1: tcp: 'example.org' is not an IPv4 address, [IPv6] or localhost");
+}
+
+TEST(Config, MissingFileIsAnError) {
+  EXPECT_THROW(penshape::daemon::load_config_file("/nonexistent/penshaped.conf"), ConfigError);
+}
+
+} // namespace

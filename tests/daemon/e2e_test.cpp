@@ -1,0 +1,610 @@
+// End to end: a real PenshapeServer on a real unix socket, real gRPC clients.
+#include <grpcpp/generic/generic_stub.h>
+#include <grpcpp/grpcpp.h>
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <future>
+#include <thread>
+
+#include "fakes.hpp"
+#include "penshape/daemon/server.hpp"
+#include "penshape/daemon/shape_hub.hpp"
+#include "penshape/v1/config.grpc.pb.h"
+#include "penshape/v1/geometry.grpc.pb.h"
+#include "penshape/v1/live.grpc.pb.h"
+
+namespace {
+
+using namespace std::chrono_literals;
+using penshape::daemon::PenshapeServer;
+using penshape::daemon::ServerOptions;
+using penshape::daemon::ServerParts;
+using penshape::testing::FakeSampleSource;
+namespace v1 = penshape::v1;
+
+class TempDir {
+ public:
+  TempDir() {
+    std::string pattern =
+        (std::filesystem::temp_directory_path() / "penshaped-test-XXXXXX").string();
+    if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("mkdtemp");
+    path_ = pattern;
+  }
+  ~TempDir() { std::filesystem::remove_all(path_); }
+  [[nodiscard]] const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+std::chrono::system_clock::time_point in(std::chrono::milliseconds d) {
+  return std::chrono::system_clock::now() + d;
+}
+
+class DaemonE2E : public ::testing::Test {
+ protected:
+  std::string socket_path() const { return dir_.path() + "/penshape.sock"; }
+  std::string address() const { return "unix:" + socket_path(); }
+
+  void start(ServerParts parts = {}) {
+    ServerOptions options;
+    options.address = address();
+    options.config = config_;
+    server_ = std::make_unique<PenshapeServer>(options, std::move(parts));
+  }
+  std::shared_ptr<grpc::Channel> channel(const grpc::ChannelArguments& args = {}) const {
+    return grpc::CreateCustomChannel(address(), grpc::InsecureChannelCredentials(), args);
+  }
+  void wait_for_subscribers(std::size_t n) const {
+    const auto until = std::chrono::steady_clock::now() + 30s;
+    while (server_->hub().subscriber_count() < n && std::chrono::steady_clock::now() < until) {
+      std::this_thread::sleep_for(1ms);
+    }
+    ASSERT_EQ(server_->hub().subscriber_count(), n);
+  }
+
+  TempDir dir_;
+  penshape::daemon::DaemonConfig config_;
+  std::unique_ptr<PenshapeServer> server_;
+};
+
+// grpc.health.v1.Health/Check through the generic stub; returns the serialized response.
+std::string health_check(const std::shared_ptr<grpc::Channel>& channel, grpc::Status* status) {
+  grpc::GenericStub generic(channel);
+  grpc::ClientContext ctx;
+  ctx.set_deadline(in(10s));
+  grpc::Slice empty_message("");
+  grpc::ByteBuffer request(&empty_message, 1);
+  grpc::ByteBuffer reply;
+  std::promise<grpc::Status> done;
+  generic.UnaryCall(&ctx, "/grpc.health.v1.Health/Check", {}, &request, &reply,
+                    [&](grpc::Status s) { done.set_value(std::move(s)); });
+  *status = done.get_future().get();
+  std::vector<grpc::Slice> slices;
+  std::string bytes;
+  if (status->ok() && reply.Dump(&slices).ok()) {
+    for (const auto& s : slices) bytes.append(reinterpret_cast<const char*>(s.begin()), s.size());
+  }
+  return bytes;
+}
+
+TEST_F(DaemonE2E, HealthIsServingOnAnOwnerOnlySocketRemovedAtShutdown) {
+  start();
+  struct stat st {};
+  ASSERT_EQ(::stat(socket_path().c_str(), &st), 0);
+  EXPECT_TRUE(S_ISSOCK(st.st_mode));
+  EXPECT_EQ(st.st_mode & 0777, 0600U);
+  grpc::Status status;
+  // HealthCheckResponse{status: SERVING(1)}: field 1, varint 1.
+  EXPECT_EQ(health_check(channel(), &status), std::string("\x08\x01", 2));
+  EXPECT_TRUE(status.ok()) << status.error_message();
+  // A second daemon on the same socket is refused instead of stealing it.
+  ServerOptions second;
+  second.address = address();
+  EXPECT_THROW(PenshapeServer{second}, std::runtime_error);
+  server_->shutdown();
+  EXPECT_FALSE(std::filesystem::exists(socket_path()));
+}
+
+TEST_F(DaemonE2E, ConfigGetAndSetPerDevice) {
+  config_.device_settings["056a:0010"].tolerance_fraction = 0.25;
+  start();
+  auto stub = v1::Config::NewStub(channel());
+  auto get = [&](const std::string& key, v1::SettingsResponse* out) {
+    grpc::ClientContext ctx;
+    ctx.set_deadline(in(10s));
+    v1::GetSettingsRequest request;
+    request.set_device_key(key);
+    return stub->GetSettings(&ctx, request, out);
+  };
+  v1::SettingsResponse defaults;
+  ASSERT_TRUE(get("", &defaults).ok());
+  EXPECT_EQ(defaults.effective().pen_radius_mm(), 1.0);
+  EXPECT_FALSE(defaults.overridden());
+  v1::SettingsResponse wacom;
+  ASSERT_TRUE(get("056a:0010", &wacom).ok());
+  EXPECT_TRUE(wacom.overridden());
+  EXPECT_EQ(wacom.effective().tolerance_fraction(), 0.25);
+  EXPECT_EQ(wacom.effective().pen_radius_mm(), 1.0); // inherited
+
+  grpc::ClientContext ctx;
+  v1::SetSettingsRequest set;
+  set.set_device_key("056a:0010");
+  set.mutable_settings()->set_pen_radius_mm(0.8);
+  v1::SettingsResponse after;
+  ASSERT_TRUE(stub->SetSettings(&ctx, set, &after).ok());
+  EXPECT_EQ(after.effective().pen_radius_mm(), 0.8);
+  EXPECT_EQ(after.effective().tolerance_fraction(), 0.25);
+  ASSERT_TRUE(get("", &defaults).ok());
+  EXPECT_EQ(defaults.effective().pen_radius_mm(), 1.0); // the defaults did not change
+  EXPECT_EQ(server_->settings().effective("056a:0010").pen_radius_mm, 0.8);
+
+  grpc::ClientContext list_ctx;
+  v1::ListSettingsResponse list;
+  ASSERT_TRUE(stub->ListSettings(&list_ctx, {}, &list).ok());
+  ASSERT_EQ(list.settings_size(), 2);
+  EXPECT_EQ(list.settings(1).device_key(), "056a:0010");
+
+  grpc::ClientContext bad_ctx;
+  set.mutable_settings()->set_pen_radius_mm(-1);
+  const grpc::Status bad = stub->SetSettings(&bad_ctx, set, &after);
+  EXPECT_EQ(bad.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(bad.error_message(), "settings.pen_radius_mm is -1, outside [0.05, 50]");
+  v1::SettingsResponse unused;
+  grpc::Status bad_key = get("56A:10", &unused);
+  EXPECT_EQ(bad_key.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_NE(bad_key.error_message().find("device_key"), std::string::npos);
+}
+
+// Reads a subscription's events until `stop` says enough; counts notices of drops.
+struct Received {
+  std::vector<v1::LiveEvent> events;
+  std::uint64_t dropped = 0;
+  grpc::Status status;
+};
+
+TEST_F(DaemonE2E, SubscribeDeliversTheSourcesStrokesWithTheirAnalysis) {
+  auto source = std::make_shared<FakeSampleSource>();
+  auto analyzer = std::make_shared<penshape::testing::BoundingBoxAnalyzer>();
+  start({source, nullptr, analyzer});
+  auto live = v1::Live::NewStub(channel());
+
+  grpc::ClientContext watch_ctx;
+  watch_ctx.set_deadline(in(30s));
+  auto watch = live->WatchDevices(&watch_ctx, {});
+  grpc::ClientContext ctx;
+  ctx.set_deadline(in(30s));
+  v1::SubscribeRequest request;
+  request.set_include_samples(true);
+  auto reader = live->Subscribe(&ctx, request);
+  reader->WaitForInitialMetadata();
+  wait_for_subscribers(2);
+
+  source->attach("pen0");
+  source->emit_stroke("pen0", 5);
+
+  v1::LiveEvent event;
+  ASSERT_TRUE(watch->Read(&event));
+  EXPECT_EQ(event.device_attached().device().id(), "pen0");
+  EXPECT_EQ(event.device_attached().device().settings_key(), "056a:0010");
+  EXPECT_EQ(event.device_attached().device().tablet().x_max(), 20000);
+
+  std::vector<v1::LiveEvent> got;
+  while (got.size() < 8 && reader->Read(&event)) got.push_back(event);
+  ASSERT_EQ(got.size(), 8U); // started, 5 samples, finished, shape
+  EXPECT_EQ(got[0].stroke_started().stroke_id(), 1U);
+  EXPECT_EQ(got[0].stroke_started().tablet().vendor_id(), 0x056aU);
+  for (int i = 1; i <= 5; ++i) {
+    ASSERT_TRUE(got[static_cast<std::size_t>(i)].has_samples());
+    EXPECT_EQ(got[static_cast<std::size_t>(i)].samples().samples(0).x(), 1000 + 10 * (i - 1));
+  }
+  const v1::StrokeFinished& finished = got[6].stroke_finished();
+  EXPECT_EQ(finished.stroke().samples_size(), 5);
+  EXPECT_EQ(finished.not_analysed(), "");
+  // The analyzer's box for x in 10.0..10.4 mm, y 20.0..20.04 mm, pen radius 1 mm.
+  const auto& ink = finished.ink_polygon().polygons(0).outer();
+  ASSERT_EQ(ink.points_size(), 4);
+  EXPECT_DOUBLE_EQ(ink.points(0).x(), 9.0);
+  EXPECT_DOUBLE_EQ(ink.points(2).x(), 11.4);
+  EXPECT_EQ(got[7].shape().stroke_id(), 1U);
+  EXPECT_EQ(got[7].shape().shape().kind(), v1::SHAPE_KIND_SEGMENT);
+  for (std::size_t i = 1; i < got.size(); ++i) {
+    EXPECT_GT(got[i].sequence(), got[i - 1].sequence());
+    EXPECT_EQ(got[i].device_id(), "pen0");
+  }
+
+  grpc::ClientContext list_ctx;
+  v1::ListDevicesResponse devices;
+  ASSERT_TRUE(live->ListDevices(&list_ctx, {}, &devices).ok());
+  ASSERT_EQ(devices.devices_size(), 1);
+  EXPECT_EQ(devices.devices(0).source(), "/dev/fake-pen0");
+  ctx.TryCancel();
+  watch_ctx.TryCancel();
+}
+
+TEST_F(DaemonE2E, SixtyFourClientsKeepUpWhileOneSubscriberNeverReads) {
+  config_.limits.subscriber_queue_events = 4096;
+  auto source = std::make_shared<FakeSampleSource>();
+  start({source, nullptr, nullptr});
+  constexpr int kClients = 64;
+  constexpr int kStrokes = 500;          // 2 events each: started, finished
+  constexpr int kSamplesPerStroke = 150; // ~3 KB per finished stroke
+
+  // The slow one: a small queue and a transport that buffers little, and it never reads.
+  grpc::ChannelArguments slow_args;
+  slow_args.SetInt(GRPC_ARG_HTTP2_BDP_PROBE, 0);
+  auto slow_live = v1::Live::NewStub(channel(slow_args));
+  grpc::ClientContext slow_ctx;
+  slow_ctx.set_deadline(in(120s));
+  v1::SubscribeRequest slow_request;
+  slow_request.set_max_queued_events(16);
+  auto slow = slow_live->Subscribe(&slow_ctx, slow_request);
+
+  std::vector<std::future<Received>> readers;
+  std::atomic<int> ready{0};
+  for (int c = 0; c < kClients; ++c) {
+    readers.push_back(std::async(std::launch::async, [&] {
+      auto live = v1::Live::NewStub(channel());
+      grpc::ClientContext ctx;
+      ctx.set_deadline(in(120s));
+      auto reader = live->Subscribe(&ctx, {});
+      Received r;
+      v1::LiveEvent event;
+      int finished = 0;
+      while (finished < kStrokes && reader->Read(&event)) {
+        if (event.has_dropped()) r.dropped += event.dropped().count();
+        if (event.has_stroke_finished()) ++finished;
+        r.events.push_back(std::move(event));
+      }
+      ctx.TryCancel();
+      r.status = reader->Finish();
+      return r;
+    }));
+  }
+  wait_for_subscribers(kClients + 1);
+
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int i = 0; i < kStrokes; ++i) source->emit_stroke("pen0", kSamplesPerStroke);
+  const auto produce_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("producer: %d strokes to %d subscribers in %.1f ms\n", kStrokes, kClients + 1,
+              produce_ms);
+
+  for (auto& f : readers) {
+    Received r = f.get();
+    EXPECT_EQ(r.dropped, 0U);
+    ASSERT_EQ(r.events.size(), 2U * kStrokes);
+    for (std::size_t i = 0; i < r.events.size(); ++i) {
+      // In order, nothing missing: started(k), finished(k), started(k+1)...
+      const std::uint64_t stroke = i / 2 + 1;
+      if (i % 2 == 0) {
+        EXPECT_EQ(r.events[i].stroke_started().stroke_id(), stroke);
+      } else {
+        EXPECT_EQ(r.events[i].stroke_finished().stroke().id(), stroke);
+      }
+    }
+  }
+
+  // Now the slow one reads: every event either arrived or was reported lost, and some were lost.
+  std::uint64_t received = 0;
+  std::uint64_t dropped = 0;
+  std::uint64_t last_total = 0;
+  v1::LiveEvent event;
+  while (received + dropped < 2U * kStrokes && slow->Read(&event)) {
+    if (event.has_dropped()) {
+      dropped += event.dropped().count();
+      last_total = event.dropped().total();
+    } else {
+      ++received;
+    }
+  }
+  EXPECT_EQ(received + dropped, 2U * kStrokes);
+  EXPECT_GT(dropped, 0U);
+  EXPECT_EQ(last_total, dropped);
+  std::printf("slow subscriber: %llu received, %llu dropped (reported)\n",
+              static_cast<unsigned long long>(received), static_cast<unsigned long long>(dropped));
+  slow_ctx.TryCancel();
+  (void)slow->Finish();
+}
+
+TEST_F(DaemonE2E, ShutdownDuringALiveStreamLosesNoFinishedStroke) {
+  auto source = std::make_shared<FakeSampleSource>();
+  auto analyzer = std::make_shared<penshape::testing::BoundingBoxAnalyzer>();
+  start({source, nullptr, analyzer});
+  auto live = v1::Live::NewStub(channel());
+  grpc::ClientContext ctx;
+  ctx.set_deadline(in(60s));
+  auto reader = live->Subscribe(&ctx, {});
+  wait_for_subscribers(1);
+
+  // 20 samples of 200 µs per stroke; shutdown arrives in the middle of one.
+  source->run("pen0", 20, 200us);
+  std::this_thread::sleep_for(100ms);
+  std::thread stopper([&] { server_->shutdown(); });
+
+  std::vector<std::uint64_t> finished;
+  std::uint64_t shapes = 0;
+  v1::LiveEvent event;
+  while (reader->Read(&event)) {
+    EXPECT_FALSE(event.has_dropped());
+    if (event.has_stroke_finished()) finished.push_back(event.stroke_finished().stroke().id());
+    if (event.has_shape()) ++shapes;
+  }
+  const grpc::Status status = reader->Finish();
+  stopper.join();
+  EXPECT_TRUE(status.ok()) << status.error_message(); // the stream ended, not broke
+  ASSERT_TRUE(source->stopped());
+  ASSERT_GT(source->finished(), 0U);
+  ASSERT_EQ(finished.size(), source->finished());
+  for (std::size_t i = 0; i < finished.size(); ++i) EXPECT_EQ(finished[i], i + 1);
+  EXPECT_EQ(shapes, source->finished());
+  EXPECT_FALSE(std::filesystem::exists(socket_path()));
+}
+
+v1::PolygonSet square(double side) {
+  v1::PolygonSet set;
+  auto* ring = set.add_polygons()->mutable_outer();
+  for (auto [x, y] : {std::pair{0.0, 0.0}, {side, 0.0}, {side, side}, {0.0, side}}) {
+    auto* p = ring->add_points();
+    p->set_x(x);
+    p->set_y(y);
+  }
+  return set;
+}
+
+TEST_F(DaemonE2E, BadRequestsGetInvalidArgumentNamingTheField) {
+  start({nullptr, std::make_shared<penshape::testing::FakeGeometryBackend>(), nullptr});
+  auto geometry = v1::Geometry::NewStub(channel());
+  auto deconstruct = [&](const v1::DeconstructRequest& request) {
+    grpc::ClientContext ctx;
+    ctx.set_deadline(in(10s));
+    v1::DeconstructResponse response;
+    return geometry->Deconstruct(&ctx, request, &response);
+  };
+  v1::DeconstructRequest request;
+  *request.mutable_polygon() = square(10);
+  request.mutable_radius()->set_value(1);
+  request.mutable_tolerance()->set_value(2);
+  request.mutable_polygon()->mutable_polygons(0)->mutable_outer()->mutable_points(3)->set_x(NAN);
+  grpc::Status s = deconstruct(request);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(s.error_message(), "polygon.polygons[0].outer.points[3].x is NaN");
+
+  *request.mutable_polygon() = square(10);
+  request.mutable_precision()->set_rational("2/0");
+  s = deconstruct(request);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(s.error_message(), "precision.rational has a zero denominator");
+  request.clear_precision();
+  request.clear_tolerance();
+  s = deconstruct(request);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(s.error_message(), "tolerance is missing");
+
+  auto live = v1::Live::NewStub(channel());
+  grpc::ClientContext ctx;
+  v1::SubmitStrokeRequest submit;
+  submit.mutable_stroke()->add_samples();
+  v1::SubmitStrokeResponse submitted;
+  s = live->SubmitStroke(&ctx, submit, &submitted);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(s.error_message(),
+            "stroke.tablet.x_resolution must be > 0 (device units per millimetre)");
+
+  // The searches validate their request, then say they are not in this build.
+  grpc::ClientContext search_ctx;
+  v1::SuggestRadiusRequest suggest;
+  *suggest.mutable_polygon() = square(10);
+  suggest.mutable_min_radius()->set_value(2);
+  suggest.mutable_max_radius()->set_value(1);
+  auto stream = geometry->SuggestRadius(&search_ctx, suggest);
+  v1::SuggestRadiusResponse ignored;
+  EXPECT_FALSE(stream->Read(&ignored));
+  s = stream->Finish();
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(s.error_message(), "max_radius must be > min_radius");
+  grpc::ClientContext search_ctx2;
+  suggest.mutable_max_radius()->set_value(3);
+  stream = geometry->SuggestRadius(&search_ctx2, suggest);
+  EXPECT_FALSE(stream->Read(&ignored));
+  s = stream->Finish();
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::UNIMPLEMENTED);
+  EXPECT_NE(s.error_message().find("SuggestRadius"), std::string::npos);
+}
+
+TEST_F(DaemonE2E, DeconstructCarriesTheBackendsExactAnswer) {
+  start({nullptr, std::make_shared<penshape::testing::FakeGeometryBackend>(), nullptr});
+  auto geometry = v1::Geometry::NewStub(channel());
+  v1::DeconstructRequest request;
+  *request.mutable_polygon() = square(0.1);
+  request.mutable_radius()->set_rational("1/4");
+  request.mutable_tolerance()->set_value(0.5);
+  request.set_engine(v1::ENGINE_REFERENCE);
+  grpc::ClientContext ctx;
+  v1::DeconstructResponse response;
+  const grpc::Status s = geometry->Deconstruct(&ctx, request, &response);
+  ASSERT_TRUE(s.ok()) << s.error_message();
+  EXPECT_EQ(response.answer(), v1::ANSWER_YES);
+  EXPECT_EQ(response.params().radius().rational(), "1/4");
+  EXPECT_EQ(response.params().tolerance().rational(), "1/2");
+  EXPECT_EQ(response.params().precision().rational(), "1/16");
+  EXPECT_EQ(response.params().engine(), v1::ENGINE_REFERENCE);
+  EXPECT_EQ(response.certificate().hausdorff_bound().rational(), "1/4");
+  ASSERT_EQ(response.solution().polygons(0).outer().exact_points_size(), 4);
+  // The double 0.1 went through exactly: 3602879701896397 / 2^55.
+  EXPECT_EQ(response.solution().polygons(0).outer().exact_points(1).x(),
+            "3602879701896397/36028797018963968");
+  EXPECT_GE(response.timings().total_us(), response.timings().compute_us());
+
+  request.set_include_offset(true);
+  grpc::ClientContext ctx2;
+  const grpc::Status offset = geometry->Deconstruct(&ctx2, request, &response);
+  EXPECT_EQ(offset.error_code(), grpc::StatusCode::UNIMPLEMENTED);
+  EXPECT_NE(offset.error_message().find("include_offset"), std::string::npos);
+}
+
+TEST_F(DaemonE2E, WithoutAnEngineDeconstructIsUnimplemented) {
+  start();
+  auto geometry = v1::Geometry::NewStub(channel());
+  v1::DeconstructRequest request;
+  *request.mutable_polygon() = square(1);
+  request.mutable_radius()->set_value(1);
+  request.mutable_tolerance()->set_value(1);
+  grpc::ClientContext ctx;
+  v1::DeconstructResponse response;
+  const grpc::Status s = geometry->Deconstruct(&ctx, request, &response);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::UNIMPLEMENTED);
+  EXPECT_NE(s.error_message().find("PENSHAPE_DAEMON_WITH_ENGINE"), std::string::npos);
+}
+
+TEST_F(DaemonE2E, ACancelledLongCallStopsItsComputation) {
+  auto backend = std::make_shared<penshape::testing::FakeGeometryBackend>();
+  start({nullptr, backend, nullptr});
+  auto geometry = v1::Geometry::NewStub(channel());
+  v1::DeconstructRequest request;
+  *request.mutable_polygon() = square(10);
+  request.mutable_radius()->set_value(2); // r > eps: the fake runs until told to stop
+  request.mutable_tolerance()->set_value(1);
+  grpc::ClientContext ctx;
+  v1::DeconstructResponse response;
+  auto call = std::async(std::launch::async,
+                         [&] { return geometry->Deconstruct(&ctx, request, &response); });
+  backend->started.get_future().wait();
+  ctx.TryCancel();
+  EXPECT_EQ(call.get().error_code(), grpc::StatusCode::CANCELLED);
+  // The computation itself stopped (not just the client's wait); the bound only guards a hang.
+  EXPECT_EQ(backend->stopped.get_future().wait_for(30s), std::future_status::ready);
+}
+
+TEST_F(DaemonE2E, APassedDeadlineStopsItsComputation) {
+  auto backend = std::make_shared<penshape::testing::FakeGeometryBackend>();
+  start({nullptr, backend, nullptr});
+  auto geometry = v1::Geometry::NewStub(channel());
+  v1::DeconstructRequest request;
+  *request.mutable_polygon() = square(10);
+  request.mutable_radius()->set_value(2);
+  request.mutable_tolerance()->set_value(1);
+  grpc::ClientContext ctx;
+  ctx.set_deadline(in(300ms));
+  v1::DeconstructResponse response;
+  EXPECT_EQ(geometry->Deconstruct(&ctx, request, &response).error_code(),
+            grpc::StatusCode::DEADLINE_EXCEEDED);
+  EXPECT_EQ(backend->stopped.get_future().wait_for(30s), std::future_status::ready);
+}
+
+TEST_F(DaemonE2E, SubscribersBeyondTheLimitAreRefused) {
+  config_.limits.max_subscribers = 2;
+  start();
+  auto live = v1::Live::NewStub(channel());
+  grpc::ClientContext a, b, c;
+  auto ra = live->Subscribe(&a, {});
+  auto rb = live->Subscribe(&b, {});
+  wait_for_subscribers(2);
+  auto rc = live->Subscribe(&c, {});
+  v1::LiveEvent event;
+  EXPECT_FALSE(rc->Read(&event));
+  const grpc::Status s = rc->Finish();
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::RESOURCE_EXHAUSTED);
+  EXPECT_EQ(s.error_message(), "too many subscribers (limit max_subscribers = 2)");
+  a.TryCancel();
+  b.TryCancel();
+}
+
+TEST_F(DaemonE2E, OversizedMessagesAreRefused) {
+  config_.limits.max_message_bytes = 4096;
+  start({nullptr, std::make_shared<penshape::testing::FakeGeometryBackend>(), nullptr});
+  auto geometry = v1::Geometry::NewStub(channel());
+  v1::DeconstructRequest request;
+  auto* ring = request.mutable_polygon()->add_polygons()->mutable_outer();
+  for (int i = 0; i < 1000; ++i) {
+    auto* p = ring->add_points();
+    p->set_x(std::cos(i * 0.00628));
+    p->set_y(std::sin(i * 0.00628));
+  }
+  request.mutable_radius()->set_value(1);
+  request.mutable_tolerance()->set_value(1);
+  grpc::ClientContext ctx;
+  v1::DeconstructResponse response;
+  EXPECT_EQ(geometry->Deconstruct(&ctx, request, &response).error_code(),
+            grpc::StatusCode::RESOURCE_EXHAUSTED);
+}
+
+TEST_F(DaemonE2E, StreamSamplesCutsTheAppsStrokesAndAnswersEach) {
+  auto analyzer = std::make_shared<penshape::testing::BoundingBoxAnalyzer>();
+  start({nullptr, nullptr, analyzer});
+  auto live = v1::Live::NewStub(channel());
+  grpc::ClientContext ctx;
+  ctx.set_deadline(in(30s));
+  auto stream = live->StreamSamples(&ctx);
+  v1::StreamSamplesRequest start_message;
+  penshape::daemon::to_proto(penshape::testing::test_tablet(),
+                             start_message.mutable_start()->mutable_tablet());
+  ASSERT_TRUE(stream->Write(start_message));
+  // Hover, a 3-sample stroke, hover, a stroke left down when the client finishes.
+  v1::StreamSamplesRequest samples;
+  const bool tips[] = {false, true, true, false, false, true, true};
+  for (int i = 0; i < 7; ++i) {
+    auto* s = samples.mutable_samples()->add_samples();
+    s->set_time_us(i * 1000);
+    s->set_x(100 * i);
+    s->set_y(100);
+    s->set_tip(tips[i]);
+  }
+  ASSERT_TRUE(stream->Write(samples));
+  stream->WritesDone();
+  std::vector<v1::LiveEvent> events;
+  v1::LiveEvent event;
+  while (stream->Read(&event)) events.push_back(event);
+  ASSERT_TRUE(stream->Finish().ok());
+  ASSERT_EQ(events.size(), 6U); // (started, finished, shape) twice
+  EXPECT_TRUE(events[0].has_stroke_started());
+  EXPECT_EQ(events[1].stroke_finished().stroke().samples_size(), 3); // tip down, down, up
+  EXPECT_EQ(events[1].stroke_finished().stroke().samples(0).x(), 100);
+  EXPECT_EQ(events[2].shape().shape().kind(), v1::SHAPE_KIND_SEGMENT);
+  EXPECT_EQ(events[4].stroke_finished().stroke().samples_size(), 2);
+  EXPECT_EQ(events[4].device_id(), "stream");
+  EXPECT_EQ(analyzer->calls.load(), 2);
+}
+
+TEST_F(DaemonE2E, SubmitStrokeAnswersAndPublishes) {
+  auto analyzer = std::make_shared<penshape::testing::BoundingBoxAnalyzer>();
+  start({nullptr, nullptr, analyzer});
+  auto live = v1::Live::NewStub(channel());
+  grpc::ClientContext sub_ctx;
+  sub_ctx.set_deadline(in(30s));
+  auto reader = live->Subscribe(&sub_ctx, {});
+  wait_for_subscribers(1);
+  v1::SubmitStrokeRequest request;
+  penshape::daemon::to_proto(penshape::testing::test_tablet(),
+                             request.mutable_stroke()->mutable_tablet());
+  for (int i = 0; i < 3; ++i) {
+    auto* s = request.mutable_stroke()->add_samples();
+    s->set_time_us(i);
+    s->set_x(500 + 100 * i);
+    s->set_y(700);
+    s->set_tip(i < 2);
+  }
+  request.mutable_settings()->set_pen_radius_mm(0.5);
+  request.set_publish(true);
+  grpc::ClientContext ctx;
+  v1::SubmitStrokeResponse response;
+  ASSERT_TRUE(live->SubmitStroke(&ctx, request, &response).ok());
+  EXPECT_EQ(response.shape().kind(), v1::SHAPE_KIND_SEGMENT);
+  // Box of x 5..7 mm, y 7 mm, grown by the requested 0.5 mm.
+  EXPECT_DOUBLE_EQ(response.ink_polygon().polygons(0).outer().points(0).x(), 4.5);
+  EXPECT_DOUBLE_EQ(response.ink_polygon().polygons(0).outer().points(2).y(), 7.5);
+  v1::LiveEvent event;
+  ASSERT_TRUE(reader->Read(&event));
+  EXPECT_EQ(event.device_id(), "app");
+  EXPECT_EQ(event.stroke_finished().stroke().id(), response.stroke_id());
+  sub_ctx.TryCancel();
+}
+
+} // namespace

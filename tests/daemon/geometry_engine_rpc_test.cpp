@@ -1,0 +1,137 @@
+// Geometry RPCs on the real engine give the same results as the core library called directly.
+// Built only with PENSHAPE_DAEMON_WITH_ENGINE (the engine is linked).
+#include <grpcpp/grpcpp.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <fstream>
+#include <future>
+#include <sstream>
+#include <string>
+#include <thread>
+
+#include "penshape/core/deconstruct.hpp"
+#include "penshape/daemon/geometry_backend.hpp"
+#include "penshape/daemon/proto_convert.hpp"
+#include "penshape/daemon/server.hpp"
+#include "penshape/v1/geometry.grpc.pb.h"
+
+namespace {
+
+using namespace std::chrono_literals;
+namespace v1 = penshape::v1;
+
+std::string data_dir() {
+  const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR");
+  return env != nullptr ? env : PENSHAPE_SHARED_DATA_DIR;
+}
+
+// "x y" lines as exact decimals → exact rationals ("123/100"), so nothing is rounded.
+std::string decimal_to_rational(const std::string& text) {
+  const std::size_t dot = text.find('.');
+  if (dot == std::string::npos) return text;
+  std::string digits = text.substr(0, dot) + text.substr(dot + 1);
+  const std::size_t scale = text.size() - dot - 1;
+  penshape::Rational q(penshape::Rational(digits, 10) /
+                       penshape::Rational("1" + std::string(scale, '0'), 10));
+  q.canonicalize();
+  return q.get_str(10);
+}
+
+v1::PolygonSet read_exact_polygon(const std::string& name) {
+  std::ifstream in(data_dir() + "/polygons/" + name);
+  EXPECT_TRUE(in) << name;
+  v1::PolygonSet set;
+  v1::Ring* ring = set.add_polygons()->mutable_outer();
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    std::string x, y;
+    fields >> x >> y;
+    auto* p = ring->add_exact_points();
+    p->set_x(decimal_to_rational(x));
+    p->set_y(decimal_to_rational(y));
+  }
+  return set;
+}
+
+class GeometryEngineRpc : public ::testing::Test {
+ protected:
+  GeometryEngineRpc() {
+    penshape::daemon::ServerOptions options;
+    options.address = "unix-abstract:penshape-engine-test-" + std::to_string(::getpid());
+    server_ = std::make_unique<penshape::daemon::PenshapeServer>(
+        options, penshape::daemon::ServerParts{
+                     nullptr, penshape::daemon::make_core_geometry_backend(), nullptr});
+    stub_ = v1::Geometry::NewStub(
+        grpc::CreateChannel(options.address, grpc::InsecureChannelCredentials()));
+  }
+  std::unique_ptr<penshape::daemon::PenshapeServer> server_;
+  std::unique_ptr<v1::Geometry::Stub> stub_;
+};
+
+struct Case {
+  const char* file;
+  const char* radius;
+  const char* tolerance;
+  v1::Answer impossible; // the answer the data's documentation rules out
+};
+
+TEST_F(GeometryEngineRpc, DeconstructEqualsTheCoreLibrary) {
+  const Case cases[] = {
+      {"authors_demo_1_01_work1.txt", "1", "1/10", v1::ANSWER_NO},
+      {"authors_demo_1_01_work2.txt", "1", "1/10", v1::ANSWER_NO},
+      {"authors_demo_1_01_fail1.txt", "1", "1/10", v1::ANSWER_YES},
+      {"authors_demo_1_01_fail2.txt", "1", "1/10", v1::ANSWER_YES},
+      {"authors_S.txt", "10", "5", v1::ANSWER_UNSPECIFIED},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.file);
+    v1::DeconstructRequest request;
+    *request.mutable_polygon() = read_exact_polygon(c.file);
+    request.mutable_radius()->set_rational(c.radius);
+    request.mutable_tolerance()->set_rational(c.tolerance);
+    grpc::ClientContext ctx;
+    ctx.set_deadline(std::chrono::system_clock::now() + 120s);
+    v1::DeconstructResponse response;
+    const grpc::Status status = stub_->Deconstruct(&ctx, request, &response);
+    ASSERT_TRUE(status.ok()) << status.error_message();
+    EXPECT_NE(response.answer(), c.impossible);
+
+    const penshape::daemon::Limits limits;
+    const penshape::PolygonSet q =
+        penshape::daemon::polygon_set_from_proto(request.polygon(), "polygon", limits);
+    const penshape::DeconstructResult direct =
+        penshape::deconstruct(q, penshape::daemon::deconstruct_params_from_proto(request, limits));
+    EXPECT_EQ(response.answer(), penshape::daemon::to_proto(direct.answer));
+    v1::PolygonSet expected;
+    penshape::daemon::to_proto(direct.solution, &expected);
+    EXPECT_EQ(response.solution().SerializeAsString(), expected.SerializeAsString());
+    if (direct.answer == penshape::Answer::kYes) {
+      EXPECT_EQ(response.certificate().hausdorff_bound().rational(),
+                direct.hausdorff_bound.get_str(10));
+    }
+  }
+}
+
+TEST_F(GeometryEngineRpc, ACancelledLargeDeconstructionStops) {
+  v1::DeconstructRequest request;
+  *request.mutable_polygon() = read_exact_polygon("kazakhstan_paper1881.txt");
+  request.mutable_radius()->set_rational("1/100");
+  request.mutable_tolerance()->set_rational("1/200"); // eps = r / 2, delta = eps / 8
+  grpc::ClientContext ctx;
+  v1::DeconstructResponse response;
+  auto call =
+      std::async(std::launch::async, [&] { return stub_->Deconstruct(&ctx, request, &response); });
+  std::this_thread::sleep_for(200ms);
+  ctx.TryCancel();
+  const grpc::Status status = call.get();
+  // Either it finished within 200 ms or it was cancelled; both are correct answers.
+  if (!status.ok()) EXPECT_EQ(status.error_code(), grpc::StatusCode::CANCELLED);
+  // The worker is free again: the pool drains (a job that ignored the cancel would hang here).
+  server_->shutdown();
+}
+
+} // namespace
