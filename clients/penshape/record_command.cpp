@@ -1,5 +1,6 @@
 // `penshape record FILE`: capture what a tablet draws, through penshaped, as a hid-recorder file
 // that `penshape replay` and hid-tools can play back.
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -10,6 +11,7 @@
 #include "cancel_on_signal.hpp"
 #include "command.hpp"
 #include "daemon_channel.hpp"
+#include "device_events.hpp"
 #include "hid_recording_writer.hpp"
 #include "live_commands.hpp"
 #include "penshape/v1/live.grpc.pb.h"
@@ -147,12 +149,20 @@ int run_record(std::span<const std::string_view> args) {
     request.set_include_samples(true);
     auto reader = stub->Subscribe(&context, request);
     cancel.arm(&context);
+    // Subscribe carries no detach events: a second stream watches for the tablet going away.
+    std::atomic<bool> detached{false};
+    const std::string device_id = device->id();
+    DeviceEvents device_events(*stub, [&](const v1::LiveEvent& e) {
+      if (e.has_device_detached() && e.device_detached().device_id() == device_id) {
+        detached = true;
+        context.TryCancel();
+      }
+    });
     reader->WaitForInitialMetadata();
     std::fprintf(stderr, "penshape record: recording %s into %s (Ctrl-C to stop)\n",
                  device->id().c_str(), path.c_str());
     std::uint64_t strokes = 0;
     bool done = false;
-    bool detached = false;
     std::uint64_t dropped = 0;
     v1::LiveEvent event;
     while (!done && reader->Read(&event)) {
@@ -166,9 +176,6 @@ int run_record(std::span<const std::string_view> args) {
         }
       } else if (event.has_stroke_finished()) {
         if (max_strokes && ++strokes >= *max_strokes) done = true;
-      } else if (event.has_device_detached()) {
-        detached = true;
-        done = true;
       } else if (event.has_dropped()) {
         dropped += event.dropped().count();
       }
@@ -186,7 +193,7 @@ int run_record(std::span<const std::string_view> args) {
                    static_cast<unsigned long long>(dropped));
     }
     const bool normal_end =
-        done || cancel.fired() || status.ok() ||
+        done || detached || cancel.fired() || status.ok() ||
         (duration && status.error_code() == grpc::StatusCode::DEADLINE_EXCEEDED);
     if (normal_end) return kExitOk;
     const RpcFailure f = describe_rpc_failure(status, "Subscribe", address);

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <utility>
@@ -12,6 +13,7 @@
 #include "cancel_on_signal.hpp"
 #include "command.hpp"
 #include "daemon_channel.hpp"
+#include "device_events.hpp"
 #include "live_commands.hpp"
 #include "live_event_text.hpp"
 #include "penshape/v1/live.grpc.pb.h"
@@ -21,7 +23,8 @@ namespace penshape::cli {
 namespace {
 
 constexpr const char* kHelp =
-    "usage: penshape watch [--json] [--samples] [--previews] [--device ID[,ID...]]\n"
+    "usage: penshape watch [--json] [--samples] [--previews] [--devices]\n"
+    "                      [--device ID[,ID...]]\n"
     "                      [--count N] [--duration SECONDS] [--svg-dir DIR]\n"
     "                      [--socket PATH | --address ADDR]\n\n"
     "Prints what penshaped sees, as it happens: devices attached and detached, strokes started\n"
@@ -34,6 +37,7 @@ constexpr const char* kHelp =
     "                     ellipse | arc, hausdorff_bound, tolerance, pen_radius, method} in mm)\n"
     "  --samples          also the raw pen samples (many events per second)\n"
     "  --previews         also the shapes a stroke in progress would snap to\n"
+    "  --devices          also devices attached (those attached now first) and detached\n"
     "  --device IDS       only these devices (ids from `penshape devices`, comma-separated)\n"
     "  --count N          stop after N events\n"
     "  --duration SECONDS stop after this time\n"
@@ -114,7 +118,7 @@ std::vector<std::string> split_ids(const std::string& text) {
 
 int run_watch(std::span<const std::string_view> args) {
   const ParsedArgs parsed(
-      args, live_arg_spec({.flags = {"--json", "--samples", "--previews"},
+      args, live_arg_spec({.flags = {"--json", "--samples", "--previews", "--devices"},
                            .options = {"--device", "--count", "--duration", "--svg-dir"}}));
   if (parsed.flag("--help")) {
     std::printf(kHelp, kLiveOptionsHelp);
@@ -159,26 +163,33 @@ int run_watch(std::span<const std::string_view> args) {
     cancel.arm(&context);
     reader->WaitForInitialMetadata();
     std::fprintf(stderr, "penshape watch: subscribed to %s (Ctrl-C to stop)\n", address.c_str());
+    // Events from both streams print under one lock, and count towards --count together.
+    std::mutex output;
     std::uint64_t events = 0;
     bool reached_count = false;
-    v1::LiveEvent event;
-    while (reader->Read(&event)) {
-      std::puts((json ? event_json(event) : event_line(event)).c_str());
+    auto print = [&](const v1::LiveEvent& e) {
+      std::lock_guard lock(output);
+      if (reached_count) return;
+      std::puts((json ? event_json(e) : event_line(e)).c_str());
       std::fflush(stdout);
-      if (archive) archive->on_event(event);
+      if (archive) archive->on_event(e);
       if (count && ++events >= *count) {
         reached_count = true;
         context.TryCancel();
-        break;
       }
-    }
+    };
+    std::optional<DeviceEvents> device_events;
+    if (parsed.flag("--devices")) device_events.emplace(*stub, print);
+    v1::LiveEvent event;
+    while (reader->Read(&event)) print(event);
+    device_events.reset();
     const grpc::Status status = reader->Finish();
     if (archive) {
       archive->flush();
       std::fprintf(stderr, "penshape watch: %zu pictures in %s\n", archive->written(),
                    parsed.value("--svg-dir")->c_str());
     }
-    if (reached_count || cancel.fired()) return kExitOk;
+    if (reached_count || cancel.fired()) return kExitOk; // both cancel the call on purpose
     if (duration && status.error_code() == grpc::StatusCode::DEADLINE_EXCEEDED) return kExitOk;
     if (status.ok()) {
       std::fprintf(stderr, "penshape watch: penshaped stopped; the subscription ended\n");
