@@ -15,9 +15,11 @@ StopCondition stop_condition_for(grpc::ServerContext* context, const Limits& lim
   auto deadline = now_steady + seconds(limits.max_call_seconds);
   const auto client_deadline = context->deadline();
   if (client_deadline != system_clock::time_point::max()) {
+    // Compared as durations so a far-future deadline cannot overflow a time point.
     const auto remaining = client_deadline - system_clock::now();
-    const auto client_steady = now_steady + duration_cast<steady_clock::duration>(remaining);
-    if (client_steady < deadline) deadline = client_steady;
+    if (remaining < seconds(limits.max_call_seconds)) {
+      deadline = now_steady + duration_cast<steady_clock::duration>(remaining);
+    }
   }
   return StopCondition(deadline, [context] { return context->IsCancelled(); });
 }

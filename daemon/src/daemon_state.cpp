@@ -37,6 +37,10 @@ void to_proto(const DeviceDescriptor& device, v1::DeviceInfo* out) {
   out->set_replay(device.replay);
 }
 
+PenSettings settings_for(const DaemonState& state, const TabletInfo& tablet) {
+  return state.settings.effective(device_key(tablet.vendor_id, tablet.product_id));
+}
+
 void publish_stroke(ShapeHub& hub, const std::string& device_id, const Stroke& stroke,
                     const StrokeAnalysis* analysis, const std::string& not_analysed,
                     const v1::Timings& timings) {

@@ -54,6 +54,9 @@ struct DaemonState {
 
 void to_proto(const DeviceDescriptor& device, v1::DeviceInfo* out);
 
+// The settings for a tablet model (its Config key "vvvv:pppp"), or the defaults.
+PenSettings settings_for(const DaemonState& state, const TabletInfo& tablet);
+
 // Publishes a stroke's StrokeFinished (with the analysis when there is one) and ShapeRecognized.
 void publish_stroke(ShapeHub& hub, const std::string& device_id, const Stroke& stroke,
                     const StrokeAnalysis* analysis, const std::string& not_analysed,

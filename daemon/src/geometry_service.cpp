@@ -175,7 +175,7 @@ grpc::Status GeometryServiceImpl::Recognize(grpc::ServerContext* context,
   PenSettings settings;
   grpc::Status status = validated([&] {
     stroke = stroke_from_proto(request->stroke(), "stroke", state_.limits, true);
-    settings = apply(state_.settings.effective(""),
+    settings = apply(settings_for(state_, stroke.tablet),
                      settings_update_from_proto(request->settings(), "settings"));
   });
   if (!status.ok()) return status;

@@ -11,8 +11,10 @@
 namespace penshape::daemon {
 namespace {
 
-// How often a waiting stream looks at its call's cancellation.
-constexpr std::chrono::milliseconds kCancelPoll{50};
+// How often an idle stream looks at its call's cancellation. Events and shutdown wake it at once
+// (condition variable); this only bounds how long a vanished client keeps its subscriber slot, at
+// two wake-ups a second per idle subscriber.
+constexpr std::chrono::milliseconds kCancelPoll{500};
 
 // Forwards a subscription's events until the client goes away (CANCELLED) or the hub closes and
 // the queue is drained (OK: the daemon stopped after delivering everything).
@@ -112,7 +114,7 @@ grpc::Status LiveServiceImpl::SubmitStroke(grpc::ServerContext* context,
   PenSettings settings;
   try {
     stroke = stroke_from_proto(request->stroke(), "stroke", state_.limits, true);
-    settings = apply(state_.settings.effective(""),
+    settings = apply(settings_for(state_, stroke.tablet),
                      settings_update_from_proto(request->settings(), "settings"));
   } catch (...) {
     return status_from_current_exception(nullptr);
@@ -150,7 +152,7 @@ grpc::Status LiveServiceImpl::StreamSamples(
   PenSettings settings;
   try {
     tablet = tablet_from_proto(message.start().tablet(), "start.tablet", true);
-    settings = apply(state_.settings.effective(""),
+    settings = apply(settings_for(state_, tablet),
                      settings_update_from_proto(message.start().settings(), "start.settings"));
   } catch (...) {
     return status_from_current_exception(nullptr);

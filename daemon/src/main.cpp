@@ -1,8 +1,10 @@
 // penshaped: the penshape daemon. Serves the penshape.v1 API on a unix socket.
 #include <pthread.h>
+#include <unistd.h>
 
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <string>
@@ -24,8 +26,10 @@ The penshape daemon: reads pen tablets, recognizes the shapes drawn, and serves 
 gRPC API (Geometry, Live, Config, Info, grpc.health.v1 and server reflection).
 
 options:
-  --config FILE              read settings and limits from FILE (format: daemon/include/penshape/
-                             daemon/config.hpp; without it the defaults apply)
+  --config FILE              read settings and limits from FILE (format: see the README or
+                             daemon/include/penshape/daemon/config.hpp). Default:
+                             $XDG_CONFIG_HOME/penshape/penshaped.conf if it exists, else the
+                             built-in defaults
   --listen ADDRESS           gRPC address: unix:PATH, unix-abstract:NAME or HOST:PORT
                              (default: unix:$XDG_RUNTIME_DIR/penshape.sock, owner-only)
   --tcp HOST:PORT            also listen on TCP; loopback hosts only unless
@@ -61,6 +65,20 @@ sigset_t block_termination_signals() {
 using penshape::daemon::log;
 using penshape::daemon::LogLevel;
 
+// $XDG_CONFIG_HOME/penshape/penshaped.conf (~/.config when unset) when that file exists, else "".
+std::string default_config_path() {
+  std::string base;
+  if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg != nullptr && *xdg != '\0') {
+    base = xdg;
+  } else if (const char* home = std::getenv("HOME"); home != nullptr && *home != '\0') {
+    base = std::string(home) + "/.config";
+  } else {
+    return "";
+  }
+  const std::string path = base + "/penshape/penshaped.conf";
+  return ::access(path.c_str(), F_OK) == 0 ? path : "";
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -95,8 +113,10 @@ int main(int argc, char** argv) {
 
   penshape::daemon::ServerOptions options;
   try {
+    if (cli.config_path.empty()) cli.config_path = default_config_path();
     if (!cli.config_path.empty()) {
       options.config = penshape::daemon::load_config_file(cli.config_path);
+      log(LogLevel::kInfo, "config: " + cli.config_path);
     }
     if (!cli.tcp.empty()) options.config.tcp = cli.tcp;
     options.config.tcp_allow_non_loopback |= cli.tcp_allow_non_loopback;

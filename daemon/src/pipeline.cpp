@@ -17,6 +17,11 @@ void Pipeline::device_attached(const DeviceDescriptor& device) {
 
 void Pipeline::device_detached(const std::string& device_id) {
   state_.devices.remove(device_id);
+  {
+    std::lock_guard lock(mutex_);
+    const auto it = drawing_.find(device_id);
+    if (it != drawing_.end() && !it->second.preview_running) drawing_.erase(it);
+  }
   v1::LiveEvent event;
   event.set_device_id(device_id);
   event.mutable_device_detached()->set_device_id(device_id);
@@ -29,8 +34,16 @@ void Pipeline::stroke_started(const std::string& device_id, std::uint64_t stroke
   v1::StrokeStarted* started = event.mutable_stroke_started();
   started->set_stroke_id(stroke_id);
   DeviceDescriptor device;
-  if (state_.devices.find(device_id, &device)) to_proto(device.tablet, started->mutable_tablet());
+  const bool known = state_.devices.find(device_id, &device);
+  if (known) to_proto(device.tablet, started->mutable_tablet());
   state_.hub.publish(std::move(event));
+  if (state_.analyzer) {
+    std::lock_guard lock(mutex_);
+    Drawing& drawing = drawing_[device_id];
+    drawing.partial = Stroke{};
+    drawing.partial.id = stroke_id;
+    if (known) drawing.partial.tablet = device.tablet;
+  }
 }
 
 void Pipeline::sample(const std::string& device_id, std::uint64_t stroke_id,
@@ -41,16 +54,68 @@ void Pipeline::sample(const std::string& device_id, std::uint64_t stroke_id,
   batch->set_stroke_id(stroke_id);
   to_proto(sample, batch->add_samples());
   state_.hub.publish(std::move(event));
+  if (!state_.analyzer || stroke_id == 0) return;
+  std::lock_guard lock(mutex_);
+  const auto it = drawing_.find(device_id);
+  if (it == drawing_.end() || it->second.partial.id != stroke_id) return;
+  if (it->second.partial.samples.size() >= state_.limits.max_stroke_samples) return;
+  it->second.partial.samples.push_back(sample);
+  maybe_preview(device_id, it->second);
+}
+
+// Called with mutex_ held.
+void Pipeline::maybe_preview(const std::string& device_id, Drawing& drawing) {
+  const auto now = std::chrono::steady_clock::now();
+  if (drawing.preview_running || now - drawing.last_preview < kPreviewInterval) return;
+  drawing.preview_running = true;
+  drawing.last_preview = now;
+  const PenSettings settings = settings_for(state_, drawing.partial.tablet);
+  auto job = [this, device_id, partial = drawing.partial, settings](const StopCondition& stop) {
+    try {
+      std::vector<v1::Shape> candidates =
+          state_.analyzer->preview(partial, settings, cancel_hook(stop));
+      if (!candidates.empty()) {
+        v1::LiveEvent event;
+        event.set_device_id(device_id);
+        v1::PreviewCandidates* preview = event.mutable_preview();
+        preview->set_stroke_id(partial.id);
+        for (auto& c : candidates) *preview->add_candidates() = std::move(c);
+        state_.hub.publish(std::move(event));
+      }
+    } catch (...) {
+      // A preview is a hint: a failed one is skipped, the finished stroke still gets its shape.
+    }
+    {
+      std::lock_guard lock(mutex_);
+      const auto it = drawing_.find(device_id);
+      if (it != drawing_.end()) it->second.preview_running = false;
+    }
+    job_done();
+  };
+  ++in_flight_;
+  // A preview older than a few frames is useless: it stops at its deadline.
+  const StopCondition stop(now + 4 * kPreviewInterval, {});
+  if (!state_.pool.submit(std::move(job), stop)) {
+    drawing.preview_running = false;
+    if (--in_flight_ == 0) idle_.notify_all();
+  }
 }
 
 void Pipeline::stroke_finished(const std::string& device_id, Stroke stroke) {
+  if (state_.analyzer) {
+    std::lock_guard lock(mutex_);
+    const auto it = drawing_.find(device_id);
+    if (it != drawing_.end() && !it->second.preview_running)
+      drawing_.erase(it);
+    else if (it != drawing_.end())
+      it->second.partial = Stroke{}; // its preview job still runs
+  }
   if (!state_.analyzer) {
     publish_stroke(state_.hub, device_id, stroke, nullptr,
                    "this build has no stroke analyzer (ink polygon and recognizer)", {});
     return;
   }
-  const PenSettings settings =
-      state_.settings.effective(device_key(stroke.tablet.vendor_id, stroke.tablet.product_id));
+  const PenSettings settings = settings_for(state_, stroke.tablet);
   const auto submitted = std::chrono::steady_clock::now();
   // The job owns its copy of the stroke; the reader thread returns at once.
   auto job = [this, device_id, stroke, settings, submitted](const StopCondition& stop) {
@@ -78,16 +143,18 @@ void Pipeline::stroke_finished(const std::string& device_id, Stroke stroke) {
   };
   const StopCondition stop(
       std::chrono::steady_clock::now() + std::chrono::seconds(state_.limits.max_call_seconds), {});
-  {
-    std::lock_guard lock(mutex_);
-    ++in_flight_;
-  }
+  job_started();
   if (!state_.pool.submit(std::move(job), stop)) {
     job_done();
     // Never block the reader and never lose the stroke: publish it without its analysis.
     publish_stroke(state_.hub, device_id, stroke, nullptr,
                    "the geometry queue was full; the stroke was not analysed", {});
   }
+}
+
+void Pipeline::job_started() {
+  std::lock_guard lock(mutex_);
+  ++in_flight_;
 }
 
 void Pipeline::job_done() {

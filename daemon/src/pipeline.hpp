@@ -1,8 +1,10 @@
 #pragma once
 // The daemon's SampleSink: device events and samples go straight to the hub (the reader thread
 // only copies and queues); finished strokes go to the worker pool for their ink polygon and shape,
-// then to the hub.
+// then to the hub; strokes in progress get previews on the pool now and then.
+#include <chrono>
 #include <condition_variable>
+#include <map>
 #include <mutex>
 
 #include "daemon_state.hpp"
@@ -11,6 +13,9 @@ namespace penshape::daemon {
 
 class Pipeline final : public SampleSink {
  public:
+  // At most one preview per device per interval (about three display frames).
+  static constexpr std::chrono::milliseconds kPreviewInterval{50};
+
   explicit Pipeline(DaemonState& state) : state_(state) {}
 
   void device_attached(const DeviceDescriptor& device) override;
@@ -20,16 +25,25 @@ class Pipeline final : public SampleSink {
               const PenSample& sample) override;
   void stroke_finished(const std::string& device_id, Stroke stroke) override;
 
-  // Returns once every finished stroke handed to the workers has been published.
+  // Returns once every job handed to the workers (analyses, previews) has been published.
   void wait_idle();
 
  private:
+  // The stroke a device is drawing, kept only when there is an analyzer (for previews).
+  struct Drawing {
+    Stroke partial;
+    std::chrono::steady_clock::time_point last_preview{};
+    bool preview_running = false;
+  };
+  void job_started();
   void job_done();
+  void maybe_preview(const std::string& device_id, Drawing& drawing);
 
   DaemonState& state_;
   std::mutex mutex_;
   std::condition_variable idle_;
   std::size_t in_flight_ = 0;
+  std::map<std::string, Drawing> drawing_; // by device id, guarded by mutex_
 };
 
 } // namespace penshape::daemon

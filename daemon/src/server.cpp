@@ -84,8 +84,17 @@ PenshapeServer::PenshapeServer(const ServerOptions& options, ServerParts parts)
     for (const auto& a : impl_->addresses) all += (all.empty() ? "" : ", ") + a;
     throw std::runtime_error("cannot listen on " + all);
   }
-  if (!impl_->socket_path.empty()) make_owner_only(impl_->socket_path);
-  if (impl_->source) impl_->source->start(impl_->pipeline);
+  try {
+    if (!impl_->socket_path.empty()) make_owner_only(impl_->socket_path);
+    if (impl_->source) impl_->source->start(impl_->pipeline);
+  } catch (...) {
+    // Not started: stop serving and leave no socket behind.
+    impl_->state.hub.close();
+    impl_->server->Shutdown(std::chrono::system_clock::now());
+    impl_->server->Wait();
+    if (!impl_->socket_path.empty()) ::unlink(impl_->socket_path.c_str());
+    throw;
+  }
 }
 
 PenshapeServer::~PenshapeServer() { shutdown(); }

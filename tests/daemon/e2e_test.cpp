@@ -113,6 +113,28 @@ TEST_F(DaemonE2E, HealthIsServingOnAnOwnerOnlySocketRemovedAtShutdown) {
   EXPECT_FALSE(std::filesystem::exists(socket_path()));
 }
 
+// A source that cannot start (e.g. an unreadable recording).
+class BrokenSource final : public penshape::daemon::SampleSource {
+ public:
+  void start(penshape::daemon::SampleSink& /*sink*/) override {
+    throw std::runtime_error("cannot open the recording");
+  }
+  void stop() override {}
+  [[nodiscard]] std::vector<penshape::daemon::DeviceDescriptor> devices() const override {
+    return {};
+  }
+};
+
+TEST_F(DaemonE2E, ASourceThatCannotStartLeavesNoSocket) {
+  try {
+    start({std::make_shared<BrokenSource>(), nullptr, nullptr});
+    ADD_FAILURE() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "cannot open the recording");
+  }
+  EXPECT_FALSE(std::filesystem::exists(socket_path()));
+}
+
 TEST_F(DaemonE2E, ConfigGetAndSetPerDevice) {
   config_.device_settings["056a:0010"].tolerance_fraction = 0.25;
   start();
@@ -229,6 +251,42 @@ TEST_F(DaemonE2E, SubscribeDeliversTheSourcesStrokesWithTheirAnalysis) {
   watch_ctx.TryCancel();
 }
 
+TEST_F(DaemonE2E, PreviewsArriveWhileAStrokeIsDrawn) {
+  auto source = std::make_shared<FakeSampleSource>();
+  auto analyzer = std::make_shared<penshape::testing::BoundingBoxAnalyzer>();
+  start({source, nullptr, analyzer});
+  auto live = v1::Live::NewStub(channel());
+  grpc::ClientContext ctx;
+  ctx.set_deadline(in(30s));
+  v1::SubscribeRequest request;
+  request.set_include_previews(true);
+  auto reader = live->Subscribe(&ctx, request);
+  wait_for_subscribers(1);
+  source->attach("pen0");
+  source->emit_stroke("pen0", 40, 2ms); // the first sample already asks for a preview
+
+  std::vector<double> confidences;
+  bool shape = false;
+  v1::LiveEvent event;
+  while (!(shape && static_cast<int>(confidences.size()) == analyzer->previews.load()) &&
+         reader->Read(&event)) {
+    if (event.has_shape()) shape = true;
+    if (!event.has_preview()) continue;
+    EXPECT_EQ(event.preview().stroke_id(), 1U);
+    ASSERT_EQ(event.preview().candidates_size(), 1);
+    EXPECT_EQ(event.preview().candidates(0).kind(), v1::SHAPE_KIND_CIRCLE);
+    confidences.push_back(event.preview().candidates(0).confidence());
+  }
+  ASSERT_TRUE(shape);
+  ASSERT_GE(confidences.size(), 1U);
+  EXPECT_EQ(confidences.front(), 1.0); // asked at the first sample
+  for (std::size_t i = 1; i < confidences.size(); ++i) {
+    EXPECT_GT(confidences[i], confidences[i - 1]); // later previews see more samples
+  }
+  EXPECT_LE(confidences.back(), 40.0);
+  ctx.TryCancel();
+}
+
 TEST_F(DaemonE2E, SixtyFourClientsKeepUpWhileOneSubscriberNeverReads) {
   config_.limits.subscriber_queue_events = 4096;
   auto source = std::make_shared<FakeSampleSource>();
@@ -248,7 +306,6 @@ TEST_F(DaemonE2E, SixtyFourClientsKeepUpWhileOneSubscriberNeverReads) {
   auto slow = slow_live->Subscribe(&slow_ctx, slow_request);
 
   std::vector<std::future<Received>> readers;
-  std::atomic<int> ready{0};
   for (int c = 0; c < kClients; ++c) {
     readers.push_back(std::async(std::launch::async, [&] {
       auto live = v1::Live::NewStub(channel());
@@ -574,6 +631,7 @@ TEST_F(DaemonE2E, StreamSamplesCutsTheAppsStrokesAndAnswersEach) {
 }
 
 TEST_F(DaemonE2E, SubmitStrokeAnswersAndPublishes) {
+  config_.device_settings["056a:0010"].pen_radius_mm = 2.0; // the test tablet's model
   auto analyzer = std::make_shared<penshape::testing::BoundingBoxAnalyzer>();
   start({nullptr, nullptr, analyzer});
   auto live = v1::Live::NewStub(channel());
@@ -605,6 +663,14 @@ TEST_F(DaemonE2E, SubmitStrokeAnswersAndPublishes) {
   EXPECT_EQ(event.device_id(), "app");
   EXPECT_EQ(event.stroke_finished().stroke().id(), response.stroke_id());
   sub_ctx.TryCancel();
+
+  // Without settings in the request, the tablet model's own settings apply (radius 2 mm).
+  request.clear_settings();
+  request.set_publish(false);
+  grpc::ClientContext ctx2;
+  ASSERT_TRUE(live->SubmitStroke(&ctx2, request, &response).ok());
+  EXPECT_DOUBLE_EQ(response.ink_polygon().polygons(0).outer().points(0).x(), 3.0);
+  EXPECT_DOUBLE_EQ(response.ink_polygon().polygons(0).outer().points(2).y(), 9.0);
 }
 
 } // namespace

@@ -123,6 +123,16 @@ class BoundingBoxAnalyzer final : public daemon::StrokeAnalyzer {
     ++calls;
     return analysis;
   }
+  // A circle whose confidence is the number of samples seen so far.
+  std::vector<v1::Shape> preview(const Stroke& partial, const daemon::PenSettings& /*settings*/,
+                                 const CancelHook& /*cancel*/) override {
+    v1::Shape circle;
+    circle.set_kind(v1::SHAPE_KIND_CIRCLE);
+    circle.set_confidence(static_cast<double>(partial.samples.size()));
+    ++previews;
+    return {circle};
+  }
+  std::atomic<int> previews{0};
   std::atomic<int> calls{0};
 };
 

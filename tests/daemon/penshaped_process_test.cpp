@@ -70,10 +70,11 @@ class Sandbox {
     for (auto& a : argv_storage) argv.push_back(a.data());
     argv.push_back(nullptr);
     std::vector<std::string> env_storage = env;
+    env_storage.push_back("XDG_CONFIG_HOME=" + dir_ + "/config");
     for (char** e = environ; *e != nullptr; ++e) {
       const std::string entry = *e;
       if (entry.rfind("XDG_RUNTIME_DIR=", 0) != 0 && entry.rfind("NOTIFY_SOCKET=", 0) != 0 &&
-          entry.rfind("JOURNAL_STREAM=", 0) != 0) {
+          entry.rfind("JOURNAL_STREAM=", 0) != 0 && entry.rfind("XDG_CONFIG_HOME=", 0) != 0) {
         env_storage.push_back(entry);
       }
     }
@@ -156,6 +157,24 @@ TEST(Penshaped, ReadsItsConfigFile) {
   EXPECT_FALSE(std::filesystem::exists(box.path("custom.sock")));
 }
 
+TEST(Penshaped, FindsItsConfigInXdgConfigHome) {
+  Sandbox box;
+  const std::string notify = box.listen_for_notifications();
+  std::filesystem::create_directories(box.path("config/penshape"));
+  std::ofstream(box.path("config/penshape/penshaped.conf")) << "tolerance_fraction = 0.3\n";
+  const pid_t pid = box.spawn({}, {"XDG_RUNTIME_DIR=" + box.dir(), "NOTIFY_SOCKET=" + notify});
+  ASSERT_EQ(box.next_notification(30'000).rfind("READY=1", 0), 0U) << box.stderr_text();
+  auto config = penshape::v1::Config::NewStub(
+      grpc::CreateChannel("unix:" + box.path("penshape.sock"), grpc::InsecureChannelCredentials()));
+  grpc::ClientContext ctx;
+  ctx.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(10));
+  penshape::v1::SettingsResponse settings;
+  ASSERT_TRUE(config->GetSettings(&ctx, {}, &settings).ok());
+  EXPECT_EQ(settings.effective().tolerance_fraction(), 0.3);
+  ::kill(pid, SIGTERM);
+  EXPECT_EQ(exit_code(pid), 0);
+}
+
 TEST(Penshaped, BadConfigAndCommandLineExitWithTwo) {
   Sandbox box;
   std::ofstream(box.path("bad.conf")) << "# ok\nworker_threads = many\n";
@@ -169,6 +188,12 @@ TEST(Penshaped, BadConfigAndCommandLineExitWithTwo) {
   pid = box.spawn({"--tcp", "192.0.2.1:7433"}, {"XDG_RUNTIME_DIR=" + box.dir()});
   EXPECT_EQ(exit_code(pid), 2);
   EXPECT_NE(box.stderr_text().find("not a loopback address"), std::string::npos);
+
+  // A recording that cannot be replayed: a clear message naming it, exit 1, no socket left.
+  pid = box.spawn({"--replay", box.path("missing.rec")}, {"XDG_RUNTIME_DIR=" + box.dir()});
+  EXPECT_EQ(exit_code(pid), 1);
+  EXPECT_NE(box.stderr_text().find("missing.rec"), std::string::npos) << box.stderr_text();
+  EXPECT_FALSE(std::filesystem::exists(box.path("penshape.sock")));
 
   pid = box.spawn({"--frobnicate"}, {"XDG_RUNTIME_DIR=" + box.dir()});
   EXPECT_EQ(exit_code(pid), 2);

@@ -18,7 +18,7 @@ std::string unique_abstract_address() {
 
 TEST(Server, AnswersVersionAndHealth) {
   const std::string address = unique_abstract_address();
-  penshape::daemon::PenshapeServer server({address});
+  penshape::daemon::PenshapeServer server({address, {}});
   auto channel = grpc::CreateChannel(address, grpc::InsecureChannelCredentials());
 
   auto info = penshape::v1::InfoService::NewStub(channel);
@@ -68,7 +68,7 @@ TEST(Server, AnswersVersionAndHealth) {
 }
 
 TEST(Server, RefusesAnUnbindableAddress) {
-  EXPECT_THROW(penshape::daemon::PenshapeServer({"unix:/nonexistent-dir/x/penshape.sock"}),
+  EXPECT_THROW(penshape::daemon::PenshapeServer({"unix:/nonexistent-dir/x/penshape.sock", {}}),
                std::runtime_error);
 }
 

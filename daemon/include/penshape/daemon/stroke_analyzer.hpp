@@ -2,7 +2,8 @@
 // Turns a finished stroke into its ink polygon and recognized shape. The recognizer side
 // implements it (ink polygon Q = stroke ⊕ pen disk, deconstruction, annulus fits) and converts
 // its results to the penshape.v1 messages; the daemon runs it on the geometry workers for live
-// strokes, SubmitStroke, StreamSamples and Geometry.Recognize.
+// strokes, SubmitStroke, StreamSamples and Geometry.Recognize, and asks it for previews while a
+// live stroke is drawn.
 #include <vector>
 
 #include "penshape/core/deconstruct.hpp"
@@ -26,6 +27,14 @@ class StrokeAnalyzer {
   // stroke it refuses and Cancelled when `cancel` asks to stop.
   virtual StrokeAnalysis analyze(const Stroke& stroke, const PenSettings& settings,
                                  const CancelHook& cancel) = 0;
+  // The shapes the stroke in progress would snap to if the pen lifted now, best first (the
+  // on-line decision while points arrive). `partial` holds the samples so far. Called on a worker
+  // at most once per Pipeline::kPreviewInterval per device, never twice at once for one device;
+  // the default offers none.
+  virtual std::vector<v1::Shape> preview(const Stroke& /*partial*/, const PenSettings& /*settings*/,
+                                         const CancelHook& /*cancel*/) {
+    return {};
+  }
 };
 
 } // namespace penshape::daemon

@@ -1,0 +1,276 @@
+// Live fan-out latency through the real daemon: a source emits pen samples at 1 kHz (as a tablet's
+// reader thread would), the daemon's pipeline publishes them to the shape hub, and subscribers
+// receive them — in process straight from the hub (the baseline: no gRPC) and as real gRPC
+// clients over a unix socket. Latency = sample emitted (CLOCK_MONOTONIC) → subscriber holds it.
+// Also the process's CPU use (utime + stime from /proc/self/stat) and resident memory
+// (/proc/self/status), idle and under load. The clients run in this process too, so CPU and RSS
+// include them: an upper bound for the daemon alone.
+//
+//   build/release/bench/daemon_hub_latency [--seconds N] [--json]
+#include <grpcpp/grpcpp.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "penshape/daemon/sample_source.hpp"
+#include "penshape/daemon/server.hpp"
+#include "penshape/daemon/shape_hub.hpp"
+#include "penshape/v1/live.grpc.pb.h"
+
+namespace {
+
+using namespace std::chrono_literals;
+using penshape::daemon::monotonic_us;
+namespace v1 = penshape::v1;
+
+// A pen on a 1 kHz tablet: one sample per millisecond, stamped with the time it was read.
+class PacedSource final : public penshape::daemon::SampleSource {
+ public:
+  void start(penshape::daemon::SampleSink& sink) override {
+    sink_ = &sink;
+    penshape::daemon::DeviceDescriptor d;
+    d.id = "bench";
+    d.tablet.x_max = 20000;
+    d.tablet.y_max = 15000;
+    sink.device_attached(d);
+  }
+  void stop() override {}
+  [[nodiscard]] std::vector<penshape::daemon::DeviceDescriptor> devices() const override {
+    return {};
+  }
+  // Emits `count` samples at `rate_hz`, blocking.
+  void emit(int count, int rate_hz) {
+    const auto period = std::chrono::microseconds(1'000'000 / rate_hz);
+    auto next = std::chrono::steady_clock::now();
+    for (int i = 0; i < count; ++i) {
+      std::this_thread::sleep_until(next);
+      next += period;
+      penshape::PenSample s;
+      s.x = i % 20000;
+      s.y = 100;
+      s.tip = true;
+      s.in_range = true;
+      s.time_us = monotonic_us();
+      sink_->sample("bench", 1, s);
+    }
+  }
+
+ private:
+  penshape::daemon::SampleSink* sink_ = nullptr;
+};
+
+struct ProcessUsage {
+  double cpu_seconds = 0;
+  long rss_kb = 0;
+};
+
+ProcessUsage usage() {
+  ProcessUsage u;
+  std::ifstream stat("/proc/self/stat");
+  std::string text((std::istreambuf_iterator<char>(stat)), {});
+  // Fields after the command name (which may contain spaces) start after the last ')'.
+  std::istringstream fields(text.substr(text.rfind(')') + 2));
+  std::string field;
+  unsigned long long utime = 0, stime = 0;
+  for (int i = 3; i <= 15 && fields >> field; ++i) {
+    if (i == 14) utime = std::stoull(field);
+    if (i == 15) stime = std::stoull(field);
+  }
+  u.cpu_seconds = static_cast<double>(utime + stime) / static_cast<double>(sysconf(_SC_CLK_TCK));
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("VmRSS:", 0) == 0) u.rss_kb = std::stol(line.substr(6));
+  }
+  return u;
+}
+
+struct Percentiles {
+  double p50 = 0, p99 = 0, max = 0;
+  std::size_t n = 0;
+};
+
+Percentiles percentiles(std::vector<std::int64_t> v) {
+  Percentiles p;
+  p.n = v.size();
+  if (v.empty()) return p;
+  std::sort(v.begin(), v.end());
+  auto at = [&](double q) {
+    return static_cast<double>(
+        v[std::min(v.size() - 1, static_cast<std::size_t>(q * static_cast<double>(v.size())))]);
+  };
+  p.p50 = at(0.50);
+  p.p99 = at(0.99);
+  p.max = static_cast<double>(v.back());
+  return p;
+}
+
+struct Row {
+  std::string name;
+  std::string path;
+  int subscribers = 0;
+  Percentiles latency_us;
+  std::uint64_t lost = 0;
+  double cpu_percent = 0;
+  long rss_kb = 0;
+};
+
+// Runs one case: `grpc_subscribers` gRPC clients (or one in-process hub subscription when 0).
+Row run_case(const std::string& name, int grpc_subscribers, int samples, const std::string& dir) {
+  auto source = std::make_shared<PacedSource>();
+  penshape::daemon::ServerOptions options;
+  options.address = "unix:" + dir + "/bench.sock";
+  penshape::daemon::PenshapeServer server(options, {source, nullptr, nullptr});
+
+  Row row;
+  row.name = name;
+  row.subscribers = std::max(grpc_subscribers, 1);
+  row.path = grpc_subscribers == 0 ? "hub (in process)" : "gRPC unix socket";
+  std::vector<std::vector<std::int64_t>> latencies(static_cast<std::size_t>(row.subscribers));
+  std::atomic<std::uint64_t> lost{0};
+  std::vector<std::thread> readers;
+  std::unique_ptr<penshape::daemon::Subscription> direct;
+
+  if (grpc_subscribers == 0) {
+    penshape::daemon::EventFilter filter;
+    filter.samples = true;
+    direct = server.hub().subscribe(filter, 4096);
+    readers.emplace_back([&] {
+      int got = 0;
+      while (got < samples) {
+        auto d = direct->next(1s);
+        if (!d.event) break;
+        lost += d.dropped;
+        latencies[0].push_back(monotonic_us() - d.event->samples().samples(0).time_us());
+        ++got;
+      }
+    });
+  } else {
+    for (int c = 0; c < grpc_subscribers; ++c) {
+      readers.emplace_back([&, c] {
+        auto live = v1::Live::NewStub(
+            grpc::CreateChannel(options.address, grpc::InsecureChannelCredentials()));
+        grpc::ClientContext ctx;
+        v1::SubscribeRequest request;
+        request.set_include_samples(true);
+        auto reader = live->Subscribe(&ctx, request);
+        v1::LiveEvent event;
+        int got = 0;
+        while (got < samples && reader->Read(&event)) {
+          if (event.has_dropped()) {
+            lost += event.dropped().count();
+            continue;
+          }
+          if (!event.has_samples()) continue;
+          latencies[static_cast<std::size_t>(c)].push_back(monotonic_us() -
+                                                           event.samples().samples(0).time_us());
+          ++got;
+        }
+        ctx.TryCancel();
+        (void)reader->Finish();
+      });
+    }
+  }
+  while (server.hub().subscriber_count() < static_cast<std::size_t>(row.subscribers)) {
+    std::this_thread::sleep_for(1ms);
+  }
+  std::this_thread::sleep_for(100ms); // connections settle
+  const ProcessUsage before = usage();
+  const auto t0 = std::chrono::steady_clock::now();
+  source->emit(samples, 1000);
+  for (auto& t : readers) t.join();
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const ProcessUsage after = usage();
+  direct.reset();
+  std::vector<std::int64_t> all;
+  for (auto& l : latencies) all.insert(all.end(), l.begin(), l.end());
+  row.latency_us = percentiles(std::move(all));
+  row.lost = lost;
+  row.cpu_percent = 100.0 * (after.cpu_seconds - before.cpu_seconds) / wall;
+  row.rss_kb = after.rss_kb;
+  return row;
+}
+
+Row idle_case(const std::string& dir, double seconds) {
+  penshape::daemon::ServerOptions options;
+  options.address = "unix:" + dir + "/idle.sock";
+  penshape::daemon::PenshapeServer server(options);
+  std::this_thread::sleep_for(200ms);
+  const ProcessUsage before = usage();
+  std::this_thread::sleep_for(std::chrono::duration<double>(seconds));
+  const ProcessUsage after = usage();
+  Row row;
+  row.name = "idle";
+  row.path = "no clients";
+  row.cpu_percent = 100.0 * (after.cpu_seconds - before.cpu_seconds) / seconds;
+  row.rss_kb = after.rss_kb;
+  return row;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  double seconds = 3;
+  bool json = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--json") {
+      json = true;
+    } else if (arg == "--seconds" && i + 1 < argc) {
+      seconds = std::atof(argv[++i]);
+    } else {
+      std::fprintf(stderr, "usage: daemon_hub_latency [--seconds N] [--json]\n");
+      return 2;
+    }
+  }
+  if (!(seconds > 0 && seconds <= 600)) {
+    std::fprintf(stderr, "daemon_hub_latency: --seconds must be in (0, 600]\n");
+    return 2;
+  }
+  std::string dir = (std::filesystem::temp_directory_path() / "penshape-bench-XXXXXX").string();
+  if (::mkdtemp(dir.data()) == nullptr) return 1;
+  const int samples = static_cast<int>(seconds * 1000);
+
+  std::vector<Row> rows;
+  rows.push_back(idle_case(dir, std::min(seconds, 2.0)));
+  rows.push_back(run_case("baseline: hub direct", 0, samples, dir));
+  rows.push_back(run_case("gRPC, 1 subscriber", 1, samples, dir));
+  rows.push_back(run_case("gRPC, 8 subscribers", 8, samples, dir));
+  std::filesystem::remove_all(dir);
+
+  if (json) {
+    for (const Row& r : rows) {
+      std::printf(
+          "{\"case\":\"%s\",\"path\":\"%s\",\"subscribers\":%d,\"rate_hz\":1000,\"events\":%zu,"
+          "\"p50_us\":%.0f,\"p99_us\":%.0f,\"max_us\":%.0f,\"lost\":%llu,\"cpu_percent\":%.2f,"
+          "\"rss_kb\":%ld}\n",
+          r.name.c_str(), r.path.c_str(), r.subscribers, r.latency_us.n, r.latency_us.p50,
+          r.latency_us.p99, r.latency_us.max, static_cast<unsigned long long>(r.lost),
+          r.cpu_percent, r.rss_kb);
+    }
+    return 0;
+  }
+  std::printf(
+      "sample emitted at 1 kHz -> subscriber receives (us); CPU %% of one core and RSS of "
+      "the whole process (daemon + in-process clients)\n");
+  std::printf("%-22s %-18s %5s %8s %8s %8s %8s %6s %8s %9s\n", "case", "path", "subs", "events",
+              "p50_us", "p99_us", "max_us", "lost", "cpu_%", "rss_MB");
+  for (const Row& r : rows) {
+    std::printf("%-22s %-18s %5d %8zu %8.0f %8.0f %8.0f %6llu %8.2f %9.1f\n", r.name.c_str(),
+                r.path.c_str(), r.subscribers, r.latency_us.n, r.latency_us.p50, r.latency_us.p99,
+                r.latency_us.max, static_cast<unsigned long long>(r.lost), r.cpu_percent,
+                static_cast<double>(r.rss_kb) / 1024.0);
+  }
+  return 0;
+}
