@@ -231,12 +231,18 @@ TEST(LiveCli, WatchWritesOneSvgPerStroke) {
   ASSERT_EQ(paths.size(), 1U);
   const auto cmds = parse_path(*attribute(*paths[0], "d"));
   ASSERT_EQ(cmds.size(), 5U); // M, 3 L, Z
+  // The picture is in pixels: the scale comes from the ink polygon, the stroke's box grown by
+  // the pen radius (1 mm) on each side.
+  const auto ink = parse_path(*attribute(*elements(*find_by_id(svg, "ink"), "path")[0], "d"));
+  ASSERT_EQ(ink.size(), 5U);
+  const BoxMm box = tip_box_mm(stroke);
+  const double s = std::abs(ink[1].args[0] - ink[0].args[0]) / (box.x1 - box.x0 + 2.0);
   const auto want = expected_square(stroke);
-  const double side = want[1].first - want[0].first;
+  const double side = (want[1].first - want[0].first) * s;
   for (std::size_t i = 0; i < 4; ++i) {
     const auto& a = cmds[i].args;
     const auto& b = cmds[(i + 1) % 4].args;
-    EXPECT_NEAR(std::hypot(b[0] - a[0], b[1] - a[1]), side, 1e-3) << "edge " << i;
+    EXPECT_NEAR(std::hypot(b[0] - a[0], b[1] - a[1]), side, 1e-2) << "edge " << i;
   }
   EXPECT_NE(text.find("<title>stroke 1, "), std::string::npos);
   EXPECT_NE(text.find(": square (H &lt;= "), std::string::npos);

@@ -89,6 +89,11 @@ TEST(SvgFigure, DeconstructionHasTheLayersOfThePaperFigures) {
   const ptree* offset = find_by_id(root, "offset");
   const auto pieces = elements(*offset, "path");
   ASSERT_EQ(pieces.size(), 2U * (1 + 3));
+  // The SVG is in pixels: the model is scaled uniformly. The scale, from the first stadium's
+  // width (2r), must fit the picture: the drawing's larger side is max_pixels.
+  const auto first = parse_path(*attribute(*pieces[1], "d"));
+  ASSERT_EQ(first.size(), 8U);
+  const double s = dist(end_point(first[1]), 0, end_point(first[3]), 0) / (2 * r);
   const auto& p_ring = f.p->polygons[0].outer;
   for (std::size_t e = 0; e < 3; ++e) {
     const auto cmds = parse_path(*attribute(*pieces[1 + e], "d"));
@@ -96,28 +101,31 @@ TEST(SvgFigure, DeconstructionHasTheLayersOfThePaperFigures) {
     ASSERT_EQ(cmds.size(), 8U) << e;
     const PointD a = to_double(p_ring[e]);
     const PointD b = to_double(p_ring[(e + 1) % 3]);
-    const double edge = std::hypot(b.x - a.x, b.y - a.y);
+    const double edge = std::hypot(b.x - a.x, b.y - a.y) * s;
     EXPECT_NEAR(dist(end_point(cmds[0]), 0, end_point(cmds[1]), 0), edge, 1e-3) << e;
-    EXPECT_NEAR(dist(end_point(cmds[1]), 0, end_point(cmds[3]), 0), 2 * r, 1e-3) << e;
+    EXPECT_NEAR(dist(end_point(cmds[1]), 0, end_point(cmds[3]), 0), 2 * r * s, 1e-3) << e;
     EXPECT_NEAR(dist(end_point(cmds[3]), 0, end_point(cmds[4]), 0), edge, 1e-3) << e;
     for (const std::size_t i : {2U, 3U, 5U, 6U}) {
       EXPECT_EQ(cmds[i].op, 'A');
-      EXPECT_DOUBLE_EQ(cmds[i].args[0], r); // true circular arcs of the pen radius
-      EXPECT_DOUBLE_EQ(cmds[i].args[1], r);
+      EXPECT_NEAR(cmds[i].args[0], r * s, 1e-3); // true circular arcs of the pen radius
+      EXPECT_NEAR(cmds[i].args[1], r * s, 1e-3);
     }
   }
   // The band: offset(P, r + eps) with offset(P, r - eps) masked out.
   const auto band_pieces = elements(*find_by_id(root, "band"), "path");
   ASSERT_EQ(band_pieces.size(), 4U); // fill pass only: no outline for the band
-  EXPECT_DOUBLE_EQ(parse_path(*attribute(*band_pieces[1], "d"))[2].args[0], r + 1e6);
+  EXPECT_NEAR(parse_path(*attribute(*band_pieces[1], "d"))[2].args[0], (r + 1e6) * s, 1e-3);
   const auto hole_pieces = elements(*find_by_id(root, "band-hole"), "path");
   ASSERT_EQ(hole_pieces.size(), 4U);
-  EXPECT_DOUBLE_EQ(parse_path(*attribute(*hole_pieces[1], "d"))[2].args[0], r - 1e6);
+  EXPECT_NEAR(parse_path(*attribute(*hole_pieces[1], "d"))[2].args[0], (r - 1e6) * s, 1e-3);
 
-  // Everything lies inside the viewBox.
+  // Everything lies inside the picture, whose drawing is at most 900 pixels (the default).
   std::istringstream vb(*attribute(root, "viewBox"));
   double x0, y0, w, h;
   vb >> x0 >> y0 >> w >> h;
+  EXPECT_LE(w, 900 + 1e-3);
+  EXPECT_GT(w, 800); // the wheel is about as wide as high
+  EXPECT_EQ(std::stod(*attribute(root, "width")), std::ceil(w));
   for (const auto* path : elements(root, "path")) {
     for (const auto& c : parse_path(*attribute(*path, "d"))) {
       if (c.op != 'M' && c.op != 'L') continue;
@@ -157,19 +165,20 @@ TEST(SvgFigure, StrokeWithCircleAndArcShapes) {
   EXPECT_EQ(elements(*find_by_id(root, "samples"), "circle").size(), gesture.size());
   // No ink polygon given: the ink is the samples swept by the pen (one stadium per sample).
   EXPECT_EQ(elements(*find_by_id(root, "ink"), "path").size(), 2 * gesture.size());
+  // The center line: a circle of radius 10 mm, which gives the pixel scale.
+  const auto line = parse_path(*attribute(*elements(*find_by_id(root, "shape"), "path")[0], "d"));
+  ASSERT_EQ(line.size(), 4U);
+  const double s = line[1].args[0] / 10;
+  EXPECT_NEAR(dist(end_point(line[0]), 0, end_point(line[1]), 0), 20 * s, 1e-3);
   // The shape's ink: an annulus of radii 10 ± 1.5 as four half-circle arcs.
   const auto ring =
       parse_path(*attribute(*elements(*find_by_id(root, "shape-ink"), "path")[0], "d"));
   std::vector<double> radii;
   for (const auto& c : ring) {
-    if (c.op == 'A') radii.push_back(c.args[0]);
+    if (c.op == 'A') radii.push_back(c.args[0] / s);
   }
-  EXPECT_EQ(radii, (std::vector<double>{11.5, 11.5, 8.5, 8.5}));
-  // The center line: a circle of radius 10.
-  const auto line = parse_path(*attribute(*elements(*find_by_id(root, "shape"), "path")[0], "d"));
-  ASSERT_EQ(line.size(), 4U);
-  EXPECT_DOUBLE_EQ(line[1].args[0], 10);
-  EXPECT_NEAR(dist(end_point(line[0]), 0, end_point(line[1]), 0), 20, 1e-3);
+  ASSERT_EQ(radii.size(), 4U);
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_NEAR(radii[i], i < 2 ? 11.5 : 8.5, 1e-3);
 
   // An open arc: a quarter circle drawn with the pen is an arc band with round caps.
   ShapeOutline arc;
@@ -184,12 +193,13 @@ TEST(SvgFigure, StrokeWithCircleAndArcShapes) {
       *attribute(*elements(*find_by_id(doc2.get_child("svg"), "shape-ink"), "path")[0], "d"));
   std::vector<double> arc_radii;
   for (const auto& c : band) {
-    if (c.op == 'A') arc_radii.push_back(c.args[0]);
+    if (c.op == 'A') arc_radii.push_back(c.args[0] / s);
   }
-  EXPECT_EQ(arc_radii, (std::vector<double>{11.5, 1.5, 8.5, 1.5}));
-  // Outer arc: from (40 + 1.5, 30) a quarter turn in SVG's positive direction (y down) to
-  // (30, 41.5), in model coordinates shifted by the figure's margin.
-  EXPECT_NEAR(dist(end_point(band[0]), 0, end_point(band[1]), 0), 11.5 * std::sqrt(2.0), 1e-3);
+  ASSERT_EQ(arc_radii.size(), 4U);
+  const double want[] = {11.5, 1.5, 8.5, 1.5};
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_NEAR(arc_radii[i], want[i], 1e-3);
+  // Outer arc: a quarter turn of radius 11.5 mm.
+  EXPECT_NEAR(dist(end_point(band[0]), 0, end_point(band[1]), 0), 11.5 * std::sqrt(2.0) * s, 1e-3);
   EXPECT_EQ(band[1].args[4], 1); // sweep flag: increasing angle, as the model's y axis is down
 }
 

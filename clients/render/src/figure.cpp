@@ -58,18 +58,22 @@ class Bounds {
   std::size_t count = 0;
 };
 
-// Model → screen: a translation, and a reflection of y when the model's y axis points up. It is
-// an isometry, so radii and widths keep their values.
+// Model → screen: a translation, a reflection of y when the model's y axis points up, and a
+// uniform scale to pixels. SVG renderers work in 32-bit floats and lay out text in fixed point,
+// so coordinates stay in pixel range whatever the model's units (maps in 1e8 units included).
 struct View {
   Bounds box;
-  double margin = 0.0;
+  double margin = 0.0; // model units
   bool y_up = true;
+  double scale = 1.0; // pixels per model unit
   [[nodiscard]] PointD map(PointD p) const {
-    return {p.x - box.min_x + margin, y_up ? box.max_y - p.y + margin : p.y - box.min_y + margin};
+    return {(p.x - box.min_x + margin) * scale,
+            (y_up ? box.max_y - p.y + margin : p.y - box.min_y + margin) * scale};
   }
+  [[nodiscard]] double len(double model_length) const { return model_length * scale; }
   [[nodiscard]] double angle(double model_angle) const { return y_up ? -model_angle : model_angle; }
-  [[nodiscard]] double width() const { return box.max_x - box.min_x + 2 * margin; }
-  [[nodiscard]] double height() const { return box.max_y - box.min_y + 2 * margin; }
+  [[nodiscard]] double width() const { return (box.max_x - box.min_x + 2 * margin) * scale; }
+  [[nodiscard]] double height() const { return (box.max_y - box.min_y + 2 * margin) * scale; }
   [[nodiscard]] double size() const { return std::max(width(), height()); }
 };
 
@@ -189,11 +193,11 @@ Skeleton shape_skeleton(const View& view, const ShapeOutline& s) {
       add_closed_chain(sk, pts);
       break;
     case ShapeOutline::Kind::kCircle:
-      sk.circles.push_back({view.map(s.center), s.radius});
+      sk.circles.push_back({view.map(s.center), view.len(s.radius)});
       break;
     case ShapeOutline::Kind::kArc:
-      sk.arcs.push_back(
-          {view.map(s.center), s.radius, view.angle(s.start_rad), view.angle(s.sweep_rad)});
+      sk.arcs.push_back({view.map(s.center), view.len(s.radius), view.angle(s.start_rad),
+                         view.angle(s.sweep_rad)});
       break;
   }
   return sk;
@@ -315,10 +319,10 @@ void shape_center_line(std::string& svg, const View& view, const ShapeOutline& s
       detail::ring(p, pts);
       break;
     case ShapeOutline::Kind::kCircle:
-      p.circle(view.map(s.center), s.radius, true);
+      p.circle(view.map(s.center), view.len(s.radius), true);
       break;
     case ShapeOutline::Kind::kArc:
-      detail::arc_line(p, view.map(s.center), s.radius, view.angle(s.start_rad),
+      detail::arc_line(p, view.map(s.center), view.len(s.radius), view.angle(s.start_rad),
                        view.angle(s.sweep_rad));
       break;
   }
@@ -328,38 +332,43 @@ void shape_center_line(std::string& svg, const View& view, const ShapeOutline& s
          "\" stroke-linejoin=\"round\" stroke-linecap=\"round\"/></g>\n";
 }
 
-View make_view(Bounds box, double pad, bool y_up) {
+View make_view(Bounds box, double pad, bool y_up, int max_pixels) {
   if (box.count == 0) box.add({0, 0});
   View view;
   view.box = box;
   view.y_up = y_up;
   const double extent = std::max(box.max_x - box.min_x, box.max_y - box.min_y);
   view.margin = pad + std::max(extent * 0.05, 1e-6);
+  view.scale = std::max(1, max_pixels) / view.size(); // size() at scale 1: model units
   return view;
 }
 
-std::string open_svg(const View& view, int max_pixels, const std::string& caption) {
-  const double scale = std::max(1, max_pixels) / view.size();
-  std::string svg = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  svg += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" +
-         num(std::ceil(view.width() * scale)) + "\" height=\"" +
-         num(std::ceil(view.height() * scale)) + "\" viewBox=\"0 0 " + num(view.width()) + " " +
-         num(view.height()) + "\">\n";
-  svg += "<title>" + escape(caption) + "</title>\n";
-  svg += "<rect id=\"background\" x=\"0\" y=\"0\" width=\"" + num(view.width()) + "\" height=\"" +
-         num(view.height()) + "\" fill=\"white\"/>\n";
-  return svg;
+// The caption gets a strip of its own above the drawing, so it never covers the geometry.
+double caption_height(const View& view, const std::string& caption) {
+  return caption.empty() ? 0.0 : std::max(16.0, view.size() * 0.04);
 }
 
-void close_svg(std::string& svg, const View& view, const std::string& caption) {
+std::string open_svg(const View& view, const std::string& caption) {
+  const double strip = caption_height(view, caption);
+  const double height = view.height() + strip;
+  std::string svg = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  svg += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" +
+         num(std::ceil(view.width())) + "\" height=\"" + num(std::ceil(height)) +
+         "\" viewBox=\"0 0 " + num(view.width()) + " " + num(height) + "\">\n";
+  svg += "<title>" + escape(caption) + "</title>\n";
+  svg += "<rect id=\"background\" x=\"0\" y=\"0\" width=\"" + num(view.width()) + "\" height=\"" +
+         num(height) + "\" fill=\"white\"/>\n";
   if (!caption.empty()) {
-    const double font = view.size() * 0.025;
-    svg += "<text id=\"caption\" x=\"" + num(font * 0.5) + "\" y=\"" + num(font * 1.2) +
+    const double font = strip * 0.6;
+    svg += "<text id=\"caption\" x=\"" + num(font * 0.5) + "\" y=\"" + num(strip * 0.75) +
            "\" font-family=\"sans-serif\" font-size=\"" + num(font) + "\" fill=\"#222\">" +
            escape(caption) + "</text>\n";
   }
-  svg += "</svg>\n";
+  svg += "<g id=\"drawing\" transform=\"translate(0 " + num(strip) + ")\">\n";
+  return svg;
 }
+
+void close_svg(std::string& svg) { svg += "</g>\n</svg>\n"; }
 
 void check_size(std::size_t vertices) {
   if (vertices > kMaxFigureVertices) {
@@ -379,18 +388,20 @@ std::string deconstruction_svg(const DeconstructionFigure& f) {
   Bounds box;
   add_polygon_set(box, f.q);
   if (f.p) add_polygon_set(box, *f.p);
-  const View view = make_view(box, f.radius + f.tolerance, f.y_up);
+  const View view = make_view(box, f.radius + f.tolerance, f.y_up, f.max_pixels);
+  const double r = view.len(f.radius);
+  const double eps = view.len(f.tolerance);
   const double lw = view.size() * 0.002;
 
-  std::string svg = open_svg(view, f.max_pixels, f.caption);
+  std::string svg = open_svg(view, f.caption);
   if (f.p && !f.p->empty()) {
     const Skeleton sk = polygon_set_skeleton(view, *f.p);
-    band_group(svg, view, sk, f.radius, f.tolerance, true);
-    union_group(svg, "offset", swept_pieces(sk, f.radius, true), "#9a9a9a", "#1f3f8f", lw, 0.45);
+    band_group(svg, view, sk, r, eps, true);
+    union_group(svg, "offset", swept_pieces(sk, r, true), "#9a9a9a", "#1f3f8f", lw, 0.45);
   }
   polygon_outline(svg, "Q", view, f.q, "#1f77b4", 0.08, "#1f77b4", 2 * lw);
   if (f.p && !f.p->empty()) polygon_outline(svg, "P", view, *f.p, "#2ca02c", 0.35, "#2ca02c", lw);
-  close_svg(svg, view, f.caption);
+  close_svg(svg);
   return svg;
 }
 
@@ -402,10 +413,12 @@ std::string stroke_svg(const StrokeFigure& f) {
   for (const auto& p : f.samples) box.add(p);
   add_polygon_set(box, f.ink);
   if (f.shape) add_shape_bounds(box, *f.shape);
-  const View view = make_view(box, f.pen_radius + f.tolerance, f.y_up);
+  const View view = make_view(box, f.pen_radius + f.tolerance, f.y_up, f.max_pixels);
+  const double r = view.len(f.pen_radius);
+  const double eps = view.len(f.tolerance);
   const double lw = view.size() * 0.002;
 
-  std::string svg = open_svg(view, f.max_pixels, f.caption);
+  std::string svg = open_svg(view, f.caption);
   // The ink: the daemon's polygon Q when given, else the samples swept by the pen disk.
   if (!f.ink.empty()) {
     polygon_outline(svg, "ink", view, f.ink, "#7b4fa0", 0.25, "#7b4fa0", lw);
@@ -416,17 +429,16 @@ std::string stroke_svg(const StrokeFigure& f) {
       const PointD b = view.map(f.samples[i + 1 < f.samples.size() ? i + 1 : i]);
       sk.segments.push_back({a, b});
     }
-    union_group(svg, "ink", swept_pieces(sk, f.pen_radius, false), "#7b4fa0", "#7b4fa0", lw, 0.3);
+    union_group(svg, "ink", swept_pieces(sk, r, false), "#7b4fa0", "#7b4fa0", lw, 0.3);
   }
   if (f.shape) {
     const Skeleton sk = shape_skeleton(view, *f.shape);
-    band_group(svg, view, sk, f.pen_radius, f.tolerance, false);
-    union_group(svg, "shape-ink", swept_pieces(sk, f.pen_radius, false), "#9a9a9a", "#444444",
-                lw * 0.5, 0.35);
+    band_group(svg, view, sk, r, eps, false);
+    union_group(svg, "shape-ink", swept_pieces(sk, r, false), "#9a9a9a", "#444444", lw * 0.5, 0.35);
     shape_center_line(svg, view, *f.shape, 2 * lw);
   }
   if (!f.samples.empty()) {
-    const double dot = std::max(f.pen_radius * 0.12, view.size() * 0.0015);
+    const double dot = std::max(r * 0.12, view.size() * 0.0015);
     svg += "<g id=\"samples\" fill=\"#111\">\n";
     for (const auto& s : f.samples) {
       const PointD p = view.map(s);
@@ -434,7 +446,7 @@ std::string stroke_svg(const StrokeFigure& f) {
     }
     svg += "</g>\n";
   }
-  close_svg(svg, view, f.caption);
+  close_svg(svg);
   return svg;
 }
 

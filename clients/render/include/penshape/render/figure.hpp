@@ -6,8 +6,10 @@
 // shape's ink.
 //
 // Every group has an id ("Q", "P", "offset", "band", "samples", "ink", "shape", "shape-ink") so
-// tools and tests can find the layers. Coordinates are model units (mm for strokes); the SVG's
-// viewBox spans the content with a margin, its width/height are at most `max_pixels`.
+// tools and tests can find the layers. The SVG's coordinates are pixels: the model (any units,
+// mm for strokes) is scaled uniformly so the drawing with its margin is `max_pixels` on its
+// larger side (renderers work in 32-bit floats; huge model coordinates would lose precision).
+// The caption sits in a strip above the drawing (the group "drawing" is translated below it).
 //
 // Limits: at most kMaxFigureVertices vertices in all (P, Q, samples, shape), else
 // std::invalid_argument naming the count; non-finite coordinates or radii are
@@ -45,7 +47,7 @@ struct DeconstructionFigure {
   double tolerance = 0.0;      // eps >= 0; 0 leaves the band out
   std::string caption;         // e.g. "YES  r = 2  eps = 1  (335 vertices)"
   bool y_up = true;            // model y axis points up (maps, the paper); false for tablets
-  int max_pixels = 900;        // the larger side of the picture, pixels
+  int max_pixels = 900;        // the larger side of the drawing, pixels (caption strip extra)
 };
 
 struct StrokeFigure {
@@ -55,8 +57,8 @@ struct StrokeFigure {
   std::optional<ShapeOutline> shape;
   double tolerance = 0.0; // eps, mm: band around the shape's ink (0 = no band)
   std::string caption;
-  bool y_up = false; // tablets: y grows downwards
-  int max_pixels = 900;
+  bool y_up = false;    // tablets: y grows downwards
+  int max_pixels = 900; // the larger side of the drawing, pixels (caption strip extra)
 };
 
 // The SVG document (UTF-8, standalone, SVG 1.1).
