@@ -113,7 +113,8 @@ struct ScriptedStroke {
 
 // The $1 rectangle scaled into the window's middle (keeping its aspect), as a board script that
 // draws it, waits for the daemon, takes a screenshot, undoes, takes another, and quits.
-ScriptedStroke rectangle_script(const std::string& shot1, const std::string& shot2) {
+ScriptedStroke rectangle_script(const std::string& shot1, const std::string& shot2,
+                                const std::string& prelude) {
   const auto gesture = read_dollar_gesture(dollar_rectangle_path());
   int x0 = 1 << 30, y0 = 1 << 30, x1 = -(1 << 30), y1 = -(1 << 30);
   for (const auto& p : gesture) {
@@ -122,6 +123,7 @@ ScriptedStroke rectangle_script(const std::string& shot1, const std::string& sho
   const double scale = std::min(440.0 / (x1 - x0), 360.0 / (y1 - y0));
   ScriptedStroke s;
   std::ostringstream script;
+  script << prelude;
   for (std::size_t i = 0; i < gesture.size(); ++i) {
     const int x = 180 + static_cast<int>(std::lround((gesture[i].x - x0) * scale));
     const int y = 120 + static_cast<int>(std::lround((gesture[i].y - y0) * scale));
@@ -171,10 +173,12 @@ struct BoardRun {
   ScriptedStroke stroke;
 };
 
-BoardRun run_board(const std::string& display, const std::string& address, const std::string& tag) {
+BoardRun run_board(const std::string& display, const std::string& address, const std::string& tag,
+                   const std::string& prelude = "") {
   const auto dir = temp_dir(tag);
   BoardRun run;
-  run.stroke = rectangle_script((dir / "snapped.bmp").string(), (dir / "undone.bmp").string());
+  run.stroke =
+      rectangle_script((dir / "snapped.bmp").string(), (dir / "undone.bmp").string(), prelude);
   std::ofstream(dir / "script.txt") << run.stroke.script_text;
   auto [code, out] =
       run_program({PENSHAPE_BOARD, "--address", address, "--script", (dir / "script.txt").string()},
@@ -207,14 +211,16 @@ class Board : public ::testing::Test {
 
 TEST_F(Board, ScriptedRectangleSnapsToTheDaemonsSquareAndUndoRestoresTheStroke) {
   TestDaemon daemon("board");
-  const BoardRun run = run_board(xvfb_->display(), daemon.address, "double");
+  // Before drawing: a wider pen (+, x1.25) and a looser tolerance (], x1.25, twice).
+  const BoardRun run =
+      run_board(xvfb_->display(), daemon.address, "double", "key =\nkey ]\nkey ]\n");
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_NE(run.output.find("stroke 1 is a square"), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("undo: unsnapped"), std::string::npos) << run.output;
-  // The daemon got the board's settings (defaults: radius 1 mm, tolerance 0.5).
+  // The daemon analysed the stroke with the board's adjusted settings (from 1 mm and 0.5).
   EXPECT_EQ(daemon.analyzer->calls.load(), 1);
-  EXPECT_DOUBLE_EQ(daemon.analyzer->last_settings.pen_radius_mm, 1.0);
-  EXPECT_DOUBLE_EQ(daemon.analyzer->last_settings.tolerance_fraction, 0.5);
+  EXPECT_DOUBLE_EQ(daemon.analyzer->last_settings.pen_radius_mm, 1.25);
+  EXPECT_DOUBLE_EQ(daemon.analyzer->last_settings.tolerance_fraction, 0.5 * 1.25 * 1.25);
 
   // The square the test double answers, computed here from the scripted points (window pixels
   // → mm at 4 px/mm → the square → pixels).
