@@ -202,17 +202,38 @@ Row run_case(const std::string& name, int grpc_subscribers, int samples, const s
   return row;
 }
 
-Row idle_case(const std::string& dir, double seconds) {
+// No events; `subscribers` gRPC clients subscribed and waiting (as idle drawing apps would be).
+Row idle_case(const std::string& dir, double seconds, int subscribers) {
   penshape::daemon::ServerOptions options;
   options.address = "unix:" + dir + "/idle.sock";
   penshape::daemon::PenshapeServer server(options);
+  std::vector<std::unique_ptr<grpc::ClientContext>> contexts;
+  std::vector<std::thread> clients;
+  for (int c = 0; c < subscribers; ++c) {
+    contexts.push_back(std::make_unique<grpc::ClientContext>());
+    clients.emplace_back([&address = options.address, ctx = contexts.back().get()] {
+      auto live =
+          v1::Live::NewStub(grpc::CreateChannel(address, grpc::InsecureChannelCredentials()));
+      auto reader = live->Subscribe(ctx, {});
+      v1::LiveEvent event;
+      while (reader->Read(&event)) {
+      }
+      (void)reader->Finish();
+    });
+  }
+  while (server.hub().subscriber_count() < static_cast<std::size_t>(subscribers)) {
+    std::this_thread::sleep_for(1ms);
+  }
   std::this_thread::sleep_for(200ms);
   const ProcessUsage before = usage();
   std::this_thread::sleep_for(std::chrono::duration<double>(seconds));
   const ProcessUsage after = usage();
+  for (auto& ctx : contexts) ctx->TryCancel();
+  for (auto& t : clients) t.join();
   Row row;
-  row.name = "idle";
-  row.path = "no clients";
+  row.name = subscribers == 0 ? "idle" : "idle, subscribed";
+  row.subscribers = subscribers;
+  row.path = subscribers == 0 ? "no clients" : "gRPC unix socket";
   row.cpu_percent = 100.0 * (after.cpu_seconds - before.cpu_seconds) / seconds;
   row.rss_kb = after.rss_kb;
   return row;
@@ -243,7 +264,8 @@ int main(int argc, char** argv) {
   const int samples = static_cast<int>(seconds * 1000);
 
   std::vector<Row> rows;
-  rows.push_back(idle_case(dir, std::min(seconds, 2.0)));
+  rows.push_back(idle_case(dir, std::min(seconds, 2.0), 0));
+  rows.push_back(idle_case(dir, std::min(seconds, 2.0), 8));
   rows.push_back(run_case("baseline: hub direct", 0, samples, dir));
   rows.push_back(run_case("gRPC, 1 subscriber", 1, samples, dir));
   rows.push_back(run_case("gRPC, 8 subscribers", 8, samples, dir));

@@ -23,7 +23,15 @@ Rational exact(double v) {
 
 ExactPoint exact(PointD p) { return {exact(p.x), exact(p.y)}; }
 
-double to_double(const Rational& v) { return v.get_d(); }
+double to_double(const Rational& v) {
+  // get_d truncates towards zero; step to the neighbour when that one is nearer.
+  const double d = v.get_d();
+  const double away = std::nextafter(d, sgn(v) < 0 ? -HUGE_VAL : HUGE_VAL);
+  if (!std::isfinite(away)) return d;
+  const Rational gap_d = abs(v - exact(d));
+  const Rational gap_away = abs(v - exact(away));
+  return gap_away < gap_d ? away : d;
+}
 
 PointD to_double(const ExactPoint& p) { return {to_double(p.x), to_double(p.y)}; }
 

@@ -1,9 +1,32 @@
 // The Geometry service's backend on the core library's engines. Compiled only when the engine is
-// linked (PENSHAPE_DAEMON_WITH_ENGINE), because penshape::deconstruct() lives in core/src/engine.
+// linked (PENSHAPE_DAEMON_WITH_ENGINE).
+#include "penshape/core/arc_offset.hpp"
 #include "penshape/daemon/geometry_backend.hpp"
 
 namespace penshape::daemon {
 namespace {
+
+void to_proto(const PointD& p, v1::Point* out) {
+  out->set_x(p.x);
+  out->set_y(p.y);
+}
+
+void to_proto(const CurveRing& ring, v1::CurvedRing* out) {
+  for (const BoundaryCurve& c : ring.curves) {
+    v1::BoundaryPiece* piece = out->add_pieces();
+    if (c.kind == BoundaryCurve::Kind::kSegment) {
+      to_proto(c.start, piece->mutable_segment()->mutable_start());
+      to_proto(c.end, piece->mutable_segment()->mutable_end());
+    } else {
+      v1::CircularArc* arc = piece->mutable_arc();
+      to_proto(c.start, arc->mutable_start());
+      to_proto(c.end, arc->mutable_end());
+      to_proto(c.center, arc->mutable_center());
+      arc->set_radius(c.radius);
+      arc->set_counterclockwise(true); // offset_with_arcs: every arc runs counterclockwise
+    }
+  }
+}
 
 class CoreGeometryBackend final : public GeometryBackend {
  public:
@@ -11,6 +34,19 @@ class CoreGeometryBackend final : public GeometryBackend {
                                 const CancelHook& cancel,
                                 const DeconstructLimits& limits) override {
     return penshape::deconstruct(q, params, cancel, limits);
+  }
+
+  v1::CurvedRegion offset_boundary(const PolygonSet& p, const Rational& radius,
+                                   const CancelHook& /*cancel*/) override {
+    const CurvedRegion region = offset_with_arcs(p, to_double(radius));
+    v1::CurvedRegion out;
+    for (const CurvedPolygon& polygon : region.polygons) {
+      v1::CurvedPolygon* q = out.add_polygons();
+      to_proto(polygon.outer, q->mutable_outer());
+      for (const CurveRing& hole : polygon.holes) to_proto(hole, q->add_holes());
+    }
+    out.set_max_error(region.max_error);
+    return out;
   }
 };
 

@@ -2,11 +2,15 @@
 #include <pthread.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <future>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <thread>
@@ -14,7 +18,9 @@
 #include "log.hpp"
 #include "penshape/core/version.hpp"
 #include "penshape/daemon/config.hpp"
+#include "penshape/daemon/device_manager_source.hpp"
 #include "penshape/daemon/server.hpp"
+#include "penshape/drivers/recording.hpp"
 #include "sd_notify.hpp"
 #include "sources.hpp"
 
@@ -34,7 +40,9 @@ options:
                              (default: unix:$XDG_RUNTIME_DIR/penshape.sock, owner-only)
   --tcp HOST:PORT            also listen on TCP; loopback hosts only unless
   --tcp-allow-non-loopback   is given too
-  --replay FILE              replay a recording as if it were a live tablet
+  --replay FILE              replay a recording (hid-recorder format) at its recorded pace as
+                             the only tablet, instead of the tablets attached to this machine
+  --replay-delay SECONDS     wait this long after startup before replaying (default 0)
   --help                     this text
   --version                  the version
 
@@ -49,6 +57,7 @@ struct CommandLine {
   std::string tcp;
   bool tcp_allow_non_loopback = false;
   std::string replay;
+  double replay_delay_seconds = 0;
 };
 
 // Blocks SIGINT/SIGTERM in every thread, then waits for one on a dedicated thread, so the
@@ -102,6 +111,16 @@ int main(int argc, char** argv) {
       cli.tcp_allow_non_loopback = true;
       continue;
     }
+    if (arg == "--replay-delay" && i + 1 < argc) {
+      char* end = nullptr;
+      cli.replay_delay_seconds = std::strtod(argv[++i], &end);
+      if (*end != '\0' || !(cli.replay_delay_seconds >= 0 && cli.replay_delay_seconds <= 3600)) {
+        std::fprintf(stderr, "penshaped: --replay-delay wants seconds in [0, 3600], got '%s'\n",
+                     argv[i]);
+        return 2;
+      }
+      continue;
+    }
     if ((arg == "--config" && value(&cli.config_path)) ||
         (arg == "--listen" && value(&cli.listen)) || (arg == "--tcp" && value(&cli.tcp)) ||
         (arg == "--replay" && value(&cli.replay))) {
@@ -134,27 +153,48 @@ int main(int argc, char** argv) {
 
   const sigset_t signals = block_termination_signals();
   try {
+    // With --replay the recording is the only device (read now, so a bad file fails before the
+    // daemon serves); otherwise the tablets attached to this machine, with hotplug.
+    std::optional<penshape::drivers::Recording> recording;
+    if (!cli.replay.empty()) {
+      try {
+        recording = penshape::drivers::load_recording_file(cli.replay);
+      } catch (const std::exception& e) {
+        throw std::runtime_error("--replay " + cli.replay + ": " + e.what());
+      }
+    }
+    auto source = std::make_shared<penshape::daemon::DeviceManagerSource>(
+        recording ? nullptr : penshape::drivers::make_hidraw_backend());
     penshape::daemon::ServerParts parts;
-    parts.source = cli.replay.empty() ? penshape::daemon::make_device_source()
-                                      : penshape::daemon::make_replay_source(cli.replay);
+    parts.source = source;
     parts.geometry = penshape::daemon::make_geometry_backend();
     parts.analyzer = penshape::daemon::make_stroke_analyzer();
-    if (!parts.source) log(LogLevel::kWarning, "no device manager in this build: no tablets");
     if (!parts.geometry) log(LogLevel::kWarning, "no deconstruction engine in this build");
-    if (!parts.analyzer) log(LogLevel::kWarning, "no stroke analyzer in this build");
+    if (!parts.analyzer) {
+      log(LogLevel::kWarning, "no stroke analyzer in this build: strokes without shapes");
+    }
 
     penshape::daemon::PenshapeServer server(options, parts);
     std::string where;
     for (const auto& a : server.addresses()) where += (where.empty() ? "" : ", ") + a;
     log(LogLevel::kInfo, "penshaped " + penshape::version() + " listening on " + where);
     penshape::daemon::sd_notify_state("READY=1\nSTATUS=listening on " + where);
-    std::thread waiter([&server, signals] {
+    std::promise<void> stopping;
+    std::shared_future<void> stopped = stopping.get_future().share();
+    std::thread waiter([&server, &stopping, signals] {
       int sig = 0;
       sigwait(&signals, &sig);
       log(LogLevel::kInfo, std::string(strsignal(sig)) + ", shutting down");
       penshape::daemon::sd_notify_state("STOPPING=1");
+      stopping.set_value();
       server.shutdown();
     });
+    // Clients get --replay-delay to connect before the first report; a signal cancels the replay.
+    if (recording && stopped.wait_for(std::chrono::duration<double>(cli.replay_delay_seconds)) ==
+                         std::future_status::timeout) {
+      source->replay(*recording, penshape::drivers::ReplaySpeed::kOriginal);
+      log(LogLevel::kInfo, "replaying " + cli.replay + " at its recorded pace");
+    }
     server.wait();
     waiter.join();
     log(LogLevel::kInfo, "stopped");

@@ -17,6 +17,7 @@
 #include "geometry_service.hpp"
 #include "info_service.hpp"
 #include "live_service.hpp"
+#include "log.hpp"
 #include "pipeline.hpp"
 #include "unix_socket.hpp"
 
@@ -107,9 +108,15 @@ void PenshapeServer::wait() {
 void PenshapeServer::shutdown() {
   std::call_once(impl_->shutdown_once, [this] {
     Impl& impl = *impl_;
-    if (impl.source) impl.source->stop(); // strokes in progress are finished into the pipeline
-    impl.pipeline.wait_idle();            // their analyses are published
-    impl.state.hub.close();               // subscribers drain their queues, then end with OK
+    if (impl.source) {
+      try {
+        impl.source->stop(); // strokes in progress are finished into the pipeline
+      } catch (const std::exception& e) {
+        log(LogLevel::kError, std::string("stopping the sample source: ") + e.what());
+      }
+    }
+    impl.pipeline.wait_idle(); // their analyses are published
+    impl.state.hub.close();    // subscribers drain their queues, then end with OK
     // A grace period for streams to deliver their queues and geometry calls to finish; then the
     // rest is cancelled (their jobs see IsCancelled()). Shutdown(deadline) itself would also wait
     // for idle client connections until the deadline, so the waiting is done here.

@@ -72,6 +72,7 @@ Subscription::Delivery Subscription::next(std::chrono::milliseconds timeout) {
   queue_.pop_front();
   delivery.dropped = dropped_pending_;
   delivery.dropped_total = dropped_total_;
+  delivery.more = !queue_.empty();
   dropped_pending_ = 0;
   return delivery;
 }

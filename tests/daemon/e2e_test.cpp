@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <future>
+#include <set>
 #include <thread>
 
 #include "fakes.hpp"
@@ -671,6 +672,83 @@ TEST_F(DaemonE2E, SubmitStrokeAnswersAndPublishes) {
   ASSERT_TRUE(live->SubmitStroke(&ctx2, request, &response).ok());
   EXPECT_DOUBLE_EQ(response.ink_polygon().polygons(0).outer().points(0).x(), 3.0);
   EXPECT_DOUBLE_EQ(response.ink_polygon().polygons(0).outer().points(2).y(), 9.0);
+}
+
+} // namespace
+
+// The drivers' device manager as the source: a real recording (the Wacom PenPartner capture)
+// replayed through the daemon reaches a subscriber as exactly the strokes the drivers' offline
+// replay finds.
+#include "penshape/daemon/device_manager_source.hpp"
+#include "penshape/drivers/recording.hpp"
+#include "penshape/drivers/replay.hpp"
+
+namespace {
+
+std::string hid_dir() {
+  const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR");
+  return std::string(env != nullptr ? env : PENSHAPE_SHARED_DATA_DIR) + "/hid";
+}
+
+TEST_F(DaemonE2E, AReplayedRecordingReachesSubscribersAsTheDriversStrokes) {
+  const auto recording = penshape::drivers::load_recording_file(
+      hid_dir() + "/wacom-hid-descriptors/Wacom_PenPartner/hidrecord.txt");
+  const auto offline =
+      penshape::drivers::replay(recording, penshape::drivers::ReplaySpeed::kAsFastAsPossible);
+  ASSERT_GE(offline.strokes.size(), 3U);
+
+  auto source = std::make_shared<penshape::daemon::DeviceManagerSource>(nullptr);
+  start({source, nullptr, nullptr});
+  auto live = v1::Live::NewStub(channel());
+  grpc::ClientContext ctx;
+  ctx.set_deadline(in(60s));
+  v1::SubscribeRequest request;
+  request.set_include_samples(true);
+  auto reader = live->Subscribe(&ctx, request);
+  grpc::ClientContext watch_ctx;
+  watch_ctx.set_deadline(in(60s));
+  auto watch = live->WatchDevices(&watch_ctx, {});
+  wait_for_subscribers(2);
+
+  source->replay(recording, penshape::drivers::ReplaySpeed::kAsFastAsPossible);
+  v1::LiveEvent event;
+  ASSERT_TRUE(watch->Read(&event));
+  ASSERT_TRUE(event.has_device_attached());
+  EXPECT_TRUE(event.device_attached().device().replay());
+  EXPECT_EQ(event.device_attached().device().tablet().vendor_id(), 0x056aU);
+  const std::string device = event.device_attached().device().id();
+  ASSERT_TRUE(watch->Read(&event));
+  EXPECT_EQ(event.device_detached().device_id(), device); // the recording ended
+
+  std::vector<v1::Stroke> strokes;
+  std::size_t samples = 0;
+  std::set<std::uint64_t> started;
+  while ((strokes.size() < offline.strokes.size() || samples < offline.samples.size()) &&
+         reader->Read(&event)) {
+    EXPECT_FALSE(event.has_dropped());
+    EXPECT_EQ(event.device_id(), device);
+    if (event.has_samples()) samples += static_cast<std::size_t>(event.samples().samples_size());
+    if (event.has_stroke_started()) started.insert(event.stroke_started().stroke_id());
+    if (event.has_stroke_finished()) strokes.push_back(event.stroke_finished().stroke());
+  }
+  ASSERT_EQ(strokes.size(), offline.strokes.size());
+  for (std::size_t i = 0; i < strokes.size(); ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_EQ(started.count(strokes[i].id()), 1U); // announced with the same id
+    ASSERT_EQ(static_cast<std::size_t>(strokes[i].samples_size()),
+              offline.strokes[i].samples.size());
+    for (int k = 0; k < strokes[i].samples_size(); ++k) {
+      const auto& a = strokes[i].samples(k);
+      const auto& b = offline.strokes[i].samples[static_cast<std::size_t>(k)];
+      EXPECT_EQ(a.x(), b.x);
+      EXPECT_EQ(a.y(), b.y);
+      EXPECT_EQ(a.tip(), b.tip);
+      EXPECT_EQ(a.time_us(), b.time_us);
+    }
+  }
+  EXPECT_EQ(samples, offline.samples.size()); // every decoded sample was published
+  ctx.TryCancel();
+  watch_ctx.TryCancel();
 }
 
 } // namespace

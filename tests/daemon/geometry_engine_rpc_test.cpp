@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <future>
 #include <sstream>
@@ -31,10 +32,11 @@ std::string data_dir() {
 std::string decimal_to_rational(const std::string& text) {
   const std::size_t dot = text.find('.');
   if (dot == std::string::npos) return text;
-  std::string digits = text.substr(0, dot) + text.substr(dot + 1);
-  const std::size_t scale = text.size() - dot - 1;
-  penshape::Rational q(penshape::Rational(digits, 10) /
-                       penshape::Rational("1" + std::string(scale, '0'), 10));
+  std::string digits = text;
+  digits.erase(dot, 1);
+  mpz_class denominator;
+  mpz_ui_pow_ui(denominator.get_mpz_t(), 10, text.size() - dot - 1);
+  penshape::Rational q(mpz_class(digits, 10), denominator);
   q.canonicalize();
   return q.get_str(10);
 }
@@ -129,9 +131,66 @@ TEST_F(GeometryEngineRpc, ACancelledLargeDeconstructionStops) {
   ctx.TryCancel();
   const grpc::Status status = call.get();
   // Either it finished within 200 ms or it was cancelled; both are correct answers.
-  if (!status.ok()) EXPECT_EQ(status.error_code(), grpc::StatusCode::CANCELLED);
+  if (!status.ok()) {
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::CANCELLED);
+  }
   // The worker is free again: the pool drains (a job that ignored the cancel would hang here).
   server_->shutdown();
+}
+
+} // namespace
+
+namespace {
+
+TEST_F(GeometryEngineRpc, IncludeOffsetReturnsSegmentsAndArcs) {
+  // r <= eps: YES with P = Q, so offset(P, 1) of the 10 x 10 square is known in closed form:
+  // four edges moved out by 1 and four quarter circles of radius 1 around the corners.
+  v1::DeconstructRequest request;
+  auto* ring = request.mutable_polygon()->add_polygons()->mutable_outer();
+  for (auto [x, y] : {std::pair{0, 0}, {10, 0}, {10, 10}, {0, 10}}) {
+    auto* p = ring->add_exact_points();
+    p->set_x(std::to_string(x));
+    p->set_y(std::to_string(y));
+  }
+  request.mutable_radius()->set_value(1);
+  request.mutable_tolerance()->set_value(1);
+  request.set_include_offset(true);
+  grpc::ClientContext ctx;
+  v1::DeconstructResponse response;
+  const grpc::Status status = stub_->Deconstruct(&ctx, request, &response);
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  ASSERT_EQ(response.answer(), v1::ANSWER_YES);
+  ASSERT_EQ(response.solution_offset().polygons_size(), 1);
+  const double tolerance = response.solution_offset().max_error();
+  EXPECT_GT(tolerance, 0.0);
+  EXPECT_LE(tolerance, 0.01);
+  int arcs = 0;
+  int segments = 0;
+  for (const auto& piece : response.solution_offset().polygons(0).outer().pieces()) {
+    if (piece.has_arc()) {
+      ++arcs;
+      const auto& arc = piece.arc();
+      EXPECT_EQ(arc.radius(), 1.0);
+      const bool corner = (arc.center().x() == 0 || arc.center().x() == 10) &&
+                          (arc.center().y() == 0 || arc.center().y() == 10);
+      EXPECT_TRUE(corner) << arc.center().x() << " " << arc.center().y();
+      EXPECT_NEAR(
+          std::hypot(arc.start().x() - arc.center().x(), arc.start().y() - arc.center().y()), 1.0,
+          tolerance);
+    } else {
+      ++segments;
+      // Each straight piece lies on a line at distance 1 outside the square.
+      const auto& s = piece.segment();
+      const bool on_side =
+          (std::abs(s.start().y() + 1) <= tolerance && std::abs(s.end().y() + 1) <= tolerance) ||
+          (std::abs(s.start().y() - 11) <= tolerance && std::abs(s.end().y() - 11) <= tolerance) ||
+          (std::abs(s.start().x() + 1) <= tolerance && std::abs(s.end().x() + 1) <= tolerance) ||
+          (std::abs(s.start().x() - 11) <= tolerance && std::abs(s.end().x() - 11) <= tolerance);
+      EXPECT_TRUE(on_side);
+    }
+  }
+  EXPECT_EQ(arcs, 4);
+  EXPECT_EQ(segments, 4);
 }
 
 } // namespace

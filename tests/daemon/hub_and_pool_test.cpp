@@ -37,10 +37,13 @@ TEST(ShapeHub, ASlowSubscriberLosesItsOldestEventsAndLearnsHowMany) {
   EXPECT_EQ(first.dropped, 97U); // reported with the first event after the loss
   EXPECT_EQ(first.event->stroke_started().stroke_id(), 98U);
   EXPECT_EQ(first.event->sequence(), 98U);
+  EXPECT_TRUE(first.more);
   auto second = slow->next(0ms);
   EXPECT_EQ(second.dropped, 0U);
+  EXPECT_TRUE(second.more);
   EXPECT_EQ(second.event->stroke_started().stroke_id(), 99U);
   EXPECT_EQ(slow->dropped_total(), 97U);
+  EXPECT_FALSE(slow->next(0ms).more); // the last one
 
   // The other subscriber got everything, in order.
   for (std::uint64_t i = 1; i <= 100; ++i) {

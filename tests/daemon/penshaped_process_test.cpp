@@ -18,7 +18,10 @@
 #include <string>
 #include <vector>
 
+#include "penshape/drivers/recording.hpp"
+#include "penshape/drivers/replay.hpp"
 #include "penshape/v1/config.grpc.pb.h"
+#include "penshape/v1/live.grpc.pb.h"
 
 extern char** environ;
 
@@ -173,6 +176,39 @@ TEST(Penshaped, FindsItsConfigInXdgConfigHome) {
   EXPECT_EQ(settings.effective().tolerance_fraction(), 0.3);
   ::kill(pid, SIGTERM);
   EXPECT_EQ(exit_code(pid), 0);
+}
+
+TEST(Penshaped, ReplaysARecordingAsIfLive) {
+  const std::string capture = std::string(PENSHAPE_SHARED_DATA_DIR) +
+                              "/hid/wacom-hid-descriptors/Wacom_PenPartner/hidrecord.txt";
+  const auto offline = penshape::drivers::replay(penshape::drivers::load_recording_file(capture),
+                                                 penshape::drivers::ReplaySpeed::kAsFastAsPossible);
+  ASSERT_GE(offline.strokes.size(), 3U);
+  Sandbox box;
+  const std::string notify = box.listen_for_notifications();
+  // The capture lasts 12.7 s at its recorded pace; 2 s gives the client time to subscribe.
+  const pid_t pid = box.spawn({"--replay", capture, "--replay-delay", "2"},
+                              {"XDG_RUNTIME_DIR=" + box.dir(), "NOTIFY_SOCKET=" + notify});
+  ASSERT_EQ(box.next_notification(30'000).rfind("READY=1", 0), 0U) << box.stderr_text();
+  auto live = penshape::v1::Live::NewStub(
+      grpc::CreateChannel("unix:" + box.path("penshape.sock"), grpc::InsecureChannelCredentials()));
+  grpc::ClientContext ctx;
+  ctx.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(60));
+  auto reader = live->Subscribe(&ctx, {});
+  std::vector<std::size_t> sizes;
+  penshape::v1::LiveEvent event;
+  while (sizes.size() < offline.strokes.size() && reader->Read(&event)) {
+    if (event.has_stroke_finished()) {
+      sizes.push_back(static_cast<std::size_t>(event.stroke_finished().stroke().samples_size()));
+    }
+  }
+  ASSERT_EQ(sizes.size(), offline.strokes.size()) << box.stderr_text();
+  for (std::size_t i = 0; i < sizes.size(); ++i) {
+    EXPECT_EQ(sizes[i], offline.strokes[i].samples.size());
+  }
+  ::kill(pid, SIGTERM);
+  EXPECT_EQ(exit_code(pid), 0) << box.stderr_text();
+  EXPECT_NE(box.stderr_text().find("replaying"), std::string::npos);
 }
 
 TEST(Penshaped, BadConfigAndCommandLineExitWithTwo) {

@@ -9,7 +9,7 @@ namespace {
 Rational sqrt_bound(const Rational& x, unsigned bits, ShiftBound bound) {
   // sqrt(N/D) = sqrt(N·D) / D; scale by 4^bits before the integer square root.
   mpz_class scaled = x.get_num() * x.get_den();
-  mpz_mul_2exp(scaled.get_mpz_t(), scaled.get_mpz_t(), 2 * bits);
+  mpz_mul_2exp(scaled.get_mpz_t(), scaled.get_mpz_t(), 2UL * bits);
   mpz_class root = sqrt(scaled); // floor
   if (bound == ShiftBound::kUpper && root * root != scaled) ++root;
   mpz_class den = x.get_den();
@@ -89,24 +89,6 @@ Ring intersect_sorted_half_planes(const std::vector<HalfPlane>& planes) {
   }
   if (sgn(twice_signed_area(out)) <= 0) return {};
   return out;
-}
-
-Rational squared_distance_to_segment(const ExactPoint& p, const ExactPoint& s,
-                                     const ExactPoint& t) {
-  const Rational dx = t.x - s.x;
-  const Rational dy = t.y - s.y;
-  const Rational px = p.x - s.x;
-  const Rational py = p.y - s.y;
-  const Rational len2 = dx * dx + dy * dy;
-  const Rational proj = px * dx + py * dy;
-  if (sgn(len2) == 0 || sgn(proj) <= 0) return px * px + py * py;
-  if (proj >= len2) {
-    const Rational qx = p.x - t.x;
-    const Rational qy = p.y - t.y;
-    return qx * qx + qy * qy;
-  }
-  // |p - s|² - proj² / len2
-  return px * px + py * py - proj * proj / len2;
 }
 
 } // namespace penshape::detail

@@ -2,6 +2,7 @@
 // Internal: the inward shift of a convex polygon's edge lines and their intersection.
 #include <vector>
 
+#include "../geometry/segment_distance.hpp"
 #include "penshape/core/polygon_set.hpp"
 
 namespace penshape::detail {
@@ -24,8 +25,5 @@ std::vector<HalfPlane> shifted_edge_half_planes(const Ring& ring, const Rational
 // The intersection of half-planes given in counterclockwise angular order (as produced above),
 // as a counterclockwise ring; empty when the intersection has no interior.
 Ring intersect_sorted_half_planes(const std::vector<HalfPlane>& planes);
-
-// Squared distance from p to the segment [s, t], exactly.
-Rational squared_distance_to_segment(const ExactPoint& p, const ExactPoint& s, const ExactPoint& t);
 
 } // namespace penshape::detail

@@ -64,6 +64,13 @@ struct DeconstructResult {
   std::chrono::nanoseconds elapsed{0};
 };
 
+// Validates a region on its own: at least one polygon, at most max_vertices vertices, every ring
+// with >= 3 vertices, no repeated consecutive vertex, non-zero area, no two edges touching or
+// crossing (within a ring or between rings), every hole inside its outer ring and outside the
+// other holes, polygons pairwise disjoint (one may sit inside another's hole). Orientation is not
+// checked (normalize_orientation fixes it). Throws InvalidInput naming polygon, ring and vertex.
+void validate_region(const PolygonSet& q, std::size_t max_vertices = 200'000);
+
 // Validates Q (simple rings, no repeated vertices, holes inside outers, finite) and the
 // parameters; throws InvalidInput naming the problem.
 void validate_deconstruct_input(const PolygonSet& q, const DeconstructParams& params,

@@ -45,6 +45,7 @@ class Subscription {
     EventPtr event;            // null when the wait timed out or the hub closed with nothing left
     std::uint64_t dropped = 0; // events lost just before this one (report them first)
     std::uint64_t dropped_total = 0;
+    bool more = false; // more events were already queued behind this one
   };
 
   ~Subscription();

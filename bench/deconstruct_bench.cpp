@@ -1,0 +1,220 @@
+// Offset deconstruction, fast engine side by side with the reference engine (the paper's
+// algorithm with CGAL) on the 1,881-vertex Kazakhstan polygon, eps = r/2, delta = eps/8,
+// r = w/10, w/30, w/50, w/100; then a 1,000-sample stroke → ink polygon + decision (p50/p99).
+//
+//   deconstruct_bench [--json] [--data DIR] [--runs N]
+//
+// DIR defaults to $PENSHAPE_SHARED_DATA_DIR or the configured shared data directory.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <numbers>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "penshape/core/deconstruct.hpp"
+#include "penshape/core/ink.hpp"
+#include "penshape/core/polygon_io.hpp"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using penshape::Rational;
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    std::fprintf(stderr, "deconstruct_bench: cannot read %s\n", path.c_str());
+    std::exit(2);
+  }
+  std::ostringstream os;
+  os << in.rdbuf();
+  return os.str();
+}
+
+double seconds_of(const std::function<void()>& f) {
+  const auto t0 = Clock::now();
+  f();
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+struct EngineRun {
+  penshape::DeconstructResult result;
+  double median_s = 0;
+};
+
+EngineRun run_engine(const penshape::PolygonSet& q, penshape::DeconstructParams p, int runs) {
+  EngineRun out;
+  std::vector<double> times;
+  for (int i = 0; i < runs; ++i) {
+    times.push_back(seconds_of([&] { out.result = penshape::deconstruct(q, p); }));
+  }
+  std::sort(times.begin(), times.end());
+  out.median_s = times[times.size() / 2];
+  return out;
+}
+
+// A real $1 stroke resampled to n points along its length, scaled to millimetres.
+std::vector<penshape::InkSample> resampled_stroke(const std::string& xml, std::size_t n,
+                                                  double mm_per_px, double radius) {
+  static const std::regex point(R"re(<Point\s+X="(-?[0-9.]+)"\s+Y="(-?[0-9.]+)")re");
+  std::vector<std::pair<double, double>> pts;
+  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), point); it != std::sregex_iterator();
+       ++it) {
+    pts.emplace_back(std::stod((*it)[1]) * mm_per_px, std::stod((*it)[2]) * mm_per_px);
+  }
+  std::vector<double> along{0};
+  for (std::size_t i = 1; i < pts.size(); ++i) {
+    along.push_back(along.back() +
+                    std::hypot(pts[i].first - pts[i - 1].first, pts[i].second - pts[i - 1].second));
+  }
+  std::vector<penshape::InkSample> out;
+  std::size_t seg = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double s = along.back() * static_cast<double>(k) / static_cast<double>(n - 1);
+    while (seg + 2 < pts.size() && along[seg + 1] < s) ++seg;
+    const double len = along[seg + 1] - along[seg];
+    const double t = len > 0 ? std::clamp((s - along[seg]) / len, 0.0, 1.0) : 0.0;
+    out.push_back({pts[seg].first + t * (pts[seg + 1].first - pts[seg].first),
+                   pts[seg].second + t * (pts[seg + 1].second - pts[seg].second), radius});
+  }
+  return out;
+}
+
+double percentile(std::vector<double> v, double p) {
+  std::sort(v.begin(), v.end());
+  const auto i = static_cast<std::size_t>(std::ceil(p * static_cast<double>(v.size()))) - 1;
+  return v[std::min(i, v.size() - 1)];
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  bool json = false;
+  int runs = 3;
+  const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR");
+  std::string data = env != nullptr && *env ? env : PENSHAPE_SHARED_DATA_DIR;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--json") {
+      json = true;
+    } else if (a == "--data" && i + 1 < argc) {
+      data = argv[++i];
+    } else if (a == "--runs" && i + 1 < argc) {
+      runs = std::max(1, std::atoi(argv[++i]));
+    } else {
+      std::fprintf(stderr, "usage: deconstruct_bench [--json] [--data DIR] [--runs N]\n");
+      return 2;
+    }
+  }
+
+  const penshape::PolygonSet q =
+      penshape::read_polygon_text(read_file(data + "/polygons/kazakhstan_paper1881.txt"));
+  Rational lo = q.polygons[0].outer[0].x, hi = lo;
+  for (const auto& v : q.polygons[0].outer) {
+    lo = std::min(lo, v.x);
+    hi = std::max(hi, v.x);
+  }
+  const Rational w = hi - lo;
+  if (!json) {
+    std::printf(
+        "kazakhstan_paper1881 (%zu vertices, w = %.4f), eps = r/2, delta = eps/8, median of %d\n",
+        q.vertex_count(), w.get_d(), runs);
+    std::printf("%-8s | %-9s %10s %6s | %-9s %10s %6s | %8s\n", "r", "reference", "ms", "|P|",
+                "fast", "ms", "|P|", "ref/fast");
+  }
+  for (int divisor : {10, 30, 50, 100}) {
+    const Rational r = w / divisor;
+    const Rational e = r / 2;
+    penshape::DeconstructParams p{r, e, e / 8, penshape::EngineKind::kReference};
+    const EngineRun ref = run_engine(q, p, runs);
+    p.engine = penshape::EngineKind::kFast;
+    const EngineRun fast = run_engine(q, p, runs);
+    const double ratio = ref.median_s / fast.median_s;
+    if (json) {
+      std::printf(
+          "{\"case\":\"kazakhstan_paper1881\",\"r\":\"w/%d\",\"radius\":%.17g,\"reference\":{"
+          "\"answer\":\"%s\",\"seconds\":%.6g,\"solution_vertices\":%zu},\"fast\":{\"answer\":\"%"
+          "s\","
+          "\"seconds\":%.6g,\"solution_vertices\":%zu},\"ratio\":%.4g,\"same_answer\":%s}\n",
+          divisor, r.get_d(), penshape::to_string(ref.result.answer), ref.median_s,
+          ref.result.solution.vertex_count(), penshape::to_string(fast.result.answer),
+          fast.median_s, fast.result.solution.vertex_count(), ratio,
+          ref.result.answer == fast.result.answer ? "true" : "false");
+    } else {
+      std::printf("w/%-6d | %-9s %10.2f %6zu | %-9s %10.2f %6zu | %7.2fx\n", divisor,
+                  penshape::to_string(ref.result.answer), ref.median_s * 1e3,
+                  ref.result.solution.vertex_count(), penshape::to_string(fast.result.answer),
+                  fast.median_s * 1e3, fast.result.solution.vertex_count(), ratio);
+    }
+  }
+
+  // A 1,000-sample stroke: the $1 pigtail (loops, a crossing) at 0.2 mm per pixel, pen radius
+  // 0.75 mm, eps = r/2, delta = eps/8; ink polygon + decision with the fast engine.
+  const auto samples = resampled_stroke(
+      read_file(data + "/strokes/dollar1/s02/medium/pigtail01.xml"), 1000, 0.2, 0.75);
+  const penshape::InkOptions ink_options{.radius_mm = 0.75};
+  std::vector<double> ink_s, total_s;
+  penshape::InkPolygon ink;
+  penshape::DeconstructResult decision;
+  const int stroke_runs = 20 * runs;
+  for (int i = 0; i < stroke_runs; ++i) {
+    const auto t0 = Clock::now();
+    ink = penshape::ink_polygon(samples, ink_options);
+    const auto t1 = Clock::now();
+    decision = penshape::deconstruct(
+        ink.region, {Rational(3, 4), Rational(3, 8), Rational(3, 64), penshape::EngineKind::kFast});
+    const auto t2 = Clock::now();
+    ink_s.push_back(std::chrono::duration<double>(t1 - t0).count());
+    total_s.push_back(std::chrono::duration<double>(t2 - t0).count());
+  }
+  // The same stroke with a pressure ramp (radius 0.25..0.75 mm): the per-segment hull union.
+  auto pressure_samples = samples;
+  for (std::size_t i = 0; i < pressure_samples.size(); ++i) {
+    pressure_samples[i].radius =
+        0.25 + 0.5 * static_cast<double>(i) / static_cast<double>(pressure_samples.size() - 1);
+  }
+  std::vector<double> pressure_s;
+  penshape::InkPolygon pressure_ink;
+  for (int i = 0; i < stroke_runs; ++i) {
+    pressure_s.push_back(
+        seconds_of([&] { pressure_ink = penshape::ink_polygon(pressure_samples, ink_options); }));
+  }
+  if (json) {
+    std::printf(
+        "{\"case\":\"stroke_1000_samples\",\"runs\":%d,\"ink_vertices\":%zu,\"answer\":\"%s\","
+        "\"ink_p50_s\":%.6g,\"ink_p99_s\":%.6g,\"total_p50_s\":%.6g,\"total_p99_s\":%.6g,"
+        "\"target_p99_s\":0.005}\n",
+        stroke_runs, ink.region.vertex_count(), penshape::to_string(decision.answer),
+        percentile(ink_s, 0.5), percentile(ink_s, 0.99), percentile(total_s, 0.5),
+        percentile(total_s, 0.99));
+  } else {
+    std::printf("\n1,000-sample stroke (pigtail, r = 0.75 mm, eps = r/2, fast engine), %d runs\n",
+                stroke_runs);
+    std::printf("ink polygon: %zu vertices, p50 %.3f ms, p99 %.3f ms\n", ink.region.vertex_count(),
+                percentile(ink_s, 0.5) * 1e3, percentile(ink_s, 0.99) * 1e3);
+    std::printf("ink + decision (%s): p50 %.3f ms, p99 %.3f ms (target p99 <= 5 ms)\n",
+                penshape::to_string(decision.answer), percentile(total_s, 0.5) * 1e3,
+                percentile(total_s, 0.99) * 1e3);
+  }
+  if (json) {
+    std::printf(
+        "{\"case\":\"stroke_1000_samples_pressure\",\"runs\":%d,\"ink_vertices\":%zu,"
+        "\"ink_p50_s\":%.6g,\"ink_p99_s\":%.6g}\n",
+        stroke_runs, pressure_ink.region.vertex_count(), percentile(pressure_s, 0.5),
+        percentile(pressure_s, 0.99));
+  } else {
+    std::printf(
+        "ink polygon with pressure (radius 0.25..0.75 mm): %zu vertices, p50 %.3f ms, "
+        "p99 %.3f ms\n",
+        pressure_ink.region.vertex_count(), percentile(pressure_s, 0.5) * 1e3,
+        percentile(pressure_s, 0.99) * 1e3);
+  }
+  return 0;
+}

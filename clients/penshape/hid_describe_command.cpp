@@ -1,0 +1,151 @@
+// `penshape hid describe FILE [--json]`: the report layouts of a HID report descriptor and, for
+// a pen, the decoder's fields, maxima and resolution.
+#include "hid_describe_command.hpp"
+
+#include <cstdio>
+#include <string>
+
+#include "args.hpp"
+#include "command.hpp"
+#include "device_args.hpp"
+#include "json_writer.hpp"
+#include "penshape/drivers/device_profile.hpp"
+
+namespace penshape::cli {
+namespace {
+
+using drivers::PenField;
+using drivers::PenLayout;
+using drivers::ReportLayout;
+using drivers::ReportType;
+
+constexpr const char* kHelp =
+    "usage: penshape hid describe FILE [--json] [--vid HEX --pid HEX]\n\n"
+    "FILE is raw report descriptor bytes (a copy of sysfs report_descriptor), a hid-recorder\n"
+    "file (its R: line; its I: line picks the vendor protocol), or a usbhid-dump DESCRIPTOR\n"
+    "dump. Prints every input report's fields and, for a pen, the decoded fields, maxima and\n"
+    "resolution (units per millimetre; 0 when the descriptor gives no physical size).\n\n"
+    "--json: {\"reports\": [{\"id\", \"fields\": [{\"usage\", \"bit_offset\", \"size\",\n"
+    "\"logical_min\", \"logical_max\"}]}], \"pen\": {\"report_id\", \"x_max\", \"y_max\",\n"
+    "\"pressure_max\", \"resolution\"} or null}. Bit offsets count from the first byte of the\n"
+    "report as hidraw delivers it (the report ID byte included). Exit 2 on a malformed file,\n"
+    "naming the byte offset.";
+
+void print_pen_field(const char* name, const PenField& f) {
+  if (!f.present()) return;
+  std::printf("    %-9s bit %4u size %2u", name, f.bit_offset, f.bit_size);
+  if (f.high_bit_size > 0)
+    std::printf(" + high bits %u size %u", f.high_bit_offset, f.high_bit_size);
+  if (f.bit_size + f.high_bit_size > 1) {
+    std::printf("  logical %d..%d", f.logical_minimum, f.logical_maximum);
+  }
+  if (f.inverted) std::printf("  (inverted)");
+  std::printf("\n");
+}
+
+} // namespace
+
+int run_hid_describe(std::span<const std::string_view> args) {
+  const ParsedArgs parsed(
+      args, {.flags = {"--json", "--help"}, .options = {"--vid", "--pid", "--descriptor"}});
+  if (parsed.flag("--help")) {
+    std::puts(kHelp);
+    return kExitOk;
+  }
+  drivers::DeviceProfile profile;
+  try {
+    const drivers::Recording rec = load_device_file(parsed);
+    if (rec.descriptor.empty()) throw drivers::RecordingError(0, "the file holds no descriptor");
+    profile = drivers::build_profile(rec.identity, rec.descriptor, rec.vendor_strings);
+  } catch (const drivers::RecordingError& e) {
+    std::fprintf(stderr, "penshape hid describe: %s\n", e.what());
+    return kExitBadInput;
+  } catch (const drivers::DescriptorError& e) {
+    std::fprintf(stderr, "penshape hid describe: %s\n", e.what());
+    return kExitBadInput;
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "penshape hid describe: %s\n", e.what());
+    return kExitBadInput;
+  }
+  const auto& reports = profile.descriptor->reports;
+  const auto& pens = profile.decoder.layouts();
+  if (parsed.flag("--json")) {
+    JsonWriter json;
+    json.begin_object().key("reports").begin_array();
+    for (const ReportLayout& r : reports) {
+      if (r.type != ReportType::kInput) continue;
+      json.begin_object().key("id").integer(r.report_id).key("fields").begin_array();
+      for (const auto& f : r.fields) {
+        json.begin_object();
+        json.key("usage").string(f.is_constant()   ? "padding"
+                                 : f.is_variable() ? drivers::usage_name(f.usage)
+                                                   : drivers::usage_name(f.usage_minimum) + ".." +
+                                                         drivers::usage_name(f.usage_maximum));
+        json.key("bit_offset").integer(f.bit_offset);
+        json.key("size").integer(static_cast<std::int64_t>(f.bit_size) * f.count);
+        json.key("logical_min").integer(f.logical_minimum);
+        json.key("logical_max").integer(f.logical_maximum);
+        json.end_object();
+      }
+      json.end_array().end_object();
+    }
+    json.end_array().key("pen");
+    if (pens.empty()) {
+      json.null();
+    } else {
+      json.begin_object();
+      json.key("report_id").integer(pens.front().report_id);
+      json.key("x_max").integer(profile.info.x_max);
+      json.key("y_max").integer(profile.info.y_max);
+      json.key("pressure_max").integer(profile.info.pressure_max);
+      json.key("resolution").number(profile.info.x_resolution);
+      json.end_object();
+    }
+    json.end_object();
+    std::puts(json.str().c_str());
+    return kExitOk;
+  }
+  const char* kTypes[] = {"input", "output", "feature"};
+  for (const ReportLayout& r : reports) {
+    std::printf("%s report %u: %u bytes\n", kTypes[static_cast<int>(r.type)], r.report_id,
+                r.size_bytes());
+    for (const auto& f : r.fields) {
+      const std::string usage = f.is_constant()   ? "padding"
+                                : f.is_variable() ? drivers::usage_name(f.usage)
+                                                  : drivers::usage_name(f.usage_minimum) + ".." +
+                                                        drivers::usage_name(f.usage_maximum);
+      std::printf("  bit %4u size %2u x%-3u %-40s logical %d..%d\n", f.bit_offset, f.bit_size,
+                  f.count, usage.c_str(), f.logical_minimum, f.logical_maximum);
+    }
+  }
+  if (pens.empty()) {
+    std::puts("no pen report");
+    return kExitOk;
+  }
+  std::printf(
+      "pen (%s protocol): x_max %d, y_max %d, pressure_max %u, resolution %.3f x %.3f "
+      "units/mm%s\n",
+      std::string(drivers::protocol_name(profile.protocol)).c_str(), profile.info.x_max,
+      profile.info.y_max, profile.info.pressure_max, profile.info.x_resolution,
+      profile.info.y_resolution, profile.info.has_tilt ? ", tilt" : "");
+  for (const PenLayout& l : pens) {
+    std::printf("  report %u (%s, at least %u bytes)\n", l.report_id, l.origin.c_str(),
+                l.min_report_bytes);
+    print_pen_field("tip", l.tip);
+    print_pen_field("in_range", l.in_range);
+    print_pen_field("barrel1", l.barrel1);
+    print_pen_field("barrel2", l.barrel2);
+    print_pen_field("barrel3", l.barrel3);
+    print_pen_field("eraser", l.eraser);
+    print_pen_field("invert", l.invert);
+    print_pen_field("x", l.x);
+    print_pen_field("y", l.y);
+    print_pen_field("pressure", l.pressure);
+    print_pen_field("tilt_x", l.tilt_x);
+    print_pen_field("tilt_y", l.tilt_y);
+  }
+  for (const auto& n : profile.notes) std::printf("  note: %s\n", n.c_str());
+  return kExitOk;
+}
+
+} // namespace penshape::cli

@@ -1,0 +1,7 @@
+#pragma once
+#include <span>
+#include <string_view>
+
+namespace penshape::cli {
+int run_hid_describe(std::span<const std::string_view> args);
+}

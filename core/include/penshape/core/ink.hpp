@@ -1,0 +1,78 @@
+#pragma once
+// The ink polygon of a stroke: Q = stroke ⊕ pen disk, the region a wide-tip pen covers.
+//
+// Units: millimetres, in the tablet's axes (x to the right, y downwards as the device reports;
+// a point (x, y) in device units is (x / x_resolution, y / y_resolution) mm; a resolution of 0
+// (unknown) takes device units as millimetres).
+//
+// Construction: the stroke's samples, in order, form a polyline (one sample: a point), first
+// simplified (Douglas-Peucker on position plus radius, tolerance tau). Each segment sweeps the
+// convex hull of the pen disks at its two ends; Q is the union of these hulls (Clipper, int64,
+// non-zero fill; with one radius throughout, Clipper's round-joined offset of the open
+// polyline, the same region with arcs of the same accuracy). So doubling back, self-crossings
+// and loops (holes where a loop encloses area) come out right, and several strokes give several
+// components. Three approximations, each bounded and added into InkPolygon::hausdorff_bound (a
+// bound on the Hausdorff distance between Q and the exact swept region of the true disks):
+//   1. the disk (or each round join/end) is a polygon inscribed in the circle with sagitta
+//      <= max_error/2 (the k-gon: r_max·(1 - cos(π/k)); Clipper's arcs: 2.25 times its arc
+//      tolerance, as it rounds the step count);
+//   2. the simplification: error <= tau;
+//   3. coordinates are rounded to a grid of 2^-m mm (Clipper's integers): at most three
+//      roundings of half a grid diagonal (input, offset vertices, union intersections), so
+//      error <= 1.5·sqrt(2)·grid.
+// max_error splits as 1/2 (disk), 1/4 (simplification), 1/4 (grid). The disk polygon may have at
+// most 4096 vertices (a smaller max_error relative to the radius is InvalidInput). Q's coordinates
+// are exact dyadic rationals (integers times the grid).
+//
+// Pressure → radius (when use_pressure and the tablet reports pressure, pressure_max > 0):
+//   radius(p) = radius_mm · (min_fraction + (1 - min_fraction) · (p / pressure_max)^gamma),
+// so a feather touch draws min_fraction of the full radius and full pressure the full radius;
+// gamma < 1 makes light pressure count more. Otherwise every sample has radius_mm.
+#include <cstddef>
+#include <vector>
+
+#include "penshape/core/polygon_set.hpp"
+#include "penshape/types/stroke.hpp"
+
+namespace penshape {
+
+struct InkOptions {
+  double radius_mm = 0.5;            // pen radius (at full pressure), > 0
+  double max_error_mm = 0.0;         // bound on the total approximation error; 0: radius_mm / 50
+  bool use_pressure = false;         // per-sample radius from pressure (see the curve above)
+  double min_fraction = 0.25;        // radius fraction at zero pressure, in [0, 1]
+  double gamma = 1.0;                // pressure exponent, > 0
+  std::size_t max_samples = 100'000; // longer strokes are InvalidInput
+};
+
+// A sample in millimetres with its pen radius.
+struct InkSample {
+  double x = 0.0;
+  double y = 0.0;
+  double radius = 0.0;
+};
+
+struct InkPolygon {
+  PolygonSet region;            // Q: valid (validate_region), outer rings ccw, holes cw
+  double hausdorff_bound = 0.0; // H(Q, exact swept region) <= this (mm), <= max_error
+  std::size_t disk_vertices = 0;
+  double grid = 0.0; // coordinate grid (mm), a power of two
+};
+
+// Samples of a stroke in millimetres with their radii (the curve above).
+std::vector<InkSample> ink_samples(const Stroke& stroke, const InkOptions& options);
+
+// Q for samples in millimetres. Throws InvalidInput on no samples, too many, non-finite values,
+// a non-positive radius or error, or coordinates beyond 10^9 mm.
+InkPolygon ink_polygon(const std::vector<InkSample>& samples, const InkOptions& options);
+
+// Q of several strokes drawn with the same pen: the union of their ink (several components
+// where they do not touch). max_samples limits the total.
+InkPolygon ink_polygon(const std::vector<std::vector<InkSample>>& strokes,
+                       const InkOptions& options);
+
+// Q of a stroke: ink_polygon(ink_samples(stroke, options), options). Every sample counts, in
+// order (the tip-up sample at the end too: it is where the pen left the surface).
+InkPolygon ink_polygon(const Stroke& stroke, const InkOptions& options);
+
+} // namespace penshape

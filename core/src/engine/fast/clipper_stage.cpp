@@ -1,0 +1,171 @@
+#include "clipper_stage.hpp"
+
+#include "douglas_peucker.hpp"
+
+#include <clipper.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace penshape::fast {
+namespace {
+
+namespace cl = ClipperLib;
+
+cl::Paths to_paths(const IRings& rings) {
+  cl::Paths paths;
+  paths.reserve(rings.size());
+  for (const IRing& ring : rings) {
+    cl::Path path;
+    path.reserve(ring.size());
+    for (const IPt& p : ring) path.emplace_back(p.x, p.y);
+    paths.push_back(std::move(path));
+  }
+  return paths;
+}
+
+IRing to_ring(const cl::Path& path) {
+  IRing ring;
+  ring.reserve(path.size());
+  for (const auto& p : path) ring.push_back({p.X, p.Y});
+  return ring;
+}
+
+// Outer contours with their holes; islands inside holes become polygons of their own.
+void collect(const cl::PolyNode& node, IRegion& out) {
+  for (const cl::PolyNode* outer : node.Childs) {
+    IPolygon poly;
+    poly.outer = to_ring(outer->Contour);
+    if (twice_area(poly.outer) < 0) std::reverse(poly.outer.begin(), poly.outer.end());
+    for (const cl::PolyNode* hole : outer->Childs) {
+      IRing h = to_ring(hole->Contour);
+      if (twice_area(h) > 0) std::reverse(h.begin(), h.end());
+      poly.holes.push_back(std::move(h));
+      collect(*hole, out);
+    }
+    IRings one{poly.outer};
+    clean_rings(one);
+    if (one.empty()) continue;
+    poly.outer = std::move(one.front());
+    clean_rings(poly.holes);
+    out.push_back(std::move(poly));
+  }
+}
+
+} // namespace
+
+IRings flatten(const IRegion& region) {
+  IRings rings;
+  for (const IPolygon& p : region) {
+    rings.push_back(p.outer);
+    rings.insert(rings.end(), p.holes.begin(), p.holes.end());
+  }
+  return rings;
+}
+
+// Clipper rounds the number of steps of each join to the nearest integer, so one chord can span
+// up to 1.5 nominal steps: its depth is then up to 1.5² = 2.25 times the ArcTolerance it was
+// given. Asking for tolerance / kJoinDepthFactor keeps every chord within `tolerance`.
+constexpr double kJoinDepthFactor = 2.5;
+
+double round_join_steps(double delta, double arc_tolerance) {
+  if (delta > 0.0) return std::numbers::pi / std::acos(std::max(-1.0, 1.0 - arc_tolerance / delta));
+  const double y = std::min(arc_tolerance / kJoinDepthFactor, std::fabs(delta) * 0.25);
+  return std::numbers::pi / std::acos(1.0 - y / std::fabs(delta));
+}
+
+namespace {
+
+// Outward offset: our own raw path (round joins with ceil'd step counts, so chords are exactly
+// as deep as asked and no deeper) and Clipper's positive-winding union, as ClipperOffset does.
+IRegion offset_outward(const IRings& rings, double delta, double arc_tolerance) {
+  const double max_angle = 2.0 * std::acos(std::max(-1.0, 1.0 - arc_tolerance / delta));
+  cl::Paths raw;
+  raw.reserve(rings.size());
+  for (const IRing& ring : rings) {
+    const std::size_t n = ring.size();
+    if (n < 3) continue;
+    std::vector<DPt> normals(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const IPt a = ring[i], b = ring[(i + 1) % n];
+      const double dx = static_cast<double>(b.x - a.x), dy = static_cast<double>(b.y - a.y);
+      const double len = std::sqrt(dx * dx + dy * dy);
+      normals[i] = {dy / len, -dx / len}; // right normal: outward for a region on the left
+    }
+    cl::Path path;
+    path.reserve(3 * n);
+    auto push = [&](const IPt& v, DPt nrm) {
+      path.emplace_back(
+          static_cast<cl::cInt>(std::llround(static_cast<double>(v.x) + delta * nrm.x)),
+          static_cast<cl::cInt>(std::llround(static_cast<double>(v.y) + delta * nrm.y)));
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+      const IPt& v = ring[i];
+      const DPt n0 = normals[(i + n - 1) % n], n1 = normals[i];
+      const double sin_a = n0.x * n1.y - n0.y * n1.x;
+      const double cos_a = n0.x * n1.x + n0.y * n1.y;
+      if (sin_a < 0.0) { // reflex: the loop through v is removed by the union
+        push(v, n0);
+        path.emplace_back(v.x, v.y);
+        push(v, n1);
+        continue;
+      }
+      const double a = std::atan2(sin_a, cos_a);
+      const int steps = std::max(1, static_cast<int>(std::ceil(a / max_angle)));
+      for (int k = 0; k <= steps; ++k) {
+        const double t = a * k / steps;
+        const double c = std::cos(t), s = std::sin(t);
+        push(v, {n0.x * c - n0.y * s, n0.x * s + n0.y * c});
+      }
+    }
+    raw.push_back(std::move(path));
+  }
+  cl::Clipper c;
+  c.AddPaths(raw, cl::ptSubject, true);
+  cl::PolyTree tree;
+  c.Execute(cl::ctUnion, tree, cl::pftPositive, cl::pftPositive);
+  IRegion out;
+  collect(tree, out);
+  return out;
+}
+
+} // namespace
+
+IRegion offset_round(const IRings& rings, double delta, double arc_tolerance) {
+  if (delta > 0.0) return offset_outward(rings, delta, arc_tolerance);
+  cl::ClipperOffset offset(2.0, arc_tolerance / kJoinDepthFactor);
+  offset.AddPaths(to_paths(rings), cl::jtRound, cl::etClosedPolygon);
+  cl::PolyTree tree;
+  offset.Execute(tree, delta);
+  IRegion out;
+  collect(tree, out);
+  return out;
+}
+
+IRegion difference(const IRings& subject, const IRings& clip) {
+  cl::Clipper c;
+  c.AddPaths(to_paths(subject), cl::ptSubject, true);
+  c.AddPaths(to_paths(clip), cl::ptClip, true);
+  cl::PolyTree tree;
+  c.Execute(cl::ctDifference, tree, cl::pftPositive, cl::pftPositive);
+  IRegion out;
+  collect(tree, out);
+  return out;
+}
+
+IRegion simplify(const IRings& input, double tolerance) {
+  IRings rings;
+  for (const IRing& ring : input) rings.push_back(simplify_ring(ring, tolerance));
+  clean_rings(rings);
+  cl::Clipper c;
+  c.AddPaths(to_paths(rings), cl::ptSubject, true);
+  cl::PolyTree tree;
+  c.StrictlySimple(true);
+  c.Execute(cl::ctUnion, tree, cl::pftPositive, cl::pftPositive);
+  IRegion out;
+  collect(tree, out);
+  return out;
+}
+
+} // namespace penshape::fast

@@ -1,0 +1,39 @@
+#pragma once
+// Candidate construction with Clipper 6.4 (int64 offsets and Booleans). Clipper rounds every
+// computed vertex to the grid, so nothing built here is trusted: its results are only
+// candidates that certificate.hpp verifies independently (see README.md).
+#include <vector>
+
+#include "int_geometry.hpp"
+
+namespace penshape::fast {
+
+struct IPolygon {
+  IRing outer;  // counterclockwise
+  IRings holes; // clockwise
+};
+using IRegion = std::vector<IPolygon>;
+
+IRings flatten(const IRegion& region);
+
+// Offset (delta > 0) or inset (delta < 0) of the region bounded by `rings` (nonzero winding)
+// with round joins: arc vertices on the circle of radius |delta|, chords at distance at least
+// |delta| - arc_tolerance (Clipper's own tolerance parameter is tightened to guarantee it).
+// Straight parts are exact up to grid rounding.
+IRegion offset_round(const IRings& rings, double delta, double arc_tolerance);
+
+// Vertices on a full circle of radius |delta| at this tolerance (at most; joins use fewer).
+double round_join_steps(double delta, double arc_tolerance);
+
+// subject minus clip (nonzero winding for both).
+IRegion difference(const IRings& subject, const IRings& clip);
+
+// Douglas-Peucker on every ring (tolerance in grid units), then a nonzero union so the result
+// is a valid region again. Theorem 5's observation in practice: the many short edges of dents
+// left by an inset collapse into chords.
+IRegion simplify(const IRings& rings, double tolerance);
+inline IRegion simplify(const IRegion& region, double tolerance) {
+  return simplify(flatten(region), tolerance);
+}
+
+} // namespace penshape::fast

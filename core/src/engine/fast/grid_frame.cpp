@@ -1,0 +1,125 @@
+#include "grid_frame.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace penshape::fast {
+namespace {
+
+constexpr int kUnitsPerDeltaLog2 = 10; // about 2^10 grid units per delta
+constexpr int kMinUnitsPerDeltaLog2 = 6;
+
+Rational pow2(int k) {
+  Rational v = 1;
+  if (k >= 0) {
+    mpq_mul_2exp(v.get_mpq_t(), v.get_mpq_t(), static_cast<mp_bitcnt_t>(k));
+  } else {
+    mpq_div_2exp(v.get_mpq_t(), v.get_mpq_t(), static_cast<mp_bitcnt_t>(-k));
+  }
+  return v;
+}
+
+// floor(v) for a rational.
+mpz_class floor_q(const Rational& v) {
+  mpz_class f;
+  mpz_fdiv_q(f.get_mpz_t(), v.get_num_mpz_t(), v.get_den_mpz_t());
+  return f;
+}
+
+} // namespace
+
+GridFrame::GridFrame(const PolygonSet& q, const DeconstructParams& params) {
+  Rational min_x, min_y, max_x, max_y;
+  bool first = true;
+  for (const auto& poly : q.polygons) {
+    for (const auto& p : poly.outer) {
+      if (first || p.x < min_x) min_x = p.x;
+      if (first || p.y < min_y) min_y = p.y;
+      if (first || p.x > max_x) max_x = p.x;
+      if (first || p.y > max_y) max_y = p.y;
+      first = false;
+    }
+  }
+  // Holes lie inside their outer ring, so the outers' box is the box of q.
+  const Rational extent = std::max(max_x - min_x, max_y - min_y) +
+                          2 * (params.radius + params.tolerance + 2 * params.precision);
+  int exponent = 0;
+  std::frexp(params.precision.get_d(), &exponent); // delta in [2^(e-1), 2^e)
+  k_ = kUnitsPerDeltaLog2 - (exponent - 1);
+  while (k_ > (kMinUnitsPerDeltaLog2 - (exponent - 1)) &&
+         Rational(extent * pow2(k_)).get_d() > kMaxGridCoordinate) {
+    --k_;
+  }
+  if (Rational(extent * pow2(k_)).get_d() > kMaxGridCoordinate) {
+    throw InvalidInput("fast engine: the coordinate extent (" + std::to_string(extent.get_d()) +
+                       " including r + eps margins) exceeds 2^24 times the precision delta (" +
+                       std::to_string(params.precision.get_d()) +
+                       "); use a coarser precision or the reference engine");
+  }
+  // Translate so the box corner (less the offset margin) is near the origin.
+  const Rational margin = params.radius + params.tolerance + 2 * params.precision;
+  tx_ = floor_q((min_x - margin) * pow2(k_));
+  ty_ = floor_q((min_y - margin) * pow2(k_));
+}
+
+double GridFrame::units(const Rational& length) const {
+  return Rational(length * pow2(k_)).get_d();
+}
+
+namespace {
+
+// round(v · 2^k) - t = floor((2 · num · 2^k + den) / (2 · den)) - t with integer operations only
+// (a rational product would pay for a gcd per coordinate).
+std::int64_t round_scaled(const Rational& v, int k, const mpz_class& t, mpz_class& num,
+                          mpz_class& den) {
+  num = v.get_num();
+  den = v.get_den();
+  if (k >= 0) {
+    mpz_mul_2exp(num.get_mpz_t(), num.get_mpz_t(), static_cast<mp_bitcnt_t>(k + 1));
+  } else {
+    mpz_mul_2exp(den.get_mpz_t(), den.get_mpz_t(), static_cast<mp_bitcnt_t>(-k));
+    mpz_mul_2exp(num.get_mpz_t(), num.get_mpz_t(), 1);
+  }
+  num += den;
+  den *= 2;
+  mpz_fdiv_q(num.get_mpz_t(), num.get_mpz_t(), den.get_mpz_t());
+  num -= t;
+  return static_cast<std::int64_t>(num.get_si());
+}
+
+} // namespace
+
+IPt GridFrame::round(const ExactPoint& p) const {
+  mpz_class num, den;
+  return {round_scaled(p.x, k_, tx_, num, den), round_scaled(p.y, k_, ty_, num, den)};
+}
+
+IRings GridFrame::round(const PolygonSet& q) const {
+  IRings rings;
+  auto add = [&](const Ring& ring, bool outer) {
+    IRing r;
+    r.reserve(ring.size());
+    for (const auto& p : ring) r.push_back(round(p));
+    // Region on the left: outers counterclockwise, holes clockwise.
+    if ((twice_area(r) > 0) != outer) std::reverse(r.begin(), r.end());
+    rings.push_back(std::move(r));
+  };
+  for (const auto& poly : q.polygons) {
+    add(poly.outer, true);
+    for (const auto& hole : poly.holes) add(hole, false);
+  }
+  clean_rings(rings);
+  return rings;
+}
+
+ExactPoint GridFrame::exact(IPt p) const {
+  const Rational s = pow2(-k_);
+  Rational x = Rational(mpz_class(static_cast<long>(p.x)) + tx_) * s;
+  Rational y = Rational(mpz_class(static_cast<long>(p.y)) + ty_) * s;
+  x.canonicalize();
+  y.canonicalize();
+  return {x, y};
+}
+
+} // namespace penshape::fast

@@ -1,0 +1,41 @@
+#pragma once
+// The one primitive both YES inclusions reduce to (README.md, "Why YES is certified"):
+//
+//   every point z with d(z, A) = level satisfies d(z, ∂B) >= clearance and z outside B,
+//
+// for integer regions A and B given by simple rings with the region on their left. The level
+// set {d(·, A) = level} lies on the outward offset segments of A's edges and on the arcs around
+// A's convex vertices; we walk those curves (arcs as chords within a known sagitta), remove the
+// parts that are provably closer than `level` to another edge of A (so not on the level set),
+// and check the rest against B with segment-to-segment distance lower bounds and one exact
+// winding number per remaining piece. Everything is conservative: false means "not verified".
+#include "penshape/core/deconstruct.hpp"
+#include "segment_index.hpp"
+
+namespace penshape::fast {
+
+struct LevelSetQuery {
+  const SegmentIndex* a = nullptr; // region whose level set is walked
+  double level = 0.0;              // grid units, > 1
+  const SegmentIndex* b = nullptr; // region the level set must stay away from
+  double clearance = 0.0;          // grid units, >= 1 (so winding tests are unambiguous)
+  double max_sagitta = 1.0;        // chord error allowed when walking arcs
+};
+
+bool level_set_avoids(const LevelSetQuery& query, const CancelHook& cancel);
+
+// Whether the rings are simple and pairwise disjoint except at shared vertices of consecutive
+// edges (exact integer tests; the level-set argument needs it).
+bool rings_are_simple(const SegmentIndex& index);
+
+// Whether simple, disjoint rings bound their region on the left: every counterclockwise ring
+// lies where the other rings wind 0 times, every clockwise ring where they wind once. Then the
+// winding number is 1 just left of every edge and 0 just right of it.
+bool rings_are_nested_consistently(const SegmentIndex& index);
+
+// Both of the above: what the level-set walk needs of A.
+inline bool is_certifiable_region(const SegmentIndex& index) {
+  return rings_are_simple(index) && rings_are_nested_consistently(index);
+}
+
+} // namespace penshape::fast

@@ -1,0 +1,28 @@
+#pragma once
+// Verification of a NO witness (README.md, "Why NO is certified"): a grid point q of Q such that
+// every point y of the disk D_{r+eps}(q) has, within distance r, a point z with d(z, Q) > eps.
+// Then no y of that disk lies in Π = inset(offset(Q, eps), r), so q ∉ offset(Π, r + eps) and
+// DECIDE(Q, r, eps) answers NO. The disk is covered by a quadtree; each cell gets one witness z,
+// taken from the boundary of the exterior approximation of offset(Q, eps) (outside it, pushed
+// out a little) or the cell centre itself, and every witness is checked exactly on the grid.
+#include <cstddef>
+
+#include "penshape/core/deconstruct.hpp"
+#include "segment_index.hpp"
+
+namespace penshape::fast {
+
+struct NoCheckInput {
+  const SegmentIndex* q = nullptr;            // Q̃
+  const SegmentIndex* outer_offset = nullptr; // boundary of a region ⊇ offset(Q̃, eps + margin)
+  double radius = 0.0;                        // r, grid units
+  double tolerance = 0.0;                     // eps, grid units
+  double push = 1.0;                          // how far witnesses are pushed off that boundary
+  double min_cell = 1.0;                      // smallest cell radius before giving up
+  std::size_t max_cells = 200'000;
+};
+
+// Whether q (a grid point) is a verified NO witness.
+bool verify_no_witness(const NoCheckInput& in, IPt q, const CancelHook& cancel);
+
+} // namespace penshape::fast

@@ -1,0 +1,304 @@
+// The ink polygon: union of per-segment hulls of pen disks with Clipper (int64), see ink.hpp.
+#include "penshape/core/ink.hpp"
+
+#include <clipper.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "penshape/core/deconstruct.hpp"
+
+namespace penshape {
+namespace {
+
+using ClipperLib::cInt;
+using ClipperLib::IntPoint;
+using ClipperLib::Path;
+using ClipperLib::Paths;
+
+constexpr double kMaxCoordinateMm = 1e9;
+// Grid coordinates stay within Clipper's range (2^62); cross products need 128 bits.
+constexpr double kMaxGridUnits = 1e18;
+__extension__ using Int128 = __int128;
+
+constexpr std::size_t kMaxDiskVertices = 4096;
+
+// The smallest k (a multiple of 4, >= 8) with r·(1 - cos(π/k)) <= allowed; throws when that
+// needs more than kMaxDiskVertices.
+std::size_t polygon_vertices(double r, double allowed) {
+  const double ratio = allowed / r;
+  if (ratio >= 1) return 8;
+  const double angle = std::acos(1.0 - ratio); // π/k must not exceed this
+  const double k_min = angle > 0 ? std::numbers::pi / angle : HUGE_VAL;
+  if (!(k_min <= static_cast<double>(kMaxDiskVertices))) {
+    throw InvalidInput("the requested ink error " + std::to_string(allowed * 2) +
+                       " mm needs more than " + std::to_string(kMaxDiskVertices) +
+                       " disk vertices for radius " + std::to_string(r) + " mm");
+  }
+  std::size_t k = std::max<std::size_t>(8, 4 * static_cast<std::size_t>(std::ceil(k_min / 4)));
+  while (k < kMaxDiskVertices &&
+         r * (1.0 - std::cos(std::numbers::pi / static_cast<double>(k))) > allowed) {
+    k += 4;
+  }
+  return k;
+}
+
+// Largest power of two <= v (v > 0), as 2^exponent.
+int floor_log2(double v) { return static_cast<int>(std::floor(std::log2(v))); }
+
+struct Grid {
+  double scale = 1.0; // grid units per mm, 2^m
+  cInt round(double mm) const { return static_cast<cInt>(std::llround(mm * scale)); }
+};
+
+// Convex hull (Andrew's monotone chain) of the given integer points, counterclockwise.
+Path convex_hull(Path pts) {
+  std::sort(pts.begin(), pts.end(), [](const IntPoint& a, const IntPoint& b) {
+    return a.X < b.X || (a.X == b.X && a.Y < b.Y);
+  });
+  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+  if (pts.size() < 3) return pts;
+  auto cross = [](const IntPoint& o, const IntPoint& a, const IntPoint& b) {
+    const Int128 ax = a.X - o.X, ay = a.Y - o.Y, bx = b.X - o.X, by = b.Y - o.Y;
+    return ax * by - ay * bx;
+  };
+  Path hull(2 * pts.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], pts[i]) <= 0) --k;
+    hull[k++] = pts[i];
+  }
+  for (std::size_t i = pts.size() - 1, t = k + 1; i > 0; --i) {
+    while (k >= t && cross(hull[k - 2], hull[k - 1], pts[i - 1]) <= 0) --k;
+    hull[k++] = pts[i - 1];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+void check_finite(double v, const char* what, std::size_t i) {
+  if (!std::isfinite(v)) {
+    throw InvalidInput(std::string("sample ") + std::to_string(i) + ": " + what + " is not finite");
+  }
+}
+
+Ring to_ring(const Path& path, double grid) {
+  Ring ring;
+  ring.reserve(path.size());
+  const Rational g = exact(grid);
+  for (const auto& p : path) {
+    ring.push_back({Rational(mpz_class(static_cast<long>(p.X))) * g,
+                    Rational(mpz_class(static_cast<long>(p.Y))) * g});
+  }
+  return ring;
+}
+
+void collect(const ClipperLib::PolyNode& node, double grid, PolygonSet& out) {
+  // node is an outer contour; its children are holes, whose children are outer contours again.
+  PolygonWithHoles polygon;
+  polygon.outer = to_ring(node.Contour, grid);
+  for (const ClipperLib::PolyNode* hole : node.Childs) {
+    polygon.holes.push_back(to_ring(hole->Contour, grid));
+    for (const ClipperLib::PolyNode* island : hole->Childs) collect(*island, grid, out);
+  }
+  out.polygons.push_back(std::move(polygon));
+}
+
+// Douglas-Peucker on (x, y, radius): keeps the ends and every sample whose distance to the kept
+// chord, plus its radius's difference from the chord's interpolated radius, exceeds tau. Every
+// removed sample is within tau of the simplified chain and every chord point within tau of the
+// original chain (it sweeps from one kept sample to the next), so the swept regions differ by at
+// most tau.
+std::vector<InkSample> simplify(const std::vector<InkSample>& in, double tau) {
+  if (in.size() <= 2) return in;
+  std::vector<char> keep(in.size(), 0);
+  keep.front() = keep.back() = 1;
+  std::vector<std::pair<std::size_t, std::size_t>> stack{{0, in.size() - 1}};
+  while (!stack.empty()) {
+    const auto [i, j] = stack.back();
+    stack.pop_back();
+    const InkSample& a = in[i];
+    const InkSample& b = in[j];
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    const double len2 = dx * dx + dy * dy;
+    double worst = -1;
+    std::size_t worst_k = i;
+    for (std::size_t k = i + 1; k < j; ++k) {
+      const InkSample& p = in[k];
+      const double t =
+          len2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / len2, 0.0, 1.0) : 0.0;
+      const double d = std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy) +
+                       std::abs(p.radius - (a.radius + t * (b.radius - a.radius)));
+      if (d > worst) {
+        worst = d;
+        worst_k = k;
+      }
+    }
+    if (worst > tau) {
+      keep[worst_k] = 1;
+      stack.push_back({i, worst_k});
+      stack.push_back({worst_k, j});
+    }
+  }
+  std::vector<InkSample> out;
+  for (std::size_t k = 0; k < in.size(); ++k) {
+    if (keep[k]) out.push_back(in[k]);
+  }
+  return out;
+}
+
+} // namespace
+
+std::vector<InkSample> ink_samples(const Stroke& stroke, const InkOptions& options) {
+  const TabletInfo& t = stroke.tablet;
+  const double sx = t.x_resolution > 0 ? 1.0 / t.x_resolution : 1.0;
+  const double sy = t.y_resolution > 0 ? 1.0 / t.y_resolution : 1.0;
+  const bool pressure = options.use_pressure && t.pressure_max > 0;
+  std::vector<InkSample> out;
+  out.reserve(stroke.samples.size());
+  for (const PenSample& s : stroke.samples) {
+    double r = options.radius_mm;
+    if (pressure) {
+      const double p = std::clamp(
+          static_cast<double>(s.pressure) / static_cast<double>(t.pressure_max), 0.0, 1.0);
+      r *= options.min_fraction + (1.0 - options.min_fraction) * std::pow(p, options.gamma);
+    }
+    out.push_back({static_cast<double>(s.x) * sx, static_cast<double>(s.y) * sy, r});
+  }
+  return out;
+}
+
+InkPolygon ink_polygon(const std::vector<std::vector<InkSample>>& strokes,
+                       const InkOptions& options) {
+  std::size_t total = 0;
+  for (const auto& stroke : strokes) total += stroke.size();
+  if (strokes.empty() || total == 0) throw InvalidInput("the stroke has no samples");
+  if (total > options.max_samples) {
+    throw InvalidInput("the strokes have " + std::to_string(total) +
+                       " samples, over the limit of " + std::to_string(options.max_samples));
+  }
+  if (!(options.radius_mm > 0) || !std::isfinite(options.radius_mm)) {
+    throw InvalidInput("the pen radius must be positive and finite");
+  }
+  if (!(options.min_fraction >= 0 && options.min_fraction <= 1) || !(options.gamma > 0) ||
+      !std::isfinite(options.gamma)) {
+    throw InvalidInput("the pressure curve needs min_fraction in [0, 1] and a finite gamma > 0");
+  }
+  const double max_error =
+      options.max_error_mm == 0.0 ? options.radius_mm / 50 : options.max_error_mm;
+  if (!(max_error > 0) || !std::isfinite(max_error)) {
+    throw InvalidInput("the maximal error must be positive and finite");
+  }
+  double r_max = 0;
+  double extent = 0;
+  for (std::size_t j = 0; j < strokes.size(); ++j) {
+    const auto& samples = strokes[j];
+    if (samples.empty()) throw InvalidInput("stroke " + std::to_string(j) + " has no samples");
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+      check_finite(samples[i].x, "x", i);
+      check_finite(samples[i].y, "y", i);
+      check_finite(samples[i].radius, "radius", i);
+      if (!(samples[i].radius > 0)) {
+        throw InvalidInput("sample " + std::to_string(i) + ": radius must be positive");
+      }
+      if (std::abs(samples[i].x) > kMaxCoordinateMm || std::abs(samples[i].y) > kMaxCoordinateMm) {
+        throw InvalidInput("sample " + std::to_string(i) + ": coordinate beyond 10^9 mm");
+      }
+      r_max = std::max(r_max, samples[i].radius);
+      extent = std::max({extent, std::abs(samples[i].x), std::abs(samples[i].y)});
+    }
+  }
+  if (r_max > kMaxCoordinateMm) throw InvalidInput("the pen radius exceeds 10^9 mm");
+
+  InkPolygon result;
+  const std::size_t k = polygon_vertices(r_max, max_error / 2);
+  const double tau = max_error / 4;
+  // Rounding: up to three times half a grid diagonal (input points, offset vertices, union
+  // intersections), so 1.5·sqrt(2)·grid <= max_error / 4.
+  result.grid = std::ldexp(1.0, floor_log2(max_error / 4 / (1.5 * std::numbers::sqrt2)));
+  const Grid grid{1.0 / result.grid};
+  if ((extent + r_max) * grid.scale > kMaxGridUnits) {
+    throw InvalidInput("coordinates too large for the requested precision (more than 10^18 " +
+                       std::string("grid steps of ") + std::to_string(result.grid) + " mm)");
+  }
+  result.disk_vertices = k;
+  const double hull_bound = r_max * (1.0 - std::cos(std::numbers::pi / static_cast<double>(k))) +
+                            tau + std::numbers::sqrt2 * result.grid;
+  // Clipper rounds the number of arc steps, so a last chord may span 1.5 nominal steps: its
+  // sagitta is at most 2.25 times the arc tolerance.
+  const double arc_tolerance = max_error / 2 / 2.25;
+  const double offset_bound = max_error / 2 + tau + 1.5 * std::numbers::sqrt2 * result.grid;
+
+  std::vector<double> cos_k(k);
+  std::vector<double> sin_k(k);
+  for (std::size_t i = 0; i < k; ++i) {
+    const double a = 2 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(k);
+    cos_k[i] = std::cos(a);
+    sin_k[i] = std::sin(a);
+  }
+  auto add_disk = [&](Path& path, const InkSample& s) {
+    for (std::size_t i = 0; i < k; ++i) {
+      path.push_back(
+          {grid.round(s.x + s.radius * cos_k[i]), grid.round(s.y + s.radius * sin_k[i])});
+    }
+  };
+
+  Paths pieces;
+  for (const auto& samples : strokes) {
+    const std::vector<InkSample> kept = simplify(samples, tau);
+    const bool constant_radius = std::all_of(kept.begin(), kept.end(), [&](const InkSample& x) {
+      return x.radius == kept.front().radius;
+    });
+    if (constant_radius && kept.size() > 1) {
+      // One radius: Clipper's own offset of the open polyline with round joins and ends (arc
+      // vertices on the circle), the same region as the union of the hulls.
+      ClipperLib::ClipperOffset offsetter;
+      offsetter.ArcTolerance = arc_tolerance * grid.scale;
+      Path line;
+      line.reserve(kept.size());
+      for (const auto& x : kept) line.push_back({grid.round(x.x), grid.round(x.y)});
+      offsetter.AddPath(line, ClipperLib::jtRound, ClipperLib::etOpenRound);
+      Paths outline;
+      offsetter.Execute(outline, kept.front().radius * grid.scale);
+      pieces.insert(pieces.end(), outline.begin(), outline.end());
+      result.hausdorff_bound = std::max(result.hausdorff_bound, offset_bound);
+    } else if (kept.size() == 1) {
+      Path disk;
+      add_disk(disk, kept.front());
+      pieces.push_back(convex_hull(std::move(disk)));
+      result.hausdorff_bound = std::max(result.hausdorff_bound, hull_bound);
+    } else {
+      // Varying radius: the hull of the two end disks per segment.
+      for (std::size_t i = 0; i + 1 < kept.size(); ++i) {
+        Path both;
+        both.reserve(2 * k);
+        add_disk(both, kept[i]);
+        add_disk(both, kept[i + 1]);
+        pieces.push_back(convex_hull(std::move(both)));
+      }
+      result.hausdorff_bound = std::max(result.hausdorff_bound, hull_bound);
+    }
+  }
+  ClipperLib::Clipper clipper;
+  clipper.StrictlySimple(true);
+  clipper.AddPaths(pieces, ClipperLib::ptSubject, true);
+  ClipperLib::PolyTree tree;
+  if (!clipper.Execute(ClipperLib::ctUnion, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero)) {
+    throw InvalidInput("the union of the pen hulls failed (coordinates out of range)");
+  }
+  for (const ClipperLib::PolyNode* node : tree.Childs) collect(*node, result.grid, result.region);
+  normalize_orientation(result.region);
+  return result;
+}
+
+InkPolygon ink_polygon(const std::vector<InkSample>& samples, const InkOptions& options) {
+  return ink_polygon(std::vector<std::vector<InkSample>>{samples}, options);
+}
+
+InkPolygon ink_polygon(const Stroke& stroke, const InkOptions& options) {
+  return ink_polygon(ink_samples(stroke, options), options);
+}
+
+} // namespace penshape

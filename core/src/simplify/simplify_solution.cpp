@@ -1,0 +1,272 @@
+// τ-simplification of a decided solution (see simplify.hpp for why the result is certified).
+#include <algorithm>
+#include <cmath>
+
+#include "../geometry/segment_distance.hpp"
+#include "penshape/core/simplify.hpp"
+
+namespace penshape {
+namespace {
+
+double segment_distance(PointD p, PointD s, PointD t) {
+  const double dx = t.x - s.x;
+  const double dy = t.y - s.y;
+  const double len2 = dx * dx + dy * dy;
+  const double u =
+      len2 > 0 ? std::clamp(((p.x - s.x) * dx + (p.y - s.y) * dy) / len2, 0.0, 1.0) : 0.0;
+  return std::hypot(p.x - (s.x + u * dx), p.y - (s.y + u * dy));
+}
+
+// Are all vertices strictly between i and j (cyclically) within τ of chord(i, j), exactly?
+// Returns the index of the farthest offender, or n when all are within.
+std::size_t farthest_offender(const Ring& ring, std::size_t i, std::size_t j,
+                              const Rational& tau2) {
+  const std::size_t n = ring.size();
+  std::size_t worst = n;
+  Rational worst_d = tau2;
+  for (std::size_t k = (i + 1) % n; k != j; k = (k + 1) % n) {
+    const Rational d = detail::squared_distance_to_segment(ring[k], ring[i], ring[j]);
+    if (d > worst_d) {
+      worst_d = d;
+      worst = k;
+    }
+  }
+  return worst;
+}
+
+Ring pick(const Ring& ring, const std::vector<std::size_t>& idx) {
+  Ring out;
+  out.reserve(idx.size());
+  for (const auto i : idx) out.push_back(ring[i]);
+  return out;
+}
+
+std::vector<const Ring*> all_rings(const PolygonSet& set) {
+  std::vector<const Ring*> rings;
+  for (const auto& p : set.polygons) {
+    rings.push_back(&p.outer);
+    for (const auto& h : p.holes) rings.push_back(&h);
+  }
+  return rings;
+}
+
+// The diameter pair of a ring's vertices (doubles; exactness is not needed to choose them).
+std::pair<std::size_t, std::size_t> far_pair(const Ring& ring) {
+  std::vector<PointD> d;
+  for (const auto& p : ring) d.push_back(to_double(p));
+  std::pair<std::size_t, std::size_t> best{0, 0};
+  double best_d = -1;
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    for (std::size_t j = i + 1; j < d.size(); ++j) {
+      const double dd = std::hypot(d[i].x - d[j].x, d[i].y - d[j].y);
+      if (dd > best_d) {
+        best_d = dd;
+        best = {i, j};
+      }
+    }
+  }
+  return best;
+}
+
+// A single ring within τ of the segment between its two farthest vertices collapses to that
+// segment: the stadium around it is convex, so the vertices' check covers the region, and the
+// region, connected between the endpoints, meets every perpendicular of the segment within it.
+bool collapse_to_segment(PolygonSet& p, const PolygonSet& source, const Rational& tau2) {
+  if (source.polygons.size() != 1 || !source.polygons[0].holes.empty()) return false;
+  const Ring& ring = source.polygons[0].outer;
+  if (ring.size() > 4096) return false; // the quadratic diameter search would be slow
+  const auto [a, b] = far_pair(ring);
+  if (a == b) return false;
+  for (const auto& v : ring) {
+    if (detail::squared_distance_to_segment(v, ring[a], ring[b]) > tau2) return false;
+  }
+  p = PolygonSet{};
+  p.polygons.push_back({{ring[a], ring[b]}, {}});
+  return true;
+}
+
+} // namespace
+
+std::vector<std::size_t> simplify_ring_indices(const Ring& ring, const Rational& tau) {
+  const std::size_t n = ring.size();
+  std::vector<std::size_t> keep;
+  if (n <= 3) {
+    for (std::size_t i = 0; i < n; ++i) keep.push_back(i);
+    return keep;
+  }
+  std::vector<PointD> d;
+  d.reserve(n);
+  for (const auto& p : ring) d.push_back(to_double(p));
+  const double tau_d = to_double(tau) * (1 - 1e-9); // doubles choose, rationals confirm
+  // Greedy: from each kept vertex, reach as far as every skipped vertex stays within τ.
+  std::size_t i = 0;
+  keep.push_back(0);
+  while (true) {
+    std::size_t best = i + 1;
+    for (std::size_t j = i + 2; j <= n; ++j) {
+      bool ok = true;
+      const PointD pj = d[j % n];
+      for (std::size_t k = i + 1; k < j && ok; ++k) ok = segment_distance(d[k], d[i], pj) <= tau_d;
+      if (!ok) break;
+      best = j;
+    }
+    if (best >= n) break;
+    keep.push_back(best);
+    i = best;
+  }
+  // Exact confirmation; split a chord at its farthest offender until all hold.
+  const Rational tau2 = tau * tau;
+  for (std::size_t t = 0; t < keep.size(); ++t) {
+    const std::size_t from = keep[t];
+    const std::size_t to = keep[(t + 1) % keep.size()];
+    const std::size_t bad = farthest_offender(ring, from, to, tau2);
+    if (bad != n) {
+      keep.insert(keep.begin() + static_cast<std::ptrdiff_t>(t) + 1, bad);
+      std::sort(keep.begin(), keep.end());
+      t = static_cast<std::size_t>(-1); // recheck from the start: cheap, rare
+    }
+  }
+  if (keep.size() < 3) { // a ring must keep an area; segments come from collapse_to_segment
+    keep.clear();
+    for (std::size_t k = 0; k < n; ++k) keep.push_back(k);
+  }
+  return keep;
+}
+
+bool is_valid_region(const PolygonSet& set) {
+  struct Edge {
+    const ExactPoint* a;
+    const ExactPoint* b;
+    std::size_t ring;
+    std::size_t index;
+    std::size_t ring_size;
+    double xmin, xmax, ymin, ymax;
+  };
+  std::vector<Edge> edges;
+  const auto rings = all_rings(set);
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    const Ring& ring = *rings[r];
+    if (ring.size() < 3 || sgn(twice_signed_area(ring)) == 0) return false;
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const ExactPoint& a = ring[i];
+      const ExactPoint& b = ring[(i + 1) % ring.size()];
+      if (a == b) return false;
+      const PointD da = to_double(a);
+      const PointD db = to_double(b);
+      const double pad =
+          1e-9 * (1 + std::abs(da.x) + std::abs(da.y) + std::abs(db.x) + std::abs(db.y));
+      edges.push_back({&a, &b, r, i, ring.size(), std::min(da.x, db.x) - pad,
+                       std::max(da.x, db.x) + pad, std::min(da.y, db.y) - pad,
+                       std::max(da.y, db.y) + pad});
+    }
+  }
+  std::sort(edges.begin(), edges.end(),
+            [](const Edge& x, const Edge& y) { return x.xmin < y.xmin; });
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    for (std::size_t j = i + 1; j < edges.size() && edges[j].xmin <= edges[i].xmax; ++j) {
+      const Edge& e = edges[i];
+      const Edge& f = edges[j];
+      if (f.ymin > e.ymax || e.ymin > f.ymax) continue;
+      if (e.ring == f.ring) {
+        const std::size_t n = e.ring_size;
+        const bool adjacent = (e.index + 1) % n == f.index || (f.index + 1) % n == e.index;
+        if (adjacent) {
+          // Neighbours share one endpoint; they must not fold back onto each other.
+          const ExactPoint& shared = (e.index + 1) % n == f.index ? *e.b : *e.a;
+          const ExactPoint& p = (e.index + 1) % n == f.index ? *e.a : *e.b;
+          const ExactPoint& q = (e.index + 1) % n == f.index ? *f.b : *f.a;
+          if (detail::orientation(p, shared, q) == 0 &&
+              sgn((p.x - shared.x) * (q.x - shared.x) + (p.y - shared.y) * (q.y - shared.y)) > 0) {
+            return false;
+          }
+          continue;
+        }
+      }
+      if (detail::segments_meet(*e.a, *e.b, *f.a, *f.b)) return false;
+    }
+  }
+  // No edges meet, so nesting is decided by one vertex per ring.
+  for (std::size_t p = 0; p < set.polygons.size(); ++p) {
+    const auto& poly = set.polygons[p];
+    for (const auto& h : poly.holes) {
+      if (!detail::strictly_inside_ring(h.front(), poly.outer)) return false;
+      for (const auto& other : poly.holes) {
+        if (&other != &h && detail::strictly_inside_ring(h.front(), other)) return false;
+      }
+    }
+    for (std::size_t q = 0; q < set.polygons.size(); ++q) {
+      if (q == p) continue;
+      const auto& other = set.polygons[q];
+      if (!detail::strictly_inside_ring(poly.outer.front(), other.outer)) continue;
+      bool in_hole = false;
+      for (const auto& h : other.holes)
+        in_hole |= detail::strictly_inside_ring(poly.outer.front(), h);
+      if (!in_hole) return false;
+    }
+  }
+  return true;
+}
+
+std::size_t distinct_vertex_count(const PolygonSet& set) {
+  std::size_t n = 0;
+  for (const auto* ring : all_rings(set)) {
+    if (sgn(twice_signed_area(*ring)) != 0) {
+      n += ring->size();
+      continue;
+    }
+    // A degenerate ring walks there and back: count each point once.
+    std::vector<const ExactPoint*> seen;
+    for (const auto& p : *ring) {
+      const bool dup =
+          std::any_of(seen.begin(), seen.end(), [&](const ExactPoint* s) { return *s == p; });
+      if (!dup) seen.push_back(&p);
+    }
+    n += seen.size();
+  }
+  return n;
+}
+
+SimplifyResult simplify_solution(const PolygonSet& q, const DeconstructResult& raw,
+                                 const CancelHook& cancel, const DeconstructLimits& limits,
+                                 const SimplifyOptions& options) {
+  if (raw.answer != Answer::kYes) throw InvalidInput("simplify_solution needs a YES solution");
+  SimplifyResult out;
+  out.result = raw;
+  out.raw_vertices = distinct_vertex_count(raw.solution);
+  out.solution_vertices = out.raw_vertices;
+  const DeconstructParams& params = raw.params;
+  if (params.radius <= params.tolerance) return out; // P = Q: nothing to gain by deciding again
+
+  Rational tau = params.tolerance * options.tau_fraction;
+  for (std::size_t attempt = 0; attempt < options.attempts; ++attempt, tau /= 2) {
+    const Rational eps_prime = params.tolerance - tau;
+    if (params.precision >= eps_prime) continue; // δ < ε' is the decider's precondition
+    DeconstructParams tighter = params;
+    tighter.tolerance = eps_prime;
+    const DeconstructResult at_prime = deconstruct(q, tighter, cancel, limits);
+    ++out.decider_calls;
+    if (at_prime.answer != Answer::kYes) continue;
+
+    const Rational tau2 = tau * tau;
+    PolygonSet p;
+    if (!(options.allow_degenerate && collapse_to_segment(p, at_prime.solution, tau2))) {
+      p = at_prime.solution;
+      for (auto& poly : p.polygons) {
+        poly.outer = pick(poly.outer, simplify_ring_indices(poly.outer, tau));
+        for (auto& h : poly.holes) h = pick(h, simplify_ring_indices(h, tau));
+      }
+      if (!is_valid_region(p)) continue; // a chord crossed another ring: try a smaller τ
+    }
+    const std::size_t count = distinct_vertex_count(p);
+    if (count >= out.raw_vertices) return out; // no gain over the raw solution
+    out.result.solution = std::move(p);
+    out.result.hausdorff_bound = params.tolerance;
+    out.simplified = true;
+    out.tau = tau;
+    out.solution_vertices = count;
+    return out;
+  }
+  return out;
+}
+
+} // namespace penshape

@@ -1,0 +1,74 @@
+#pragma once
+// Where the pen's values sit in a report: built from a parsed HID descriptor (generic HID pens)
+// or by a vendor protocol (reports the descriptor does not describe). One decoder reads both.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "penshape/drivers/hid_descriptor.hpp"
+#include "penshape/types/tablet_info.hpp"
+
+namespace penshape::drivers {
+
+// One value in a report. `bit_size == 0` means the report does not carry it. A value may be
+// split: the low `bit_size` bits at `bit_offset` and the high `high_bit_size` bits at
+// `high_bit_offset` (UC-Logic vendor reports keep the third coordinate byte apart).
+struct PenField {
+  std::uint32_t bit_offset = 0;
+  std::uint32_t bit_size = 0;
+  std::uint32_t high_bit_offset = 0;
+  std::uint32_t high_bit_size = 0;
+  bool is_signed = false;
+  bool inverted = false; // a flag that reads 1 when the condition is false
+  std::int32_t logical_minimum = 0;
+  std::int32_t logical_maximum = 0;
+
+  [[nodiscard]] bool present() const { return bit_size > 0; }
+  [[nodiscard]] std::uint32_t total_bits() const { return bit_size + high_bit_size; }
+};
+
+// The layout of one pen input report.
+struct PenLayout {
+  std::uint8_t report_id = 0; // 0: the device sends no report ID byte
+  bool uses_report_id = false;
+  std::uint32_t min_report_bytes = 0; // shorter reports are junk (including the ID byte)
+  // Vendor reports that share one report ID with non-pen reports: a report is the pen's only if
+  // (report[match_byte] & match_mask) == match_value, or, with match_reject, only if it is not.
+  // match_mask 0 accepts every report.
+  std::uint32_t match_byte = 0;
+  std::uint8_t match_mask = 0;
+  std::uint8_t match_value = 0;
+  bool match_reject = false;
+
+  PenField tip, in_range, barrel1, barrel2, barrel3, eraser, invert;
+  PenField x, y, pressure, tilt_x, tilt_y;
+  // Tilt in degrees = (logical - logical_minimum) * tilt_scale + tilt_offset.
+  double tilt_scale = 1.0;
+  double tilt_offset = 0.0;
+
+  double x_resolution = 0.0; // units per mm, 0 when the descriptor gives no physical size
+  double y_resolution = 0.0;
+  std::string origin; // "hid" or the vendor protocol that built it
+
+  [[nodiscard]] std::int32_t x_max() const { return x.logical_maximum - x.logical_minimum; }
+  [[nodiscard]] std::int32_t y_max() const { return y.logical_maximum - y.logical_minimum; }
+  [[nodiscard]] std::uint32_t pressure_max() const {
+    return pressure.present()
+               ? static_cast<std::uint32_t>(pressure.logical_maximum - pressure.logical_minimum)
+               : 0U;
+  }
+};
+
+// Every pen input report of a descriptor: a report with absolute X and Y plus a tip switch, tip
+// pressure or in-range bit, inside a pen/digitizer application or a stylus collection, or a
+// mouse-mode report that carries tip pressure (UC-Logic firmware mode). Touch (finger) reports
+// are not pens. The digitizer-page reports come first.
+std::vector<PenLayout> find_pen_layouts(const ParsedDescriptor& descriptor);
+
+// Units per millimetre of an axis field from its physical extents and unit, 0 when unknown.
+double resolution_per_mm(const ReportField& axis);
+
+// Fills maxima, resolution and tilt of `info` from a layout (identity fields are left alone).
+void apply_layout(const PenLayout& layout, TabletInfo& info);
+
+} // namespace penshape::drivers

@@ -1,0 +1,72 @@
+#include "penshape/drivers/replay.hpp"
+
+namespace penshape::drivers {
+
+RecordingSource::RecordingSource(std::vector<HidEvent> events, ReplaySpeed speed)
+    : events_(std::move(events)), speed_(speed), start_(std::chrono::steady_clock::now()) {
+  if (!events_.empty()) t0_ = events_.front().time_us;
+}
+
+std::int64_t RecordingSource::now_us() const {
+  if (speed_ == ReplaySpeed::kAsFastAsPossible) {
+    std::lock_guard lock(mutex_);
+    return virtual_now_;
+  }
+  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() -
+                                                               start_)
+      .count();
+}
+
+void RecordingSource::interrupt() {
+  {
+    std::lock_guard lock(mutex_);
+    interrupted_ = true;
+  }
+  cv_.notify_all();
+}
+
+ReadStatus RecordingSource::read(std::vector<std::uint8_t>& bytes, std::int64_t& time_us,
+                                 std::chrono::milliseconds timeout) {
+  std::unique_lock lock(mutex_);
+  if (interrupted_ || next_ >= events_.size()) return ReadStatus::kEnd;
+  const HidEvent& e = events_[next_];
+  const std::int64_t due = e.time_us - t0_;
+  const std::int64_t timeout_us =
+      std::chrono::duration_cast<std::chrono::microseconds>(timeout).count();
+  if (speed_ == ReplaySpeed::kAsFastAsPossible) {
+    // Virtual time: a gap longer than the poll period is a timeout, as it would be live.
+    if (due - virtual_now_ > timeout_us) {
+      virtual_now_ += timeout_us;
+      return ReadStatus::kTimeout;
+    }
+  } else {
+    const auto due_at = start_ + std::chrono::microseconds(due);
+    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    if (cv_.wait_until(lock, std::min(due_at, deadline), [&] { return interrupted_; })) {
+      return ReadStatus::kEnd;
+    }
+    if (std::chrono::steady_clock::now() < due_at) return ReadStatus::kTimeout;
+  }
+  virtual_now_ = std::max(virtual_now_, due);
+  bytes = e.bytes;
+  time_us = due;
+  ++next_;
+  return ReadStatus::kReport;
+}
+
+ReplayResult replay(const Recording& recording, ReplaySpeed speed, SegmenterOptions options) {
+  const DeviceProfile profile =
+      build_profile(recording.identity, recording.descriptor, recording.vendor_strings);
+  ReplayResult result;
+  result.tablet = profile.info;
+  PenPipeline pipeline(profile, options,
+                       {.on_sample = [&](const PenSample& s) { result.samples.push_back(s); },
+                        .on_stroke = [&](Stroke&& s) { result.strokes.push_back(std::move(s)); }});
+  RecordingSource source(recording.events, speed);
+  const std::atomic<bool> stop{false};
+  run_reader_loop(source, pipeline, stop);
+  result.counters = pipeline.counters();
+  return result;
+}
+
+} // namespace penshape::drivers

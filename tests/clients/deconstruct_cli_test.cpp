@@ -1,0 +1,113 @@
+// `penshape deconstruct` run as a user would, on the shared demo polygons.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+
+namespace {
+
+struct Result {
+  int exit_code = -1;
+  std::string out;
+};
+
+Result run(const std::string& args) {
+  const std::string cmd = std::string(PENSHAPE_CLI) + " deconstruct " + args + " 2>&1";
+  Result r;
+  FILE* pipe = ::popen(cmd.c_str(), "r");
+  if (pipe == nullptr) return r;
+  std::array<char, 4096> buf{};
+  while (std::fgets(buf.data(), static_cast<int>(buf.size()), pipe) != nullptr) r.out += buf.data();
+  const int status = ::pclose(pipe);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::string polygon(const std::string& name) {
+  const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR");
+  const std::string dir = env != nullptr && *env ? env : PENSHAPE_SHARED_DATA_DIR;
+  return dir + "/polygons/" + name;
+}
+
+TEST(DeconstructCli, Work1IsYesWithJsonKeys) {
+  const Result r = run(polygon("authors_demo_1_01_work1.txt") +
+                       " --radius 1 --tolerance 0.1 --engine reference --json");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_EQ(r.out.rfind("{\"answer\":\"YES\",\"engine\":\"reference\",\"seconds\":", 0), 0U)
+      << r.out;
+  for (const char* key : {"\"solution\":[{\"outer\":[[", "\"holes\":[]",
+                          "\"solution_vertices\":", "\"hausdorff_bound\":0.1", "\"disk_vertices\":",
+                          "\"params\":{\"radius\":1,\"tolerance\":0.1,\"precision\":0.0125}"}) {
+    EXPECT_NE(r.out.find(key), std::string::npos) << key << " in " << r.out;
+  }
+}
+
+TEST(DeconstructCli, Fail1IsNo) {
+  const Result r = run(polygon("authors_demo_1_01_fail1.txt") +
+                       " --radius 1 --tolerance 0.1 --engine reference --json");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_EQ(r.out.rfind("{\"answer\":\"NO\"", 0), 0U) << r.out;
+  EXPECT_NE(r.out.find("\"solution\":[]"), std::string::npos) << r.out;
+}
+
+TEST(DeconstructCli, WktInput) {
+  const std::string path = std::string(PENSHAPE_BINARY_DIR) + "/deconstruct_cli_square.wkt";
+  std::ofstream(path) << "POLYGON ((0 0, 5 0, 5 5, 0 5, 0 0))\n";
+  const Result r = run(path + " --radius 1 --tolerance 0.1 --precision 0.01 --engine reference");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("answer: NO"), std::string::npos) << r.out;
+}
+
+TEST(DeconstructCli, BadInputExitsTwo) {
+  EXPECT_EQ(run("/nonexistent/file.txt --radius 1 --tolerance 0.1").exit_code, 2);
+  EXPECT_EQ(run(polygon("authors_demo_1_01_work1.txt") + " --tolerance 0.1").exit_code, 2);
+  const Result nan = run(polygon("authors_demo_1_01_work1.txt") + " --radius nan --tolerance 0.1");
+  EXPECT_EQ(nan.exit_code, 2);
+  EXPECT_NE(nan.out.find("--radius"), std::string::npos) << nan.out;
+  const Result coarse =
+      run(polygon("authors_demo_1_01_work1.txt") + " --radius 1 --tolerance 0.1 --precision 0.5");
+  EXPECT_EQ(coarse.exit_code, 2);
+  EXPECT_NE(coarse.out.find("precision must be smaller than the tolerance"), std::string::npos)
+      << coarse.out;
+  EXPECT_EQ(
+      run(polygon("authors_demo_1_01_work1.txt") + " --radius 1 --tolerance 0.1 --engine quick")
+          .exit_code,
+      2);
+}
+
+TEST(DeconstructCli, MalformedFileNamesTheLine) {
+  const std::string path = std::string(PENSHAPE_BINARY_DIR) + "/deconstruct_cli_bad.txt";
+  std::ofstream(path) << "# header\n0 0\n1 0\n1 x\n";
+  const Result r = run(path + " --radius 1 --tolerance 0.1");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("line 4"), std::string::npos) << r.out;
+}
+
+TEST(DeconstructCli, SelfIntersectingFileIsRejected) {
+  const std::string path = std::string(PENSHAPE_BINARY_DIR) + "/deconstruct_cli_bowtie.txt";
+  std::ofstream(path) << "0 0\n4 4\n4 0\n0 6\n";
+  const Result r = run(path + " --radius 1 --tolerance 0.1");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("self-intersecting"), std::string::npos) << r.out;
+}
+
+} // namespace
+
+namespace {
+
+TEST(DeconstructCli, ArcsOfTheSolutionOffset) {
+  const Result r = run(polygon("authors_demo_1_01_work1.txt") +
+                       " --radius 1 --tolerance 0.1 --engine reference --json --arcs");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("\"offset\":[{\"outer\":[{\""), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("{\"arc\":{\"center\":["), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"radius\":1,"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("{\"segment\":[["), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"offset_max_error\":"), std::string::npos) << r.out;
+}
+
+} // namespace

@@ -1,0 +1,102 @@
+// offset(P, r) with true arcs, checked independently: every sampled boundary point (along
+// segments and along the arcs themselves) is at distance r from P up to the stated error, the
+// curves chain into closed rings, and arcs sit on P's vertices.
+#include "penshape/core/arc_offset.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "penshape/core/deconstruct.hpp"
+#include "penshape/core/polygon_io.hpp"
+#include "support/hausdorff_check.hpp"
+#include "support/shared_data.hpp"
+
+namespace penshape {
+namespace {
+
+struct Counts {
+  std::size_t segments = 0;
+  std::size_t arcs = 0;
+};
+
+// Distance from p to the region P (0 inside), independent of the code under test.
+double distance_to_p(const test::RegionD& p, PointD x) { return test::distance_to_region(p, x); }
+
+Counts check_ring(const CurveRing& ring, const test::RegionD& p, double r, double err) {
+  Counts c;
+  EXPECT_FALSE(ring.curves.empty());
+  for (std::size_t i = 0; i < ring.curves.size(); ++i) {
+    const BoundaryCurve& k = ring.curves[i];
+    const BoundaryCurve& next = ring.curves[(i + 1) % ring.curves.size()];
+    EXPECT_NEAR(k.end.x, next.start.x, 1e-12);
+    EXPECT_NEAR(k.end.y, next.start.y, 1e-12);
+    for (int s = 0; s <= 8; ++s) {
+      const double t = s / 8.0;
+      PointD x;
+      if (k.kind == BoundaryCurve::Kind::kSegment) {
+        ++c.segments;
+        x = {k.start.x + t * (k.end.x - k.start.x), k.start.y + t * (k.end.y - k.start.y)};
+      } else {
+        ++c.arcs;
+        EXPECT_DOUBLE_EQ(k.radius, r);
+        const double a0 = std::atan2(k.start.y - k.center.y, k.start.x - k.center.x);
+        double a1 = std::atan2(k.end.y - k.center.y, k.end.x - k.center.x);
+        while (a1 < a0) a1 += 2 * std::numbers::pi; // counterclockwise
+        const double a = a0 + t * (a1 - a0);
+        x = {k.center.x + r * std::cos(a), k.center.y + r * std::sin(a)};
+      }
+      EXPECT_NEAR(distance_to_p(p, x), r, err) << "curve " << i << " t " << t;
+    }
+  }
+  return c;
+}
+
+TEST(ArcOffset, SquareHasFourSegmentsAndFourArcs) {
+  const PolygonSet square{{{{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {}}}};
+  const CurvedRegion region = offset_with_arcs(square, 1.0);
+  ASSERT_EQ(region.polygons.size(), 1U);
+  const auto& outer = region.polygons[0].outer;
+  const Counts c = check_ring(outer, test::to_region_d(square), 1.0, region.max_error);
+  EXPECT_EQ(c.arcs, 4U * 9);
+  EXPECT_EQ(c.segments, 4U * 9);
+  for (const auto& k : outer.curves) {
+    if (k.kind == BoundaryCurve::Kind::kArc) {
+      EXPECT_TRUE((k.center.x == 0 || k.center.x == 4) && (k.center.y == 0 || k.center.y == 4));
+    }
+  }
+}
+
+TEST(ArcOffset, HoleShrinksWithSharpCorners) {
+  PolygonSet frame{{{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{{2, 2}, {2, 8}, {8, 8}, {8, 2}}}}}};
+  const CurvedRegion region = offset_with_arcs(frame, 1.0);
+  ASSERT_EQ(region.polygons.size(), 1U);
+  ASSERT_EQ(region.polygons[0].holes.size(), 1U);
+  const auto p = test::to_region_d(frame);
+  const Counts hole = check_ring(region.polygons[0].holes[0], p, 1.0, region.max_error);
+  EXPECT_EQ(hole.arcs, 0U); // P's corners at the hole are reflex: no arcs there
+  check_ring(region.polygons[0].outer, p, 1.0, region.max_error);
+}
+
+TEST(ArcOffset, DemoSolutionOffset) {
+  const PolygonSet q = read_xy(test::read_shared("polygons/authors_demo_1_01_work2.txt"));
+  const auto res = deconstruct(q, {1, Rational(1, 10), Rational(1, 80), EngineKind::kReference});
+  ASSERT_EQ(res.answer, Answer::kYes);
+  const CurvedRegion region = offset_with_arcs(res.solution, 1.0, 1e-4);
+  ASSERT_FALSE(region.polygons.empty());
+  const Counts c =
+      check_ring(region.polygons[0].outer, test::to_region_d(res.solution), 1.0, region.max_error);
+  EXPECT_GT(c.arcs, 0U);
+}
+
+TEST(ArcOffset, BadInput) {
+  const PolygonSet square{{{{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {}}}};
+  EXPECT_THROW(offset_with_arcs(square, 0.0), InvalidInput);
+  EXPECT_THROW(offset_with_arcs(square, std::nan("")), InvalidInput);
+  EXPECT_THROW(offset_with_arcs(square, 1.0, -1.0), InvalidInput);
+  EXPECT_THROW(offset_with_arcs(PolygonSet{}, 1.0), InvalidInput);
+}
+
+} // namespace
+} // namespace penshape

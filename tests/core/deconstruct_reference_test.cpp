@@ -1,0 +1,98 @@
+// The reference engine on the authors' demo cases (r = 1, eps = 0.1), with every YES solution
+// checked by the independent sampling Hausdorff check.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "penshape/core/deconstruct.hpp"
+#include "penshape/core/polygon_io.hpp"
+#include "support/hausdorff_check.hpp"
+#include "support/shared_data.hpp"
+
+namespace penshape {
+namespace {
+
+PolygonSet demo(const std::string& name) {
+  return read_xy(test::read_shared("polygons/authors_demo_1_01_" + name + ".txt"));
+}
+
+DeconstructParams params(const Rational& r, const Rational& eps, const Rational& delta) {
+  return {r, eps, delta, EngineKind::kReference};
+}
+
+// H(offset(P, r), Q) <= eps, up to the check's own sampling error.
+void expect_certified_yes(const PolygonSet& q, const DeconstructResult& res, double spacing) {
+  ASSERT_EQ(res.answer, Answer::kYes);
+  ASSERT_FALSE(res.solution.empty());
+  EXPECT_LE(res.hausdorff_bound, res.params.tolerance);
+  const auto h =
+      test::hausdorff_to_offset(test::region_skeleton(res.solution), res.params.radius.get_d(),
+                                test::to_region_d(q), spacing);
+  EXPECT_LE(h.value, res.hausdorff_bound.get_d() + h.error + 1e-9);
+}
+
+TEST(HausdorffCheck, KnownValueAndWrongSolutions) {
+  // P = [0,4]², r = 1, Q = [-1,5]²: the farthest point is Q's corner, sqrt(2) - 1 from the
+  // rounded corner of offset(P, 1).
+  const PolygonSet p{{{{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {}}}};
+  const PolygonSet q{{{{{-1, -1}, {5, -1}, {5, 5}, {-1, 5}}, {}}}};
+  const auto h =
+      test::hausdorff_to_offset(test::region_skeleton(p), 1.0, test::to_region_d(q), 0.01);
+  EXPECT_NEAR(h.value, std::sqrt(2.0) - 1.0, h.error);
+  // A shifted P is far off.
+  const PolygonSet shifted{{{{{1, 0}, {5, 0}, {5, 4}, {1, 4}}, {}}}};
+  const auto far =
+      test::hausdorff_to_offset(test::region_skeleton(shifted), 1.0, test::to_region_d(q), 0.01);
+  EXPECT_GT(far.value, 1.0 - far.error);
+}
+
+TEST(ReferenceEngine, DemoWork1IsYes) {
+  const PolygonSet q = demo("work1");
+  const auto res = deconstruct(q, params(1, Rational(1, 10), Rational(1, 80)));
+  expect_certified_yes(q, res, 0.01);
+  EXPECT_EQ(res.engine, EngineKind::kReference);
+  EXPECT_GT(res.disk_vertices, 0U);
+}
+
+TEST(ReferenceEngine, DemoWork2IsYes) {
+  const PolygonSet q = demo("work2");
+  const auto res = deconstruct(q, params(1, Rational(1, 10), Rational(1, 80)));
+  expect_certified_yes(q, res, 0.01);
+}
+
+TEST(ReferenceEngine, DemoFail1IsNo) {
+  const auto res = deconstruct(demo("fail1"), params(1, Rational(1, 10), Rational(1, 80)));
+  EXPECT_EQ(res.answer, Answer::kNo);
+  EXPECT_TRUE(res.solution.empty());
+}
+
+TEST(ReferenceEngine, DemoFail2IsNoAtFinePrecision) {
+  const auto res = deconstruct(demo("fail2"), params(1, Rational(1, 10), Rational(1, 200)));
+  EXPECT_EQ(res.answer, Answer::kNo);
+}
+
+TEST(Deconstruct, RadiusAtMostToleranceIsYesWithQ) {
+  const PolygonSet q = demo("fail1");
+  const auto res = deconstruct(q, params(Rational(1, 10), Rational(1, 10), Rational(1, 100)));
+  ASSERT_EQ(res.answer, Answer::kYes);
+  EXPECT_EQ(res.solution.vertex_count(), q.vertex_count());
+  EXPECT_EQ(area(res.solution), area(q));
+  expect_certified_yes(q, res, 0.01);
+}
+
+TEST(Deconstruct, CancelHookAborts) {
+  const PolygonSet q = demo("work1");
+  EXPECT_THROW(deconstruct(q, params(1, Rational(1, 10), Rational(1, 80)), [] { return true; }),
+               Cancelled);
+}
+
+TEST(Deconstruct, AnswerAndEngineNames) {
+  EXPECT_STREQ(to_string(Answer::kYes), "YES");
+  EXPECT_STREQ(to_string(Answer::kNo), "NO");
+  EXPECT_STREQ(to_string(Answer::kUndecided), "UNDECIDED");
+  EXPECT_STREQ(to_string(EngineKind::kFast), "fast");
+  EXPECT_STREQ(to_string(EngineKind::kReference), "reference");
+}
+
+} // namespace
+} // namespace penshape

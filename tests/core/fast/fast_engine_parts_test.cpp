@@ -1,0 +1,162 @@
+// The fast engine's building blocks against hand-computed geometry: the grid frame is exact,
+// the checked Douglas-Peucker copy stays within its tolerance, the level-set primitive accepts
+// and rejects exactly around known distances, and regions with holes or several components
+// are deconstructed with independently checked solutions.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "engine/engines.hpp"
+#include "engine/fast/douglas_peucker.hpp"
+#include "engine/fast/grid_frame.hpp"
+#include "engine/fast/level_set_check.hpp"
+#include "engine/fast/segment_index.hpp"
+#include "fast_test_support.hpp"
+
+namespace penshape {
+namespace {
+
+using fast::IPt;
+using fast::IRing;
+using fast::IRings;
+
+DeconstructParams params_of(const Rational& r, const Rational& eps, const Rational& delta) {
+  DeconstructParams p;
+  p.radius = r;
+  p.tolerance = eps;
+  p.precision = delta;
+  return p;
+}
+
+IRing square(std::int64_t x0, std::int64_t y0, std::int64_t side) {
+  return {{x0, y0}, {x0 + side, y0}, {x0 + side, y0 + side}, {x0, y0 + side}};
+}
+
+TEST(FastEngineParts, GridFrameRoundTripsExactly) {
+  PolygonSet q;
+  q.polygons.push_back(
+      {{{Rational(1, 3), Rational(0)}, {Rational(5), Rational(1, 7)}, {Rational(2), Rational(4)}},
+       {}});
+  const DeconstructParams p = params_of(1, Rational(1, 10), Rational(1, 80));
+  const fast::GridFrame frame(q, p);
+  const Rational unit = Rational(1) / Rational(mpz_class(1) << frame.scale_exponent());
+  for (const auto& v : q.polygons[0].outer) {
+    const ExactPoint back = frame.exact(frame.round(v));
+    // Rounding to the grid moves each coordinate by at most half a grid unit.
+    EXPECT_LE(abs(back.x - v.x), unit / 2);
+    EXPECT_LE(abs(back.y - v.y), unit / 2);
+    EXPECT_EQ(frame.round(back), frame.round(v));
+  }
+  // About 2^10 grid units per delta.
+  EXPECT_GE(frame.units(p.precision), 1024.0);
+  EXPECT_LT(frame.units(p.precision), 2048.0);
+}
+
+TEST(FastEngineParts, CheckedSimplificationStaysWithinTolerance) {
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> jitter(-40, 40);
+  // A wobbly circle of 400 vertices, radius 100000 grid units.
+  IRing ring;
+  for (int i = 0; i < 400; ++i) {
+    const double a = 2 * M_PI * i / 400;
+    ring.push_back({std::llround(100000 * std::cos(a)) + jitter(rng),
+                    std::llround(100000 * std::sin(a)) + jitter(rng)});
+  }
+  const double tol = 500.0;
+  const auto simplified = fast::simplify_rings_checked({ring}, tol);
+  ASSERT_TRUE(simplified.has_value());
+  const IRing& s = simplified->front();
+  EXPECT_LT(s.size(), ring.size() / 2);
+  // Independent check: every original vertex is within tol of the simplified ring.
+  for (const IPt& v : ring) {
+    double best = 1e300;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      best = std::min(
+          best, fast_test::seg_dist({static_cast<double>(v.x), static_cast<double>(v.y)},
+                                    {static_cast<double>(s[i].x), static_cast<double>(s[i].y)},
+                                    {static_cast<double>(s[(i + 1) % s.size()].x),
+                                     static_cast<double>(s[(i + 1) % s.size()].y)}));
+    }
+    EXPECT_LE(best, tol);
+  }
+}
+
+// A = square [0, 1000]², whose level set at 100 is the square [-100, 1100]² with rounded
+// corners. B = a square at a known distance from that curve.
+TEST(FastEngineParts, LevelSetPrimitiveMatchesKnownDistances) {
+  const fast::SegmentIndex a({square(0, 0, 1000)}, 100);
+  ASSERT_TRUE(fast::is_certifiable_region(a));
+  for (const std::int64_t gap : {10, 3, -3}) {
+    // B's left side sits `gap` units beyond the level set x = 1100.
+    const fast::SegmentIndex b({square(1100 + gap, 200, 500)}, 100);
+    const bool ok = fast::level_set_avoids({&a, 100.0, &b, 1.0, 2.0}, {});
+    EXPECT_EQ(ok, gap >= 3) << "gap " << gap;
+  }
+  // B containing the whole level set (a big square with A's level set inside) is rejected.
+  const fast::SegmentIndex big({square(-5000, -5000, 10000)}, 1000);
+  EXPECT_FALSE(fast::level_set_avoids({&a, 100.0, &big, 1.0, 2.0}, {}));
+  // Near the rounded corner: the corner point of the level set is at (1100/√2 ...) along the
+  // diagonal, at distance 100 from (1000, 1000); a B just outside the arc is accepted.
+  const std::int64_t c = 1000 + static_cast<std::int64_t>(std::ceil(100 / std::sqrt(2.0))) + 4;
+  const fast::SegmentIndex diag({square(c, c, 300)}, 100);
+  EXPECT_TRUE(fast::level_set_avoids({&a, 100.0, &diag, 1.0, 1.0}, {}));
+}
+
+TEST(FastEngineParts, NonSimpleOrWronglyNestedRingsAreNotCertifiable) {
+  // A bow tie crosses itself.
+  const fast::SegmentIndex bow({{{0, 0}, {100, 100}, {100, 0}, {0, 100}}}, 10);
+  EXPECT_FALSE(fast::is_certifiable_region(bow));
+  // A clockwise "hole" outside its outer ring.
+  IRing hole = square(500, 500, 10);
+  std::reverse(hole.begin(), hole.end());
+  const fast::SegmentIndex stray({square(0, 0, 100), hole}, 10);
+  EXPECT_FALSE(fast::is_certifiable_region(stray));
+  // The same hole inside the outer ring is fine.
+  IRing inner = square(40, 40, 10);
+  std::reverse(inner.begin(), inner.end());
+  const fast::SegmentIndex nested({square(0, 0, 100), inner}, 10);
+  EXPECT_TRUE(fast::is_certifiable_region(nested));
+}
+
+PolygonSet square_set(int x0, int y0, int side) {
+  PolygonWithHoles p;
+  for (const auto& [x, y] :
+       {std::pair{x0, y0}, {x0 + side, y0}, {x0 + side, y0 + side}, {x0, y0 + side}}) {
+    p.outer.push_back({Rational(x), Rational(y)});
+  }
+  PolygonSet s;
+  s.polygons.push_back(std::move(p));
+  return s;
+}
+
+void expect_checked_yes(const PolygonSet& q, const DeconstructParams& p, const char* what) {
+  const DeconstructResult res = detail::decide_fast(q, p, {}, {});
+  ASSERT_EQ(res.answer, Answer::kYes) << what;
+  const double r = p.radius.get_d(), eps = p.tolerance.get_d();
+  const auto c = fast_test::check_yes(q, res.solution, r, eps, eps / 6);
+  EXPECT_LE(c.q_excess, 1e-9) << what;
+  EXPECT_LE(c.p_excess, 1e-9) << what;
+}
+
+TEST(FastEngineParts, RegionWithAHoleAndTwoComponents) {
+  // A 20x20 frame with a 10x10 hole: the hole survives deconstruction at r = 1.
+  PolygonSet frame = square_set(0, 0, 20);
+  Ring hole;
+  for (const auto& [x, y] : {std::pair{5, 5}, {5, 15}, {15, 15}, {15, 5}}) {
+    hole.push_back({Rational(x), Rational(y)});
+  }
+  frame.polygons[0].holes.push_back(hole);
+  expect_checked_yes(frame, params_of(1, Rational(1, 2), Rational(1, 16)), "frame with hole");
+  // Two squares far apart: P has (at least) two components.
+  PolygonSet two = square_set(0, 0, 10);
+  two.polygons.push_back(square_set(30, 0, 10).polygons[0]);
+  const DeconstructResult res =
+      detail::decide_fast(two, params_of(1, Rational(1, 2), Rational(1, 16)), {}, {});
+  ASSERT_EQ(res.answer, Answer::kYes);
+  EXPECT_GE(res.solution.polygons.size(), 2U);
+  expect_checked_yes(two, params_of(1, Rational(1, 2), Rational(1, 16)), "two squares");
+}
+
+} // namespace
+} // namespace penshape

@@ -1,0 +1,206 @@
+// The fast engine's certified answers against independent checks: the authors' demo cases,
+// dense-sampling verification of every YES solution, consistency of answers across eps and
+// delta on random and real polygons, and clear errors at the documented limits.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <random>
+#include <string>
+
+#include "engine/engines.hpp"
+#include "fast_test_support.hpp"
+
+namespace penshape {
+namespace {
+
+using fast_test::check_yes;
+using fast_test::data_dir;
+using fast_test::read_polygon_file;
+
+DeconstructParams params_of(const Rational& r, const Rational& eps, const Rational& delta) {
+  DeconstructParams p;
+  p.radius = r;
+  p.tolerance = eps;
+  p.precision = delta;
+  return p;
+}
+
+DeconstructResult decide(const PolygonSet& q, const DeconstructParams& p) {
+  return detail::decide_fast(q, p, {}, {});
+}
+
+Rational width(const PolygonSet& q) {
+  Rational lo = q.polygons[0].outer[0].x, hi = lo;
+  for (const auto& poly : q.polygons) {
+    for (const auto& v : poly.outer) {
+      lo = std::min(lo, v.x);
+      hi = std::max(hi, v.x);
+    }
+  }
+  return hi - lo;
+}
+
+// Every YES: the solution's r-offset is eps-close to Q at every sampled point.
+void expect_yes_solution_checks(const PolygonSet& q, const DeconstructResult& res,
+                                const std::string& what) {
+  ASSERT_EQ(res.answer, Answer::kYes) << what;
+  ASSERT_FALSE(res.solution.empty()) << what;
+  EXPECT_LE(res.hausdorff_bound, res.params.tolerance) << what;
+  const double r = res.params.radius.get_d(), eps = res.params.tolerance.get_d();
+  const fast_test::YesCheck c = check_yes(q, res.solution, r, eps, eps / 6.0);
+  const double tiny = 1e-9 * (r + eps);
+  EXPECT_LE(c.q_excess, tiny) << what << ": a point of Q is farther than r + eps from P";
+  EXPECT_LE(c.p_excess, tiny) << what << ": a point of offset(P, r) is farther than eps from Q";
+  EXPECT_GT(c.samples, 100U) << what;
+}
+
+TEST(FastEngine, AuthorsDemoCases) {
+  const std::string dir = data_dir() + "/polygons/";
+  const Rational r = 1, eps(1, 10);
+  for (const char* name : {"authors_demo_1_01_work1.txt", "authors_demo_1_01_work2.txt"}) {
+    const PolygonSet q = read_polygon_file(dir + name);
+    const DeconstructResult res = decide(q, params_of(r, eps, eps / 8));
+    expect_yes_solution_checks(q, res, name);
+  }
+  {
+    const PolygonSet q = read_polygon_file(dir + "authors_demo_1_01_fail1.txt");
+    EXPECT_EQ(decide(q, params_of(r, eps, eps / 8)).answer, Answer::kNo);
+  }
+  {
+    // Corners cut by 1/4 need a finer precision than 1/3 (the authors' note).
+    const PolygonSet q = read_polygon_file(dir + "authors_demo_1_01_fail2.txt");
+    EXPECT_NE(decide(q, params_of(r, eps, eps / 8)).answer, Answer::kYes);
+    EXPECT_EQ(decide(q, params_of(r, eps, eps / 64)).answer, Answer::kNo);
+  }
+}
+
+// An independent closed form for NO and YES: for a square (fail1, side 5 > 2r) the largest
+// admissible P is Π = the square shrunk by r - eps (the disk of radius r fits into the
+// eps-rounded corner), and the corner of Q is covered by offset(Π, r + eps) iff
+// sqrt(2) (r - eps) <= r + eps, i.e. eps >= eps_hat = (sqrt(2) - 1)^2 r ≈ 0.1716 r.
+// With delta below |eps - eps_hat| / 2 the answer is decided (Theorems 11, 13).
+TEST(FastEngine, SquareMatchesTheClosedFormThreshold) {
+  const PolygonSet q = read_polygon_file(data_dir() + "/polygons/authors_demo_1_01_fail1.txt");
+  const double eps_hat = (std::sqrt(2.0) - 1.0) * (std::sqrt(2.0) - 1.0);
+  for (const int hundredths : {10, 14, 16}) {
+    const Rational eps(hundredths, 100);
+    ASSERT_LT(eps.get_d(), eps_hat);
+    EXPECT_EQ(decide(q, params_of(1, eps, Rational(1, 1000))).answer, Answer::kNo) << hundredths;
+  }
+  for (const int hundredths : {19, 25, 50}) {
+    const Rational eps(hundredths, 100);
+    ASSERT_GT(eps.get_d(), eps_hat);
+    expect_yes_solution_checks(q, decide(q, params_of(1, eps, Rational(1, 1000))),
+                               "square eps=" + std::to_string(hundredths) + "/100");
+  }
+}
+
+TEST(FastEngine, SharedPolygonsAtThreeRadii) {
+  for (const auto& entry : std::filesystem::directory_iterator(data_dir() + "/polygons")) {
+    if (entry.path().extension() != ".txt") continue;
+    const PolygonSet q = read_polygon_file(entry.path().string());
+    ASSERT_FALSE(q.empty()) << entry.path();
+    const Rational w = width(q);
+    for (const int div : {10, 30, 50}) {
+      const Rational r = w / div, eps = r / 2;
+      const std::string what = entry.path().filename().string() + " r=w/" + std::to_string(div);
+      const DeconstructResult res = decide(q, params_of(r, eps, eps / 8));
+      if (res.answer == Answer::kYes) expect_yes_solution_checks(q, res, what);
+      EXPECT_TRUE(res.answer != Answer::kYes || res.solution.vertex_count() >= 3) << what;
+    }
+  }
+}
+
+TEST(FastEngine, KazakhstanIsApproximableAtHalfRadius) {
+  const PolygonSet q = read_polygon_file(data_dir() + "/polygons/kazakhstan_paper1881.txt");
+  const Rational r = width(q) / 30, eps = r / 2;
+  const DeconstructResult res = decide(q, params_of(r, eps, eps / 8));
+  expect_yes_solution_checks(q, res, "kazakhstan w/30");
+  // Far fewer vertices than the input (the point of deconstruction).
+  EXPECT_LT(res.solution.vertex_count(), q.vertex_count() / 2);
+}
+
+// Certified answers never contradict: YES at eps1 and NO at eps2 > eps1 is impossible, and
+// no two precisions disagree at the same eps.
+TEST(FastEngine, RandomPolygonsAnswersConsistentAcrossEpsAndDelta) {
+  std::mt19937 rng(20261122);
+  int yes = 0, no = 0;
+  for (int trial = 0; trial < 24; ++trial) {
+    const PolygonSet q = fast_test::random_star_polygon(rng, 8 + trial % 20, 10.0);
+    const Rational r(1 + trial % 3, 2);
+    Answer previous = Answer::kNo;
+    Rational previous_eps = 0;
+    for (int k = 1; k <= 7; ++k) {
+      const Rational eps = r * Rational(k, 8);
+      Answer at_eps = Answer::kUndecided;
+      for (const int div : {4, 16}) {
+        const DeconstructResult res = decide(q, params_of(r, eps, eps / div));
+        if (res.answer == Answer::kYes) {
+          expect_yes_solution_checks(q, res, "random trial " + std::to_string(trial));
+          ++yes;
+        }
+        if (res.answer == Answer::kNo) ++no;
+        if (res.answer != Answer::kUndecided) {
+          EXPECT_TRUE(at_eps == Answer::kUndecided || at_eps == res.answer)
+              << "trial " << trial << " eps " << eps.get_d() << ": precisions disagree";
+          at_eps = res.answer;
+        }
+      }
+      // Monotone in eps: once YES, never NO at a larger eps.
+      if (previous == Answer::kYes) {
+        EXPECT_NE(at_eps, Answer::kNo) << "trial " << trial << " YES at " << previous_eps.get_d()
+                                       << " but NO at " << eps.get_d();
+      }
+      if (at_eps != Answer::kUndecided) {
+        previous = at_eps == Answer::kYes ? Answer::kYes : previous;
+        previous_eps = eps;
+      }
+    }
+  }
+  // The sweep must exercise both certified answers.
+  EXPECT_GT(yes, 10);
+  EXPECT_GT(no, 5);
+}
+
+TEST(FastEngine, HugeCoordinatesWithSmallExtentWork) {
+  // A far-away copy of the work1 square: the grid frame translates it.
+  PolygonSet q = read_polygon_file(data_dir() + "/polygons/authors_demo_1_01_work1.txt");
+  const Rational shift(mpz_class("1000000000000"), 1);
+  for (auto& v : q.polygons[0].outer) v.x += shift;
+  const DeconstructResult res = decide(q, params_of(1, Rational(1, 10), Rational(1, 80)));
+  expect_yes_solution_checks(q, res, "shifted work1");
+}
+
+TEST(FastEngine, ExtentTooLargeForPrecisionIsAClearError) {
+  PolygonSet q = read_polygon_file(data_dir() + "/polygons/authors_demo_1_01_work1.txt");
+  for (auto& v : q.polygons[0].outer) v.x *= Rational(mpz_class("1000000000"), 1);
+  try {
+    decide(q, params_of(1, Rational(1, 10), Rational(1, 80)));
+    FAIL() << "expected InvalidInput";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("2^24 times the precision"), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(FastEngine, TinyPrecisionHitsTheDiskLimit) {
+  const PolygonSet q = read_polygon_file(data_dir() + "/polygons/authors_demo_1_01_work1.txt");
+  DeconstructLimits limits;
+  limits.max_disk_vertices = 64;
+  try {
+    detail::decide_fast(q, params_of(1, Rational(1, 10), Rational(1, 100000)), {}, limits);
+    FAIL() << "expected InvalidInput";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("over the limit of 64"), std::string::npos) << e.what();
+  }
+}
+
+TEST(FastEngine, CancelHookStopsTheComputation) {
+  const PolygonSet q = read_polygon_file(data_dir() + "/polygons/kazakhstan_paper1881.txt");
+  const Rational r = width(q) / 30;
+  EXPECT_THROW(detail::decide_fast(q, params_of(r, r / 2, r / 16), [] { return true; }, {}),
+               Cancelled);
+}
+
+} // namespace
+} // namespace penshape
