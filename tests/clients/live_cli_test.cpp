@@ -357,6 +357,48 @@ TEST(LiveCli, RecordWritesAHidRecorderFileOfTheSamples) {
   }
 }
 
+TEST(LiveCli, RecordedFileReplaysToTheSameSamples) {
+  TestDaemon daemon("record-replay");
+  daemon.source->attach("pen-a");
+  const auto file = temp_dir("replay") / "pen.hid.txt";
+  ChildProcess record(
+      {kCli, "record", file.string(), "--strokes", "1", "--address", daemon.address});
+  ASSERT_TRUE(record.wait_for_output("recording pen-a into")) << record.output();
+  const Stroke stroke = daemon.source->draw("pen-a", rectangle_samples());
+  ASSERT_EQ(record.wait(), 0) << record.output();
+  // The drivers' HID decoder (penshape replay --local) reads the synthetic descriptor and gives
+  // back every sample: the hover sample, then the stroke.
+  // stdout only: its summary on stderr would interleave with the JSON lines in one pipe.
+  const auto [code, out] = run_program(
+      {"/bin/sh", "-c", kCli + " replay --local '" + file.string() + "' --json 2>/dev/null"});
+  ASSERT_EQ(code, 0) << out;
+  const std::regex sample(
+      R"re(\{"t":[0-9.e+-]+,"x":(-?\d+),"y":(-?\d+),"pressure":(\d+),"tilt_x":-?\d+,"tilt_y":-?\d+,"tip":(true|false),"in_range":(true|false))re");
+  std::vector<PenSample> replayed;
+  for (const auto& line : lines(out)) {
+    std::smatch m;
+    if (!std::regex_search(line, m, sample)) continue;
+    PenSample p;
+    p.x = std::stoi(m[1]);
+    p.y = std::stoi(m[2]);
+    p.pressure = static_cast<std::uint32_t>(std::stoul(m[3]));
+    p.tip = m[4] == "true";
+    p.in_range = m[5] == "true";
+    replayed.push_back(p);
+  }
+  ASSERT_EQ(replayed.size(), stroke.samples.size() + 1) << out;
+  for (std::size_t i = 0; i < stroke.samples.size(); ++i) {
+    const PenSample& want = stroke.samples[i];
+    const PenSample& got = replayed[i + 1];
+    EXPECT_EQ(got.x, want.x) << i;
+    EXPECT_EQ(got.y, want.y) << i;
+    EXPECT_EQ(got.pressure, want.pressure) << i;
+    EXPECT_EQ(got.tip, want.tip) << i;
+    EXPECT_EQ(got.in_range, want.in_range) << i;
+  }
+  EXPECT_NE(out.find("{\"stroke\":1,"), std::string::npos) << out;
+}
+
 TEST(LiveCli, RecordRefusesWhatItCannotRecord) {
   TestDaemon daemon("record-errors");
   {

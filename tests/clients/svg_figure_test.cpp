@@ -203,6 +203,32 @@ TEST(SvgFigure, StrokeWithCircleAndArcShapes) {
   EXPECT_EQ(band[1].args[4], 1); // sweep flag: increasing angle, as the model's y axis is down
 }
 
+TEST(SvgFigure, FigureOfADeconstructionResult) {
+  const PolygonSet q = read_polygon("authors_S.txt");
+  DeconstructResult yes;
+  yes.answer = Answer::kYes;
+  yes.params.radius = Rational(3, 2);
+  yes.params.tolerance = Rational(1, 2);
+  yes.params.precision = Rational(1, 16);
+  yes.solution = polygon({{0, 0}, {1, 0}, {0, 1}});
+  const auto f = render::deconstruction_figure(q, yes);
+  EXPECT_EQ(f.radius, 1.5);
+  EXPECT_EQ(f.tolerance, 0.5);
+  ASSERT_TRUE(f.p.has_value());
+  EXPECT_EQ(f.p->vertex_count(), 3U);
+  EXPECT_EQ(f.caption.rfind("YES  r = 1.5  eps = 0.5  delta = 0.0625  (fast engine)", 0), 0U)
+      << f.caption;
+  EXPECT_NE(f.caption.find("|P| = 3"), std::string::npos);
+  DeconstructResult no = yes;
+  no.answer = Answer::kNo;
+  no.solution = {};
+  const auto g = render::deconstruction_figure(q, no);
+  EXPECT_FALSE(g.p.has_value());
+  EXPECT_EQ(g.caption.rfind("NO  ", 0), 0U);
+  const ptree doc = parse_xml(render::deconstruction_svg(g));
+  EXPECT_EQ(find_by_id(doc.get_child("svg"), "P"), nullptr);
+}
+
 TEST(SvgFigure, RefusesBadInputWithAClearError) {
   DeconstructionFigure f;
   EXPECT_THROW((void)render::deconstruction_svg(f), std::invalid_argument); // empty Q

@@ -4,6 +4,7 @@
 // boundary stays visible, with no polygonal approximation of the arcs.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <limits>
 #include <numbers>
@@ -448,6 +449,21 @@ std::string stroke_svg(const StrokeFigure& f) {
   }
   close_svg(svg);
   return svg;
+}
+
+DeconstructionFigure deconstruction_figure(const PolygonSet& q, const DeconstructResult& result) {
+  DeconstructionFigure f;
+  f.q = q;
+  f.radius = to_double(result.params.radius);
+  f.tolerance = to_double(result.params.tolerance);
+  if (result.answer == Answer::kYes) f.p = result.solution;
+  char buf[192];
+  std::snprintf(buf, sizeof buf, "%s  r = %.6g  eps = %.6g  delta = %.6g  (%s engine)  |Q| = %zu",
+                to_string(result.answer), f.radius, f.tolerance, to_double(result.params.precision),
+                to_string(result.engine), q.vertex_count());
+  f.caption = buf;
+  if (f.p) f.caption += "  |P| = " + std::to_string(f.p->vertex_count());
+  return f;
 }
 
 void write_svg_file(const std::string& path, const std::string& svg) {

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "penshape/core/deconstruct.hpp"
 #include "penshape/core/polygon_set.hpp"
 
 namespace penshape::render {
@@ -60,6 +61,10 @@ struct StrokeFigure {
   bool y_up = false;    // tablets: y grows downwards
   int max_pixels = 900; // the larger side of the drawing, pixels (caption strip extra)
 };
+
+// The figure of a deconstruction result: Q, and with YES the solution P, offset(P, r) and the
+// ε-band; the caption states the answer, r, ε, δ, the engine and the vertex counts.
+DeconstructionFigure deconstruction_figure(const PolygonSet& q, const DeconstructResult& result);
 
 // The SVG document (UTF-8, standalone, SVG 1.1).
 std::string deconstruction_svg(const DeconstructionFigure& figure);
