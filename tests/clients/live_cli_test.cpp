@@ -399,6 +399,42 @@ TEST(LiveCli, RecordedFileReplaysToTheSameSamples) {
   EXPECT_NE(out.find("{\"stroke\":1,"), std::string::npos) << out;
 }
 
+// The real penshaped replaying a real tablet capture (Wacom PenPartner, hid-recorder format) as
+// a live device: watch sees the device and its strokes, with the samples the drivers' offline
+// decoder finds in the same file.
+TEST(LiveCli, WatchAgainstTheRealDaemonReplayingARealCapture) {
+  const std::string capture =
+      shared_data_dir() + "/hid/wacom-hid-descriptors/Wacom_PenPartner/hidrecord.txt";
+  const std::string address = unique_test_address("real-replay");
+  ChildProcess daemon({PENSHAPED, "--listen", address, "--replay", capture, "--replay-delay", "3"});
+  ASSERT_TRUE(daemon.wait_for_output("listening on")) << daemon.output();
+  ChildProcess watch({kCli, "watch", "--devices", "--json", "--count", "3", "--address", address});
+  ASSERT_EQ(watch.wait(), 0) << watch.output() << daemon.output();
+  daemon.signal(SIGTERM);
+  EXPECT_EQ(daemon.wait(), 0) << daemon.output();
+  std::vector<std::string> events;
+  for (const auto& line : lines(watch.output())) {
+    if (line.rfind("{", 0) == 0) events.push_back(line);
+  }
+  ASSERT_EQ(events.size(), 3U) << watch.output();
+  EXPECT_NE(events[0].find("\"type\":\"device_attached\""), std::string::npos) << events[0];
+  EXPECT_NE(events[0].find("\"replay\":true"), std::string::npos) << events[0];
+  EXPECT_NE(events[0].find("\"vendor_id\":1386,\"product_id\":97"), std::string::npos)
+      << events[0]; // 056a:0061 from the I: line
+  EXPECT_NE(events[1].find("\"type\":\"stroke_started\""), std::string::npos) << events[1];
+  // The first stroke, as the drivers' offline decoder counts it in the same file.
+  const auto [code, out] =
+      run_program({"/bin/sh", "-c", kCli + " replay --local '" + capture + "' --json 2>/dev/null"});
+  ASSERT_EQ(code, 0) << out;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(out, m, std::regex(R"re(\{"stroke":1,[^}]*"samples":(\d+)\})re")))
+      << out;
+  EXPECT_NE(events[2].find(
+                "\"type\":\"stroke_finished\",\"stroke_id\":1,\"samples\":" + m[1].str() + ","),
+            std::string::npos)
+      << events[2] << " vs offline " << m[0];
+}
+
 TEST(LiveCli, RecordRefusesWhatItCannotRecord) {
   TestDaemon daemon("record-errors");
   {
