@@ -45,6 +45,7 @@ struct Result {
   std::string name;
   double reports_per_s = 0;
   double mean_ns = 0;
+  double p50_ns = 0; // median per-report time over batches (robust to preemption on a busy box)
   double p99_ns = 0; // 99th percentile of the per-report time of batches of 1024 reports
 };
 
@@ -79,6 +80,7 @@ Result measure(const std::string& name, const std::vector<std::vector<std::uint8
   r.reports_per_s = static_cast<double>(done) / total;
   r.mean_ns = total * 1e9 / static_cast<double>(done);
   r.p99_ns = batch_ns[batch_ns.size() * 99 / 100];
+  r.p50_ns = batch_ns[batch_ns.size() / 2];
   return r;
 }
 
@@ -164,15 +166,16 @@ int main(int argc, char** argv) {
   if (json) {
     for (const auto& r : results) {
       std::printf(
-          "{\"case\":\"%s\",\"reports_per_s\":%.0f,\"mean_ns\":%.2f,\"p99_batch_ns\":%.2f}\n",
-          r.name.c_str(), r.reports_per_s, r.mean_ns, r.p99_ns);
+          "{\"case\":\"%s\",\"reports_per_s\":%.0f,\"mean_ns\":%.2f,\"p50_ns\":%.2f,"
+          "\"p99_ns\":%.2f}\n",
+          r.name.c_str(), r.reports_per_s, r.mean_ns, r.p50_ns, r.p99_ns);
     }
     return 0;
   }
-  std::printf("%-42s %14s %10s %12s\n", "case", "reports/s", "mean ns", "p99 ns");
+  std::printf("%-42s %14s %9s %9s %9s\n", "case", "reports/s", "mean ns", "p50 ns", "p99 ns");
   for (const auto& r : results) {
-    std::printf("%-42s %14.0f %10.1f %12.1f\n", r.name.c_str(), r.reports_per_s, r.mean_ns,
-                r.p99_ns);
+    std::printf("%-42s %14.0f %9.1f %9.1f %9.1f\n", r.name.c_str(), r.reports_per_s, r.mean_ns,
+                r.p50_ns, r.p99_ns);
   }
   std::printf("target: >= 1000000 reports/s (a 1 kHz tablet then costs < 0.1%% of a core)\n");
   return 0;

@@ -31,6 +31,10 @@ otd = list(csv.DictReader(open(os.path.join(DATA, 'opentabletdriver/configs_summ
 def protocol(vid, pid, rows):
     init = ' '.join(r['init(F=feature,O=output hex; S=string idx)'] for r in rows)
     if vid == '056a' and pid in ('0010', '0061'): return 'wacom-graphire', ''
+    parsers = {r['report_parser'] for r in rows}
+    if vid == '056a' and 'IntuosReportParser' in parsers: return 'wacom-bamboo', 'F:0202'
+    if vid == '056a' and parsers & {'IntuosV1ReportParser', 'IntuosProReportParser'}:
+        return 'wacom-intuos', 'F:0202'
     if 'F:0202' in init: return 'wacom-hid', 'F:0202'
     if vid == '256c' and 'S:200' in init: return 'uclogic', 'S:200'
     if vid == '256c' and 'S:100' in init: return 'uclogic', 'S:100'

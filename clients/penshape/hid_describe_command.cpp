@@ -34,9 +34,12 @@ constexpr const char* kHelp =
 void print_pen_field(const char* name, const PenField& f) {
   if (!f.present()) return;
   std::printf("    %-9s bit %4u size %2u", name, f.bit_offset, f.bit_size);
-  if (f.high_bit_size > 0)
-    std::printf(" + high bits %u size %u", f.high_bit_offset, f.high_bit_size);
-  if (f.bit_size + f.high_bit_size > 1) {
+  if (f.high_bit_size > 0) {
+    std::printf(" + bit %u size %u%s", f.high_bit_offset, f.high_bit_size,
+                f.high_big_endian ? " (big-endian)" : "");
+  }
+  if (f.top_bit_size > 0) std::printf(" + bit %u size %u", f.top_bit_offset, f.top_bit_size);
+  if (f.total_bits() > 1) {
     std::printf("  logical %d..%d", f.logical_minimum, f.logical_maximum);
   }
   if (f.inverted) std::printf("  (inverted)");

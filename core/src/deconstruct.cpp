@@ -1,6 +1,8 @@
 // deconstruct(): validation, the r <= eps shortcut, dispatch to an engine, timing.
 #include "penshape/core/deconstruct.hpp"
 
+#include "penshape/core/convex_deconstruct.hpp"
+
 #include <chrono>
 
 #include "engine/engines.hpp"
@@ -25,7 +27,7 @@ const char* to_string(EngineKind e) { return e == EngineKind::kFast ? "fast" : "
 DeconstructResult deconstruct(const PolygonSet& q, const DeconstructParams& params,
                               const CancelHook& cancel, const DeconstructLimits& limits) {
   const auto start = std::chrono::steady_clock::now();
-  validate_deconstruct_input(q, params, limits);
+  validate_deconstruct_input(q, params, limits, cancel);
   DeconstructResult result;
   if (params.radius <= params.tolerance) {
     // offset(Q, r) is r-close to Q and r <= eps: P = Q is a solution (paper, Section 2).
@@ -38,9 +40,17 @@ DeconstructResult deconstruct(const PolygonSet& q, const DeconstructParams& para
   } else {
     PolygonSet oriented = q;
     normalize_orientation(oriented);
-    result = params.engine == EngineKind::kReference
-                 ? detail::decide_reference(oriented, params, cancel, limits)
-                 : detail::decide_fast(oriented, params, cancel, limits);
+    if (params.engine == EngineKind::kReference) {
+      result = detail::decide_reference(oriented, params, cancel, limits);
+    } else if (is_convex_region(oriented)) {
+      // Convex input: CONVEXDECIDE's linear path (Section 5), on the exact input.
+      result = convex_decide(oriented, params, cancel);
+      if (result.answer == Answer::kUndecided) {
+        result = detail::decide_fast(oriented, params, cancel, limits);
+      }
+    } else {
+      result = detail::decide_fast(oriented, params, cancel, limits);
+    }
     result.engine = params.engine;
     result.params = params;
   }

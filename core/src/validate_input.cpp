@@ -102,7 +102,7 @@ bool adjacent_edges_overlap(const RingRef& r, std::size_t first, std::size_t sec
          detail::on_collinear_segment(*b.exact, *c.exact, *a.exact);
 }
 
-void check_no_crossings(const std::vector<RingRef>& rings) {
+void check_no_crossings(const std::vector<RingRef>& rings, const CancelHook& cancel) {
   std::vector<Edge> edges;
   for (std::size_t k = 0; k < rings.size(); ++k) {
     const auto& pts = rings[k].points;
@@ -117,7 +117,9 @@ void check_no_crossings(const std::vector<RingRef>& rings) {
             [](const Edge& a, const Edge& b) { return a.xmin < b.xmin; });
   // Sweep in x: only edges whose x-ranges overlap are compared exactly.
   std::vector<const Edge*> active;
+  std::size_t visited = 0;
   for (const Edge& e : edges) {
+    if (cancel && ++visited % 256 == 0 && cancel()) throw Cancelled();
     std::erase_if(active, [&](const Edge* a) { return a->xmax < e.xmin; });
     for (const Edge* a : active) {
       if (a->ymax < e.ymin || e.ymax < a->ymin) continue;
@@ -216,7 +218,7 @@ void check_nesting(const std::vector<RingRef>& rings, const PolygonSet& q) {
 
 } // namespace
 
-void validate_region(const PolygonSet& q, std::size_t max_vertices) {
+void validate_region(const PolygonSet& q, std::size_t max_vertices, const CancelHook& cancel) {
   if (q.empty()) throw InvalidInput("the region is empty (no polygons)");
   const std::size_t n = q.vertex_count();
   if (n > max_vertices) {
@@ -243,12 +245,12 @@ void validate_region(const PolygonSet& q, std::size_t max_vertices) {
       r.ymax = std::max(r.ymax, widen_up(v.y));
     }
   }
-  check_no_crossings(rings);
+  check_no_crossings(rings, cancel);
   check_nesting(rings, q);
 }
 
 void validate_deconstruct_input(const PolygonSet& q, const DeconstructParams& params,
-                                const DeconstructLimits& limits) {
+                                const DeconstructLimits& limits, const CancelHook& cancel) {
   const Rational& r = params.radius;
   const Rational& eps = params.tolerance;
   const Rational& delta = params.precision;
@@ -272,7 +274,7 @@ void validate_deconstruct_input(const PolygonSet& q, const DeconstructParams& pa
           " vertices, over the limit of " + std::to_string(limits.max_disk_vertices));
     }
   }
-  validate_region(q, limits.max_input_vertices);
+  validate_region(q, limits.max_input_vertices, cancel);
 }
 
 } // namespace penshape

@@ -48,6 +48,43 @@ class CoreGeometryBackend final : public GeometryBackend {
     out.set_max_error(region.max_error);
     return out;
   }
+
+  ToleranceSearchResult search_tolerance(const PolygonSet& q, const Rational& radius,
+                                         const Rational& width, EngineKind engine,
+                                         const CancelHook& cancel, const DeconstructLimits& limits,
+                                         const DecisionObserver& observe) override {
+    return penshape::search_tolerance(observed(make_decider(q, engine, cancel, limits), observe),
+                                      radius, width);
+  }
+
+  RadiusSearchResult search_radius(const PolygonSet& q, const Rational& tolerance,
+                                   const Rational& width,
+                                   const std::optional<Rational>& upper_bound, EngineKind engine,
+                                   const CancelHook& cancel, const DeconstructLimits& limits,
+                                   const DecisionObserver& observe) override {
+    RadiusSearchOptions options;
+    options.precision = width;
+    const Rational bound = upper_bound ? *upper_bound : enclosing_radius_bound(q) + tolerance;
+    return penshape::search_radius(observed(make_decider(q, engine, cancel, limits), observe),
+                                   tolerance, bound, options);
+  }
+
+  SuggestResult suggest_radius(const PolygonSet& q, const SuggestOptions& options,
+                               EngineKind engine, const CancelHook& cancel,
+                               const DeconstructLimits& limits) override {
+    return penshape::suggest_radius(make_decider(q, engine, cancel, limits), options);
+  }
+
+ private:
+  static Decider observed(Decider decide, const DecisionObserver& observe) {
+    if (!observe) return decide;
+    return [decide = std::move(decide), &observe](const Rational& r, const Rational& eps,
+                                                  const Rational& delta) {
+      DeconstructResult result = decide(r, eps, delta);
+      observe(result);
+      return result;
+    };
+  }
 };
 
 } // namespace

@@ -51,7 +51,7 @@ void publish_stroke(ShapeHub& hub, const std::string& device_id, const Stroke& s
   if (analysis != nullptr) *f->mutable_ink_polygon() = analysis->ink_polygon;
   f->set_not_analysed(not_analysed);
   hub.publish(std::move(finished));
-  if (analysis == nullptr) return;
+  if (analysis == nullptr || analysis->shape.kind() == v1::SHAPE_KIND_UNSPECIFIED) return;
   v1::LiveEvent shape;
   shape.set_device_id(device_id);
   v1::ShapeRecognized* s = shape.mutable_shape();

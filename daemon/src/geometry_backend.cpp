@@ -9,4 +9,24 @@ v1::CurvedRegion GeometryBackend::offset_boundary(const PolygonSet& /*p*/,
       "include_offset: this server's geometry backend cannot compute offset boundaries with arcs");
 }
 
+ToleranceSearchResult GeometryBackend::search_tolerance(const PolygonSet&, const Rational&,
+                                                        const Rational&, EngineKind,
+                                                        const CancelHook&, const DeconstructLimits&,
+                                                        const DecisionObserver&) {
+  throw NotAvailable("SearchTolerance: this server's geometry backend has no tolerance search");
+}
+
+RadiusSearchResult GeometryBackend::search_radius(const PolygonSet&, const Rational&,
+                                                  const Rational&, const std::optional<Rational>&,
+                                                  EngineKind, const CancelHook&,
+                                                  const DeconstructLimits&,
+                                                  const DecisionObserver&) {
+  throw NotAvailable("SearchRadius: this server's geometry backend has no radius search");
+}
+
+SuggestResult GeometryBackend::suggest_radius(const PolygonSet&, const SuggestOptions&, EngineKind,
+                                              const CancelHook&, const DeconstructLimits&) {
+  throw NotAvailable("SuggestRadius: this server's geometry backend has no radius suggestion");
+}
+
 } // namespace penshape::daemon

@@ -1,6 +1,7 @@
 #include "geometry_service.hpp"
 
 #include <chrono>
+#include <optional>
 
 #include "call_runner.hpp"
 #include "penshape/daemon/proto_convert.hpp"
@@ -75,72 +76,228 @@ grpc::Status GeometryServiceImpl::Deconstruct(grpc::ServerContext* context,
   return grpc::Status::OK;
 }
 
+namespace {
+
+// Progress of a search, streamed from the worker at most every kProgressPeriod.
+template <typename Response>
+class ProgressStream {
+ public:
+  static constexpr std::chrono::milliseconds kProgressPeriod{200};
+  ProgressStream(grpc::ServerWriter<Response>* writer, Clock::time_point start, bool radius_search)
+      : writer_(writer), start_(start), radius_search_(radius_search) {}
+
+  // One decision: narrows the known bracket (YES above / NO below for tolerances; the other way
+  // round for radii) and maybe writes a progress message.
+  void decided(const DeconstructResult& r) {
+    ++decisions_;
+    const Rational& x = radius_search_ ? r.params.radius : r.params.tolerance;
+    const bool raises_lower = radius_search_ ? r.answer == Answer::kYes : r.answer == Answer::kNo;
+    const bool lowers_upper = radius_search_ ? r.answer == Answer::kNo : r.answer == Answer::kYes;
+    if (raises_lower && (!lower_ || x > *lower_)) lower_ = x;
+    if (lowers_upper && (!upper_ || x < *upper_)) upper_ = x;
+    maybe_write(0);
+  }
+  void samples_done(std::size_t done, std::size_t total) {
+    decisions_ = static_cast<std::uint32_t>(done);
+    maybe_write(static_cast<std::uint32_t>(total));
+  }
+
+ private:
+  void maybe_write(std::uint32_t estimate) {
+    const auto now = Clock::now();
+    if (now - last_ < kProgressPeriod) return;
+    last_ = now;
+    Response message;
+    v1::SearchProgress* p = message.mutable_progress();
+    p->set_decisions_done(decisions_);
+    p->set_decisions_estimate(estimate);
+    if (lower_) to_proto(*lower_, p->mutable_lower());
+    if (upper_) to_proto(*upper_, p->mutable_upper());
+    p->set_elapsed_us(micros_since(start_));
+    writer_->Write(message); // a vanished client shows up as cancellation, checked by the core
+  }
+
+  grpc::ServerWriter<Response>* writer_;
+  Clock::time_point start_;
+  bool radius_search_;
+  Clock::time_point last_ = Clock::now();
+  std::uint32_t decisions_ = 0;
+  std::optional<Rational> lower_;
+  std::optional<Rational> upper_;
+};
+
+void to_proto_params(const DeconstructResult& r, v1::ResolvedParams* out) {
+  to_proto(r.params.radius, out->mutable_radius());
+  to_proto(r.params.tolerance, out->mutable_tolerance());
+  to_proto(r.params.precision, out->mutable_precision());
+  out->set_engine(to_proto(r.engine));
+}
+
+DeconstructLimits core_limits(const Limits& limits) {
+  DeconstructLimits l;
+  l.max_input_vertices = limits.max_vertices;
+  return l;
+}
+
+Rational positive(const v1::Scalar& s, bool present, const std::string& field,
+                  const Limits& limits) {
+  Rational v = scalar_from_proto(s, present, field, limits);
+  if (sgn(v) <= 0) throw FieldError(field + " must be > 0");
+  return v;
+}
+
+} // namespace
+
 grpc::Status GeometryServiceImpl::SearchTolerance(
-    grpc::ServerContext* /*context*/, const v1::SearchToleranceRequest* request,
-    grpc::ServerWriter<v1::SearchToleranceResponse>* /*writer*/) {
-  const grpc::Status status = validated([&] {
-    polygon_set_from_proto(request->polygon(), "polygon", state_.limits);
-    if (sgn(scalar_from_proto(request->radius(), request->has_radius(), "radius", state_.limits)) <=
-        0) {
-      throw FieldError("radius must be > 0");
-    }
-    if (sgn(scalar_from_proto(request->width(), request->has_width(), "width", state_.limits)) <=
-        0) {
-      throw FieldError("width must be > 0");
-    }
-    engine_from_proto(request->engine(), "engine");
+    grpc::ServerContext* context, const v1::SearchToleranceRequest* request,
+    grpc::ServerWriter<v1::SearchToleranceResponse>* writer) {
+  const auto arrived = Clock::now();
+  PolygonSet q;
+  Rational radius;
+  Rational width;
+  EngineKind engine = EngineKind::kFast;
+  grpc::Status status = validated([&] {
+    q = polygon_set_from_proto(request->polygon(), "polygon", state_.limits);
+    radius = positive(request->radius(), request->has_radius(), "radius", state_.limits);
+    width = positive(request->width(), request->has_width(), "width", state_.limits);
+    engine = engine_from_proto(request->engine(), "engine");
   });
   if (!status.ok()) return status;
-  return not_in_this_build(
-      "SearchTolerance: the tolerance search (APPROXSEARCHEPS) is not in this build yet; "
-      "Deconstruct decides one tolerance at a time");
+  if (!state_.geometry) return not_in_this_build("SearchTolerance: no engine in this build");
+  v1::SearchToleranceResponse last;
+  std::uint64_t queued_us = 0;
+  status = run_on_pool(
+      state_.pool, context, state_.limits,
+      [&](const StopCondition& stop) {
+        const auto started = Clock::now();
+        ProgressStream<v1::SearchToleranceResponse> progress(writer, arrived, false);
+        const ToleranceSearchResult r = state_.geometry->search_tolerance(
+            q, radius, width, engine, cancel_hook(stop), core_limits(state_.limits),
+            [&](const DeconstructResult& d) { progress.decided(d); });
+        v1::SearchToleranceResult* out = last.mutable_result();
+        to_proto(r.eps_low, out->mutable_lower());
+        to_proto(r.eps_high, out->mutable_upper());
+        to_proto(r.solution.solution, out->mutable_solution());
+        to_proto_params(r.solution, out->mutable_params());
+        out->mutable_timings()->set_compute_us(micros_since(started));
+        return grpc::Status::OK;
+      },
+      &queued_us);
+  if (!status.ok()) return status;
+  last.mutable_result()->mutable_timings()->set_queued_us(queued_us);
+  last.mutable_result()->mutable_timings()->set_total_us(micros_since(arrived));
+  writer->Write(last);
+  return grpc::Status::OK;
 }
 
 grpc::Status GeometryServiceImpl::SearchRadius(
-    grpc::ServerContext* /*context*/, const v1::SearchRadiusRequest* request,
-    grpc::ServerWriter<v1::SearchRadiusResponse>* /*writer*/) {
-  const grpc::Status status = validated([&] {
-    polygon_set_from_proto(request->polygon(), "polygon", state_.limits);
-    if (sgn(scalar_from_proto(request->tolerance(), request->has_tolerance(), "tolerance",
-                              state_.limits)) <= 0) {
-      throw FieldError("tolerance must be > 0");
+    grpc::ServerContext* context, const v1::SearchRadiusRequest* request,
+    grpc::ServerWriter<v1::SearchRadiusResponse>* writer) {
+  const auto arrived = Clock::now();
+  PolygonSet q;
+  Rational tolerance;
+  Rational width;
+  std::optional<Rational> upper;
+  EngineKind engine = EngineKind::kFast;
+  grpc::Status status = validated([&] {
+    q = polygon_set_from_proto(request->polygon(), "polygon", state_.limits);
+    tolerance =
+        positive(request->tolerance(), request->has_tolerance(), "tolerance", state_.limits);
+    width = positive(request->width(), request->has_width(), "width", state_.limits);
+    if (request->has_max_radius()) {
+      upper = positive(request->max_radius(), true, "max_radius", state_.limits);
     }
-    if (sgn(scalar_from_proto(request->width(), request->has_width(), "width", state_.limits)) <=
-        0) {
-      throw FieldError("width must be > 0");
-    }
-    if (request->has_max_radius() &&
-        sgn(scalar_from_proto(request->max_radius(), true, "max_radius", state_.limits)) <= 0) {
-      throw FieldError("max_radius must be > 0");
-    }
-    engine_from_proto(request->engine(), "engine");
+    engine = engine_from_proto(request->engine(), "engine");
   });
   if (!status.ok()) return status;
-  return not_in_this_build(
-      "SearchRadius: the radius search is not in this build yet; Deconstruct decides one radius "
-      "at a time");
+  if (!state_.geometry) return not_in_this_build("SearchRadius: no engine in this build");
+  v1::SearchRadiusResponse last;
+  std::uint64_t queued_us = 0;
+  status = run_on_pool(
+      state_.pool, context, state_.limits,
+      [&](const StopCondition& stop) {
+        const auto started = Clock::now();
+        ProgressStream<v1::SearchRadiusResponse> progress(writer, arrived, true);
+        const RadiusSearchResult r = state_.geometry->search_radius(
+            q, tolerance, width, upper, engine, cancel_hook(stop), core_limits(state_.limits),
+            [&](const DeconstructResult& d) { progress.decided(d); });
+        v1::SearchRadiusResult* out = last.mutable_result();
+        to_proto(r.r_low, out->mutable_lower());
+        to_proto(r.r_high, out->mutable_upper());
+        to_proto(r.solution_at_low.solution, out->mutable_solution());
+        to_proto_params(r.solution_at_low, out->mutable_params());
+        out->set_converged(r.converged);
+        out->mutable_timings()->set_compute_us(micros_since(started));
+        return grpc::Status::OK;
+      },
+      &queued_us);
+  if (!status.ok()) return status;
+  last.mutable_result()->mutable_timings()->set_queued_us(queued_us);
+  last.mutable_result()->mutable_timings()->set_total_us(micros_since(arrived));
+  writer->Write(last);
+  return grpc::Status::OK;
 }
 
 grpc::Status GeometryServiceImpl::SuggestRadius(
-    grpc::ServerContext* /*context*/, const v1::SuggestRadiusRequest* request,
-    grpc::ServerWriter<v1::SuggestRadiusResponse>* /*writer*/) {
-  const grpc::Status status = validated([&] {
-    polygon_set_from_proto(request->polygon(), "polygon", state_.limits);
-    const Rational lo = scalar_from_proto(request->min_radius(), request->has_min_radius(),
-                                          "min_radius", state_.limits);
-    const Rational hi = scalar_from_proto(request->max_radius(), request->has_max_radius(),
-                                          "max_radius", state_.limits);
-    if (sgn(lo) <= 0) throw FieldError("min_radius must be > 0");
-    if (hi <= lo) throw FieldError("max_radius must be > min_radius");
-    if (request->samples() != 0 && (request->samples() < 2 || request->samples() > 256)) {
+    grpc::ServerContext* context, const v1::SuggestRadiusRequest* request,
+    grpc::ServerWriter<v1::SuggestRadiusResponse>* writer) {
+  const auto arrived = Clock::now();
+  PolygonSet q;
+  SuggestOptions options;
+  EngineKind engine = EngineKind::kFast;
+  grpc::Status status = validated([&] {
+    q = polygon_set_from_proto(request->polygon(), "polygon", state_.limits);
+    options.from =
+        positive(request->min_radius(), request->has_min_radius(), "min_radius", state_.limits);
+    options.to = scalar_from_proto(request->max_radius(), request->has_max_radius(), "max_radius",
+                                   state_.limits);
+    if (options.to <= options.from) throw FieldError("max_radius must be > min_radius");
+    if (request->samples() != 0 && (request->samples() < 3 || request->samples() > 256)) {
       throw FieldError("samples is " + std::to_string(request->samples()) +
-                       ", outside [2, 256] (0 for the default 32)");
+                       ", outside [3, 256] (0 for the default 20)");
     }
-    engine_from_proto(request->engine(), "engine");
+    if (request->samples() != 0) options.samples = request->samples();
+    engine = engine_from_proto(request->engine(), "engine");
   });
   if (!status.ok()) return status;
-  return not_in_this_build(
-      "SuggestRadius: the radius suggestion (maxima of r / eps^(r)) is not in this build yet");
+  if (!state_.geometry) return not_in_this_build("SuggestRadius: no engine in this build");
+  const std::size_t max_candidates = request->max_candidates() == 0 ? 3 : request->max_candidates();
+  v1::SuggestRadiusResponse last;
+  std::uint64_t queued_us = 0;
+  status = run_on_pool(
+      state_.pool, context, state_.limits,
+      [&](const StopCondition& stop) {
+        const auto started = Clock::now();
+        ProgressStream<v1::SuggestRadiusResponse> progress(writer, arrived, true);
+        options.progress = [&](std::size_t done, std::size_t total) {
+          progress.samples_done(done, total);
+          return !stop.should_stop();
+        };
+        const SuggestResult r = state_.geometry->suggest_radius(
+            q, options, engine, cancel_hook(stop), core_limits(state_.limits));
+        if (r.stopped_early) throw Cancelled();
+        v1::SuggestRadiusResult* out = last.mutable_result();
+        auto fill = [](const RadiusSample& sample, v1::RadiusCandidate* c) {
+          to_proto(sample.radius, c->mutable_radius());
+          to_proto(sample.eps_low, c->mutable_tolerance_lower());
+          to_proto(sample.eps_high, c->mutable_tolerance_upper());
+          c->set_score(sample.j);
+        };
+        for (std::size_t i = 0; i < r.suggestions.size() && i < max_candidates; ++i) {
+          v1::RadiusCandidate* c = out->add_candidates();
+          fill(r.suggestions[i].sample, c);
+          to_proto(r.suggestions[i].solution.solution, c->mutable_solution());
+        }
+        for (const RadiusSample& sample : r.samples) fill(sample, out->add_samples());
+        out->mutable_timings()->set_compute_us(micros_since(started));
+        return grpc::Status::OK;
+      },
+      &queued_us);
+  if (!status.ok()) return status;
+  last.mutable_result()->mutable_timings()->set_queued_us(queued_us);
+  last.mutable_result()->mutable_timings()->set_total_us(micros_since(arrived));
+  writer->Write(last);
+  return grpc::Status::OK;
 }
 
 grpc::Status analyze_stroke(DaemonState& state, grpc::ServerContext* context, const Stroke& stroke,

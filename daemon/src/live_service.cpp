@@ -190,7 +190,7 @@ grpc::Status LiveServiceImpl::StreamSamples(
     f->set_not_analysed(not_analysed);
     if (state_.analyzer) *f->mutable_ink_polygon() = analysis.ink_polygon;
     if (!write_event(std::move(finished))) return grpc::Status::CANCELLED;
-    if (state_.analyzer) {
+    if (state_.analyzer && analysis.shape.kind() != v1::SHAPE_KIND_UNSPECIFIED) {
       v1::LiveEvent shape;
       v1::ShapeRecognized* r = shape.mutable_shape();
       r->set_stroke_id(stroke.id);

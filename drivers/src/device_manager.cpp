@@ -88,6 +88,10 @@ DeviceId DeviceManager::start_reader(AttachedDevice info, const DeviceProfile& p
                              : end == LoopEnd::kEnd ? DetachReason::kEnded
                                                     : DetachReason::kStopped;
     if (callbacks_.on_detach) callbacks_.on_detach(raw->info.id, why, raw->pipeline->counters());
+    if (why == DetachReason::kGone) {
+      std::lock_guard gone_lock(mutex_);
+      gone_at_[raw->info.key] = std::chrono::steady_clock::now();
+    }
     raw->finished = true;
     changed_.notify_all();
     if (backend_ != nullptr && why == DetachReason::kGone) backend_->wake(); // reap + rescan
@@ -134,9 +138,18 @@ void DeviceManager::reap_finished() {
 
 void DeviceManager::scan_once() {
   std::set<std::string> attached;
+  const auto now = std::chrono::steady_clock::now();
   {
     std::lock_guard lock(mutex_);
     for (const auto& [id, d] : devices_) attached.insert(d->info.key);
+    for (auto it = gone_at_.begin(); it != gone_at_.end();) {
+      if (now - it->second < options_.reattach_backoff) {
+        attached.insert(it->first); // vanished a moment ago: not yet
+        ++it;
+      } else {
+        it = gone_at_.erase(it);
+      }
+    }
   }
   for (const DeviceCandidate& c : backend_->scan()) {
     if (stopping_) return;

@@ -34,6 +34,7 @@ DeviceProfile build_profile(const DeviceIdentity& id, std::span<const std::uint8
   // A plain value plus flag: GCC 12 misreports std::optional<PenLayout> as uninitialised.
   PenLayout vendor;
   bool have_vendor = false;
+  std::vector<PenLayout> extra_vendor; // protocols with several layouts (all share one ID)
   switch (out.protocol) {
     case Protocol::kHid:
       break;
@@ -45,6 +46,21 @@ DeviceProfile build_profile(const DeviceIdentity& id, std::span<const std::uint8
       if (spec->x_max > 0) {
         vendor = wacom_graphire_pen_layout(*spec);
         have_vendor = true;
+      }
+      break;
+    case Protocol::kWacomBamboo:
+      out.init = spec->init;
+      if (from_descriptor.empty() && spec->x_max > 0) {
+        vendor = wacom_bamboo_pen_layout(*spec);
+        have_vendor = true;
+        out.notes.push_back("Wacom mode switch (feature report) at open; Bamboo pen reports");
+      }
+      break;
+    case Protocol::kWacomIntuos:
+      out.init = spec->init;
+      if (from_descriptor.empty() && spec->x_max > 0) {
+        for (auto& l : wacom_intuos_pen_layouts(*spec)) extra_vendor.push_back(std::move(l));
+        out.notes.push_back("Wacom mode switch (feature report) at open; Intuos pen packets");
       }
       break;
     case Protocol::kUcLogic: {
@@ -95,6 +111,9 @@ DeviceProfile build_profile(const DeviceIdentity& id, std::span<const std::uint8
     }
   } else {
     layouts = std::move(from_descriptor);
+  }
+  if (!extra_vendor.empty()) {
+    layouts.insert(layouts.begin(), extra_vendor.begin(), extra_vendor.end());
   }
   if (layouts.empty()) out.notes.push_back("no pen report found");
 

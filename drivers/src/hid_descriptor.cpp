@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdio>
+#include <cstring>
 #include <optional>
 
 namespace penshape::drivers {
@@ -406,6 +408,15 @@ std::uint32_t extract_bits(std::span<const std::uint8_t> report, std::uint32_t b
   std::uint64_t value = 0;
   const std::size_t first = bit_offset / 8;
   const std::size_t last = (static_cast<std::size_t>(bit_offset) + bit_size + 7) / 8;
+  if constexpr (std::endian::native == std::endian::little) {
+    // Fast path (the decoder's hot loop): one unaligned 8-byte load when the report has them.
+    if (first + 8 <= report.size()) {
+      std::memcpy(&value, report.data() + first, 8);
+      value >>= bit_offset % 8;
+      if (bit_size >= 32) return static_cast<std::uint32_t>(value);
+      return static_cast<std::uint32_t>(value & ((std::uint64_t{1} << bit_size) - 1));
+    }
+  }
   for (std::size_t i = first; i < last && i < report.size() && i - first < 8; ++i) {
     value |= static_cast<std::uint64_t>(report[i]) << (8 * (i - first));
   }

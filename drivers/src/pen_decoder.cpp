@@ -12,8 +12,20 @@ std::int64_t read_value(std::span<const std::uint8_t> r, const PenField& f) {
   std::uint32_t v = extract_bits(r, f.bit_offset, f.bit_size);
   std::uint32_t bits = f.bit_size;
   if (f.high_bit_size > 0) {
-    v |= extract_bits(r, f.high_bit_offset, f.high_bit_size) << f.bit_size;
+    std::uint32_t high = extract_bits(r, f.high_bit_offset, f.high_bit_size);
+    if (f.high_big_endian) {
+      std::uint32_t swapped = 0;
+      for (std::uint32_t i = 0; i < f.high_bit_size / 8; ++i) {
+        swapped = (swapped << 8) | ((high >> (8 * i)) & 0xFFU);
+      }
+      high = swapped;
+    }
+    v |= high << bits;
     bits += f.high_bit_size;
+  }
+  if (f.top_bit_size > 0) {
+    v |= extract_bits(r, f.top_bit_offset, f.top_bit_size) << bits;
+    bits += f.top_bit_size;
   }
   return f.is_signed ? sign_extend(v, bits) : static_cast<std::int64_t>(v);
 }
@@ -106,7 +118,7 @@ DecodeStatus PenDecoder::decode(std::span<const std::uint8_t> report, std::int64
     if (read_flag(report, l.barrel2)) out.buttons |= kBarrel2;
     if (read_flag(report, l.barrel3)) out.buttons |= kBarrel3;
     if (read_flag(report, l.eraser) || read_flag(report, l.invert)) out.buttons |= kEraser;
-    out.tip = l.tip.present() ? read_flag(report, l.tip) : out.pressure > 0;
+    out.tip = l.tip.present() ? read_flag(report, l.tip) : out.pressure > l.tip_pressure_threshold;
     // Without an in-range bit, a report only arrives while the pen is in range.
     out.in_range = l.in_range.present() ? read_flag(report, l.in_range) : true;
     if (out.tip) out.in_range = true;

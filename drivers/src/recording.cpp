@@ -100,7 +100,7 @@ std::vector<std::uint8_t> counted_bytes(const std::vector<Line>& tokens, std::si
                                         const Line& line) {
   if (tokens.size() <= first) throw RecordingError(line.offset, "missing byte count");
   const auto n = parse_number<std::size_t>(tokens[first], 10, "byte count");
-  if (n > kMaxReportBytes && n > kMaxDescriptorBytes) {
+  if (n > std::max(kMaxReportBytes, kMaxDescriptorBytes)) {
     throw RecordingError(tokens[first].offset, "byte count " + std::to_string(n) + " over limit");
   }
   if (tokens.size() - first - 1 != n) {

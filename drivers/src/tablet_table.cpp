@@ -10,10 +10,12 @@ std::string_view builtin_tablet_tsv(); // generated from data/tablets.tsv (table
 
 namespace {
 
-constexpr std::array<std::pair<Protocol, std::string_view>, 5> kProtocols{{
+constexpr std::array<std::pair<Protocol, std::string_view>, 7> kProtocols{{
     {Protocol::kHid, "hid"},
     {Protocol::kWacomHid, "wacom-hid"},
     {Protocol::kWacomGraphire, "wacom-graphire"},
+    {Protocol::kWacomBamboo, "wacom-bamboo"},
+    {Protocol::kWacomIntuos, "wacom-intuos"},
     {Protocol::kUcLogic, "uclogic"},
     {Protocol::kXpPen, "xppen"},
 }};

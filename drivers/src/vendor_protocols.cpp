@@ -121,6 +121,68 @@ PenLayout wacom_graphire_pen_layout(const TabletSpec& spec) {
   return l;
 }
 
+PenLayout wacom_bamboo_pen_layout(const TabletSpec& spec) {
+  PenLayout l;
+  l.origin = "wacom-bamboo";
+  l.report_id = 0x02;
+  l.uses_report_id = true;
+  l.min_report_bytes = 9;
+  l.in_range = bit_flag(1, 6);
+  l.tip = bit_flag(1, 0);
+  l.barrel1 = bit_flag(1, 1);
+  l.barrel2 = bit_flag(1, 2);
+  l.eraser = bit_flag(1, 3);
+  l.x = value(16, 16, 0, spec.x_max);
+  l.y = value(32, 16, 0, spec.y_max);
+  l.pressure = value(48, 16, 0, static_cast<std::int32_t>(spec.pressure_max));
+  l.x_resolution = spec.x_resolution;
+  l.y_resolution = spec.y_resolution;
+  return l;
+}
+
+std::vector<PenLayout> wacom_intuos_pen_layouts(const TabletSpec& spec) {
+  PenLayout l;
+  l.origin = "wacom-intuos";
+  l.report_id = 0x02;
+  l.uses_report_id = true;
+  l.min_report_bytes = 10;
+  l.match_byte = 1;
+  l.match_mask = 0xB8;
+  l.match_value = 0xA0;
+  // X: bit 1 of byte 9 below the big-endian word at byte 2 (17 bits in all).
+  l.x = value(9 * 8 + 1, 1, 0, spec.x_max);
+  l.x.high_bit_offset = 16;
+  l.x.high_bit_size = 16;
+  l.x.high_big_endian = true;
+  l.y = value(9 * 8, 1, 0, spec.y_max);
+  l.y.high_bit_offset = 32;
+  l.y.high_bit_size = 16;
+  l.y.high_big_endian = true;
+  // Pressure: byte 1 bit 0, byte 7 bits 6-7, byte 6.
+  l.pressure = value(8, 1, 0, static_cast<std::int32_t>(spec.pressure_max));
+  l.pressure.high_bit_offset = 7 * 8 + 6;
+  l.pressure.high_bit_size = 2;
+  l.pressure.top_bit_offset = 6 * 8;
+  l.pressure.top_bit_size = 8;
+  l.tilt_x = value(8 * 8 + 7, 1, 0, 127);
+  l.tilt_x.high_bit_offset = 7 * 8;
+  l.tilt_x.high_bit_size = 6;
+  l.tilt_y = value(8 * 8, 7, 0, 127);
+  l.tilt_offset = -64.0;
+  l.barrel1 = bit_flag(1, 1);
+  l.barrel2 = bit_flag(1, 2);
+  l.tip_pressure_threshold = 10;
+  l.x_resolution = spec.x_resolution;
+  l.y_resolution = spec.y_resolution;
+
+  PenLayout out = l; // leaving proximity: same place, in range false (bit 6 is clear there)
+  out.origin = "wacom-intuos (out of proximity)";
+  out.match_mask = 0xFE;
+  out.match_value = 0x80;
+  out.in_range = bit_flag(1, 6);
+  return {l, out};
+}
+
 PenLayout xppen_pen_layout(const TabletSpec& spec) {
   PenLayout l;
   l.origin = "xppen";

@@ -33,8 +33,11 @@ TEST(ConvexDecide, SquareHasClosedFormEpsHat) {
   EXPECT_EQ(yes.solution.polygons[0].outer.size(), 4U);
   for (const auto& p : yes.solution.polygons[0].outer) {
     const PointD d = to_double(p);
-    EXPECT_NEAR(std::min(d.x, 10 - d.x), 1.65, 1e-12);
-    EXPECT_NEAR(std::min(d.y, 10 - d.y), 1.65, 1e-12);
+    // Π = [1.65, 8.35]²; the certified inner polygon lies inside it, within δ/1024.
+    EXPECT_GE(std::min(d.x, 10 - d.x), 1.65);
+    EXPECT_LE(std::min(d.x, 10 - d.x), 1.65 + 0.35 / 8 / 1000);
+    EXPECT_GE(std::min(d.y, 10 - d.y), 1.65);
+    EXPECT_LE(std::min(d.y, 10 - d.y), 1.65 + 0.35 / 8 / 1000);
   }
   // ε = 0.34 is within δ = ε/8 of ε̂: honest UNDECIDED; a finer δ decides.
   EXPECT_EQ(convex_decide(q, params(2, 0.34)).answer, Answer::kUndecided);

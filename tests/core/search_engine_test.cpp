@@ -8,9 +8,11 @@
 #include <random>
 
 #include "penshape/core/convex_deconstruct.hpp"
+#include "penshape/core/ink.hpp"
 #include "penshape/core/polygon_io.hpp"
 #include "penshape/core/search.hpp"
 #include "penshape/core/simplify.hpp"
+#include "support/dollar1.hpp"
 #include "support/hausdorff_check.hpp"
 #include "support/shared_data.hpp"
 
@@ -62,8 +64,7 @@ TEST(SearchEngine, EpsHatIsMonotoneAndLipschitzOnRealPolygons) {
         // Monotone: ε̂(r_i) <= ε̂(r_j), so the intervals cannot be ordered the other way.
         EXPECT_LE(at[i].eps_low, at[j].eps_high) << name << " " << i << " " << j;
         // 1-Lipschitz: ε̂(r_j) - ε̂(r_i) <= r_j - r_i.
-        EXPECT_LE(to_double(at[j].eps_low - at[i].eps_high), radii[j] - radii[i] + 1e-12)
-            << name;
+        EXPECT_LE(to_double(at[j].eps_low - at[i].eps_high), radii[j] - radii[i] + 1e-12) << name;
       }
     }
   }
@@ -107,8 +108,10 @@ TEST(SearchEngine, ConvexDecideAgreesWithTheGeneralDecider) {
     q.polygons.emplace_back();
     const int n = 5 + trial;
     for (int k = 0; k < n; ++k) {
-      const double a = 2 * std::numbers::pi * (k + 0.3 * std::uniform_real_distribution<double>(0, 1)(rng)) / n;
-      q.polygons[0].outer.push_back(exact(PointD{std::round(100 * std::cos(a)), std::round(70 * std::sin(a))}));
+      const double a =
+          2 * std::numbers::pi * (k + 0.3 * std::uniform_real_distribution<double>(0, 1)(rng)) / n;
+      q.polygons[0].outer.push_back(
+          exact(PointD{std::round(100 * std::cos(a)), std::round(70 * std::sin(a))}));
     }
     if (!is_convex_region(q)) continue;
     for (const double eps : {1.0, 3.0, 6.0}) {
@@ -137,6 +140,49 @@ TEST(SearchEngine, SimplificationKeepsTheCertificateOnSharedPolygons) {
     expect_certified(q, s.result);
     std::printf("%-20s raw %4zu -> simplified %4zu (tau %.4g)\n", name, s.raw_vertices,
                 s.solution_vertices, to_double(s.tau));
+  }
+}
+
+} // namespace
+} // namespace penshape
+
+namespace penshape {
+namespace {
+
+TEST(SearchEngine, NearlyStraightStrokeBecomesASegment) {
+  // A 60 mm stroke with a wobble well below ε, inked with a 1 mm pen.
+  std::vector<InkSample> samples;
+  for (int i = 0; i <= 120; ++i) {
+    const double t = i / 120.0;
+    samples.push_back({60 * t, 20 * t + 0.08 * std::sin(23 * t), 1.0});
+  }
+  InkOptions opt;
+  opt.radius_mm = 1.0;
+  const InkPolygon ink = ink_polygon(samples, opt);
+  const DeconstructParams p{exact(1.0), exact(0.5), exact(0.5 / 8), EngineKind::kFast};
+  const DeconstructResult raw = deconstruct(ink.region, p);
+  ASSERT_EQ(raw.answer, Answer::kYes);
+  const SimplifyResult s = simplify_solution(ink.region, raw);
+  EXPECT_EQ(s.solution_vertices, 2U) << "raw " << s.raw_vertices;
+  expect_certified(ink.region, s.result);
+}
+
+TEST(SearchEngine, SimplificationKeepsTheCertificateOnRealStrokes) {
+  for (const char* file : {"s02/medium/circle01.xml", "s03/fast/triangle05.xml",
+                           "s04/slow/pigtail03.xml", "s05/medium/rectangle02.xml"}) {
+    const auto points = test::read_dollar1(test::shared_data_dir() + "/strokes/dollar1/" + file);
+    std::vector<InkSample> samples;
+    for (const auto& pt : points) samples.push_back({pt.x, pt.y, 3.0});
+    InkOptions opt;
+    opt.radius_mm = 3.0;
+    const InkPolygon ink = ink_polygon(samples, opt);
+    const DeconstructParams p{exact(3.0), exact(1.5), exact(1.5 / 8), EngineKind::kFast};
+    const DeconstructResult raw = deconstruct(ink.region, p);
+    if (raw.answer != Answer::kYes) continue;
+    const SimplifyResult s = simplify_solution(ink.region, raw);
+    EXPECT_LE(s.solution_vertices, s.raw_vertices) << file;
+    expect_certified(ink.region, s.result);
+    std::printf("%-28s raw %4zu -> simplified %4zu\n", file, s.raw_vertices, s.solution_vertices);
   }
 }
 

@@ -94,6 +94,25 @@ TEST(Validation, ExtremeScalesAreDecidedExactly) {
   }
 }
 
+TEST(Validation, CancelHookStopsTheCrossingSweep) {
+  // A comb of horizontal teeth: every edge overlaps every other in x (the sweep's worst case).
+  // Teeth from x = 0 to 100, joined by a spine from x = -1 to 0.
+  const int teeth = 400;
+  Ring ring;
+  ring.push_back({-1, 0});
+  for (int i = 0; i < teeth; ++i) {
+    ring.push_back({100, 2 * i});
+    ring.push_back({100, 2 * i + 1});
+    ring.push_back({0, 2 * i + 1});
+    if (i + 1 < teeth) ring.push_back({0, 2 * i + 2});
+  }
+  ring.push_back({-1, 2 * teeth - 1});
+  const PolygonSet q{{{ring, {}}}};
+  EXPECT_NO_THROW(validate_region(q));
+  EXPECT_THROW(validate_region(q, 200'000, [] { return true; }), Cancelled);
+  EXPECT_THROW(deconstruct(q, kOk, [] { return true; }), Cancelled);
+}
+
 TEST(Validation, Parameters) {
   const PolygonSet q = square(0, 0, 5);
   auto p = kOk;

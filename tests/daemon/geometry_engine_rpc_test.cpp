@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -13,6 +14,7 @@
 #include <thread>
 
 #include "penshape/core/deconstruct.hpp"
+#include "penshape/core/search.hpp"
 #include "penshape/daemon/geometry_backend.hpp"
 #include "penshape/daemon/proto_convert.hpp"
 #include "penshape/daemon/server.hpp"
@@ -191,6 +193,116 @@ TEST_F(GeometryEngineRpc, IncludeOffsetReturnsSegmentsAndArcs) {
   }
   EXPECT_EQ(arcs, 4);
   EXPECT_EQ(segments, 4);
+}
+
+} // namespace
+
+namespace {
+
+TEST_F(GeometryEngineRpc, SearchToleranceEqualsTheCoreSearch) {
+  v1::SearchToleranceRequest request;
+  *request.mutable_polygon() = read_exact_polygon("authors_S.txt");
+  request.mutable_radius()->set_rational("10");
+  request.mutable_width()->set_rational("1/4");
+  grpc::ClientContext ctx;
+  ctx.set_deadline(std::chrono::system_clock::now() + 120s);
+  auto stream = stub_->SearchTolerance(&ctx, request);
+  v1::SearchToleranceResponse message;
+  v1::SearchToleranceResult result;
+  int results = 0;
+  while (stream->Read(&message)) {
+    if (message.has_result()) {
+      result = message.result();
+      ++results;
+    }
+  }
+  const grpc::Status status = stream->Finish();
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  ASSERT_EQ(results, 1);
+
+  const penshape::daemon::Limits limits;
+  const penshape::PolygonSet q =
+      penshape::daemon::polygon_set_from_proto(request.polygon(), "polygon", limits);
+  const auto direct =
+      penshape::search_tolerance(penshape::make_decider(q, penshape::EngineKind::kFast),
+                                 penshape::Rational(10), penshape::Rational(1, 4));
+  EXPECT_EQ(result.lower().rational(), direct.eps_low.get_str(10));
+  EXPECT_EQ(result.upper().rational(), direct.eps_high.get_str(10));
+  EXPECT_EQ(result.params().tolerance().rational(), direct.solution.params.tolerance.get_str(10));
+  // The interval is as narrow as asked and the solution is certified at its upper side or above.
+  EXPECT_LE(
+      penshape::Rational(result.upper().rational()) - penshape::Rational(result.lower().rational()),
+      penshape::Rational(1, 4));
+  EXPECT_GT(result.solution().polygons_size(), 0);
+}
+
+TEST_F(GeometryEngineRpc, ACancelledSuggestRadiusStopsPromptly) {
+  v1::SuggestRadiusRequest request;
+  *request.mutable_polygon() = read_exact_polygon("kazakhstan_paper1881.txt");
+  request.mutable_min_radius()->set_rational("1/1000");
+  request.mutable_max_radius()->set_rational("1/10");
+  request.set_samples(40);
+  grpc::ClientContext ctx;
+  auto stream = stub_->SuggestRadius(&ctx, request);
+  std::this_thread::sleep_for(300ms);
+  ctx.TryCancel();
+  v1::SuggestRadiusResponse message;
+  while (stream->Read(&message)) {
+  }
+  const grpc::Status status = stream->Finish();
+  EXPECT_EQ(status.error_code(), grpc::StatusCode::CANCELLED);
+  // The search itself stopped: the workers drain (a search that ignored the cancel would keep the
+  // pool busy for many seconds and this would hang).
+  server_->shutdown();
+}
+
+} // namespace
+
+#include "penshape/daemon/ink_analyzer.hpp"
+#include "penshape/v1/live.grpc.pb.h"
+
+namespace {
+
+TEST(InkAnalyzerRpc, SubmitStrokeReturnsTheInkPolygon) {
+  penshape::daemon::ServerOptions options;
+  options.address = "unix-abstract:penshape-ink-test-" + std::to_string(::getpid());
+  penshape::daemon::PenshapeServer server(
+      options, {nullptr, nullptr, penshape::daemon::make_ink_analyzer()});
+  auto live =
+      v1::Live::NewStub(grpc::CreateChannel(options.address, grpc::InsecureChannelCredentials()));
+  // A straight 10 mm stroke (100 units per mm) with a 1 mm pen: a 12 x 2 mm stadium.
+  v1::SubmitStrokeRequest request;
+  auto* tablet = request.mutable_stroke()->mutable_tablet();
+  tablet->set_x_max(30000);
+  tablet->set_y_max(30000);
+  tablet->set_x_resolution(100);
+  tablet->set_y_resolution(100);
+  for (int i = 0; i <= 10; ++i) {
+    auto* s = request.mutable_stroke()->add_samples();
+    s->set_time_us(i * 1000);
+    s->set_x(1000 + 100 * i);
+    s->set_y(1000);
+    s->set_tip(i < 10);
+  }
+  request.mutable_settings()->set_pen_radius_mm(1.0);
+  grpc::ClientContext ctx;
+  v1::SubmitStrokeResponse response;
+  const grpc::Status status = live->SubmitStroke(&ctx, request, &response);
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  EXPECT_EQ(response.shape().kind(), v1::SHAPE_KIND_UNSPECIFIED); // no recognizer yet
+  ASSERT_EQ(response.ink_polygon().polygons_size(), 1);
+  double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
+  for (const auto& p : response.ink_polygon().polygons(0).outer().points()) {
+    x0 = std::min(x0, p.x());
+    x1 = std::max(x1, p.x());
+    y0 = std::min(y0, p.y());
+    y1 = std::max(y1, p.y());
+  }
+  const double error = 1.0 / 50; // InkOptions' default bound: radius / 50
+  EXPECT_NEAR(x0, 9.0, error);
+  EXPECT_NEAR(x1, 21.0, error);
+  EXPECT_NEAR(y0, 9.0, error);
+  EXPECT_NEAR(y1, 11.0, error);
 }
 
 } // namespace

@@ -188,6 +188,7 @@ struct Journal {
 DeviceManagerOptions rescan_every(std::chrono::milliseconds interval) {
   DeviceManagerOptions o;
   o.rescan_interval = interval;
+  o.reattach_backoff = std::chrono::milliseconds(100);
   return o;
 }
 
@@ -262,7 +263,10 @@ TEST(DeviceManager, ReconnectsWhenTheDeviceComesBack) {
   ASSERT_TRUE(j.wait_for([&] { return j.attached.size() == 1 && fake->last_source(); }));
   // Suspend/resume: the read fails while the node stays listed; the manager reopens it.
   fake->last_source()->vanish();
+  const auto vanished = std::chrono::steady_clock::now();
   ASSERT_TRUE(j.wait_for([&] { return j.attached.size() == 2; }));
+  // Not reopened before the back-off (a node failing at once must not spin the rescan).
+  EXPECT_GE(std::chrono::steady_clock::now() - vanished, 100ms);
   EXPECT_NE(j.attached[0].id, j.attached[1].id);
   EXPECT_EQ(fake->opens(), 2);
   EXPECT_EQ(m.devices().size(), 1U);

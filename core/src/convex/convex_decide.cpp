@@ -1,38 +1,188 @@
-// CONVEXDECIDE (Algorithm 6) with rational inner and outer brackets of Π.
+// CONVEXDECIDE (Algorithm 6). The common cases are answered from double-precision candidates
+// certified exactly: YES by an inner polygon proven inside Π (no square roots needed) that every
+// vertex disk of Q reaches; NO by a vertex q of Q and one or two of Π's half-planes, widened
+// with rational bounds, whose intersection the disk around q misses (Helly: then Π misses it
+// too). Whatever they cannot certify goes to the exact rational path, which brackets |n| by
+// rationals and intersects exactly.
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 
+#include "convex_exact_inset.hpp"
 #include "convex_inset.hpp"
 #include "penshape/core/convex_deconstruct.hpp"
 
 namespace penshape {
 namespace {
 
-// |n| is bracketed to a relative 2^-kSqrtBits: the brackets of Π differ by about
-// (r - ε)·2^-kSqrtBits, far below any δ a caller can ask for.
+// The exact path brackets |n| to a relative 2^-kSqrtBits, far below any δ a caller can ask for.
 constexpr unsigned kSqrtBits = 64;
 
+// Squared distance from p to segment [s, t] in doubles.
+double squared_distance(PointD p, PointD s, PointD t) {
+  const double dx = t.x - s.x;
+  const double dy = t.y - s.y;
+  const double len2 = dx * dx + dy * dy;
+  const double u =
+      len2 > 0 ? std::clamp(((p.x - s.x) * dx + (p.y - s.y) * dy) / len2, 0.0, 1.0) : 0.0;
+  const double ex = p.x - (s.x + u * dx);
+  const double ey = p.y - (s.y + u * dy);
+  return ex * ex + ey * ey;
+}
+
 // For each vertex q_i of Q (counterclockwise), is some edge of the convex ring `pi` within
-// distance R? Walks the edges from where the previous vertex found one (Lemma 23's linear scan);
-// a full loop without success answers for that vertex exactly. Returns the index of the first
-// vertex that fails, or q.size() when all succeed.
-std::size_t first_vertex_missing(const Ring& q, const Ring& pi, const Rational& r_squared,
+// distance R? Walks the edges from where the previous vertex found one (Lemma 23's linear scan).
+// Doubles decide when they are clear by a margin far above their error (`slack`); exact
+// rationals decide the rest. Returns the index of the first vertex that fails, or q.size().
+std::size_t first_vertex_missing(const Ring& q, const std::vector<PointD>& qd, const Ring& pi,
+                                 const std::vector<PointD>& pid, const Rational& r2, double slack,
                                  const CancelHook& cancel) {
   const std::size_t m = pi.size();
+  const double r2d = to_double(r2);
   std::size_t edge = 0;
   for (std::size_t i = 0; i < q.size(); ++i) {
     if ((i & 63U) == 0 && cancel && cancel()) throw Cancelled();
     bool found = false;
-    for (std::size_t k = 0; k < m; ++k) {
+    for (std::size_t k = 0; k < m && !found; ++k) {
       const std::size_t e = (edge + k) % m;
-      if (detail::squared_distance_to_segment(q[i], pi[e], pi[(e + 1) % m]) <= r_squared) {
-        edge = e;
+      const double dd = squared_distance(qd[i], pid[e], pid[(e + 1) % m]);
+      if (dd + slack < r2d) {
         found = true;
-        break;
+      } else if (dd - slack <= r2d) {
+        found = detail::squared_distance_to_segment(q[i], pi[e], pi[(e + 1) % m]) <= r2;
       }
+      if (found) edge = e;
     }
     if (!found) return i;
   }
   return q.size();
+}
+
+// a·x + b·y <= c for edge j of the exact counterclockwise ring, shifted inward by at most
+// `shift`·|n| (a superset of the exact shifted half-plane).
+detail::HalfPlane widened_half_plane(const Ring& ring, std::size_t j, const Rational& shift) {
+  std::vector<ExactPoint> edge{ring[j], ring[(j + 1) % ring.size()]};
+  const auto bound = sgn(shift) >= 0 ? detail::ShiftBound::kLower : detail::ShiftBound::kUpper;
+  // shifted_edge_half_planes works on a ring; a two-point "ring" yields this edge first.
+  return detail::shifted_edge_half_planes(edge, shift, bound, kSqrtBits).front();
+}
+
+bool inside(const detail::HalfPlane& h, const ExactPoint& p) {
+  return h.a * p.x + h.b * p.y <= h.c;
+}
+
+ExactPoint project(const detail::HalfPlane& h, const ExactPoint& p) {
+  const Rational over = (h.a * p.x + h.b * p.y - h.c) / (h.a * h.a + h.b * h.b);
+  return {p.x - over * h.a, p.y - over * h.b};
+}
+
+Rational squared_length(const ExactPoint& a, const ExactPoint& b) {
+  const Rational dx = a.x - b.x;
+  const Rational dy = a.y - b.y;
+  return dx * dx + dy * dy;
+}
+
+// Exact: does the disk of squared radius r2 around q miss the intersection of the half-planes?
+// (One or two of them.) The nearest point of a wedge is a projection onto one of its lines or
+// its apex.
+bool disk_misses(const ExactPoint& q, const Rational& r2,
+                 const std::vector<detail::HalfPlane>& hs) {
+  bool in_all = true;
+  for (const auto& h : hs) in_all = in_all && inside(h, q);
+  if (in_all) return false;
+  std::vector<ExactPoint> candidates;
+  for (std::size_t i = 0; i < hs.size(); ++i) {
+    const ExactPoint p = project(hs[i], q);
+    bool ok = true;
+    for (std::size_t j = 0; j < hs.size(); ++j) ok = ok && (j == i || inside(hs[j], p));
+    if (ok) candidates.push_back(p);
+  }
+  if (hs.size() == 2) {
+    const Rational det = hs[0].a * hs[1].b - hs[1].a * hs[0].b;
+    if (sgn(det) != 0) {
+      candidates.push_back({(hs[0].c * hs[1].b - hs[1].c * hs[0].b) / det,
+                            (hs[0].a * hs[1].c - hs[1].a * hs[0].c) / det});
+    }
+  }
+  if (candidates.empty()) return false; // an empty wedge: not this certificate's business
+  for (const auto& c : candidates) {
+    if (squared_length(c, q) <= r2) return false;
+  }
+  return true;
+}
+
+// NO from the double outer candidate: the vertex of Q farthest from it, certified with the
+// half-planes of the nearest edge or vertex.
+bool certified_no(const Ring& ring, const std::vector<PointD>& qd, const detail::ConvexCut& outer,
+                  const Rational& outer_shift, const Rational& r2) {
+  const std::size_t m = outer.vertices.size();
+  const double rd = std::sqrt(to_double(r2));
+  // Farthest vertex of Q from the outer candidate (doubles choose).
+  std::size_t best_i = 0;
+  double best_d = -1;
+  std::size_t best_edge = 0;
+  for (std::size_t i = 0; i < qd.size(); ++i) {
+    double dmin = INFINITY;
+    std::size_t emin = 0;
+    for (std::size_t k = 0; k < m; ++k) {
+      const double d = squared_distance(qd[i], outer.vertices[(k + m - 1) % m], outer.vertices[k]);
+      if (d < dmin) {
+        dmin = d;
+        emin = k;
+      }
+    }
+    if (dmin > best_d) {
+      best_d = dmin;
+      best_i = i;
+      best_edge = emin;
+    }
+  }
+  if (std::sqrt(best_d) <= rd) return false;
+  // Edge k of the cut runs from vertex k-1 to vertex k on plane edge_plane[k]; try that plane
+  // alone, then with each neighbour (the nearest point may be a vertex).
+  const std::size_t planes[3] = {outer.edge_plane[(best_edge + m - 1) % m],
+                                 outer.edge_plane[best_edge],
+                                 outer.edge_plane[(best_edge + 1) % m]};
+  const detail::HalfPlane here = widened_half_plane(ring, planes[1], outer_shift);
+  if (disk_misses(ring[best_i], r2, {here})) return true;
+  for (const std::size_t other : {planes[0], planes[2]}) {
+    if (disk_misses(ring[best_i], r2, {here, widened_half_plane(ring, other, outer_shift)})) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// The exact rational path (slow, always certified).
+Answer exact_path(const Ring& ring, const DeconstructParams& params, const Rational& reach2,
+                  const CancelHook& cancel, Ring& solution) {
+  const Rational shift = params.radius - params.tolerance;
+  std::vector<PointD> qd;
+  for (const auto& p : ring) qd.push_back(to_double(p));
+  auto to_d = [](const Ring& r) {
+    std::vector<PointD> out;
+    for (const auto& p : r) out.push_back(to_double(p));
+    return out;
+  };
+  const Ring inner = detail::intersect_sorted_half_planes(
+      detail::shifted_edge_half_planes(ring, shift, detail::ShiftBound::kUpper, kSqrtBits));
+  if (!inner.empty() &&
+      first_vertex_missing(ring, qd, inner, to_d(inner), reach2, 0.0, cancel) == ring.size()) {
+    solution = inner;
+    return Answer::kYes;
+  }
+  // Outer bracket with shift r - ε - δ/2: without interior it proves Π empty (Π is it inset by
+  // a positive amount), as the paper's exterior approximation with D̄_{r-δ,r} would.
+  const Rational outer_shift = shift - params.precision / 2;
+  const auto bound =
+      sgn(outer_shift) >= 0 ? detail::ShiftBound::kLower : detail::ShiftBound::kUpper;
+  const Ring outer = detail::intersect_sorted_half_planes(
+      detail::shifted_edge_half_planes(ring, outer_shift, bound, kSqrtBits));
+  if (outer.empty() ||
+      first_vertex_missing(ring, qd, outer, to_d(outer), reach2, 0.0, cancel) < ring.size()) {
+    return Answer::kNo;
+  }
+  return Answer::kUndecided;
 }
 
 } // namespace
@@ -47,7 +197,8 @@ bool is_convex_region(const PolygonSet& q) {
     const ExactPoint& a = ring[i];
     const ExactPoint& b = ring[(i + 1) % n];
     const ExactPoint& c = ring[(i + 2) % n];
-    const int turn = sgn((b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x));
+    if (a == b) return false;
+    const int turn = detail::orientation(a, b, c);
     if (turn < 0) return false;
     any_turn |= turn > 0;
   }
@@ -73,25 +224,45 @@ DeconstructResult convex_decide(const PolygonSet& q, const DeconstructParams& pa
   out.engine = params.engine;
   out.answer = Answer::kUndecided;
 
-  const Ring inner = detail::intersect_sorted_half_planes(
-      detail::shifted_edge_half_planes(ring, shift, detail::ShiftBound::kUpper, kSqrtBits));
-  if (!inner.empty() && first_vertex_missing(ring, inner, reach2, cancel) == ring.size()) {
-    out.answer = Answer::kYes;
-    out.solution.polygons.push_back({inner, {}});
-    out.hausdorff_bound = params.tolerance;
-  } else {
-    // The outer bracket uses the shift r - ε - δ/2: then an outer region without interior
-    // proves Π empty (Π is that region inset by a positive amount), a certified NO, as the
-    // paper's exterior approximation with D̄_{r-δ,r} would.
+  std::vector<PointD> qd;
+  qd.reserve(ring.size());
+  double extent = to_double(reach);
+  for (const auto& p : ring) {
+    qd.push_back(to_double(p));
+    extent = std::max({extent, std::abs(qd.back().x), std::abs(qd.back().y)});
+  }
+  // Doubles err by about 1e-16 of the extent; every margin below is far larger.
+  const double slack = 1e-9 * extent * extent;
+  const double eta = std::max(1e-7 * extent, to_double(params.precision) / 1024);
+
+  // YES: an inner candidate pushed in by η, proven inside Π, reached by every vertex disk.
+  const detail::ConvexCut inner = detail::intersect_sorted_half_planes(
+      detail::shifted_edge_half_planes(qd, to_double(shift) + eta));
+  if (!inner.vertices.empty() && detail::convex_ring_inside_inset(inner.vertices, ring, shift)) {
+    Ring inner_exact;
+    for (const PointD& p : inner.vertices) inner_exact.push_back(exact(p));
+    if (first_vertex_missing(ring, qd, inner_exact, inner.vertices, reach2, slack, cancel) ==
+        ring.size()) {
+      out.answer = Answer::kYes;
+      out.solution.polygons.push_back({std::move(inner_exact), {}});
+      out.hausdorff_bound = params.tolerance;
+    }
+  }
+  if (out.answer != Answer::kYes) {
+    // NO: the outer candidate at shift r - ε - δ/2 (a superset of Π, as the paper's exterior
+    // approximation), certified by a vertex disk missing one or two widened half-planes.
     const Rational outer_shift = shift - params.precision / 2;
-    // A superset needs a shift of at most outer_shift·|n|: the lower bound of |n| when the
-    // shift is inward, the upper one when it is outward.
-    const auto bound =
-        sgn(outer_shift) >= 0 ? detail::ShiftBound::kLower : detail::ShiftBound::kUpper;
-    const Ring outer = detail::intersect_sorted_half_planes(
-        detail::shifted_edge_half_planes(ring, outer_shift, bound, kSqrtBits));
-    if (outer.empty() || first_vertex_missing(ring, outer, reach2, cancel) < ring.size()) {
+    const detail::ConvexCut outer = detail::intersect_sorted_half_planes(
+        detail::shifted_edge_half_planes(qd, to_double(outer_shift)));
+    if (!outer.vertices.empty() && certified_no(ring, qd, outer, outer_shift, reach2)) {
       out.answer = Answer::kNo;
+    } else {
+      Ring solution;
+      out.answer = exact_path(ring, params, reach2, cancel, solution);
+      if (out.answer == Answer::kYes) {
+        out.solution.polygons.push_back({std::move(solution), {}});
+        out.hausdorff_bound = params.tolerance;
+      }
     }
   }
   out.elapsed = std::chrono::steady_clock::now() - start;

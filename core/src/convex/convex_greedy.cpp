@@ -190,7 +190,8 @@ GreedyResult convex_greedy_solution(const PolygonSet& q, const PolygonSet& pi_ha
 
   Boundary bd;
   for (const auto& p : ring) bd.w.push_back(to_double(p));
-  const double r = to_double(reach);
+  // Doubles choose, rationals certify: a relative margin keeps borderline chords out.
+  const double r = to_double(reach) * (1 - 1e-9);
   std::vector<Eyelet> eyelets;
   eyelets.reserve(qring.size());
   std::size_t hint = 0;

@@ -3,6 +3,8 @@
 // callers use penshape/core/deconstruct.hpp. Both receive validated input with r > eps (the
 // r <= eps case is answered before dispatch) and must give certified YES/NO answers; they may
 // differ only in speed and in which undecided cases they can settle.
+#include <optional>
+
 #include "penshape/core/deconstruct.hpp"
 
 namespace penshape::detail {
@@ -15,5 +17,13 @@ DeconstructResult decide_reference(const PolygonSet& q, const DeconstructParams&
 // The default engine: the same certified answers, much faster.
 DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& params,
                               const CancelHook& cancel, const DeconstructLimits& limits);
+
+// Fewer vertices for a YES solution of decide_fast (same q and params): indented caps removed
+// (Theorem 5) and coarser simplification, each candidate certified by the fast engine's
+// exact-grid YES check. nullopt when no candidate verifies and saves vertices.
+std::optional<PolygonSet> simplify_fast_solution(const PolygonSet& q,
+                                                 const DeconstructParams& params,
+                                                 const PolygonSet& solution,
+                                                 const CancelHook& cancel);
 
 } // namespace penshape::detail

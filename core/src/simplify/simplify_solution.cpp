@@ -2,7 +2,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "../geometry/segment_distance.hpp"
+#include "engine/engines.hpp"
+#include "geometry/segment_distance.hpp"
+#include "penshape/core/convex_deconstruct.hpp"
 #include "penshape/core/simplify.hpp"
 
 namespace penshape {
@@ -237,6 +239,31 @@ SimplifyResult simplify_solution(const PolygonSet& q, const DeconstructResult& r
   const DeconstructParams& params = raw.params;
   if (params.radius <= params.tolerance) return out; // P = Q: nothing to gain by deciding again
 
+  // Convex Q: the greedy P^s over eyelets has at most OPT + 1 vertices (Theorem 29).
+  if (raw.engine == EngineKind::kFast && is_convex_region(q) && raw.solution.polygons.size() == 1 &&
+      !raw.solution.polygons[0].outer.empty() && is_convex_region(raw.solution)) {
+    const GreedyResult g =
+        convex_greedy_solution(q, raw.solution, params.radius + params.tolerance, cancel);
+    if (!g.fell_back && g.vertices < out.solution_vertices) {
+      out.result.solution = g.solution;
+      out.simplified = true;
+      out.solution_vertices = g.vertices;
+      return out;
+    }
+  }
+  // The fast engine's own certificate can check any candidate directly, which uses all the
+  // room Π leaves (not only the room between ε̂ and ε): try that first.
+  if (raw.engine == EngineKind::kFast) {
+    if (auto p = detail::simplify_fast_solution(q, params, raw.solution, cancel)) {
+      const std::size_t count = distinct_vertex_count(*p);
+      if (count < out.solution_vertices) {
+        out.result.solution = std::move(*p);
+        out.simplified = true;
+        out.solution_vertices = count;
+      }
+    }
+  }
+
   Rational tau = params.tolerance * options.tau_fraction;
   for (std::size_t attempt = 0; attempt < options.attempts; ++attempt, tau /= 2) {
     const Rational eps_prime = params.tolerance - tau;
@@ -258,13 +285,13 @@ SimplifyResult simplify_solution(const PolygonSet& q, const DeconstructResult& r
       if (!is_valid_region(p)) continue; // a chord crossed another ring: try a smaller τ
     }
     const std::size_t count = distinct_vertex_count(p);
-    if (count >= out.raw_vertices) return out; // no gain over the raw solution
+    if (count >= out.solution_vertices) continue; // keep the best of all attempts
     out.result.solution = std::move(p);
     out.result.hausdorff_bound = params.tolerance;
     out.simplified = true;
     out.tau = tau;
     out.solution_vertices = count;
-    return out;
+    if (count <= 2) break; // a segment: nothing simpler
   }
   return out;
 }

@@ -12,6 +12,7 @@
 #include "engine/fast/grid_frame.hpp"
 #include "engine/fast/level_set_check.hpp"
 #include "engine/fast/segment_index.hpp"
+#include "engine/fast/yes_certificate.hpp"
 #include "fast_test_support.hpp"
 
 namespace penshape {
@@ -40,7 +41,8 @@ TEST(FastEngineParts, GridFrameRoundTripsExactly) {
        {}});
   const DeconstructParams p = params_of(1, Rational(1, 10), Rational(1, 80));
   const fast::GridFrame frame(q, p);
-  const Rational unit = Rational(1) / Rational(mpz_class(1) << frame.scale_exponent());
+  const Rational unit =
+      Rational(1) / Rational(mpz_class(1) << static_cast<mp_bitcnt_t>(frame.scale_exponent()));
   for (const auto& v : q.polygons[0].outer) {
     const ExactPoint back = frame.exact(frame.round(v));
     // Rounding to the grid moves each coordinate by at most half a grid unit.
@@ -117,6 +119,26 @@ TEST(FastEngineParts, NonSimpleOrWronglyNestedRingsAreNotCertifiable) {
   std::reverse(inner.begin(), inner.end());
   const fast::SegmentIndex nested({square(0, 0, 100), inner}, 10);
   EXPECT_TRUE(fast::is_certifiable_region(nested));
+}
+
+// The YES certificate on hand-made candidates for Q = [0, 20000]², r = 1000, eps = 500 (grid
+// units). P = [t, 20000 - t]² has offset(P, r) reaching r - t outside Q, so (A) needs
+// t >= r - eps = 500, and covers Q's corner iff sqrt(2) t <= r + eps, i.e. t <= 1060.
+TEST(FastEngineParts, YesCertificateAcceptsExactlyTheValidSquares) {
+  const fast::SegmentIndex q({square(0, 0, 20000)}, 250);
+  for (const std::int64_t t : {200, 450, 520, 800, 1040, 1080, 1500}) {
+    fast::IRegion p{{square(t, t, 20000 - 2 * t), {}}};
+    const fast::YesCheckInput in{&q, fast::kInputRounding, &q, {{0, 0}}, 1000.0, 500.0, 16.0};
+    const bool valid = t >= 500 + 2 && t <= 1058; // a little slack for the certificate margins
+    const bool invalid = t < 500 || t > 1061;
+    const bool ok = fast::verify_yes(in, p, {});
+    if (valid) {
+      EXPECT_TRUE(ok) << "t = " << t;
+    }
+    if (invalid) {
+      EXPECT_FALSE(ok) << "t = " << t;
+    }
+  }
 }
 
 PolygonSet square_set(int x0, int y0, int side) {

@@ -146,8 +146,8 @@ struct YesCheck {
   std::size_t samples = 0;
 };
 
-// Samples: both boundaries densely (spacing h), a grid over the common box (spacing h), and the
-// r-offset curves of P's edges and vertices.
+// Samples: both boundaries densely (spacing h), the r-offset curves of P's edges and vertices
+// (spacing h), and a grid over the common box (spacing h, at most ~150 x 150 points).
 inline YesCheck check_yes(const PolygonSet& q_set, const PolygonSet& p_set, double r, double eps,
                           double h) {
   const Rings q = to_rings(q_set), p = to_rings(p_set);
@@ -199,8 +199,10 @@ inline YesCheck check_yes(const PolygonSet& q_set, const PolygonSet& p_set, doub
       max_y = std::max(max_y, v.y + r + eps);
     }
   }
-  for (double y = min_y; y <= max_y; y += h) {
-    for (double x = min_x; x <= max_x; x += h) {
+  // The area grid is capped at about 150 x 150 points (boundaries above are sampled at h).
+  const double g = std::max(h, std::max(max_x - min_x, max_y - min_y) / 150.0);
+  for (double y = min_y; y <= max_y; y += g) {
+    for (double x = min_x; x <= max_x; x += g) {
       if (inside(q, {x, y})) at_q({x, y});
       at_offset({x, y});
     }

@@ -60,8 +60,8 @@ struct DeconstructResult {
   PolygonSet solution;
   // With YES: an upper bound on H(offset(P, r), Q) that the certificate proves (<= eps).
   Rational hausdorff_bound;
-  std::size_t disk_vertices = 0; // vertices of the largest disk approximation used
-  std::chrono::nanoseconds elapsed{0};
+  std::size_t disk_vertices = 0;       // vertices of the largest disk approximation used
+  std::chrono::nanoseconds elapsed{0}; // whole call, validation included
 };
 
 // Validates a region on its own: at least one polygon, at most max_vertices vertices, every ring
@@ -69,14 +69,24 @@ struct DeconstructResult {
 // crossing (within a ring or between rings), every hole inside its outer ring and outside the
 // other holes, polygons pairwise disjoint (one may sit inside another's hole). Orientation is not
 // checked (normalize_orientation fixes it). Throws InvalidInput naming polygon, ring and vertex.
-void validate_region(const PolygonSet& q, std::size_t max_vertices = 200'000);
+// Cost: O(n log n) plus, for the crossing test, O(n·k) with k the number of edges whose x-ranges
+// overlap a vertical line (small for real outlines, up to n for adversarial combs); cancel is
+// checked every 256 edges of that sweep (throws Cancelled).
+void validate_region(const PolygonSet& q, std::size_t max_vertices = 200'000,
+                     const CancelHook& cancel = {});
 
-// Validates Q (simple rings, no repeated vertices, holes inside outers, finite) and the
-// parameters; throws InvalidInput naming the problem.
+// Validates Q (validate_region with limits.max_input_vertices) and the parameters: r, eps,
+// delta > 0 and delta < eps (rationals are always finite; text and double inputs are checked
+// where they are parsed), and with r > eps the largest disk the engines build,
+// D̄_{r+eps, r+eps+delta}, within limits.max_disk_vertices (every other disk is smaller). Throws
+// InvalidInput naming the problem and the bound.
 void validate_deconstruct_input(const PolygonSet& q, const DeconstructParams& params,
-                                const DeconstructLimits& limits = {});
+                                const DeconstructLimits& limits = {},
+                                const CancelHook& cancel = {});
 
-// APPROXDECIDE(Q, r, eps, delta) with the chosen engine.
+// APPROXDECIDE(Q, r, eps, delta) with the chosen engine: validates (InvalidInput), answers
+// r <= eps with YES and P = Q, else dispatches to the engine. Q may have any ring orientation.
+// cancel is checked during validation and between the engine's steps (Cancelled).
 DeconstructResult deconstruct(const PolygonSet& q, const DeconstructParams& params,
                               const CancelHook& cancel = {}, const DeconstructLimits& limits = {});
 

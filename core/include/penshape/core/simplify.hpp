@@ -20,7 +20,7 @@ namespace penshape {
 struct SimplifyOptions {
   // τ as a fraction of ε; when the decider is not YES at ε - τ, τ halves (at most `attempts`
   // times) before giving up and returning the raw solution.
-  Rational tau_fraction = Rational(1, 2);
+  Rational tau_fraction = Rational(3, 4);
   std::size_t attempts = 4;
   bool allow_degenerate = true; // segments and open polylines
 };

@@ -168,4 +168,19 @@ IRegion simplify(const IRings& input, double tolerance) {
   return out;
 }
 
+IRegion simplify_rings_only(const IRegion& region, double tolerance) {
+  IRegion out;
+  out.reserve(region.size());
+  for (const IPolygon& poly : region) {
+    IRings outer{simplify_ring(poly.outer, tolerance)};
+    clean_rings(outer);
+    if (outer.empty()) continue;
+    IPolygon p{std::move(outer.front()), {}};
+    for (const IRing& hole : poly.holes) p.holes.push_back(simplify_ring(hole, tolerance));
+    clean_rings(p.holes);
+    out.push_back(std::move(p));
+  }
+  return out;
+}
+
 } // namespace penshape::fast

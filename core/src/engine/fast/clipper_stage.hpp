@@ -32,6 +32,10 @@ IRegion difference(const IRings& subject, const IRings& clip);
 // is a valid region again. Theorem 5's observation in practice: the many short edges of dents
 // left by an inset collapse into chords.
 IRegion simplify(const IRings& rings, double tolerance);
+
+// Douglas-Peucker on every ring of every polygon, keeping the outer/hole structure and skipping
+// the union (the caller checks the result and falls back to simplify() if it is not simple).
+IRegion simplify_rings_only(const IRegion& region, double tolerance);
 inline IRegion simplify(const IRegion& region, double tolerance) {
   return simplify(flatten(region), tolerance);
 }

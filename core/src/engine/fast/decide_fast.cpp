@@ -22,8 +22,8 @@ using namespace penshape::fast;
 
 // Budget of the working precision delta (grid units d), see README.md: every stage of each chain
 // loses less than d (the paper allows d per stage, Theorems 11 and 13): stage 1 loses
-// 2·margin + input + arc = 7d/8, stage 2 2·margin + arc = 5d/8, and the YES test of stage 3 is
-// exact up to the simplification of P and the input (d/16 + d/4).
+// 2·margin + input + arc = 13d/16, stage 2 2·margin + arc = 9d/16, and the YES test of stage 3
+// is exact up to the simplification of P (d/32).
 struct Budget {
   double margin;        // slack left for the certificates on each side
   double arc_tolerance; // chord depth of the round joins
@@ -31,19 +31,20 @@ struct Budget {
   double input;         // Douglas-Peucker tolerance for the copy of Q̃ the chains offset
 };
 
-Budget budget(double d) { return {d / 16.0, d / 2.0, d / 16.0, d / 4.0}; }
+Budget budget(double d) { return {d / 32.0, d / 2.0, d / 32.0, d / 4.0}; }
 
 void check_cancel(const CancelHook& cancel) {
   if (cancel && cancel()) throw Cancelled();
 }
 
-// One offset stage, with the disk-size limit enforced before Clipper runs.
+// One offset stage, with the disk-size limit enforced before Clipper runs. `unit` is the number
+// of grid units per input unit (for the message).
 IRegion offset_stage(const IRings& rings, double delta, double tol, const DeconstructLimits& limits,
-                     std::size_t& disk_vertices) {
+                     double unit, std::size_t& disk_vertices) {
   const double steps = std::ceil(round_join_steps(delta, tol));
   if (steps > static_cast<double>(limits.max_disk_vertices)) {
-    throw InvalidInput("fast engine: a disk of radius " + std::to_string(std::fabs(delta)) +
-                       " grid units at tolerance " + std::to_string(tol) + " needs " +
+    throw InvalidInput("fast engine: a disk of radius " + std::to_string(std::fabs(delta) / unit) +
+                       " at tolerance " + std::to_string(tol / unit) + " needs " +
                        std::to_string(static_cast<long long>(steps)) +
                        " vertices, over the limit of " + std::to_string(limits.max_disk_vertices) +
                        " (precision too fine for the radius)");
@@ -102,6 +103,32 @@ std::vector<IPt> witness_candidates(const IRegion& diff, const SegmentIndex& q_i
   return out;
 }
 
+// Q_s: a Douglas-Peucker copy of Q̃ with a checked distance (H(Q, Q_s) <= eta), simple and
+// consistently nested, or Q̃ itself; empty index when not even Q̃ is (then YES cannot be
+// certified: a finer precision gives a finer grid).
+struct CertifiedInput {
+  std::optional<SegmentIndex> index;
+  double eta = kInputRounding;
+};
+
+CertifiedInput certified_input(const IRings& q_grid, double tolerance, double cell) {
+  CertifiedInput out;
+  // Narrow features can make a coarse simplification cross itself: retry finer.
+  for (double tol = tolerance; tol >= tolerance / 8.0 && !out.index; tol /= 2.0) {
+    if (auto q_dp = simplify_rings_checked(q_grid, tol)) {
+      out.index.emplace(*q_dp, cell);
+      out.eta = kInputRounding + tol;
+      if (!is_certifiable_region(*out.index)) out.index.reset();
+    }
+  }
+  if (!out.index) {
+    out.eta = kInputRounding;
+    out.index.emplace(q_grid, cell);
+    if (!is_certifiable_region(*out.index)) out.index.reset();
+  }
+  return out;
+}
+
 } // namespace
 
 DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& params,
@@ -120,76 +147,63 @@ DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& para
   const double r = frame.units(params.radius);
   const double eps = frame.units(params.tolerance);
   const double d = frame.units(params.precision);
-  const Budget b = budget(d);
+  const double unit = frame.units(Rational(1));
 
   const IRings q_grid = frame.round(q);
   if (q_grid.empty()) return finish();
+  const SegmentIndex q_index(q_grid, eps / 2.0);
   std::vector<IPt> q_vertices;
   for (const auto& poly : q.polygons) q_vertices.push_back(frame.round(poly.outer.front()));
   check_cancel(cancel);
 
-  // The chains offset a simplified copy Q_s of Q̃ (H(Q_s, Q̃) <= b.input): far fewer
-  // self-intersections for Clipper, and the radii below absorb the difference.
-  // The chains and the YES certificate work on Q_s, a Douglas-Peucker copy of Q̃ whose distance
-  // to Q̃ is checked (H(Q, Q_s) <= η + input tolerance): far fewer edges for Clipper and for the
-  // level-set walk. If that copy is not simple we fall back to Q̃ itself.
-  std::optional<SegmentIndex> cert_index;
-  double eta = kInputRounding + b.input;
-  // Narrow features can make a coarse simplification cross itself: retry finer.
-  for (double tol = b.input; tol >= b.input / 8.0 && !cert_index; tol /= 2.0) {
-    if (auto q_dp = simplify_rings_checked(q_grid, tol)) {
-      cert_index.emplace(*q_dp, eps / 2.0);
-      eta = kInputRounding + tol;
-      if (!is_certifiable_region(*cert_index)) cert_index.reset();
+  // Interior chain (Algorithm 2 with margins) on Q_s: P ⊆ inset(offset(Q_s, eps - 2m - σ), r + 2m),
+  // then the certificate of yes_certificate.hpp.
+  const Budget b = budget(d);
+  const CertifiedInput input = certified_input(q_grid, b.input, eps / 2.0);
+  // Without a certifiable Q_s the chains still run on Q̃ (for NO), but YES cannot be certified.
+  const IRings& q_simple = input.index ? input.index->rings() : q_grid;
+  const double sigma = input.eta - kInputRounding;
+  if (input.index) {
+    const IRegion q_eps = offset_stage(q_simple, eps - 2 * b.margin - sigma, b.arc_tolerance,
+                                       limits, unit, result.disk_vertices);
+    check_cancel(cancel);
+    const IRegion pi_hat = offset_stage(flatten(q_eps), -(r + 2 * b.margin + b.arc_tolerance),
+                                        b.arc_tolerance, limits, unit, result.disk_vertices);
+    check_cancel(cancel);
+    if (!pi_hat.empty()) {
+      // Ring-wise simplification is usually still a valid region; otherwise let Clipper union it.
+      IRegion p = simplify_rings_only(pi_hat, b.simplify);
+      if (p.empty() || !is_certifiable_region(SegmentIndex(flatten(p), r / 2.0))) {
+        p = simplify(pi_hat, b.simplify);
+      }
+      const YesCheckInput in{&*input.index, input.eta, &q_index, q_vertices, r, eps, b.margin};
+      if (verify_yes(in, p, cancel)) {
+        result.answer = Answer::kYes;
+        result.solution = to_polygon_set(frame, p);
+        result.hausdorff_bound = params.tolerance;
+        return finish();
+      }
     }
+    check_cancel(cancel);
   }
-  if (!cert_index) {
-    eta = kInputRounding;
-    cert_index.emplace(q_grid, eps / 2.0);
-    // The level-set certificates need simple rings; a grid too coarse for the input's
-    // features cannot certify YES (a finer precision gives a finer grid).
-    if (!is_certifiable_region(*cert_index)) cert_index.reset();
-  }
-  const IRings q_simple = cert_index ? cert_index->rings() : q_grid;
-
-  // Interior chain (Algorithm 2 with margins): P ⊆ inset(offset(Q̃, eps - 2m), r + 2m).
-  const IRegion q_eps = offset_stage(q_simple, eps - 2 * b.margin - (eta - kInputRounding),
-                                     b.arc_tolerance, limits, result.disk_vertices);
-  check_cancel(cancel);
-  const IRegion pi_hat = offset_stage(flatten(q_eps), -(r + 2 * b.margin + b.arc_tolerance),
-                                      b.arc_tolerance, limits, result.disk_vertices);
-  check_cancel(cancel);
-  if (!pi_hat.empty() && cert_index) {
-    const IRegion p = simplify(pi_hat, b.simplify);
-    YesCheckInput in{&*cert_index, eta, q_vertices, r, eps, b.margin / 2.0};
-    if (verify_yes(in, p, cancel)) {
-      result.answer = Answer::kYes;
-      result.solution = to_polygon_set(frame, p);
-      result.hausdorff_bound = params.tolerance;
-      return finish();
-    }
-  }
-  check_cancel(cancel);
 
   // Exterior chain (Algorithm 3 with margins): Q̂' ⊇ offset(Π, r + eps) with room to spare.
-  const IRegion q_eps_out =
-      offset_stage(q_simple, eps + 2 * b.margin + (eta - kInputRounding) + b.arc_tolerance,
-                   b.arc_tolerance, limits, result.disk_vertices);
+  const IRegion q_eps_out = offset_stage(q_simple, eps + 2 * b.margin + sigma + b.arc_tolerance,
+                                         b.arc_tolerance, limits, unit, result.disk_vertices);
   check_cancel(cancel);
   const IRegion pi_out = offset_stage(flatten(q_eps_out), -(r - 2 * b.margin), b.arc_tolerance,
-                                      limits, result.disk_vertices);
+                                      limits, unit, result.disk_vertices);
   check_cancel(cancel);
   const IRegion q_prime_out =
       offset_stage(flatten(pi_out), r + eps + 2 * b.margin + b.arc_tolerance, b.arc_tolerance,
-                   limits, result.disk_vertices);
+                   limits, unit, result.disk_vertices);
   check_cancel(cancel);
   const IRegion diff = difference(q_grid, flatten(q_prime_out));
   if (diff.empty()) return finish();
 
-  const SegmentIndex q_index(q_grid, eps / 2.0);
   const SegmentIndex outer_index(flatten(q_eps_out), r / 2.0);
   const SegmentIndex q_prime_index(flatten(q_prime_out), r / 2.0);
-  NoCheckInput no{&q_index, &outer_index, r, eps, b.margin / 2.0, b.margin / 4.0};
+  const NoCheckInput no{&q_index, &outer_index, r, eps, b.margin / 2.0, b.margin / 4.0};
   for (const IPt& w : witness_candidates(diff, q_index, q_prime_index)) {
     if (verify_no_witness(no, w, cancel)) {
       result.answer = Answer::kNo;

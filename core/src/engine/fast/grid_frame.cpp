@@ -73,6 +73,26 @@ namespace {
 // (a rational product would pay for a gcd per coordinate).
 std::int64_t round_scaled(const Rational& v, int k, const mpz_class& t, mpz_class& num,
                           mpz_class& den) {
+  // Fast path in 128-bit integers when everything fits (numerator and denominator below 2^62,
+  // shifts below 60 bits, translation in 64 bits): the same formula, exactly.
+  if (v.get_num().fits_slong_p() && v.get_den().fits_slong_p() && t.fits_slong_p() && k < 60 &&
+      k > -60) {
+    Int128 n = static_cast<Int128>(v.get_num().get_si());
+    Int128 d = static_cast<Int128>(v.get_den().get_si());
+    if (n > -(Int128(1) << 62) && n < (Int128(1) << 62) && d < (Int128(1) << 62)) {
+      if (k >= 0) {
+        n <<= (k + 1);
+      } else {
+        d <<= -k;
+        n <<= 1;
+      }
+      n += d;
+      d *= 2;
+      Int128 q = n / d;
+      if (n % d != 0 && n < 0) --q; // floor for negative quotients
+      return static_cast<std::int64_t>(q - static_cast<Int128>(t.get_si()));
+    }
+  }
   num = v.get_num();
   den = v.get_den();
   if (k >= 0) {

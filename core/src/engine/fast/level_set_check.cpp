@@ -9,6 +9,8 @@ namespace {
 
 // Error of a straight offset piece: the unit normal and its product with `level` in double.
 constexpr double kStraightPieceError = 1.0 / 1024.0;
+// Arc chords are refined down to this sagitta (grid units) before a piece counts as failed.
+constexpr double kMinSagitta = 0.5;
 
 struct Interval {
   double lo;
@@ -121,7 +123,8 @@ class Walker {
   }
 
   // The arc of radius `level` around a convex vertex v, from the outgoing normal of (prev, v)
-  // to that of (v, next), counterclockwise, as chords with sagitta <= max_sagitta.
+  // to that of (v, next), counterclockwise, as chords with sagitta <= max_sagitta; a chord that
+  // cannot be verified is split in two until its sagitta is below kMinSagitta.
   bool arc(IPt prev, IPt v, IPt next) {
     const DPt n0 = right_normal(prev, v);
     const DPt n1 = right_normal(v, next);
@@ -129,20 +132,25 @@ class Walker {
     double sweep = std::atan2(n1.y, n1.x) - a0;
     while (sweep < 0.0) sweep += 2.0 * M_PI;
     while (sweep >= 2.0 * M_PI) sweep -= 2.0 * M_PI;
-    const double l = q_.level;
-    const double max_half = std::acos(std::max(0.0, 1.0 - q_.max_sagitta / l));
+    const double max_half = std::acos(std::max(0.0, 1.0 - q_.max_sagitta / q_.level));
     const int m = std::max(1, static_cast<int>(std::ceil(sweep / (2.0 * max_half))));
     const double step = sweep / m;
-    const double sagitta = l * (1.0 - std::cos(step / 2.0)) + kStraightPieceError;
-    const DPt c = to_d(v);
-    DPt prev_pt{c.x + l * std::cos(a0), c.y + l * std::sin(a0)};
-    for (int k = 1; k <= m; ++k) {
-      const double ang = a0 + step * k;
-      const DPt pt{c.x + l * std::cos(ang), c.y + l * std::sin(ang)};
-      if (!check({prev_pt, pt, sagitta})) return false;
-      prev_pt = pt;
+    for (int k = 0; k < m; ++k) {
+      if (!arc_piece(to_d(v), a0 + step * k, a0 + step * (k + 1))) return false;
     }
     return true;
+  }
+
+  bool arc_piece(DPt c, double from, double to) {
+    const double l = q_.level;
+    const double sagitta = l * (1.0 - std::cos((to - from) / 2.0)) + kStraightPieceError;
+    const Piece piece{{c.x + l * std::cos(from), c.y + l * std::sin(from)},
+                      {c.x + l * std::cos(to), c.y + l * std::sin(to)},
+                      sagitta};
+    if (check(piece)) return true;
+    if (sagitta < kMinSagitta) return false;
+    const double mid = 0.5 * (from + to);
+    return arc_piece(c, from, mid) && arc_piece(c, mid, to);
   }
 
   bool outside_b(DPt p) const { return q_.b->winding(round_point(p)) <= 0; }
@@ -194,8 +202,10 @@ class Walker {
                           if (stadium_interval(s, g.da(), g.db(), need + 1.0, iv))
                             forbidden.push_back(iv);
                         });
-    std::vector<Interval> cover = cover_intervals(s, forbidden);
-    return gaps_are_clear(s, cover, need);
+    if (gaps_are_clear(s, cover_intervals(s, forbidden), need)) return true;
+    // A gap may have failed only for lying inside B away from its edges: try to cover it all.
+    const std::vector<Interval> all{{0.0, 1.0}};
+    return gaps_are_clear(s, cover_intervals(s, all), need);
   }
 
   // Verified intervals of the piece whose points are closer than `level` to some edge of A;

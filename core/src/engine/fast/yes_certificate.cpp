@@ -27,7 +27,7 @@ bool verify_yes(const YesCheckInput& in, const IRegion& p, const CancelHook& can
   const double level_a = in.tolerance - in.eta - kParamRounding;    // <= eps - η
   const double level_b = in.radius + in.tolerance - kParamRounding; // <= r + eps
 
-  // (A2) no component of P lies wholly where d(·, Q̃) > level_a.
+  // (A2) no component of P lies wholly where d(·, Q_s) > level_a (in.q is Q_s or Q̃).
   for (const IPolygon& poly : p) {
     if (!within(*in.q, poly.outer.front(), level_a - kDistanceSlack)) return false;
   }
@@ -35,13 +35,15 @@ bool verify_yes(const YesCheckInput& in, const IRegion& p, const CancelHook& can
   for (const IPt& v : in.q_component_vertices) {
     if (!within(pi, v, level_b - kInputRounding - kDistanceSlack)) return false;
   }
-  // (A1) the level set {d(·, Q̃) = level_a} keeps distance > r from P.
+  // (A1) the level set {d(·, Q_s) = level_a} keeps distance > r from P.
   if (!level_set_avoids({in.q, level_a, &pi, in.radius + kParamRounding, in.max_sagitta}, cancel)) {
     return false;
   }
-  // (B1) the level set {d(·, P) = level_b} stays outside Q (distance > η from Q̃).
+  // (B1) the level set {d(·, P) = level_b} stays outside Q: farther than η0 from Q̃ (the
+  // unsimplified grid input, so the simplification does not eat into this margin).
   return level_set_avoids(
-      {&pi, level_b, in.q, std::max(1.0, in.eta + kParamRounding), in.max_sagitta}, cancel);
+      {&pi, level_b, in.q_grid, std::max(1.0, kInputRounding + kParamRounding), in.max_sagitta},
+      cancel);
 }
 
 } // namespace penshape::fast

@@ -15,6 +15,7 @@ namespace penshape::fast {
 struct YesCheckInput {
   const SegmentIndex* q = nullptr;       // Q̃ or a simplification (simple rings, checked)
   double eta = 0.0;                      // proven bound on H(Q, that region), grid units
+  const SegmentIndex* q_grid = nullptr;  // Q̃ itself: H(Q, Q̃) <= kInputRounding
   std::vector<IPt> q_component_vertices; // one grid vertex per polygon of Q (its outer ring)
   double radius = 0.0;                   // r, grid units
   double tolerance = 0.0;                // eps, grid units

@@ -1,6 +1,8 @@
 // The reference engine: APPROXDECIDE (deconstructing-approximate-offsets, Algorithms 2-4)
 // literally, on exact CGAL regions. Interior approximation first (YES with P = Π̂), then the
-// exterior one (NO), else UNDECIDED.
+// exterior one (NO), else UNDECIDED. The cancel hook is checked between CGAL operations (per
+// polygon of a Minkowski sum and between the steps), so its latency is one CGAL operation:
+// ~0.1-0.5 s on the 1,881-vertex Kazakhstan polygon.
 #include <algorithm>
 
 #include "engine/engines.hpp"

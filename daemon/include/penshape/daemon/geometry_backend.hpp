@@ -1,11 +1,14 @@
 #pragma once
 // What the Geometry service computes with. The real backend forwards to the core library
 // (core_geometry_backend.cpp, linked when the engine is built); tests substitute their own.
+#include <functional>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include "penshape/core/deconstruct.hpp"
 #include "penshape/core/polygon_set.hpp"
+#include "penshape/core/search.hpp"
 #include "penshape/v1/types.pb.h"
 
 namespace penshape::daemon {
@@ -27,6 +30,25 @@ class GeometryBackend {
   // NotAvailable unless the backend can compute it.
   virtual v1::CurvedRegion offset_boundary(const PolygonSet& p, const Rational& radius,
                                            const CancelHook& cancel);
+
+  // The searches of core/include/penshape/core/search.hpp on q; `observe` sees every decision
+  // (for progress). Throw NotAvailable unless the backend has them; InvalidInput, Cancelled.
+  using DecisionObserver = std::function<void(const DeconstructResult&)>;
+  virtual ToleranceSearchResult search_tolerance(const PolygonSet& q, const Rational& radius,
+                                                 const Rational& width, EngineKind engine,
+                                                 const CancelHook& cancel,
+                                                 const DeconstructLimits& limits,
+                                                 const DecisionObserver& observe);
+  // upper_bound: a radius with no solution (absent: enclosing_radius_bound(q) + tolerance).
+  virtual RadiusSearchResult search_radius(const PolygonSet& q, const Rational& tolerance,
+                                           const Rational& width,
+                                           const std::optional<Rational>& upper_bound,
+                                           EngineKind engine, const CancelHook& cancel,
+                                           const DeconstructLimits& limits,
+                                           const DecisionObserver& observe);
+  virtual SuggestResult suggest_radius(const PolygonSet& q, const SuggestOptions& options,
+                                       EngineKind engine, const CancelHook& cancel,
+                                       const DeconstructLimits& limits);
 };
 
 // The core library's engines (penshape::deconstruct). Defined in core_geometry_backend.cpp,

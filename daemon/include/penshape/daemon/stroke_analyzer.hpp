@@ -16,7 +16,9 @@ namespace penshape::daemon {
 
 struct StrokeAnalysis {
   v1::PolygonSet ink_polygon; // mm
-  v1::Shape shape;            // kind SHAPE_KIND_NONE when nothing is certified
+  // kind SHAPE_KIND_NONE when nothing is certified; SHAPE_KIND_UNSPECIFIED when the analyzer does
+  // not recognize shapes (ink polygon only): then no ShapeRecognized is published.
+  v1::Shape shape;
   std::vector<v1::Shape> alternatives;
 };
 

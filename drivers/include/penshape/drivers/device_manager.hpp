@@ -7,9 +7,10 @@
 // ends that stroke cleanly (delivered before its detach event) and comes back as a new attach
 // when it reappears (replug, resume from suspend).
 //
-// Threading: callbacks run on the device's reader thread (attach on the hotplug thread). They
-// must be quick and thread-safe; a daemon typically pushes into its own queues. Events of one
-// device arrive in order: attach, samples and strokes, detach.
+// Threading: callbacks run on the device's reader thread (attach on the hotplug thread, or on
+// the caller's thread for attach_source/attach_replay). They must be quick and thread-safe; a
+// daemon typically pushes into its own queues (DeviceEventQueue). Events of one device arrive
+// in order: attach, samples and strokes, detach.
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -85,6 +86,9 @@ struct DeviceManagerOptions {
   SegmenterOptions segmenter;
   std::chrono::milliseconds rescan_interval{3000}; // fallback rescan when no event arrives
   std::chrono::milliseconds read_poll{100};        // bounds each blocking read
+  // A device that just vanished is not reopened sooner than this (a node that keeps failing
+  // right after open must not turn the rescan into a loop).
+  std::chrono::milliseconds reattach_backoff{1000};
 };
 
 class DeviceManager {
@@ -129,6 +133,7 @@ class DeviceManager {
   mutable std::mutex mutex_;
   mutable std::condition_variable changed_;
   std::map<DeviceId, std::unique_ptr<Device>> devices_;
+  std::map<std::string, std::chrono::steady_clock::time_point> gone_at_; // key -> last vanish
   std::atomic<DeviceId> next_id_{1};
   std::atomic<std::uint64_t> next_stroke_id_{1};
   std::atomic<bool> stopping_{false};

@@ -11,20 +11,25 @@
 namespace penshape::drivers {
 
 // One value in a report. `bit_size == 0` means the report does not carry it. A value may be
-// split: the low `bit_size` bits at `bit_offset` and the high `high_bit_size` bits at
-// `high_bit_offset` (UC-Logic vendor reports keep the third coordinate byte apart).
+// split in up to three pieces, least significant first: `bit_size` bits at `bit_offset`, then
+// `high_bit_size` bits at `high_bit_offset`, then `top_bit_size` bits at `top_bit_offset`
+// (UC-Logic keeps the third coordinate byte apart; Wacom Intuos scatters pressure over three
+// bytes). `high_big_endian`: the high piece is whole bytes in big-endian order (Intuos X/Y).
 struct PenField {
   std::uint32_t bit_offset = 0;
   std::uint32_t bit_size = 0;
   std::uint32_t high_bit_offset = 0;
   std::uint32_t high_bit_size = 0;
+  std::uint32_t top_bit_offset = 0;
+  std::uint32_t top_bit_size = 0;
+  bool high_big_endian = false;
   bool is_signed = false;
   bool inverted = false; // a flag that reads 1 when the condition is false
   std::int32_t logical_minimum = 0;
   std::int32_t logical_maximum = 0;
 
   [[nodiscard]] bool present() const { return bit_size > 0; }
-  [[nodiscard]] std::uint32_t total_bits() const { return bit_size + high_bit_size; }
+  [[nodiscard]] std::uint32_t total_bits() const { return bit_size + high_bit_size + top_bit_size; }
 };
 
 // The layout of one pen input report.
@@ -45,6 +50,9 @@ struct PenLayout {
   // Tilt in degrees = (logical - logical_minimum) * tilt_scale + tilt_offset.
   double tilt_scale = 1.0;
   double tilt_offset = 0.0;
+
+  // Without a tip field: tip = pressure > tip_pressure_threshold (Wacom Intuos uses 10).
+  std::uint32_t tip_pressure_threshold = 0;
 
   double x_resolution = 0.0; // units per mm, 0 when the descriptor gives no physical size
   double y_resolution = 0.0;

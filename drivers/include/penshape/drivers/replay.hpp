@@ -48,9 +48,10 @@ struct ReplayResult {
   PipelineCounters counters;
 };
 
-// Builds the device profile from the recording (descriptor, identity, vendor strings; `id`
-// overrides an absent I: line) and runs it through the reader loop on the calling thread.
-// Throws DescriptorError / std::invalid_argument like build_profile.
+// Builds the device profile from the recording (descriptor, identity, vendor strings; set
+// recording.identity yourself when the file had no I: line) and runs it through the reader
+// loop on the calling thread. Throws DescriptorError / std::invalid_argument like
+// build_profile.
 ReplayResult replay(const Recording& recording, ReplaySpeed speed, SegmenterOptions options = {});
 
 } // namespace penshape::drivers

@@ -16,6 +16,8 @@ enum class Protocol : std::uint8_t {
   kHid,           // the report descriptor describes the pen
   kWacomHid,      // descriptor pens after Wacom's mode-switch feature report (02 02)
   kWacomGraphire, // Wacom Graphire/PenPartner/PenStation report 2 (vendor page descriptor)
+  kWacomBamboo,   // Wacom Bamboo / One by Wacom pen report 2, after the mode switch (02 02)
+  kWacomIntuos,   // Wacom Intuos 2-5 / Intuos Pro pen report 2, after the mode switch (02 02)
   kUcLogic,       // Huion/Gaomon: vendor mode via USB string descriptor 200 (or 100)
   kXpPen,         // XP-Pen/Ugee: vendor mode via output report 02 B0 02|04 when needed
 };

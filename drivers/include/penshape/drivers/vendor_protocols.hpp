@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <span>
 #include <stdexcept>
+#include <vector>
 
 #include "penshape/drivers/pen_layout.hpp"
 #include "penshape/drivers/tablet_table.hpp"
@@ -36,6 +37,23 @@ PenLayout uclogic_pen_layout(const UcLogicParams& params);
 // bits 1-2 side switches; X, Y little-endian 16-bit at bytes 2 and 4; 10-bit pressure in byte 6
 // plus the low two bits of byte 7. Maxima and resolution from the tablet table row.
 PenLayout wacom_graphire_pen_layout(const TabletSpec& spec);
+
+// Wacom Bamboo-family pen report (ID 2, 9 or 10 bytes; Bamboo, Intuos PT, One by Wacom CTL-472)
+// after the mode-switch feature report 02 02: byte 1 bit 7 in range, bit 6 position valid
+// (proximity), bit 5 pressure and buttons valid, bit 3 eraser, bit 0 tip, bits 1-2 side
+// switches; X, Y, pressure little-endian 16-bit at bytes 2, 4, 6.
+PenLayout wacom_bamboo_pen_layout(const TabletSpec& spec);
+
+// Wacom Intuos-family pen reports (ID 2, 10 bytes; Intuos 2-5, Intuos Pro PTH-x51, Intuos
+// CTH-490) after the mode switch. Two layouts share the ID, told apart by byte 1:
+//  - the general pen packet, (byte1 & 0xB8) == 0xA0: X = big-endian 16 bits at byte 2 shifted
+//    left once plus bit 1 of byte 9; Y likewise at byte 4 plus bit 0 of byte 9; pressure
+//    11 bits = byte 6 (bits 3-10), bits 6-7 of byte 7 (bits 1-2), bit 0 of byte 1 (bit 0);
+//    tilt X = bits 0-5 of byte 7 and bit 7 of byte 8, tilt Y = bits 0-6 of byte 8, each 0..127
+//    centred on 64 (degrees); side switches bits 1 and 2 of byte 1; tip when pressure > 10.
+//  - the leaving-proximity packet, (byte1 & 0xFE) == 0x80: in range false.
+// Tool-announcement packets (0xC2…) carry no position and count as other reports.
+std::vector<PenLayout> wacom_intuos_pen_layouts(const TabletSpec& spec);
 
 // XP-Pen/Ugee vendor-mode pen report after output report 02 B0 02|04 (ID 2, 10 bytes): byte 1
 // 0xA0 in range (bit 6 set: out of range), bit 0 tip, bits 1-2 side switches, 0xF0 pad frames;

@@ -1,0 +1,185 @@
+// Fewer vertices for a fast-engine YES solution (issue: simple-looking solutions). Two moves,
+// each candidate certified by the same exact-grid YES check as decide_fast (yes_certificate):
+//   - indented caps (Theorem 5): a run of right turns is an arc of Π̂'s boundary bulging into
+//     the region; replacing it by the two tangent lines' intersection removes the linear cap,
+//     which the (r + ε)-offset does not need (the cap lies in the disks around the arc's ends);
+//   - coarser Douglas-Peucker on what remains.
+// Nothing here is trusted: a candidate that does not verify is dropped.
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+#include "clipper_stage.hpp"
+#include "douglas_peucker.hpp"
+#include "engine/engines.hpp"
+#include "grid_frame.hpp"
+#include "level_set_check.hpp"
+#include "segment_index.hpp"
+#include "yes_certificate.hpp"
+
+namespace penshape::detail {
+namespace {
+
+using namespace penshape::fast;
+
+// Largest total turn of one cap: Theorem 5 splits arcs into pieces of at most a quarter circle.
+constexpr double kMaxCapTurn = std::numbers::pi / 2 * 0.95;
+
+double turn_angle(IPt a, IPt b, IPt c) { // signed, positive for a left turn
+  const double ux = static_cast<double>(b.x - a.x);
+  const double uy = static_cast<double>(b.y - a.y);
+  const double vx = static_cast<double>(c.x - b.x);
+  const double vy = static_cast<double>(c.y - b.y);
+  return std::atan2(ux * vy - uy * vx, ux * vx + uy * vy);
+}
+
+// Intersection of the lines through (a, b) and (c, d), rounded to the grid; nullopt when they
+// are (nearly) parallel.
+std::optional<IPt> line_intersection(IPt a, IPt b, IPt c, IPt d) {
+  const double rx = static_cast<double>(b.x - a.x);
+  const double ry = static_cast<double>(b.y - a.y);
+  const double sx = static_cast<double>(d.x - c.x);
+  const double sy = static_cast<double>(d.y - c.y);
+  const double den = rx * sy - ry * sx;
+  if (std::abs(den) < 1e-9 * std::hypot(rx, ry) * std::hypot(sx, sy)) return std::nullopt;
+  const double t =
+      (static_cast<double>(c.x - a.x) * sy - static_cast<double>(c.y - a.y) * sx) / den;
+  return IPt{std::llround(static_cast<double>(a.x) + t * rx),
+             std::llround(static_cast<double>(a.y) + t * ry)};
+}
+
+// Replaces each run of right turns (an indented arc; the region is on the left of every ring)
+// by the intersection of the edges entering and leaving it, splitting runs that turn more than
+// a quarter circle.
+IRing remove_caps(const IRing& ring) {
+  const std::size_t n = ring.size();
+  if (n < 4) return ring;
+  auto at = [&](std::size_t i) { return ring[i % n]; };
+  // Start after a vertex that is not a right turn, so no run wraps around the start.
+  std::size_t start = n;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (orientation(at(i + n - 1), at(i), at(i + 1)) >= 0) {
+      start = i;
+      break;
+    }
+  }
+  if (start == n) return ring; // all right turns: a clockwise convex ring, nothing to cut
+  IRing out;
+  std::size_t i = start + 1;
+  const std::size_t end = start + 1 + n;
+  out.push_back(at(start));
+  while (i < end) {
+    if (orientation(at(i - 1), at(i), at(i + 1)) >= 0) {
+      out.push_back(at(i));
+      ++i;
+      continue;
+    }
+    // A run of right turns from i; grow it while the total turn stays under a quarter circle.
+    std::size_t j = i;
+    double turned = -turn_angle(at(i - 1), at(i), at(i + 1));
+    while (j + 1 < end && orientation(at(j), at(j + 1), at(j + 2)) < 0) {
+      const double next = -turn_angle(at(j), at(j + 1), at(j + 2));
+      if (turned + next > kMaxCapTurn) break;
+      turned += next;
+      ++j;
+    }
+    if (j > i) {
+      if (auto x = line_intersection(at(i - 1), at(i), at(j), at(j + 1))) {
+        out.push_back(*x);
+        i = j + 1;
+        continue;
+      }
+    }
+    out.push_back(at(i));
+    ++i;
+  }
+  if (!out.empty() && out.front() == out.back()) out.pop_back();
+  return out;
+}
+
+IRegion to_grid(const GridFrame& frame, const PolygonSet& set) {
+  IRegion out;
+  for (const auto& poly : set.polygons) {
+    IPolygon ip;
+    for (const auto& p : poly.outer) ip.outer.push_back(frame.round(p));
+    for (const auto& h : poly.holes) {
+      IRing ih;
+      for (const auto& p : h) ih.push_back(frame.round(p));
+      ip.holes.push_back(std::move(ih));
+    }
+    out.push_back(std::move(ip));
+  }
+  return out;
+}
+
+PolygonSet to_exact(const GridFrame& frame, const IRegion& region) {
+  PolygonSet out;
+  for (const IPolygon& poly : region) {
+    PolygonWithHoles pw;
+    for (const IPt& p : poly.outer) pw.outer.push_back(frame.exact(p));
+    for (const IRing& hole : poly.holes) {
+      Ring h;
+      for (const IPt& p : hole) h.push_back(frame.exact(p));
+      pw.holes.push_back(std::move(h));
+    }
+    out.polygons.push_back(std::move(pw));
+  }
+  return out;
+}
+
+std::size_t vertex_count(const IRegion& region) {
+  std::size_t n = 0;
+  for (const auto& p : region) {
+    n += p.outer.size();
+    for (const auto& h : p.holes) n += h.size();
+  }
+  return n;
+}
+
+} // namespace
+
+std::optional<PolygonSet> simplify_fast_solution(const PolygonSet& q,
+                                                 const DeconstructParams& params,
+                                                 const PolygonSet& solution,
+                                                 const CancelHook& cancel) {
+  const GridFrame frame(q, params);
+  const double r = frame.units(params.radius);
+  const double eps = frame.units(params.tolerance);
+  const double d = frame.units(params.precision);
+  const IRings q_grid = frame.round(q);
+  if (q_grid.empty()) return std::nullopt;
+  // The certificate runs on Q̃ itself (η = input rounding): slower than decide_fast's simplified
+  // copy, but there is only a handful of candidates.
+  const SegmentIndex q_index(q_grid, eps / 2.0);
+  if (!is_certifiable_region(q_index)) return std::nullopt;
+  std::vector<IPt> q_vertices;
+  for (const auto& poly : q.polygons) q_vertices.push_back(frame.round(poly.outer.front()));
+  const YesCheckInput in{&q_index, kInputRounding, &q_index, q_vertices, r, eps, d / 32.0};
+
+  const IRegion raw = to_grid(frame, solution);
+  IRings capped;
+  for (const IRing& ring : flatten(raw)) capped.push_back(remove_caps(ring));
+  std::optional<IRegion> best;
+  std::size_t best_count = vertex_count(raw);
+  // Coarsest first; the first candidate that verifies and saves vertices wins per family.
+  const IRings plain = flatten(raw);
+  for (const IRings* rings_ptr : std::array<const IRings*, 2>{&capped, &plain}) {
+    const IRings& rings = *rings_ptr;
+    for (double tol = eps / 2.0; tol >= d / 16.0; tol /= 2.0) {
+      if (cancel && cancel()) throw Cancelled();
+      const IRegion candidate = simplify(rings, tol);
+      const std::size_t count = vertex_count(candidate);
+      if (candidate.empty() || count >= best_count) continue;
+      if (verify_yes(in, candidate, cancel)) {
+        best = candidate;
+        best_count = count;
+        break;
+      }
+    }
+  }
+  if (!best) return std::nullopt;
+  return to_exact(frame, *best);
+}
+
+} // namespace penshape::detail
