@@ -56,6 +56,25 @@ int BoardModel::server_not_analysed(std::uint64_t server_id, const std::string& 
   return static_cast<int>(s - strokes_.data());
 }
 
+int BoardModel::server_finished(std::uint64_t server_id) {
+  BoardStroke* s = find(server_id);
+  if (s == nullptr) return -1;
+  s->finished = true;
+  return static_cast<int>(s - strokes_.data());
+}
+
+int BoardModel::settle_finished() {
+  int settled = 0;
+  for (auto& s : strokes_) {
+    if (s.finished && !s.answered) {
+      s.answered = true;
+      s.note = "the daemon sent no shape (no recognizer)";
+      ++settled;
+    }
+  }
+  return settled;
+}
+
 std::string BoardModel::undo() {
   if (strokes_.empty() || drawing_) return "nothing";
   if (strokes_.back().snapped) {
@@ -77,6 +96,11 @@ void BoardModel::clear() {
 bool BoardModel::all_answered() const {
   return std::all_of(strokes_.begin(), strokes_.end(),
                      [](const BoardStroke& s) { return s.answered; });
+}
+
+bool BoardModel::all_finished_or_answered() const {
+  return std::all_of(strokes_.begin(), strokes_.end(),
+                     [](const BoardStroke& s) { return s.finished || s.answered; });
 }
 
 } // namespace penshape::board

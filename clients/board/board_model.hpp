@@ -21,6 +21,7 @@ struct BoardStroke {
   std::uint64_t server_id = 0;    // the daemon's stroke id (0 until StrokeStarted arrives)
   std::optional<v1::Shape> shape; // a certified shape (never SHAPE_KIND_NONE)
   bool snapped = false;           // shape shown instead of the raw stroke
+  bool finished = false;          // StrokeFinished arrived (a shape may follow)
   bool answered = false;          // the daemon has answered (shape, none, or not analysed)
   std::string note;               // e.g. "not analysed: ..." or "no shape"
 };
@@ -37,6 +38,13 @@ class BoardModel {
   // The result for a server stroke; returns the stroke's index, or -1 when unknown.
   int server_shape(std::uint64_t server_id, const v1::Shape& shape);
   int server_not_analysed(std::uint64_t server_id, const std::string& why);
+  // StrokeFinished with its analysis done: a ShapeRecognized, when the daemon recognizes shapes,
+  // follows right after it on the same stream.
+  int server_finished(std::uint64_t server_id);
+  // After the stream has been drained (DaemonLink::start ends the previous call only once the
+  // daemon has sent everything): finished strokes that got no shape never will (the daemon has
+  // no recognizer). Returns how many strokes this settled.
+  int settle_finished();
 
   // Undo acts on the last stroke: a snapped one goes back to its raw form, a raw one is removed.
   // Returns what it did ("unsnapped", "removed", "nothing").
@@ -45,6 +53,7 @@ class BoardModel {
 
   [[nodiscard]] const std::vector<BoardStroke>& strokes() const { return strokes_; }
   [[nodiscard]] bool all_answered() const;
+  [[nodiscard]] bool all_finished_or_answered() const;
 
  private:
   BoardStroke* find(std::uint64_t server_id);

@@ -209,6 +209,8 @@ class Board {
           say("stroke " + std::to_string(i + 1) +
               " not analysed: " + e.stroke_finished().not_analysed());
         dirty_ = true;
+      } else if (e.has_stroke_finished()) {
+        model_.server_finished(e.stroke_finished().stroke().id());
       } else if (e.has_shape()) {
         const int i = model_.server_shape(e.shape().stroke_id(), e.shape().shape());
         if (i >= 0) {
@@ -239,6 +241,23 @@ class Board {
     SDL_RenderPresent(renderer_);
     say(ok ? "screenshot " + path : "screenshot " + path + " failed: " + SDL_GetError());
     return ok;
+  }
+
+  // Waits for every answer the daemon will give: restarting the stream ends the previous call
+  // only after the daemon has sent all its events. Strokes that then have no shape get none.
+  void sync() {
+    if (model_.drawing()) return;
+    link_.start(radius_, tolerance_);
+    poll_daemon();
+    std::vector<bool> before;
+    for (const auto& s : model_.strokes()) before.push_back(s.answered);
+    if (model_.settle_finished() == 0) return;
+    const auto& strokes = model_.strokes();
+    for (std::size_t i = 0; i < strokes.size(); ++i) {
+      if (!before[i] && strokes[i].answered) {
+        say("stroke " + std::to_string(i + 1) + ": " + strokes[i].note);
+      }
+    }
   }
 
   [[nodiscard]] bool running() const { return running_; }
@@ -359,6 +378,11 @@ class ScriptRunner {
           waiting_ = true;
           deadline_ = std::chrono::steady_clock::now() +
                       std::chrono::milliseconds(static_cast<long>(c.seconds * 1000));
+        }
+        // Once the daemon has finished every stroke, drain the stream: a shape that has not
+        // come by then will not come.
+        if (!board.model().all_answered() && board.model().all_finished_or_answered()) {
+          board.sync();
         }
         if (board.model().all_answered() && !board.model().drawing()) {
           waiting_ = false;

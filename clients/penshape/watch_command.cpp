@@ -69,11 +69,26 @@ class SvgArchive {
       } else {
         pending_[{event.device_id(), f.stroke().id()}] = f;
       }
+    } else if (event.has_stroke_started()) {
+      // A device's shape follows its StrokeFinished at once: a stroke still waiting when that
+      // device starts another one gets none (the daemon has no recognizer).
+      flush_device(event.device_id());
     } else if (event.has_shape()) {
       const auto it = pending_.find({event.device_id(), event.shape().stroke_id()});
       if (it == pending_.end()) return; // its stroke finished before we subscribed
       write(event.device_id(), it->second, &event.shape().shape());
       pending_.erase(it);
+    }
+  }
+
+  void flush_device(const std::string& device) {
+    for (auto it = pending_.begin(); it != pending_.end();) {
+      if (it->first.first == device) {
+        write(device, it->second, nullptr);
+        it = pending_.erase(it);
+      } else {
+        ++it;
+      }
     }
   }
 

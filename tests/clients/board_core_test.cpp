@@ -73,6 +73,28 @@ TEST(BoardModel, NotAnalysedStrokesStayRaw) {
   EXPECT_TRUE(m.strokes().empty());
 }
 
+TEST(BoardModel, FinishedStrokesWithoutAShapeSettleAfterTheStreamIsDrained) {
+  BoardModel m;
+  m.begin_stroke({1, 1}, 4);
+  m.end_stroke({5, 5});
+  m.begin_stroke({6, 6}, 4);
+  m.end_stroke({9, 9});
+  m.server_stroke_started(1);
+  m.server_stroke_started(2);
+  EXPECT_EQ(m.server_finished(1), 0);
+  EXPECT_FALSE(m.all_finished_or_answered());
+  EXPECT_EQ(m.server_finished(2), 1);
+  EXPECT_EQ(m.server_shape(2, square_shape()), 1); // the shape follows its StrokeFinished
+  EXPECT_TRUE(m.all_finished_or_answered());
+  EXPECT_FALSE(m.all_answered());
+  EXPECT_EQ(m.settle_finished(), 1); // stroke 1 got no shape
+  EXPECT_TRUE(m.all_answered());
+  EXPECT_EQ(m.strokes()[0].note, "the daemon sent no shape (no recognizer)");
+  EXPECT_FALSE(m.strokes()[0].snapped);
+  EXPECT_TRUE(m.strokes()[1].snapped);
+  EXPECT_EQ(m.settle_finished(), 0);
+}
+
 std::string write_file(const std::string& name, const std::string& text) {
   const auto path = std::filesystem::temp_directory_path() /
                     ("penshape-board-core-" + std::to_string(::getpid()) + "-" + name);

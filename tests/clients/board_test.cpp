@@ -260,13 +260,15 @@ TEST_F(Board, RealDaemonSnapsTheHandDrawnRectangle) {
   daemon.signal(SIGTERM);
   EXPECT_EQ(daemon.wait(), 0) << daemon.output();
   ASSERT_EQ(run.exit_code, 0) << run.output;
-  if (run.output.find("not analysed: this build has no stroke analyzer") != std::string::npos) {
+  if (run.output.find("not analysed: this build has no stroke analyzer") != std::string::npos ||
+      run.output.find("stroke 1: the daemon sent no shape (no recognizer)") != std::string::npos) {
     // The board still showed the raw stroke, and undo removed nothing that was not there.
     const Image& img = run.snapped;
     ASSERT_EQ(img.width, 800);
     for (const auto& [x, y] : run.stroke.points) EXPECT_EQ(img.at(x, y), kRawInk);
     GTEST_SKIP() << "penshaped has no recognizer yet (recognizer branch not merged): the board "
-                    "drew the raw stroke; the snapped-shape check runs once it is";
+                    "drew the raw stroke; the snapped-shape check runs once it is. Board said:\n"
+                 << run.output;
   }
   // The recognizer's answer: a rectangle or square, whose vertices the board prints in pixels.
   const std::regex answer(
