@@ -9,6 +9,7 @@ PACKAGES=(
   libhidapi-dev libusb-1.0-0-dev libudev-dev
   libprotobuf-dev protobuf-compiler libgrpc++-dev protobuf-compiler-grpc
   libgtest-dev libgmock-dev libbenchmark-dev
+  libsdl2-dev xvfb python3-grpcio python3-protobuf
   libpolyclipping-dev
 )
 

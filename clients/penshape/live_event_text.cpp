@@ -1,0 +1,292 @@
+#include "live_event_text.hpp"
+
+#include <cstdio>
+#include <string_view>
+
+namespace penshape::cli {
+namespace {
+
+template <typename... T>
+std::string format(const char* fmt, T... values) {
+  char buf[128];
+  std::snprintf(buf, sizeof buf, fmt, values...);
+  return buf;
+}
+
+std::string hex4(std::uint32_t v) {
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "%04x", v & 0xffffU);
+  return buf;
+}
+
+void write_point(JsonWriter& json, const v1::Point& p) {
+  json.begin_array().number(p.x()).number(p.y()).end_array();
+}
+
+void write_tablet_fields(JsonWriter& json, const v1::TabletInfo& t) {
+  json.key("name").string(t.name());
+  json.key("vendor_id").integer(t.vendor_id());
+  json.key("product_id").integer(t.product_id());
+  json.key("bus").integer(static_cast<int>(t.bus()));
+  json.key("x_max").integer(t.x_max());
+  json.key("y_max").integer(t.y_max());
+  json.key("pressure_max").integer(t.pressure_max());
+  json.key("x_resolution").number(t.x_resolution());
+  json.key("y_resolution").number(t.y_resolution());
+  json.key("has_tilt").boolean(t.has_tilt());
+  json.key("width_mm").number(t.x_resolution() > 0 ? t.x_max() / t.x_resolution() : 0.0);
+  json.key("height_mm").number(t.y_resolution() > 0 ? t.y_max() / t.y_resolution() : 0.0);
+}
+
+void write_sample_json(JsonWriter& json, const v1::PenSample& s) {
+  json.begin_object();
+  json.key("time_us").integer(s.time_us());
+  json.key("x").integer(s.x());
+  json.key("y").integer(s.y());
+  json.key("pressure").integer(s.pressure());
+  json.key("tilt_x").integer(s.tilt_x());
+  json.key("tilt_y").integer(s.tilt_y());
+  json.key("buttons").integer(s.buttons());
+  json.key("in_range").boolean(s.in_range());
+  json.key("tip").boolean(s.tip());
+  json.end_object();
+}
+
+std::string shape_summary(const v1::Shape& shape) {
+  std::string out = shape_kind_name(shape.kind());
+  if (shape.kind() == v1::SHAPE_KIND_NONE || shape.kind() == v1::SHAPE_KIND_UNSPECIFIED) {
+    return out;
+  }
+  switch (shape.params_case()) {
+    case v1::Shape::kVertices:
+      out += " with " + std::to_string(shape.vertices().vertices_size()) + " vertices";
+      break;
+    case v1::Shape::kCircle:
+      out += format(" r=%.2f mm at (%.2f, %.2f)", shape.circle().radius(),
+                    shape.circle().center().x(), shape.circle().center().y());
+      break;
+    default:
+      break;
+  }
+  out += format(" confidence %.2f, H <= %.3g mm", shape.confidence(),
+                shape.certificate().hausdorff_bound().approx());
+  return out;
+}
+
+} // namespace
+
+std::string shape_kind_name(v1::ShapeKind kind) {
+  switch (kind) {
+    case v1::SHAPE_KIND_NONE:
+      return "none";
+    case v1::SHAPE_KIND_SEGMENT:
+      return "segment";
+    case v1::SHAPE_KIND_POLYLINE:
+      return "polyline";
+    case v1::SHAPE_KIND_TRIANGLE:
+      return "triangle";
+    case v1::SHAPE_KIND_RECTANGLE:
+      return "rectangle";
+    case v1::SHAPE_KIND_SQUARE:
+      return "square";
+    case v1::SHAPE_KIND_DIAMOND:
+      return "diamond";
+    case v1::SHAPE_KIND_REGULAR_POLYGON:
+      return "regular_polygon";
+    case v1::SHAPE_KIND_CIRCLE:
+      return "circle";
+    case v1::SHAPE_KIND_ELLIPSE:
+      return "ellipse";
+    case v1::SHAPE_KIND_ARC:
+      return "arc";
+    default:
+      return "unspecified";
+  }
+}
+
+void write_device_json(JsonWriter& json, const v1::DeviceInfo& device) {
+  json.begin_object();
+  json.key("id").string(device.id());
+  json.key("settings_key").string(device.settings_key());
+  write_tablet_fields(json, device.tablet());
+  json.key("source").string(device.source());
+  json.key("replay").boolean(device.replay());
+  json.end_object();
+}
+
+std::string device_line(const v1::DeviceInfo& device) {
+  const v1::TabletInfo& t = device.tablet();
+  std::string area = "size unknown";
+  if (t.x_resolution() > 0 && t.y_resolution() > 0) {
+    area = format("%.1f x %.1f mm", t.x_max() / t.x_resolution(), t.y_max() / t.y_resolution());
+  }
+  return device.id() + "  " + hex4(t.vendor_id()) + ":" + hex4(t.product_id()) + "  " +
+         (t.name().empty() ? "(unnamed)" : t.name()) + "  " + area + "  " + device.source() +
+         (device.replay() ? "  (replay)" : "");
+}
+
+void write_shape_json(JsonWriter& json, const v1::Shape& shape) {
+  json.begin_object();
+  json.key("kind").string(shape_kind_name(shape.kind()));
+  json.key("confidence").number(shape.confidence());
+  switch (shape.params_case()) {
+    case v1::Shape::kVertices:
+      json.key("vertices").begin_array();
+      for (const auto& p : shape.vertices().vertices()) write_point(json, p);
+      json.end_array();
+      break;
+    case v1::Shape::kCircle:
+      json.key("circle").begin_object();
+      json.key("center");
+      write_point(json, shape.circle().center());
+      json.key("radius").number(shape.circle().radius());
+      json.end_object();
+      break;
+    case v1::Shape::kEllipse:
+      json.key("ellipse").begin_object();
+      json.key("center");
+      write_point(json, shape.ellipse().center());
+      json.key("semi_major").number(shape.ellipse().semi_major());
+      json.key("semi_minor").number(shape.ellipse().semi_minor());
+      json.key("rotation_rad").number(shape.ellipse().rotation_rad());
+      json.end_object();
+      break;
+    case v1::Shape::kArc:
+      json.key("arc").begin_object();
+      json.key("center");
+      write_point(json, shape.arc().center());
+      json.key("radius").number(shape.arc().radius());
+      json.key("start_rad").number(shape.arc().start_rad());
+      json.key("sweep_rad").number(shape.arc().sweep_rad());
+      json.end_object();
+      break;
+    default:
+      break;
+  }
+  if (shape.has_certificate()) {
+    json.key("hausdorff_bound").string(shape.certificate().hausdorff_bound().rational());
+    json.key("tolerance").string(shape.certificate().tolerance().rational());
+    json.key("pen_radius").string(shape.certificate().pen_radius().rational());
+    json.key("method").string(shape.certificate().method());
+  }
+  json.end_object();
+}
+
+std::string event_json(const v1::LiveEvent& event) {
+  JsonWriter json;
+  json.begin_object();
+  json.key("sequence").integer(static_cast<std::int64_t>(event.sequence()));
+  json.key("published_us").integer(event.published_us());
+  json.key("device_id").string(event.device_id());
+  switch (event.kind_case()) {
+    case v1::LiveEvent::kDeviceAttached:
+      json.key("type").string("device_attached");
+      json.key("device");
+      write_device_json(json, event.device_attached().device());
+      break;
+    case v1::LiveEvent::kDeviceDetached:
+      json.key("type").string("device_detached");
+      break;
+    case v1::LiveEvent::kStrokeStarted:
+      json.key("type").string("stroke_started");
+      json.key("stroke_id").integer(static_cast<std::int64_t>(event.stroke_started().stroke_id()));
+      break;
+    case v1::LiveEvent::kSamples:
+      json.key("type").string("samples");
+      json.key("stroke_id").integer(static_cast<std::int64_t>(event.samples().stroke_id()));
+      json.key("samples").begin_array();
+      for (const auto& s : event.samples().samples()) write_sample_json(json, s);
+      json.end_array();
+      break;
+    case v1::LiveEvent::kStrokeFinished: {
+      const auto& f = event.stroke_finished();
+      json.key("type").string("stroke_finished");
+      json.key("stroke_id").integer(static_cast<std::int64_t>(f.stroke().id()));
+      json.key("samples").integer(f.stroke().samples_size());
+      json.key("duration_us")
+          .integer(f.stroke().samples_size() < 2
+                       ? 0
+                       : f.stroke().samples(f.stroke().samples_size() - 1).time_us() -
+                             f.stroke().samples(0).time_us());
+      json.key("ink_polygons").integer(f.ink_polygon().polygons_size());
+      json.key("not_analysed").string(f.not_analysed());
+      break;
+    }
+    case v1::LiveEvent::kPreview:
+      json.key("type").string("preview");
+      json.key("stroke_id").integer(static_cast<std::int64_t>(event.preview().stroke_id()));
+      json.key("candidates").begin_array();
+      for (const auto& c : event.preview().candidates()) write_shape_json(json, c);
+      json.end_array();
+      break;
+    case v1::LiveEvent::kShape:
+      json.key("type").string("shape");
+      json.key("stroke_id").integer(static_cast<std::int64_t>(event.shape().stroke_id()));
+      json.key("shape");
+      write_shape_json(json, event.shape().shape());
+      json.key("alternatives").begin_array();
+      for (const auto& c : event.shape().alternatives()) write_shape_json(json, c);
+      json.end_array();
+      json.key("compute_us")
+          .integer(static_cast<std::int64_t>(event.shape().timings().compute_us()));
+      break;
+    case v1::LiveEvent::kDropped:
+      json.key("type").string("dropped");
+      json.key("count").integer(static_cast<std::int64_t>(event.dropped().count()));
+      json.key("total").integer(static_cast<std::int64_t>(event.dropped().total()));
+      break;
+    default:
+      json.key("type").string("unknown");
+      break;
+  }
+  json.end_object();
+  return json.str();
+}
+
+std::string event_line(const v1::LiveEvent& event) {
+  std::string who = "[";
+  who += event.device_id().empty() ? std::string("-") : event.device_id();
+  who += "] ";
+  switch (event.kind_case()) {
+    case v1::LiveEvent::kDeviceAttached:
+      return who + "attached: " + device_line(event.device_attached().device());
+    case v1::LiveEvent::kDeviceDetached:
+      return who + "detached";
+    case v1::LiveEvent::kStrokeStarted:
+      return who + "stroke " + std::to_string(event.stroke_started().stroke_id()) + " started";
+    case v1::LiveEvent::kSamples: {
+      std::string out = who + std::to_string(event.samples().samples_size()) + " samples";
+      if (event.samples().samples_size() > 0) {
+        const auto& s = event.samples().samples(event.samples().samples_size() - 1);
+        out += ", last x=" + std::to_string(s.x()) + " y=" + std::to_string(s.y()) +
+               " pressure=" + std::to_string(s.pressure()) + (s.tip() ? " tip" : "");
+      }
+      return out;
+    }
+    case v1::LiveEvent::kStrokeFinished: {
+      const auto& f = event.stroke_finished();
+      std::string out = who + "stroke " + std::to_string(f.stroke().id()) + " finished, " +
+                        std::to_string(f.stroke().samples_size()) + " samples";
+      if (!f.not_analysed().empty()) out += " (not analysed: " + f.not_analysed() + ")";
+      return out;
+    }
+    case v1::LiveEvent::kPreview: {
+      std::string out = who + "preview of stroke " + std::to_string(event.preview().stroke_id());
+      for (const auto& c : event.preview().candidates()) {
+        out += ' '; // appended separately: g++ 12 warns falsely (-Wrestrict) on " " + string
+        out += shape_kind_name(c.kind());
+      }
+      return out;
+    }
+    case v1::LiveEvent::kShape:
+      return who + "stroke " + std::to_string(event.shape().stroke_id()) + " is a " +
+             shape_summary(event.shape().shape());
+    case v1::LiveEvent::kDropped:
+      return who + "this client lost " + std::to_string(event.dropped().count()) +
+             " events (reading too slowly)";
+    default:
+      return who + "unknown event";
+  }
+}
+
+} // namespace penshape::cli

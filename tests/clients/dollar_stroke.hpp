@@ -1,0 +1,46 @@
+#pragma once
+// Reads a gesture of the $1 Unistroke data set (../shared/data/strokes/dollar1): integer pixel
+// points with millisecond times. Tests use these real human strokes as pen input.
+#include <cstdint>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace penshape::testing {
+
+struct DollarPoint {
+  int x = 0;
+  int y = 0;
+  std::int64_t t_ms = 0;
+};
+
+inline std::vector<DollarPoint> read_dollar_gesture(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string s = text.str();
+  static const std::regex point(R"re(<Point X="(-?\d+)" Y="(-?\d+)" T="(\d+)")re");
+  std::vector<DollarPoint> out;
+  for (auto it = std::sregex_iterator(s.begin(), s.end(), point); it != std::sregex_iterator();
+       ++it) {
+    out.push_back({std::stoi((*it)[1]), std::stoi((*it)[2]), std::stoll((*it)[3])});
+  }
+  if (out.empty()) throw std::runtime_error(path + ": no <Point> elements");
+  return out;
+}
+
+inline std::string shared_data_dir() {
+  const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR");
+  return (env != nullptr && *env != '\0') ? env : PENSHAPE_SHARED_DATA_DIR;
+}
+
+// A hand-drawn rectangle (subject 2, slow) from the $1 logs.
+inline std::string dollar_rectangle_path() {
+  return shared_data_dir() + "/strokes/dollar1/s02/slow/rectangle01.xml";
+}
+
+} // namespace penshape::testing
