@@ -78,13 +78,15 @@ std::string shape_summary(const v1::Shape& shape) {
 std::string shape_kind_name(v1::ShapeKind kind) {
   switch (kind) {
     case v1::SHAPE_KIND_NONE:
-      return "none";
+      return "freeform"; // nothing certified: the recognizer's name for it
     case v1::SHAPE_KIND_SEGMENT:
       return "segment";
     case v1::SHAPE_KIND_POLYLINE:
       return "polyline";
     case v1::SHAPE_KIND_TRIANGLE:
       return "triangle";
+    case v1::SHAPE_KIND_QUADRILATERAL:
+      return "quadrilateral";
     case v1::SHAPE_KIND_RECTANGLE:
       return "rectangle";
     case v1::SHAPE_KIND_SQUARE:
@@ -279,7 +281,8 @@ std::string event_line(const v1::LiveEvent& event) {
       return out;
     }
     case v1::LiveEvent::kShape:
-      return who + "stroke " + std::to_string(event.shape().stroke_id()) + " is a " +
+      return who + "stroke " + std::to_string(event.shape().stroke_id()) +
+             (event.shape().shape().kind() == v1::SHAPE_KIND_NONE ? " is " : " is a ") +
              shape_summary(event.shape().shape());
     case v1::LiveEvent::kDropped:
       return who + "this client lost " + std::to_string(event.dropped().count()) +
