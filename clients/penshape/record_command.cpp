@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <future>
 #include <optional>
 #include <string>
 
@@ -152,12 +153,21 @@ int run_record(std::span<const std::string_view> args) {
     // Subscribe carries no detach events: a second stream watches for the tablet going away.
     std::atomic<bool> detached{false};
     const std::string device_id = device->id();
+    // Ready once the device stream has listed our tablet: a detach after that is seen.
+    std::promise<void> listed;
+    bool listed_once = false;
     DeviceEvents device_events(*stub, [&](const v1::LiveEvent& e) {
+      if (e.has_device_attached() && e.device_attached().device().id() == device_id &&
+          !listed_once) {
+        listed_once = true;
+        listed.set_value();
+      }
       if (e.has_device_detached() && e.device_detached().device_id() == device_id) {
         detached = true;
         context.TryCancel();
       }
     });
+    listed.get_future().wait_for(std::chrono::seconds(10));
     reader->WaitForInitialMetadata();
     std::fprintf(stderr, "penshape record: recording %s into %s (Ctrl-C to stop)\n",
                  device->id().c_str(), path.c_str());

@@ -408,7 +408,8 @@ TEST(LiveCli, WatchAgainstTheRealDaemonReplayingARealCapture) {
   const std::string address = unique_test_address("real-replay");
   ChildProcess daemon({PENSHAPED, "--listen", address, "--replay", capture, "--replay-delay", "3"});
   ASSERT_TRUE(daemon.wait_for_output("listening on")) << daemon.output();
-  ChildProcess watch({kCli, "watch", "--devices", "--json", "--count", "3", "--address", address});
+  ChildProcess watch({kCli, "watch", "--devices", "--json", "--count", "3", "--duration", "60",
+                      "--address", address}); // bounded: a stalled replay fails, never hangs
   ASSERT_EQ(watch.wait(), 0) << watch.output() << daemon.output();
   daemon.signal(SIGTERM);
   EXPECT_EQ(daemon.wait(), 0) << daemon.output();
