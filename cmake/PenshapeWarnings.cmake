@@ -6,7 +6,8 @@ endfunction()
 
 # Test binaries: discovered by ctest. PRE_TEST discovery works for sanitizer builds too.
 function(penshape_add_test target)
-  cmake_parse_arguments(ARG "" "" "SOURCES;LIBS" ${ARGN})
+  # RESOURCE_LOCK name: tests sharing a resource (e.g. an X server) never run at once.
+  cmake_parse_arguments(ARG "" "RESOURCE_LOCK" "SOURCES;LIBS" ${ARGN})
   add_executable(${target} ${ARG_SOURCES})
   penshape_warnings(${target})
   target_link_libraries(${target} PRIVATE ${ARG_LIBS} GTest::gtest GTest::gtest_main)
@@ -14,6 +15,10 @@ function(penshape_add_test target)
     PENSHAPE_SHARED_DATA_DIR="${PENSHAPE_SHARED_DATA_DIR}"
     PENSHAPE_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
     PENSHAPE_BINARY_DIR="${PROJECT_BINARY_DIR}")
+  set(lock)
+  if(ARG_RESOURCE_LOCK)
+    set(lock RESOURCE_LOCK ${ARG_RESOURCE_LOCK})
+  endif()
   gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60 DISCOVERY_MODE PRE_TEST
-    PROPERTIES ENVIRONMENT "PENSHAPE_SHARED_DATA_DIR=${PENSHAPE_SHARED_DATA_DIR}")
+    PROPERTIES ENVIRONMENT "PENSHAPE_SHARED_DATA_DIR=${PENSHAPE_SHARED_DATA_DIR}" ${lock})
 endfunction()
