@@ -14,18 +14,21 @@
 #include "penshape/core/arc_offset.hpp"
 #include "penshape/core/deconstruct.hpp"
 #include "penshape/core/polygon_io.hpp"
+#include "penshape/render/figure.hpp"
 
 namespace penshape::cli {
 namespace {
 
 constexpr const char* kHelp =
     "usage: penshape deconstruct FILE --radius R --tolerance E [--precision D]\n"
-    "                            [--engine fast|reference] [--no-simplify] [--json] [--arcs]\n\n"
+    "                            [--engine fast|reference] [--no-simplify] [--json] [--arcs]\n"
+    "                            [--svg OUT.svg]\n\n"
     "Is the region in FILE within Hausdorff distance E of the R-offset of some polygonal\n"
     "region P? Answers YES (with P), NO or UNDECIDED (precision D too coarse), certified.\n"
     "FILE: x-y text (`x y` per line, `#` comments, blank line between rings) or WKT POLYGON /\n"
     "MULTIPOLYGON. Numbers are read exactly. D defaults to E/8; the engine to fast.\n"
-    "A YES solution is simplified (fewer vertices, still certified) unless --no-simplify.\n\n"
+    "A YES solution is simplified (fewer vertices, still certified) unless --no-simplify.\n"
+    "--svg draws Q, P, offset(P, R) with true arcs and the E-band, like the paper's figures.\n\n"
     "--json prints one object: answer, engine, seconds (engine time), solution (list of\n"
     "{\"outer\": [[x,y],...], \"holes\": [[[x,y],...],...]}), solution_vertices, raw_vertices\n"
     "(before simplification), simplified, input_vertices,\n"
@@ -136,9 +139,9 @@ void print_text(const ReportedSolution& rep, std::size_t input_vertices, const C
 } // namespace
 
 int run_deconstruct(std::span<const std::string_view> args) {
-  const ParsedArgs parsed(args,
-                          {.flags = {"--json", "--help", "--arcs", "--simplify", "--no-simplify"},
-                           .options = {"--radius", "--tolerance", "--precision", "--engine"}});
+  const ParsedArgs parsed(
+      args, {.flags = {"--json", "--help", "--arcs", "--simplify", "--no-simplify"},
+             .options = {"--radius", "--tolerance", "--precision", "--engine", "--svg"}});
   if (parsed.flag("--help")) {
     std::puts(kHelp);
     return kExitOk;
@@ -160,12 +163,20 @@ int run_deconstruct(std::span<const std::string_view> args) {
       arcs = offset_with_arcs(rep.result.solution, to_double(params.radius));
     }
     const CurvedRegion* arcs_ptr = arcs ? &*arcs : nullptr;
+    if (const auto svg = parsed.value("--svg")) {
+      // Q, P, offset(P, r) with true arcs and the ε-band, like the paper's figures.
+      render::write_svg_file(
+          *svg, render::deconstruction_svg(render::deconstruction_figure(q, rep.result)));
+    }
     if (parsed.flag("--json")) {
       print_json(rep, q.vertex_count(), arcs_ptr);
     } else {
       print_text(rep, q.vertex_count(), arcs_ptr);
     }
   } catch (const InputError& e) {
+    std::fprintf(stderr, "penshape deconstruct: %s\n", e.what());
+    return kExitBadInput;
+  } catch (const std::runtime_error& e) { // the SVG file could not be written
     std::fprintf(stderr, "penshape deconstruct: %s\n", e.what());
     return kExitBadInput;
   } catch (const InvalidInput& e) {

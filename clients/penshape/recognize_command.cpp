@@ -4,7 +4,9 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -12,6 +14,7 @@
 #include "command.hpp"
 #include "json_writer.hpp"
 #include "penshape/core/recognize.hpp"
+#include "penshape/render/figure.hpp"
 #include "stroke_files.hpp"
 
 namespace penshape::cli {
@@ -38,6 +41,8 @@ constexpr const char* kHelp =
     "                  circle, rectangle -> rectangle, others -> freeform) or the JSON \"label\";\n"
     "                  prints a confusion table. Accepted as correct: the label itself, and\n"
     "                  circle/ellipse, rectangle/square/quadrilateral, diamond/square.\n"
+    "  --svg-dir DIR   one picture per stroke: the samples, their ink and the snapped shape\n"
+    "                  with its tolerance band (DIR/<file stem>-<line>.svg)\n"
     "\n"
     "Exit codes: 0 ok, 2 bad input (message names file and line), 1 internal failure.";
 
@@ -98,9 +103,54 @@ void write_certificate(JsonWriter& json, const Certificate& c) {
 
 } // namespace
 
+// The figure of one recognized stroke (input units as "mm": the picture is scale-free).
+render::StrokeFigure stroke_figure(const FileStroke& s, const Recognition& r) {
+  render::StrokeFigure fig;
+  for (const auto& p : s.points) fig.samples.push_back({p.x, p.y});
+  fig.pen_radius = r.pen_radius;
+  fig.tolerance = r.certificate.certified ? r.epsilon : 0.0;
+  fig.caption = (s.name.empty() ? s.file : s.name) + ": " + to_string(r.shape);
+  if (r.shape != ShapeClass::kFreeform) {
+    render::ShapeOutline o;
+    o.label = to_string(r.shape);
+    switch (r.shape) {
+      case ShapeClass::kCircle:
+        o.kind = render::ShapeOutline::Kind::kCircle;
+        o.center = r.params.center;
+        o.radius = r.params.radius_x;
+        break;
+      case ShapeClass::kEllipse:
+        o.kind = render::ShapeOutline::Kind::kEllipse;
+        o.center = r.params.center;
+        o.semi_major = r.params.radius_x;
+        o.semi_minor = r.params.radius_y;
+        o.rotation_rad = r.params.rotation;
+        break;
+      case ShapeClass::kArc:
+        o.kind = render::ShapeOutline::Kind::kArc;
+        o.center = r.params.center;
+        o.radius = r.params.radius_x;
+        o.start_rad = r.params.start_angle;
+        o.sweep_rad = r.params.sweep_angle;
+        break;
+      case ShapeClass::kSegment:
+      case ShapeClass::kPolyline:
+        o.kind = render::ShapeOutline::Kind::kPolyline;
+        o.vertices = r.params.vertices;
+        break;
+      default:
+        o.kind = render::ShapeOutline::Kind::kPolygon;
+        o.vertices = r.params.vertices;
+        break;
+    }
+    fig.shape = o;
+  }
+  return fig;
+}
+
 int run_recognize(std::span<const std::string_view> args) {
   const ParsedArgs parsed(args, {.flags = {"--json", "--labels", "--help"},
-                                 .options = {"--pen-radius", "--tolerance"}});
+                                 .options = {"--pen-radius", "--tolerance", "--svg-dir"}});
   if (parsed.flag("--help")) {
     std::puts(kHelp);
     return kExitOk;
@@ -117,6 +167,16 @@ int run_recognize(std::span<const std::string_view> args) {
   if (parsed.positionals().empty()) throw UsageError("no FILE or DIR given");
   const bool json_out = parsed.flag("--json");
   const bool labels = parsed.flag("--labels");
+  const std::optional<std::string> svg_dir = parsed.value("--svg-dir");
+  if (svg_dir) {
+    std::error_code ec;
+    std::filesystem::create_directories(*svg_dir, ec);
+    if (ec) {
+      std::fprintf(stderr, "penshape recognize: cannot create '%s': %s\n", svg_dir->c_str(),
+                   ec.message().c_str());
+      return kExitBadInput;
+    }
+  }
 
   std::vector<std::string> files;
   try {
@@ -147,6 +207,17 @@ int run_recognize(std::span<const std::string_view> args) {
       const double seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       const std::string got = to_string(r.shape);
+      if (svg_dir) {
+        const std::string name =
+            std::filesystem::path(s.file).stem().string() + "-" + std::to_string(s.line) + ".svg";
+        try {
+          render::write_svg_file((std::filesystem::path(*svg_dir) / name).string(),
+                                 render::stroke_svg(stroke_figure(s, r)));
+        } catch (const std::runtime_error& e) {
+          std::fprintf(stderr, "penshape recognize: %s\n", e.what());
+          return kExitBadInput;
+        }
+      }
       const std::string label = labels ? label_for(s) : "";
       ++strokes;
       if (labels) {

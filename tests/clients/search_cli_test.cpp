@@ -1,6 +1,9 @@
 // The parameter-search subcommands and `deconstruct --simplify`, run as a user would.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "run_command.hpp"
@@ -89,6 +92,41 @@ TEST(SearchCli, BadInputExitsTwo) {
                             " --radius -3"))
                 .exit_code,
             2);
+}
+
+} // namespace
+
+namespace {
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+TEST(SvgCli, DeconstructAndRecognizeDrawPictures) {
+  const std::string svg = std::string(PENSHAPE_BINARY_DIR) + "/svg_cli_test.svg";
+  std::remove(svg.c_str());
+  const auto d = run_command(cli("deconstruct " + shared_data_path("polygons/authors_S.txt") +
+                                 " --radius 10 --tolerance 5 --svg " + svg));
+  ASSERT_EQ(d.exit_code, 0) << d.out;
+  const std::string picture = slurp(svg);
+  EXPECT_NE(picture.find("<svg"), std::string::npos);
+  EXPECT_NE(picture.find(" 0 0 1 "), std::string::npos) << "offset(P, r) is drawn with true arcs";
+  EXPECT_NE(picture.find("</svg>"), std::string::npos);
+  EXPECT_EQ(run_command(cli("deconstruct " + shared_data_path("polygons/authors_S.txt") +
+                            " --radius 10 --tolerance 5 --svg /nonexistent/dir/x.svg"))
+                .exit_code,
+            2);
+
+  const std::string dir = std::string(PENSHAPE_BINARY_DIR) + "/svg_cli_test_dir";
+  const auto r = run_command(cli("recognize --svg-dir " + dir + " " +
+                                 shared_data_path("strokes/dollar1/s02/medium/rectangle01.xml")));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const std::string stroke = slurp(dir + "/rectangle01-2.svg");
+  EXPECT_NE(stroke.find("<svg"), std::string::npos);
+  EXPECT_NE(stroke.find("rectangle"), std::string::npos);
 }
 
 } // namespace
