@@ -2,6 +2,8 @@
 // stroke_files.hpp), with an optional confusion table against labels.
 #include "recognize_command.hpp"
 
+#include <unistd.h>
+
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -15,6 +17,7 @@
 #include "json_writer.hpp"
 #include "penshape/core/recognize.hpp"
 #include "penshape/render/figure.hpp"
+#include "penshape/render/progress_bar.hpp"
 #include "stroke_files.hpp"
 
 namespace penshape::cli {
@@ -185,9 +188,15 @@ int run_recognize(std::span<const std::string_view> args) {
     std::fprintf(stderr, "penshape recognize: %s\n", e.what());
     return kExitBadInput;
   }
+  // Large directories: a progress bar on the terminal while the results go to a file or pipe
+  // (drawn only on a TTY; never mixed into results printed on the same terminal).
+  render::ProgressBar bar("recognize", files.size(), stderr,
+                          ::isatty(STDOUT_FILENO) != 0 ? render::ProgressBar::Mode::kNever
+                                                       : render::ProgressBar::Mode::kAuto);
   std::map<std::string, std::map<std::string, std::size_t>> confusion;
   std::size_t strokes = 0, correct = 0;
   for (const std::string& file : files) {
+    bar.advance();
     std::vector<FileStroke> batch;
     try {
       batch = read_stroke_file(file);
@@ -266,6 +275,7 @@ int run_recognize(std::span<const std::string_view> args) {
       }
     }
   }
+  bar.finish();
   if (labels) {
     std::set<std::string> columns;
     for (const auto& [label, row] : confusion) {

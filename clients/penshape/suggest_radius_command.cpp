@@ -3,11 +3,13 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include "command.hpp"
 #include "geometry_cli.hpp"
 #include "penshape/core/search.hpp"
+#include "penshape/render/progress_bar.hpp"
 #include "search_commands.hpp"
 
 namespace penshape::cli {
@@ -41,17 +43,20 @@ int run_suggest_radius(std::span<const std::string_view> args) {
       opt.samples = static_cast<std::size_t>(*n);
     }
     const bool show = !parsed.flag("--quiet");
+    // A bar on a terminal; plain lines in logs and pipes, so scripts still see progress.
     const bool tty = ::isatty(STDERR_FILENO) != 0;
+    std::optional<render::ProgressBar> bar;
+    if (show && tty) bar.emplace("suggest-radius", opt.samples);
     opt.progress = [&](std::size_t done, std::size_t total) {
-      if (show) {
-        std::fprintf(stderr,
-                     tty ? "\rsuggest-radius: %zu/%zu radii" : "suggest-radius: %zu/%zu radii\n",
-                     done, total);
-        if (tty && done == total) std::fputc('\n', stderr);
+      if (bar) {
+        bar->update(done);
+      } else if (show) {
+        std::fprintf(stderr, "suggest-radius: %zu/%zu radii\n", done, total);
       }
       return true;
     };
     const SuggestResult res = suggest_radius(make_decider(q, engine), opt);
+    if (bar) bar->finish();
     const bool simplify = !parsed.flag("--no-simplify");
     if (parsed.flag("--json")) {
       JsonWriter json;
