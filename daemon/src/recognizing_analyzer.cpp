@@ -3,8 +3,8 @@
 #include <map>
 #include <mutex>
 
-#include "penshape/core/ink.hpp"
 #include "penshape/core/live_recognizer.hpp"
+#include "penshape/daemon/ink_analyzer.hpp"
 #include "penshape/daemon/proto_convert.hpp"
 
 namespace penshape::daemon {
@@ -74,12 +74,7 @@ class RecognizingAnalyzer final : public StrokeAnalyzer {
  public:
   StrokeAnalysis analyze(const Stroke& stroke, const PenSettings& settings,
                          const CancelHook& cancel) override {
-    InkOptions options;
-    options.radius_mm = settings.pen_radius_mm;
-    const InkPolygon ink = ink_polygon(stroke, options);
-    if (cancel && cancel()) throw Cancelled();
-    StrokeAnalysis analysis;
-    to_proto(ink.region, &analysis.ink_polygon);
+    StrokeAnalysis analysis = ink_->analyze(stroke, settings, cancel); // the ink polygon
     forget(stroke.id);
 
     const std::vector<StrokePoint> pts = path_mm(stroke);
@@ -131,6 +126,7 @@ class RecognizingAnalyzer final : public StrokeAnalyzer {
     std::lock_guard lock(mutex_);
     live_.erase(stroke_id);
   }
+  std::shared_ptr<StrokeAnalyzer> ink_ = make_ink_analyzer();
   std::mutex mutex_;
   std::map<std::uint64_t, State> live_;
 };

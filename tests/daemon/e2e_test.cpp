@@ -698,6 +698,9 @@ TEST_F(DaemonE2E, AReplayedRecordingReachesSubscribersAsTheDriversStrokes) {
   ASSERT_GE(offline.strokes.size(), 3U);
 
   auto source = std::make_shared<penshape::daemon::DeviceManagerSource>(nullptr);
+  // Room for the whole recording: this test compares streams, it is not about slow readers
+  // (on a loaded machine the reader can fall a full default queue behind a fast replay).
+  config_.limits.subscriber_queue_events = 1U << 16;
   start({source, nullptr, nullptr});
   auto live = v1::Live::NewStub(channel());
   grpc::ClientContext ctx;

@@ -77,6 +77,7 @@ TEST(RecordingsE2E, EveryBundledRecordingGivesItsExpectedStrokesAndShapes) {
     penshape::daemon::ServerOptions options;
     options.address = "unix-abstract:penshape-rec-e2e-" + std::to_string(::getpid()) + "-" +
                       std::to_string(recordings);
+    options.config.limits.subscriber_queue_events = 1U << 16; // comparing streams, not slowness
     auto source = std::make_shared<penshape::daemon::DeviceManagerSource>(nullptr);
     penshape::daemon::PenshapeServer server(
         options, {source, nullptr, penshape::daemon::make_recognizing_analyzer()});

@@ -12,6 +12,7 @@
 #include "grid_frame.hpp"
 #include "level_set_check.hpp"
 #include "no_certificate.hpp"
+#include "region_convert.hpp"
 #include "segment_index.hpp"
 #include "yes_certificate.hpp"
 
@@ -51,21 +52,6 @@ IRegion offset_stage(const IRings& rings, double delta, double tol, const Decons
   }
   disk_vertices = std::max(disk_vertices, static_cast<std::size_t>(steps));
   return offset_round(rings, delta, tol);
-}
-
-PolygonSet to_polygon_set(const GridFrame& frame, const IRegion& region) {
-  PolygonSet out;
-  for (const IPolygon& poly : region) {
-    PolygonWithHoles pw;
-    for (const IPt& p : poly.outer) pw.outer.push_back(frame.exact(p));
-    for (const IRing& hole : poly.holes) {
-      Ring h;
-      for (const IPt& p : hole) h.push_back(frame.exact(p));
-      pw.holes.push_back(std::move(h));
-    }
-    out.polygons.push_back(std::move(pw));
-  }
-  return out;
 }
 
 // Points of Q̃ \ Q̂' (exterior chain) worth trying as NO witnesses: inside Q̃ away from its

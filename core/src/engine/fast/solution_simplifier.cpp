@@ -15,6 +15,7 @@
 #include "engine/engines.hpp"
 #include "grid_frame.hpp"
 #include "level_set_check.hpp"
+#include "region_convert.hpp"
 #include "segment_index.hpp"
 #include "yes_certificate.hpp"
 
@@ -98,36 +99,6 @@ IRing remove_caps(const IRing& ring) {
   return out;
 }
 
-IRegion to_grid(const GridFrame& frame, const PolygonSet& set) {
-  IRegion out;
-  for (const auto& poly : set.polygons) {
-    IPolygon ip;
-    for (const auto& p : poly.outer) ip.outer.push_back(frame.round(p));
-    for (const auto& h : poly.holes) {
-      IRing ih;
-      for (const auto& p : h) ih.push_back(frame.round(p));
-      ip.holes.push_back(std::move(ih));
-    }
-    out.push_back(std::move(ip));
-  }
-  return out;
-}
-
-PolygonSet to_exact(const GridFrame& frame, const IRegion& region) {
-  PolygonSet out;
-  for (const IPolygon& poly : region) {
-    PolygonWithHoles pw;
-    for (const IPt& p : poly.outer) pw.outer.push_back(frame.exact(p));
-    for (const IRing& hole : poly.holes) {
-      Ring h;
-      for (const IPt& p : hole) h.push_back(frame.exact(p));
-      pw.holes.push_back(std::move(h));
-    }
-    out.polygons.push_back(std::move(pw));
-  }
-  return out;
-}
-
 std::size_t vertex_count(const IRegion& region) {
   std::size_t n = 0;
   for (const auto& p : region) {
@@ -179,7 +150,7 @@ std::optional<PolygonSet> simplify_fast_solution(const PolygonSet& q,
     }
   }
   if (!best) return std::nullopt;
-  return to_exact(frame, *best);
+  return to_polygon_set(frame, *best);
 }
 
 } // namespace penshape::detail
