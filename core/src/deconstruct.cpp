@@ -44,7 +44,7 @@ DeconstructResult deconstruct(const PolygonSet& q, const DeconstructParams& para
       result = detail::decide_reference(oriented, params, cancel, limits);
     } else if (is_convex_region(oriented)) {
       // Convex input: CONVEXDECIDE's linear path (Section 5), on the exact input.
-      result = convex_decide(oriented, params, cancel);
+      result = convex_decide_simplified(oriented, params, cancel);
       if (result.answer == Answer::kUndecided) {
         result = detail::decide_fast(oriented, params, cancel, limits);
       }

@@ -11,6 +11,7 @@
 #include "convex_exact_inset.hpp"
 #include "convex_inset.hpp"
 #include "penshape/core/convex_deconstruct.hpp"
+#include "penshape/core/simplify.hpp"
 
 namespace penshape {
 namespace {
@@ -192,19 +193,40 @@ bool is_convex_region(const PolygonSet& q) {
   const Ring& ring = q.polygons[0].outer;
   const std::size_t n = ring.size();
   if (n < 3) return false;
+  std::vector<PointD> d;
+  d.reserve(n);
+  for (const auto& p : ring) d.push_back(to_double(p));
   bool any_turn = false;
+  double twice_area = 0;
+  double area_magnitude = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const ExactPoint& a = ring[i];
     const ExactPoint& b = ring[(i + 1) % n];
-    const ExactPoint& c = ring[(i + 2) % n];
     if (a == b) return false;
-    const int turn = detail::orientation(a, b, c);
+    // Doubles decide the turn when it is clear by far more than their rounding (inputs are
+    // rounded to doubles too: 1e-10 relative covers both); exact rationals decide the rest.
+    const PointD u = d[i];
+    const PointD v = d[(i + 1) % n];
+    const PointD w = d[(i + 2) % n];
+    const double det = (v.x - u.x) * (w.y - v.y) - (v.y - u.y) * (w.x - v.x);
+    const double mag =
+        (std::abs(v.x - u.x) + std::abs(v.y - u.y)) * (std::abs(w.x - v.x) + std::abs(w.y - v.y));
+    int turn = 0;
+    if (std::abs(det) > 1e-10 * mag + 1e-300) {
+      turn = det > 0 ? 1 : -1;
+    } else {
+      turn = detail::orientation(a, b, ring[(i + 2) % n]);
+    }
     if (turn < 0) return false;
     any_turn |= turn > 0;
+    twice_area += u.x * v.y - u.y * v.x;
+    area_magnitude += std::abs(u.x * v.y) + std::abs(u.y * v.x);
   }
+  if (!any_turn) return false;
   // Left turns everywhere and a simple ring (validated by the caller) make a convex region;
-  // the orientation check rules out a clockwise ring that "turns right" as left.
-  return any_turn && sgn(twice_signed_area(ring)) > 0;
+  // the orientation rules out a clockwise ring that "turns right" as left.
+  if (std::abs(twice_area) > 1e-10 * area_magnitude) return twice_area > 0;
+  return sgn(twice_signed_area(ring)) > 0;
 }
 
 DeconstructResult convex_decide(const PolygonSet& q, const DeconstructParams& params,
@@ -267,6 +289,39 @@ DeconstructResult convex_decide(const PolygonSet& q, const DeconstructParams& pa
   }
   out.elapsed = std::chrono::steady_clock::now() - start;
   return out;
+}
+
+DeconstructResult convex_decide_simplified(const PolygonSet& q, const DeconstructParams& params,
+                                           const CancelHook& cancel) {
+  const auto start = std::chrono::steady_clock::now();
+  if (!is_convex_region(q)) throw InvalidInput("convex_decide needs one convex polygon");
+  const Ring& ring = q.polygons[0].outer;
+  const Rational sigma = params.precision / 4;
+  const std::vector<std::size_t> keep = simplify_ring_indices(ring, sigma);
+  const Rational& eps = params.tolerance;
+  if (keep.size() == ring.size() || params.radius <= eps + sigma) {
+    return convex_decide(q, params, cancel);
+  }
+  PolygonSet qs;
+  qs.polygons.emplace_back();
+  for (const std::size_t i : keep) qs.polygons[0].outer.push_back(ring[i]);
+  auto finish = [&](DeconstructResult r) {
+    r.params = params;
+    r.elapsed = std::chrono::steady_clock::now() - start;
+    if (r.answer == Answer::kYes) r.hausdorff_bound = eps;
+    return r;
+  };
+  // δ/2 < ε - σ since σ = δ/4 < ε/4: the precondition holds for both calls.
+  DeconstructParams tighter = params;
+  tighter.tolerance = eps - sigma;
+  tighter.precision = params.precision / 2;
+  DeconstructResult yes = convex_decide(qs, tighter, cancel);
+  if (yes.answer == Answer::kYes) return finish(std::move(yes));
+  DeconstructParams looser = tighter;
+  looser.tolerance = eps + sigma;
+  DeconstructResult no = convex_decide(qs, looser, cancel);
+  if (no.answer == Answer::kNo) return finish(std::move(no));
+  return finish(convex_decide(q, params, cancel));
 }
 
 } // namespace penshape

@@ -21,15 +21,18 @@ double segment_distance(PointD p, PointD s, PointD t) {
 
 // Are all vertices strictly between i and j (cyclically) within τ of chord(i, j), exactly?
 // Returns the index of the farthest offender, or n when all are within.
-std::size_t farthest_offender(const Ring& ring, std::size_t i, std::size_t j,
-                              const Rational& tau2) {
+// Doubles clear a vertex when its distance is below τ by more than their rounding (`slack`,
+// relative to the coordinates' magnitude); exact rationals decide the rest.
+std::size_t farthest_offender(const Ring& ring, const std::vector<PointD>& d, std::size_t i,
+                              std::size_t j, const Rational& tau2, double tau_d, double slack) {
   const std::size_t n = ring.size();
   std::size_t worst = n;
   Rational worst_d = tau2;
   for (std::size_t k = (i + 1) % n; k != j; k = (k + 1) % n) {
-    const Rational d = detail::squared_distance_to_segment(ring[k], ring[i], ring[j]);
-    if (d > worst_d) {
-      worst_d = d;
+    if (segment_distance(d[k], d[i], d[j]) < tau_d - slack) continue;
+    const Rational exact_d2 = detail::squared_distance_to_segment(ring[k], ring[i], ring[j]);
+    if (exact_d2 > worst_d) {
+      worst_d = exact_d2;
       worst = k;
     }
   }
@@ -100,28 +103,50 @@ std::vector<std::size_t> simplify_ring_indices(const Ring& ring, const Rational&
   d.reserve(n);
   for (const auto& p : ring) d.push_back(to_double(p));
   const double tau_d = to_double(tau) * (1 - 1e-9); // doubles choose, rationals confirm
-  // Greedy: from each kept vertex, reach as far as every skipped vertex stays within τ.
-  std::size_t i = 0;
-  keep.push_back(0);
-  while (true) {
-    std::size_t best = i + 1;
-    for (std::size_t j = i + 2; j <= n; ++j) {
-      bool ok = true;
-      const PointD pj = d[j % n];
-      for (std::size_t k = i + 1; k < j && ok; ++k) ok = segment_distance(d[k], d[i], pj) <= tau_d;
-      if (!ok) break;
-      best = j;
+  // Douglas-Peucker on the closed ring, split at vertex 0 and the vertex farthest from it:
+  // O(n log n) on typical input (an explicit stack, no recursion depth to worry about).
+  std::size_t far = 0;
+  double far_d = -1;
+  for (std::size_t k = 1; k < n; ++k) {
+    const double dd = std::hypot(d[k].x - d[0].x, d[k].y - d[0].y);
+    if (dd > far_d) {
+      far_d = dd;
+      far = k;
     }
-    if (best >= n) break;
-    keep.push_back(best);
-    i = best;
+  }
+  std::vector<bool> kept(n, false);
+  kept[0] = kept[far] = true;
+  std::vector<std::pair<std::size_t, std::size_t>> stack{{0, far}, {far, n}};
+  while (!stack.empty()) {
+    const auto [i, j] = stack.back(); // chain i..j (j may be n: vertex 0 again)
+    stack.pop_back();
+    std::size_t worst = i;
+    double worst_d = tau_d;
+    for (std::size_t k = i + 1; k < j; ++k) {
+      const double dd = segment_distance(d[k], d[i], d[j % n]);
+      if (dd > worst_d) {
+        worst_d = dd;
+        worst = k;
+      }
+    }
+    if (worst != i) {
+      kept[worst] = true;
+      stack.emplace_back(i, worst);
+      stack.emplace_back(worst, j);
+    }
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    if (kept[k]) keep.push_back(k);
   }
   // Exact confirmation; split a chord at its farthest offender until all hold.
   const Rational tau2 = tau * tau;
+  double magnitude = 0;
+  for (const PointD& p : d) magnitude = std::max({magnitude, std::abs(p.x), std::abs(p.y)});
+  const double slack = 1e-12 * magnitude + 1e-300;
   for (std::size_t t = 0; t < keep.size(); ++t) {
     const std::size_t from = keep[t];
     const std::size_t to = keep[(t + 1) % keep.size()];
-    const std::size_t bad = farthest_offender(ring, from, to, tau2);
+    const std::size_t bad = farthest_offender(ring, d, from, to, tau2, to_double(tau), slack);
     if (bad != n) {
       keep.insert(keep.begin() + static_cast<std::ptrdiff_t>(t) + 1, bad);
       std::sort(keep.begin(), keep.end());

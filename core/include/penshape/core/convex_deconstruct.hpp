@@ -24,6 +24,14 @@ bool is_convex_region(const PolygonSet& q);
 DeconstructResult convex_decide(const PolygonSet& q, const DeconstructParams& params,
                                 const CancelHook& cancel = {});
 
+// CONVEXDECIDE on a simplified copy Q_s of q (a subsequence of its vertices, so convex, with
+// every dropped vertex within σ = δ/4 of its chord, checked exactly: H(Q, Q_s) <= σ): YES at
+// ε - σ for Q_s is YES at ε for Q, NO at ε + σ is NO at ε (Hausdorff triangle inequality).
+// What neither settles goes to convex_decide on q itself. Smooth inputs (a pen's round ink)
+// lose most of their vertices, so this is what deconstruct() runs for convex input.
+DeconstructResult convex_decide_simplified(const PolygonSet& q, const DeconstructParams& params,
+                                           const CancelHook& cancel = {});
+
 } // namespace penshape
 
 namespace penshape {
