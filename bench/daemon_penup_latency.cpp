@@ -1,0 +1,209 @@
+// Pen-up → recognized shape delivered, through the real daemon: real pen strokes (the bundled
+// recording of eight $1 strokes, decoded by the drivers) are fed at 1 kHz, one sample per
+// millisecond as a 1 kHz tablet's reader thread would, into the pipeline with the recognizing
+// analyzer (ink polygon + certified shape on the geometry workers); a real gRPC subscriber on a
+// unix socket times each ShapeRecognized from the moment the pen lifted. Beside it, in the same
+// run, the report → subscriber latency of the samples themselves (the live stream), and the
+// baseline: the analyzer called directly (no daemon, no gRPC).
+//
+//   build/release/bench/daemon_penup_latency [--rounds N] [--json]
+#include <grpcpp/grpcpp.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "penshape/daemon/recognizing_analyzer.hpp"
+#include "penshape/daemon/sample_source.hpp"
+#include "penshape/daemon/server.hpp"
+#include "penshape/daemon/shape_hub.hpp"
+#include "penshape/drivers/recording.hpp"
+#include "penshape/drivers/replay.hpp"
+#include "penshape/v1/live.grpc.pb.h"
+
+namespace {
+
+using namespace std::chrono_literals;
+using penshape::daemon::monotonic_us;
+namespace v1 = penshape::v1;
+
+// Replays decoded strokes at 1 kHz, stamping every sample with the time it is "read".
+class StrokeSource final : public penshape::daemon::SampleSource {
+ public:
+  explicit StrokeSource(penshape::TabletInfo tablet) : tablet_(std::move(tablet)) {}
+  void start(penshape::daemon::SampleSink& sink) override {
+    sink_ = &sink;
+    penshape::daemon::DeviceDescriptor d;
+    d.id = "bench";
+    d.tablet = tablet_;
+    sink.device_attached(d);
+  }
+  void stop() override {}
+  [[nodiscard]] std::vector<penshape::daemon::DeviceDescriptor> devices() const override {
+    return {};
+  }
+  // Plays one stroke; returns the pen-up time (monotonic µs) handed to the pipeline.
+  std::int64_t play(std::uint64_t id, const penshape::Stroke& stroke) {
+    penshape::Stroke out;
+    out.id = id;
+    out.tablet = tablet_;
+    auto next = std::chrono::steady_clock::now();
+    sink_->stroke_started("bench", id);
+    for (penshape::PenSample s : stroke.samples) {
+      std::this_thread::sleep_until(next);
+      next += 1ms;
+      s.time_us = monotonic_us();
+      sink_->sample("bench", id, s);
+      out.samples.push_back(s);
+    }
+    const std::int64_t up = monotonic_us();
+    sink_->stroke_finished("bench", std::move(out));
+    return up;
+  }
+
+ private:
+  penshape::TabletInfo tablet_;
+  penshape::daemon::SampleSink* sink_ = nullptr;
+};
+
+struct Percentiles {
+  double p50 = 0, p99 = 0, max = 0;
+  std::size_t n = 0;
+};
+
+Percentiles percentiles(std::vector<double> v) {
+  Percentiles p;
+  if (v.empty()) return p;
+  std::sort(v.begin(), v.end());
+  p.n = v.size();
+  p.p50 = v[v.size() / 2];
+  p.p99 = v[std::min(v.size() - 1, static_cast<std::size_t>(0.99 * static_cast<double>(v.size())))];
+  p.max = v.back();
+  return p;
+}
+
+void print_row(bool json, const char* name, const Percentiles& p, const char* unit,
+               const char* target) {
+  if (json) {
+    std::printf(
+        "{\"case\":\"%s\",\"n\":%zu,\"p50\":%.4f,\"p99\":%.4f,\"max\":%.4f,\"unit\":\"%s\"}\n",
+        name, p.n, p.p50, p.p99, p.max, unit);
+  } else {
+    std::printf("%-44s %6zu %10.3f %10.3f %10.3f %-3s %s\n", name, p.n, p.p50, p.p99, p.max, unit,
+                target);
+  }
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  bool json = false;
+  int rounds = 5;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--json") {
+      json = true;
+    } else if (a == "--rounds" && i + 1 < argc) {
+      rounds = std::max(1, std::atoi(argv[++i]));
+    } else {
+      std::fprintf(stderr, "usage: daemon_penup_latency [--rounds N] [--json]\n");
+      return 2;
+    }
+  }
+  const std::string file =
+      std::string(PENSHAPE_SOURCE_DIR) + "/recordings/dollar1-shapes.xppen-deco01v2.hidrec";
+  const auto recording = penshape::drivers::load_recording_file(file);
+  const auto decoded =
+      penshape::drivers::replay(recording, penshape::drivers::ReplaySpeed::kAsFastAsPossible);
+
+  // Baseline: the analyzer alone, on the same strokes.
+  auto analyzer = penshape::daemon::make_recognizing_analyzer();
+  std::vector<double> direct_ms;
+  for (int r = 0; r < rounds; ++r) {
+    for (const auto& s : decoded.strokes) {
+      const auto t0 = std::chrono::steady_clock::now();
+      (void)analyzer->analyze(s, penshape::daemon::PenSettings{}, {});
+      direct_ms.push_back(
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    }
+  }
+
+  const std::string dir = "/tmp/penshape-bench-" + std::to_string(::getpid());
+  std::filesystem::create_directories(dir);
+  auto source = std::make_shared<StrokeSource>(decoded.tablet);
+  penshape::daemon::ServerOptions options;
+  options.address = "unix:" + dir + "/bench.sock";
+  options.config.limits.subscriber_queue_events = 1U << 16;
+  std::vector<double> penup_ms;
+  std::vector<double> sample_us;
+  {
+    penshape::daemon::PenshapeServer server(options, {source, nullptr, analyzer});
+    std::mutex m;
+    std::map<std::uint64_t, std::int64_t> up_at;        // stroke id -> pen-up time
+    std::map<std::uint64_t, std::int64_t> delivered_at; // stroke id -> shape received
+    const std::size_t expected = decoded.strokes.size() * static_cast<std::size_t>(rounds);
+    std::thread reader([&] {
+      auto live = v1::Live::NewStub(
+          grpc::CreateChannel(options.address, grpc::InsecureChannelCredentials()));
+      grpc::ClientContext ctx;
+      v1::SubscribeRequest request;
+      request.set_include_samples(true);
+      auto stream = live->Subscribe(&ctx, request);
+      v1::LiveEvent event;
+      std::size_t shapes = 0;
+      while (shapes < expected && stream->Read(&event)) {
+        const std::int64_t now = monotonic_us();
+        if (event.has_samples()) {
+          for (const auto& s : event.samples().samples()) {
+            sample_us.push_back(static_cast<double>(now - s.time_us()));
+          }
+        }
+        if (event.has_shape()) {
+          std::lock_guard lock(m);
+          delivered_at[event.shape().stroke_id()] = now;
+          ++shapes;
+        }
+      }
+      ctx.TryCancel();
+      (void)stream->Finish();
+    });
+    while (server.hub().subscriber_count() < 1) std::this_thread::sleep_for(1ms);
+    std::this_thread::sleep_for(100ms);
+    std::uint64_t id = 0;
+    for (int r = 0; r < rounds; ++r) {
+      for (const auto& s : decoded.strokes) {
+        const std::int64_t up = source->play(++id, s);
+        std::lock_guard lock(m);
+        up_at[id] = up;
+      }
+    }
+    reader.join();
+    for (const auto& [sid, t] : delivered_at) {
+      if (up_at.count(sid) != 0) penup_ms.push_back(static_cast<double>(t - up_at[sid]) / 1000.0);
+    }
+  }
+  std::filesystem::remove_all(dir);
+
+  std::size_t max_samples = 0;
+  for (const auto& s : decoded.strokes) max_samples = std::max(max_samples, s.samples.size());
+  if (!json) {
+    std::printf("%zu real strokes (up to %zu samples) x %d rounds at 1 kHz through penshaped\n",
+                decoded.strokes.size(), max_samples, rounds);
+    std::printf("%-44s %6s %10s %10s %10s\n", "case", "n", "p50", "p99", "max");
+  }
+  print_row(json, "baseline: analyzer called directly", percentiles(direct_ms), "ms", "");
+  print_row(json, "pen-up -> shape at gRPC subscriber", percentiles(penup_ms), "ms",
+            "(target p99 <= 16 ms)");
+  print_row(json, "report -> sample at gRPC subscriber", percentiles(sample_us), "us",
+            "(target p99 < 1000 us)");
+  return 0;
+}
