@@ -38,8 +38,14 @@ DeconstructResult deconstruct(const PolygonSet& q, const DeconstructParams& para
     normalize_orientation(result.solution);
     result.hausdorff_bound = params.radius;
   } else {
-    PolygonSet oriented = q;
-    normalize_orientation(oriented);
+    // The engines want outer rings counterclockwise and holes clockwise: copy only to fix that.
+    PolygonSet reoriented;
+    const bool needs_fix = !has_normalized_orientation(q);
+    if (needs_fix) {
+      reoriented = q;
+      normalize_orientation(reoriented);
+    }
+    const PolygonSet& oriented = needs_fix ? reoriented : q;
     if (params.engine == EngineKind::kReference) {
       result = detail::decide_reference(oriented, params, cancel, limits);
     } else if (is_convex_region(oriented)) {

@@ -55,11 +55,42 @@ Rational area(const PolygonSet& set) {
   return twice / 2;
 }
 
+int orientation_sign(const Ring& ring) {
+  // The shoelace sum in doubles decides unless it is within its rounding error (each term is
+  // off by a few ulps of its magnitude); exact rationals decide the rest.
+  double sum = 0;
+  double magnitude = 0;
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const ExactPoint& a = ring[i];
+    const ExactPoint& b = ring[(i + 1) % n];
+    const double t1 = a.x.get_d() * b.y.get_d();
+    const double t2 = a.y.get_d() * b.x.get_d();
+    sum += t1 - t2;
+    magnitude += std::abs(t1) + std::abs(t2);
+  }
+  if (std::isfinite(sum) && std::isfinite(magnitude) && magnitude > 1e-250 &&
+      std::abs(sum) > 1e-12 * magnitude * static_cast<double>(n)) {
+    return sum > 0 ? 1 : -1;
+  }
+  return sgn(twice_signed_area(ring));
+}
+
+bool has_normalized_orientation(const PolygonSet& set) {
+  for (const auto& p : set.polygons) {
+    if (orientation_sign(p.outer) < 0) return false;
+    for (const auto& h : p.holes) {
+      if (orientation_sign(h) > 0) return false;
+    }
+  }
+  return true;
+}
+
 void normalize_orientation(PolygonSet& set) {
   for (auto& p : set.polygons) {
-    if (sgn(twice_signed_area(p.outer)) < 0) std::reverse(p.outer.begin(), p.outer.end());
+    if (orientation_sign(p.outer) < 0) std::reverse(p.outer.begin(), p.outer.end());
     for (auto& h : p.holes) {
-      if (sgn(twice_signed_area(h)) > 0) std::reverse(h.begin(), h.end());
+      if (orientation_sign(h) > 0) std::reverse(h.begin(), h.end());
     }
   }
 }

@@ -56,7 +56,12 @@ Rational twice_signed_area(const Ring& ring);
 // Area of the region: outer areas minus hole areas, exactly.
 Rational area(const PolygonSet& set);
 
+// +1 counterclockwise, -1 clockwise, 0 zero area; exact (doubles decide when clear).
+int orientation_sign(const Ring& ring);
+
 // Orients every outer ring counterclockwise and every hole clockwise.
 void normalize_orientation(PolygonSet& set);
+// True when normalize_orientation would change nothing.
+bool has_normalized_orientation(const PolygonSet& set);
 
 } // namespace penshape
