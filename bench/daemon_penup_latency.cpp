@@ -4,10 +4,14 @@
 // analyzer (ink polygon + certified shape on the geometry workers); a real gRPC subscriber on a
 // unix socket times each ShapeRecognized from the moment the pen lifted. Beside it, in the same
 // run, the report → subscriber latency of the samples themselves (the live stream), and the
-// baseline: the analyzer called directly (no daemon, no gRPC).
+// baseline: the analyzer called directly (no daemon, no gRPC). Two phases: a subscriber of samples
+// and shapes, then one that also asks for live previews (computed on the idle lane while drawing).
+// The process's CPU share while replaying and its peak RSS are printed for each (server and the
+// subscriber share the process, so both are upper bounds for the daemon).
 //
 //   build/release/bench/daemon_penup_latency [--rounds N] [--json]
 #include <grpcpp/grpcpp.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -16,6 +20,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <mutex>
 #include <string>
@@ -103,6 +108,101 @@ void print_row(bool json, const char* name, const Percentiles& p, const char* un
   }
 }
 
+struct PhaseResult {
+  bool previews = false;
+  std::vector<double> penup_ms;
+  std::vector<double> sample_us;
+  std::size_t previews_received = 0;
+  double cpu_percent = 0.0; // process CPU time / wall time while replaying (server + subscriber)
+  double rss_mb = 0.0;      // peak resident set of the whole process (VmHWM)
+};
+
+double process_cpu_seconds() {
+  rusage u{};
+  ::getrusage(RUSAGE_SELF, &u);
+  const auto sec = [](const timeval& t) {
+    return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_usec) * 1e-6;
+  };
+  return sec(u.ru_utime) + sec(u.ru_stime);
+}
+
+double peak_rss_mb() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
+  }
+  return 0.0;
+}
+
+// Replays every stroke `rounds` times at 1 kHz through a fresh penshaped with one gRPC subscriber
+// (samples, shapes, and previews when asked: previews then run on the idle lane while drawing).
+PhaseResult run_phase(const std::string& dir, const penshape::drivers::ReplayResult& decoded,
+                      const std::shared_ptr<penshape::daemon::StrokeAnalyzer>& analyzer, int rounds,
+                      bool previews) {
+  PhaseResult result;
+  result.previews = previews;
+  auto source = std::make_shared<StrokeSource>(decoded.tablet);
+  penshape::daemon::ServerOptions options;
+  options.address = "unix:" + dir + (previews ? "/previews.sock" : "/plain.sock");
+  options.config.limits.subscriber_queue_events = 1U << 16;
+  penshape::daemon::PenshapeServer server(options, {source, nullptr, analyzer});
+  std::mutex m;
+  std::map<std::uint64_t, std::int64_t> up_at;        // stroke id -> pen-up time
+  std::map<std::uint64_t, std::int64_t> delivered_at; // stroke id -> shape received
+  const std::size_t expected = decoded.strokes.size() * static_cast<std::size_t>(rounds);
+  std::thread reader([&] {
+    auto live =
+        v1::Live::NewStub(grpc::CreateChannel(options.address, grpc::InsecureChannelCredentials()));
+    grpc::ClientContext ctx;
+    v1::SubscribeRequest request;
+    request.set_include_samples(true);
+    request.set_include_previews(previews);
+    auto stream = live->Subscribe(&ctx, request);
+    v1::LiveEvent event;
+    std::size_t shapes = 0;
+    while (shapes < expected && stream->Read(&event)) {
+      const std::int64_t now = monotonic_us();
+      if (event.has_samples()) {
+        for (const auto& s : event.samples().samples()) {
+          result.sample_us.push_back(static_cast<double>(now - s.time_us()));
+        }
+      }
+      if (event.has_preview()) ++result.previews_received;
+      if (event.has_shape()) {
+        std::lock_guard lock(m);
+        delivered_at[event.shape().stroke_id()] = now;
+        ++shapes;
+      }
+    }
+    ctx.TryCancel();
+    (void)stream->Finish();
+  });
+  while (server.hub().subscriber_count() < 1) std::this_thread::sleep_for(1ms);
+  std::this_thread::sleep_for(100ms);
+  const double cpu0 = process_cpu_seconds();
+  const auto wall0 = std::chrono::steady_clock::now();
+  std::uint64_t id = 0;
+  for (int r = 0; r < rounds; ++r) {
+    for (const auto& s : decoded.strokes) {
+      const std::int64_t up = source->play(++id, s);
+      std::lock_guard lock(m);
+      up_at[id] = up;
+    }
+  }
+  reader.join();
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  result.cpu_percent = 100.0 * (process_cpu_seconds() - cpu0) / wall;
+  result.rss_mb = peak_rss_mb();
+  for (const auto& [sid, t] : delivered_at) {
+    if (up_at.count(sid) != 0) {
+      result.penup_ms.push_back(static_cast<double>(t - up_at[sid]) / 1000.0);
+    }
+  }
+  return result;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -139,58 +239,8 @@ int main(int argc, char** argv) {
 
   const std::string dir = "/tmp/penshape-bench-" + std::to_string(::getpid());
   std::filesystem::create_directories(dir);
-  auto source = std::make_shared<StrokeSource>(decoded.tablet);
-  penshape::daemon::ServerOptions options;
-  options.address = "unix:" + dir + "/bench.sock";
-  options.config.limits.subscriber_queue_events = 1U << 16;
-  std::vector<double> penup_ms;
-  std::vector<double> sample_us;
-  {
-    penshape::daemon::PenshapeServer server(options, {source, nullptr, analyzer});
-    std::mutex m;
-    std::map<std::uint64_t, std::int64_t> up_at;        // stroke id -> pen-up time
-    std::map<std::uint64_t, std::int64_t> delivered_at; // stroke id -> shape received
-    const std::size_t expected = decoded.strokes.size() * static_cast<std::size_t>(rounds);
-    std::thread reader([&] {
-      auto live = v1::Live::NewStub(
-          grpc::CreateChannel(options.address, grpc::InsecureChannelCredentials()));
-      grpc::ClientContext ctx;
-      v1::SubscribeRequest request;
-      request.set_include_samples(true);
-      auto stream = live->Subscribe(&ctx, request);
-      v1::LiveEvent event;
-      std::size_t shapes = 0;
-      while (shapes < expected && stream->Read(&event)) {
-        const std::int64_t now = monotonic_us();
-        if (event.has_samples()) {
-          for (const auto& s : event.samples().samples()) {
-            sample_us.push_back(static_cast<double>(now - s.time_us()));
-          }
-        }
-        if (event.has_shape()) {
-          std::lock_guard lock(m);
-          delivered_at[event.shape().stroke_id()] = now;
-          ++shapes;
-        }
-      }
-      ctx.TryCancel();
-      (void)stream->Finish();
-    });
-    while (server.hub().subscriber_count() < 1) std::this_thread::sleep_for(1ms);
-    std::this_thread::sleep_for(100ms);
-    std::uint64_t id = 0;
-    for (int r = 0; r < rounds; ++r) {
-      for (const auto& s : decoded.strokes) {
-        const std::int64_t up = source->play(++id, s);
-        std::lock_guard lock(m);
-        up_at[id] = up;
-      }
-    }
-    reader.join();
-    for (const auto& [sid, t] : delivered_at) {
-      if (up_at.count(sid) != 0) penup_ms.push_back(static_cast<double>(t - up_at[sid]) / 1000.0);
-    }
-  }
+  const PhaseResult plain = run_phase(dir, decoded, analyzer, rounds, false);
+  const PhaseResult with_previews = run_phase(dir, decoded, analyzer, rounds, true);
   std::filesystem::remove_all(dir);
 
   std::size_t max_samples = 0;
@@ -201,9 +251,27 @@ int main(int argc, char** argv) {
     std::printf("%-44s %6s %10s %10s %10s\n", "case", "n", "p50", "p99", "max");
   }
   print_row(json, "baseline: analyzer called directly", percentiles(direct_ms), "ms", "");
-  print_row(json, "pen-up -> shape at gRPC subscriber", percentiles(penup_ms), "ms",
-            "(target p99 <= 16 ms)");
-  print_row(json, "report -> sample at gRPC subscriber", percentiles(sample_us), "us",
-            "(target p99 < 1000 us)");
+  for (const PhaseResult* phase : {&plain, &with_previews}) {
+    const std::string tag = phase->previews ? " (+previews)" : "";
+    print_row(json, ("pen-up -> shape at gRPC subscriber" + tag).c_str(),
+              percentiles(phase->penup_ms), "ms", "(target p99 <= 16 ms)");
+    print_row(json, ("report -> sample at gRPC subscriber" + tag).c_str(),
+              percentiles(phase->sample_us), "us", "(target p99 < 1000 us)");
+  }
+  for (const PhaseResult* phase : {&plain, &with_previews}) {
+    if (json) {
+      std::printf(
+          "{\"case\":\"process%s\",\"cpu_percent\":%.1f,\"rss_mb\":%.1f,"
+          "\"previews\":%zu}\n",
+          phase->previews ? "+previews" : "", phase->cpu_percent, phase->rss_mb,
+          phase->previews_received);
+    } else {
+      std::printf(
+          "process%-37s cpu %5.1f%% of one core while replaying, peak RSS %.1f MB "
+          "(target < 50 MB), %zu previews received\n",
+          phase->previews ? " (+previews)" : "", phase->cpu_percent, phase->rss_mb,
+          phase->previews_received);
+    }
+  }
   return 0;
 }

@@ -106,6 +106,8 @@ void apply_global_key(const LineContext& at, const std::string& key, std::string
        }},
       {"worker_queue_jobs", [&] { l.worker_queue_jobs = parse_size(at, key, value, 1, 65'536); }},
       {"worker_threads", [&] { l.worker_threads = parse_size(at, key, value, 0, 256); }},
+      {"stroke_worker_threads",
+       [&] { l.stroke_worker_threads = parse_size(at, key, value, 0, 256); }},
       {"max_subscribers", [&] { l.max_subscribers = parse_size(at, key, value, 1, 4'096); }},
       {"subscriber_queue_events",
        [&] { l.subscriber_queue_events = parse_size(at, key, value, 1, 1'000'000); }},

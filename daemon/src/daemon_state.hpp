@@ -32,16 +32,31 @@ class DeviceRegistry {
   std::map<std::string, DeviceDescriptor> devices_;
 };
 
+// Work runs in three lanes so that what a user waits for is never queued behind what nobody
+// waits for: the pen-up -> shape budget is 16 ms and a report must reach subscribers within 1 ms,
+// on a machine that may have 2 cores.
+//   stroke_pool   stroke analyses (live strokes, SubmitStroke, StreamSamples, Recognize):
+//                 interactive priority, just below the readers and gRPC threads;
+//   pool          geometry RPCs (Deconstruct, searches): batch priority, so a long search
+//                 shares the cores but yields them to readers, gRPC and stroke analyses;
+//   preview_pool  live previews while the pen moves: idle priority, a hint that may come late.
 struct DaemonState {
   DaemonState(const Limits& l, const PenSettings& defaults,
               std::map<std::string, PenSettingsUpdate> per_device)
       : limits(l),
-        pool(l.worker_threads, l.worker_queue_jobs),
+        pool(l.worker_threads, l.worker_queue_jobs, WorkerPriority::kBatch),
+        stroke_pool(l.stroke_worker_threads, l.worker_queue_jobs, WorkerPriority::kInteractive),
+        preview_pool(1, kPreviewQueueJobs, WorkerPriority::kIdle),
         hub(l.max_subscribers),
         settings(defaults, std::move(per_device)) {}
 
+  // Previews in flight are at most one per device (pipeline.hpp); more queued would be stale.
+  static constexpr std::size_t kPreviewQueueJobs = 16;
+
   const Limits limits;
   WorkerPool pool;
+  WorkerPool stroke_pool;
+  WorkerPool preview_pool;
   ShapeHub hub;
   SettingsStore settings;
   DeviceRegistry devices;

@@ -311,7 +311,7 @@ grpc::Status analyze_stroke(DaemonState& state, grpc::ServerContext* context, co
   std::uint64_t queued_us = 0;
   std::uint64_t compute_us = 0;
   const grpc::Status status = run_on_pool(
-      state.pool, context, state.limits,
+      state.stroke_pool, context, state.limits,
       [&](const StopCondition& stop) {
         const auto started = Clock::now();
         *analysis = state.analyzer->analyze(stroke, settings, cancel_hook(stop));

@@ -40,6 +40,8 @@ void Pipeline::stroke_started(const std::string& device_id, std::uint64_t stroke
   if (state_.analyzer) {
     std::lock_guard lock(mutex_);
     Drawing& drawing = drawing_[device_id];
+    drawing.ended->store(true); // a stroke that never finished (device reset): its preview stops
+    drawing.ended = std::make_shared<std::atomic<bool>>(false);
     drawing.partial = Stroke{};
     drawing.partial.id = stroke_id;
     if (known) drawing.partial.tablet = device.tablet;
@@ -67,6 +69,7 @@ void Pipeline::sample(const std::string& device_id, std::uint64_t stroke_id,
 void Pipeline::maybe_preview(const std::string& device_id, Drawing& drawing) {
   const auto now = std::chrono::steady_clock::now();
   if (drawing.preview_running || now - drawing.last_preview < kPreviewInterval) return;
+  if (!state_.hub.wants_previews()) return;
   drawing.preview_running = true;
   drawing.last_preview = now;
   const PenSettings settings = settings_for(state_, drawing.partial.tablet);
@@ -93,9 +96,11 @@ void Pipeline::maybe_preview(const std::string& device_id, Drawing& drawing) {
     job_done();
   };
   ++in_flight_;
-  // A preview older than a few frames is useless: it stops at its deadline.
-  const StopCondition stop(now + 4 * kPreviewInterval, {});
-  if (!state_.pool.submit(std::move(job), stop)) {
+  // A preview older than a few frames is useless: it stops at its deadline, or when its stroke
+  // ends.
+  const StopCondition stop(now + 4 * kPreviewInterval,
+                           [ended = drawing.ended] { return ended->load(); });
+  if (!state_.preview_pool.submit(std::move(job), stop)) {
     drawing.preview_running = false;
     if (--in_flight_ == 0) idle_.notify_all();
   }
@@ -105,10 +110,11 @@ void Pipeline::stroke_finished(const std::string& device_id, Stroke stroke) {
   if (state_.analyzer) {
     std::lock_guard lock(mutex_);
     const auto it = drawing_.find(device_id);
+    if (it != drawing_.end()) it->second.ended->store(true);
     if (it != drawing_.end() && !it->second.preview_running)
       drawing_.erase(it);
     else if (it != drawing_.end())
-      it->second.partial = Stroke{}; // its preview job still runs
+      it->second.partial = Stroke{}; // its preview job still runs (and stops soon)
   }
   if (!state_.analyzer) {
     publish_stroke(state_.hub, device_id, stroke, nullptr,
@@ -144,7 +150,7 @@ void Pipeline::stroke_finished(const std::string& device_id, Stroke stroke) {
   const StopCondition stop(
       std::chrono::steady_clock::now() + std::chrono::seconds(state_.limits.max_call_seconds), {});
   job_started();
-  if (!state_.pool.submit(std::move(job), stop)) {
+  if (!state_.stroke_pool.submit(std::move(job), stop)) {
     job_done();
     // Never block the reader and never lose the stroke: publish it without its analysis.
     publish_stroke(state_.hub, device_id, stroke, nullptr,

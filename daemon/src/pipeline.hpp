@@ -1,10 +1,14 @@
 #pragma once
 // The daemon's SampleSink: device events and samples go straight to the hub (the reader thread
-// only copies and queues); finished strokes go to the worker pool for their ink polygon and shape,
-// then to the hub; strokes in progress get previews on the pool now and then.
+// only copies and queues); finished strokes go to the stroke lane for their ink polygon and shape,
+// then to the hub; strokes in progress get previews on the idle-priority preview lane now and
+// then, only while some subscriber asks for previews. A preview still queued or running when its
+// stroke ends is cancelled: the stroke's final shape supersedes it.
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <map>
+#include <memory>
 #include <mutex>
 
 #include "daemon_state.hpp"
@@ -34,6 +38,8 @@ class Pipeline final : public SampleSink {
     Stroke partial;
     std::chrono::steady_clock::time_point last_preview{};
     bool preview_running = false;
+    // Set when the stroke ends: its preview job (if any) stops.
+    std::shared_ptr<std::atomic<bool>> ended = std::make_shared<std::atomic<bool>>(false);
   };
   void job_started();
   void job_done();

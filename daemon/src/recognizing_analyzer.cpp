@@ -1,6 +1,7 @@
 #include "penshape/daemon/recognizing_analyzer.hpp"
 
 #include <map>
+#include <memory>
 #include <mutex>
 
 #include "penshape/core/live_recognizer.hpp"
@@ -95,19 +96,18 @@ class RecognizingAnalyzer final : public StrokeAnalyzer {
   }
 
   std::vector<v1::Shape> preview(const Stroke& partial, const PenSettings& settings,
-                                 const CancelHook& /*cancel*/) override {
+                                 const CancelHook& cancel) override {
     const std::vector<StrokePoint> pts = path_mm(partial);
-    std::lock_guard lock(mutex_);
-    auto it = live_.find(partial.id);
-    if (it == live_.end()) {
-      // One live recognizer per stroke in progress; strokes seldom overlap, keep few.
-      if (live_.size() > 64) live_.clear();
-      it = live_.emplace(partial.id, State{LiveRecognizer(config_for(settings)), 0}).first;
+    std::shared_ptr<State> st = live_state(partial.id, settings);
+    // Only this stroke's state is locked while feeding, so a finishing stroke's analysis (and
+    // other devices' previews) never wait for a preview.
+    std::lock_guard lock(st->mutex);
+    for (; st->fed < pts.size(); ++st->fed) {
+      if (cancel && cancel()) throw Cancelled(); // the stroke ended: its shape supersedes this
+      st->live.add(pts[st->fed]);
     }
-    State& st = it->second;
-    for (; st.fed < pts.size(); ++st.fed) st.live.add(pts[st.fed]);
     std::vector<v1::Shape> out;
-    const LivePreview& p = st.live.preview();
+    const LivePreview& p = st->live.preview();
     if (p.shape != ShapeClass::kFreeform) {
       // A preview is a candidate, not yet certified: no certificate, confidence 0.
       v1::Shape shape = to_proto_shape(p.shape, p.params, p.clean, Certificate{}, 0.0);
@@ -119,16 +119,28 @@ class RecognizingAnalyzer final : public StrokeAnalyzer {
 
  private:
   struct State {
+    explicit State(const RecognizerConfig& config) : live(config) {}
+    std::mutex mutex; // held while feeding samples
     LiveRecognizer live;
     std::size_t fed = 0;
   };
-  void forget(std::uint64_t stroke_id) {
+  std::shared_ptr<State> live_state(std::uint64_t stroke_id, const PenSettings& settings) {
     std::lock_guard lock(mutex_);
+    auto it = live_.find(stroke_id);
+    if (it == live_.end()) {
+      // One live recognizer per stroke in progress; strokes seldom overlap, keep few.
+      if (live_.size() > 64) live_.clear();
+      it = live_.emplace(stroke_id, std::make_shared<State>(config_for(settings))).first;
+    }
+    return it->second;
+  }
+  void forget(std::uint64_t stroke_id) {
+    std::lock_guard lock(mutex_); // a preview still running keeps its own reference
     live_.erase(stroke_id);
   }
   std::shared_ptr<StrokeAnalyzer> ink_ = make_ink_analyzer();
-  std::mutex mutex_;
-  std::map<std::uint64_t, State> live_;
+  std::mutex mutex_; // guards live_ only
+  std::map<std::uint64_t, std::shared_ptr<State>> live_;
 };
 
 } // namespace

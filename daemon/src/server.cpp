@@ -121,13 +121,19 @@ void PenshapeServer::shutdown() {
     // rest is cancelled (their jobs see IsCancelled()). Shutdown(deadline) itself would also wait
     // for idle client connections until the deadline, so the waiting is done here.
     const auto grace_end = std::chrono::steady_clock::now() + kShutdownGrace;
-    while ((impl.state.hub.subscriber_count() > 0 || impl.state.pool.busy() > 0) &&
+    const auto busy = [&impl] {
+      return impl.state.pool.busy() + impl.state.stroke_pool.busy() +
+             impl.state.preview_pool.busy();
+    };
+    while ((impl.state.hub.subscriber_count() > 0 || busy() > 0) &&
            std::chrono::steady_clock::now() < grace_end) {
       std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
     impl.server->Shutdown(std::chrono::system_clock::now());
     impl.server->Wait();
     impl.state.pool.drain();
+    impl.state.stroke_pool.drain();
+    impl.state.preview_pool.drain();
     if (!impl.socket_path.empty()) ::unlink(impl.socket_path.c_str());
     {
       std::lock_guard lock(impl.done_mutex);

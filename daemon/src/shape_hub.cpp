@@ -103,13 +103,15 @@ std::unique_ptr<Subscription> ShapeHub::subscribe(EventFilter filter, std::size_
   if (refusal != Refusal::kNone) return nullptr;
   std::unique_ptr<Subscription> subscription(new Subscription(*this, std::move(filter), capacity));
   subscribers_.push_back(subscription.get());
+  if (subscription->filter_.previews) preview_subscribers_.fetch_add(1);
   return subscription;
 }
 
 void ShapeHub::unsubscribe(Subscription* subscription) {
   std::unique_lock lock(mutex_);
-  subscribers_.erase(std::remove(subscribers_.begin(), subscribers_.end(), subscription),
-                     subscribers_.end());
+  const auto it = std::remove(subscribers_.begin(), subscribers_.end(), subscription);
+  if (it != subscribers_.end() && subscription->filter_.previews) preview_subscribers_.fetch_sub(1);
+  subscribers_.erase(it, subscribers_.end());
 }
 
 void ShapeHub::publish(v1::LiveEvent event) {
@@ -132,6 +134,8 @@ std::size_t ShapeHub::subscriber_count() const {
   std::shared_lock lock(mutex_);
   return subscribers_.size();
 }
+
+bool ShapeHub::wants_previews() const { return preview_subscribers_.load() > 0; }
 
 std::uint64_t ShapeHub::published() const { return sequence_.load(); }
 

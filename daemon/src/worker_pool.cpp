@@ -2,13 +2,37 @@
 
 #include <algorithm>
 
+#include "thread_scheduling.hpp"
+
 namespace penshape::daemon {
 
-WorkerPool::WorkerPool(std::size_t threads, std::size_t max_queued)
-    : max_queued_(std::max<std::size_t>(max_queued, 1)) {
+WorkerPool::WorkerPool(std::size_t threads, std::size_t max_queued, WorkerPriority priority)
+    : max_queued_(std::max<std::size_t>(max_queued, 1)), priority_(priority) {
   if (threads == 0) threads = std::max(1U, std::thread::hardware_concurrency());
   threads_.reserve(threads);
-  for (std::size_t i = 0; i < threads; ++i) threads_.emplace_back([this] { run(); });
+  for (std::size_t i = 0; i < threads; ++i) {
+    threads_.emplace_back([this] {
+      apply_priority();
+      run();
+    });
+  }
+}
+
+// Called on the worker thread itself: Linux keeps niceness, slice and policy per thread.
+void WorkerPool::apply_priority() const {
+  switch (priority_) {
+    case WorkerPriority::kNormal:
+      break;
+    case WorkerPriority::kInteractive:
+      lower_current_thread(kInteractiveNice, true);
+      break;
+    case WorkerPriority::kBatch:
+      lower_current_thread(kBatchNice, true);
+      break;
+    case WorkerPriority::kIdle:
+      make_current_thread_idle();
+      break;
+  }
 }
 
 WorkerPool::~WorkerPool() {

@@ -288,6 +288,56 @@ TEST_F(DaemonE2E, PreviewsArriveWhileAStrokeIsDrawn) {
   ctx.TryCancel();
 }
 
+TEST_F(DaemonE2E, NoPreviewIsComputedWhenNoSubscriberAsksForPreviews) {
+  auto source = std::make_shared<FakeSampleSource>();
+  auto analyzer = std::make_shared<penshape::testing::BoundingBoxAnalyzer>();
+  start({source, nullptr, analyzer});
+  auto live = v1::Live::NewStub(channel());
+  grpc::ClientContext ctx;
+  ctx.set_deadline(in(30s));
+  auto reader = live->Subscribe(&ctx, v1::SubscribeRequest{});
+  wait_for_subscribers(1);
+  source->attach("pen0");
+  source->emit_stroke("pen0", 40, 2ms);
+  v1::LiveEvent event;
+  bool shape = false;
+  while (!shape && reader->Read(&event)) shape = event.has_shape();
+  ASSERT_TRUE(shape);
+  EXPECT_EQ(analyzer->calls.load(), 1);
+  EXPECT_EQ(analyzer->previews.load(), 0);
+  ctx.TryCancel();
+}
+
+TEST_F(DaemonE2E, AHangingPreviewIsCancelledAndTheStrokesShapeStillArrives) {
+  auto source = std::make_shared<FakeSampleSource>();
+  auto analyzer = std::make_shared<penshape::testing::BoundingBoxAnalyzer>();
+  analyzer->hold_previews = true;
+  start({source, nullptr, analyzer});
+  auto live = v1::Live::NewStub(channel());
+  grpc::ClientContext ctx;
+  ctx.set_deadline(in(30s));
+  v1::SubscribeRequest request;
+  request.set_include_previews(true);
+  auto reader = live->Subscribe(&ctx, request);
+  wait_for_subscribers(1);
+  source->attach("pen0");
+  source->emit_stroke("pen0", 40, 2ms); // a preview starts at the first sample and never ends
+  v1::LiveEvent event;
+  bool shape = false;
+  while (!shape && reader->Read(&event)) {
+    EXPECT_FALSE(event.has_preview());
+    shape = event.has_shape();
+  }
+  ASSERT_TRUE(shape);
+  EXPECT_EQ(analyzer->previews_started.load(), 1); // one at a time per device
+  const auto until = std::chrono::steady_clock::now() + 10s;
+  while (analyzer->previews_cancelled.load() < 1 && std::chrono::steady_clock::now() < until) {
+    std::this_thread::sleep_for(1ms);
+  }
+  EXPECT_EQ(analyzer->previews_cancelled.load(), 1); // the stroke's end (or staleness) stops it
+  ctx.TryCancel();
+}
+
 TEST_F(DaemonE2E, SixtyFourClientsKeepUpWhileOneSubscriberNeverReads) {
   config_.limits.subscriber_queue_events = 4096;
   auto source = std::make_shared<FakeSampleSource>();

@@ -123,9 +123,20 @@ class BoundingBoxAnalyzer final : public daemon::StrokeAnalyzer {
     ++calls;
     return analysis;
   }
-  // A circle whose confidence is the number of samples seen so far.
+  // A circle whose confidence is the number of samples seen so far. With hold_previews, a
+  // preview runs until it is cancelled (at most 20 s), like a slow fit that its stroke's end
+  // makes useless.
   std::vector<v1::Shape> preview(const Stroke& partial, const daemon::PenSettings& /*settings*/,
-                                 const CancelHook& /*cancel*/) override {
+                                 const CancelHook& cancel) override {
+    if (hold_previews) {
+      ++previews_started;
+      const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+      while (!(cancel && cancel()) && std::chrono::steady_clock::now() < give_up) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      }
+      ++previews_cancelled;
+      throw Cancelled();
+    }
     v1::Shape circle;
     circle.set_kind(v1::SHAPE_KIND_CIRCLE);
     circle.set_confidence(static_cast<double>(partial.samples.size()));
@@ -134,6 +145,9 @@ class BoundingBoxAnalyzer final : public daemon::StrokeAnalyzer {
   }
   std::atomic<int> previews{0};
   std::atomic<int> calls{0};
+  std::atomic<bool> hold_previews{false};
+  std::atomic<int> previews_started{0};
+  std::atomic<int> previews_cancelled{0};
 };
 
 // Deconstruct: with r <= eps answers YES with P = Q (the paper's trivial case); otherwise, when

@@ -5,6 +5,13 @@
 #include <future>
 #include <thread>
 
+#if defined(__linux__)
+#include <sched.h>
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
+
 #include "penshape/daemon/shape_hub.hpp"
 #include "penshape/daemon/worker_pool.hpp"
 
@@ -15,6 +22,7 @@ using penshape::daemon::EventFilter;
 using penshape::daemon::ShapeHub;
 using penshape::daemon::StopCondition;
 using penshape::daemon::WorkerPool;
+using penshape::daemon::WorkerPriority;
 
 penshape::v1::LiveEvent stroke_started(std::uint64_t id, const std::string& device = "d") {
   penshape::v1::LiveEvent e;
@@ -177,5 +185,55 @@ TEST(WorkerPool, AThrowingJobDoesNotStopTheWorker) {
   pool.submit([&](const StopCondition&) { next.set_value(42); });
   EXPECT_EQ(next.get_future().get(), 42);
 }
+
+TEST(ShapeHub, KnowsWhetherAnySubscriberWantsPreviews) {
+  ShapeHub hub(4);
+  EXPECT_FALSE(hub.wants_previews());
+  auto plain = hub.subscribe(EventFilter{}, 4);
+  EXPECT_FALSE(hub.wants_previews());
+  EventFilter previews;
+  previews.previews = true;
+  auto a = hub.subscribe(previews, 4);
+  auto b = hub.subscribe(previews, 4);
+  EXPECT_TRUE(hub.wants_previews());
+  a.reset();
+  EXPECT_TRUE(hub.wants_previews());
+  b.reset();
+  EXPECT_FALSE(hub.wants_previews());
+}
+
+#if defined(__linux__)
+struct ThreadScheduling {
+  int nice = 0;
+  int policy = 0;
+};
+
+// Read on the pool's own thread: what the kernel says, not what the pool meant to set.
+ThreadScheduling scheduling_of_a_worker(WorkerPriority priority) {
+  const int process_nice = ::getpriority(PRIO_PROCESS, 0);
+  WorkerPool pool(1, 1, priority);
+  std::promise<ThreadScheduling> seen;
+  pool.submit([&](const StopCondition&) {
+    const auto tid = static_cast<id_t>(::syscall(SYS_gettid));
+    seen.set_value({::getpriority(PRIO_PROCESS, tid) - process_nice, ::sched_getscheduler(0)});
+  });
+  return seen.get_future().get();
+}
+
+TEST(WorkerPool, LanesRunAtTheirDocumentedPriorities) {
+  const ThreadScheduling normal = scheduling_of_a_worker(WorkerPriority::kNormal);
+  EXPECT_EQ(normal.nice, 0);
+  EXPECT_EQ(normal.policy, SCHED_OTHER);
+  // Niceness saturates at 19 when the test itself already runs niced.
+  const int room = 19 - ::getpriority(PRIO_PROCESS, 0);
+  const ThreadScheduling interactive = scheduling_of_a_worker(WorkerPriority::kInteractive);
+  EXPECT_EQ(interactive.nice, std::min(penshape::daemon::kInteractiveNice, room));
+  EXPECT_EQ(interactive.policy, SCHED_OTHER);
+  const ThreadScheduling batch = scheduling_of_a_worker(WorkerPriority::kBatch);
+  EXPECT_EQ(batch.nice, std::min(penshape::daemon::kBatchNice, room));
+  EXPECT_GE(batch.nice, interactive.nice);
+  EXPECT_EQ(scheduling_of_a_worker(WorkerPriority::kIdle).policy, SCHED_IDLE);
+}
+#endif
 
 } // namespace

@@ -12,6 +12,8 @@
 // | samples in one stroke         | 100,000      | max_stroke_samples      | INVALID_ARGUMENT | |
 // geometry call duration        | 120 s        | max_call_seconds        | DEADLINE_EXCEEDED      |
 // | queued geometry jobs          | 64           | worker_queue_jobs       | RESOURCE_EXHAUSTED |
+// (per lane: geometry RPCs on worker_threads, stroke analyses on stroke_worker_threads; see
+// daemon_state.hpp for the lanes and their priorities)
 // | concurrent subscribers        | 128          | max_subscribers         | RESOURCE_EXHAUSTED |
 // | events queued per subscriber  | 1,024        | subscriber_queue_events | oldest dropped,
 // counted|
@@ -35,7 +37,8 @@ struct Limits {
   std::size_t max_stroke_samples = 100'000;
   std::uint32_t max_call_seconds = 120;
   std::size_t worker_queue_jobs = 64;
-  std::size_t worker_threads = 0; // 0: one per hardware thread
+  std::size_t worker_threads = 0;        // geometry RPC workers; 0: one per hardware thread
+  std::size_t stroke_worker_threads = 0; // stroke analysis workers; 0: one per hardware thread
   std::size_t max_subscribers = 128;
   std::size_t subscriber_queue_events = 1'024;
 };

@@ -96,6 +96,8 @@ class ShapeHub {
   void close();
 
   [[nodiscard]] std::size_t subscriber_count() const;
+  // Some subscriber asked for preview candidates (previews cost geometry: none without a reader).
+  [[nodiscard]] bool wants_previews() const;
   [[nodiscard]] std::uint64_t published() const;
 
  private:
@@ -109,6 +111,7 @@ class ShapeHub {
   // Serialises publishers so each queue receives events in sequence order.
   std::mutex publish_mutex_;
   std::atomic<std::uint64_t> sequence_{0};
+  std::atomic<std::size_t> preview_subscribers_{0};
 };
 
 // CLOCK_MONOTONIC in microseconds (LiveEvent.published_us).

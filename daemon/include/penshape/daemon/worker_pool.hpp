@@ -7,6 +7,10 @@
 // job as a CancelHook so long computations stop when the caller gives up. A job whose stop
 // condition already holds when a worker picks it up still runs: it sees cancelled() at once and
 // ends, so its owner always gets an answer.
+//
+// Priority: the daemon runs its work in lanes (pipeline.hpp): stroke analyses on normal-priority
+// threads, geometry RPCs on lowered-priority threads and live previews on idle-priority threads,
+// so heavy geometry never delays the reader threads or a stroke's shape.
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -38,12 +42,27 @@ class StopCondition {
   std::function<bool()> cancelled_;
 };
 
+// How the pool's threads are scheduled (Linux; elsewhere every pool runs at normal priority).
+// The lowered priorities also ask for the shortest time slice, so a thread that wakes up (a
+// tablet reader, a gRPC writer) gets the core within about 100 µs (thread_scheduling.hpp).
+enum class WorkerPriority {
+  kNormal,      // as the daemon's other threads
+  kInteractive, // nice + kInteractiveNice: work a user waits for (a stroke's shape)
+  kBatch,       // nice + kBatchNice: long geometry calls; yield to everything above
+  kIdle,        // SCHED_IDLE: runs only on otherwise idle cores (hints nobody waits for)
+};
+inline constexpr int kInteractiveNice = 5;
+inline constexpr int kBatchNice = 15;
+
 class WorkerPool {
  public:
   using Job = std::function<void(const StopCondition&)>;
 
   // threads == 0: one per hardware thread. max_queued: jobs waiting (not running) at most.
-  WorkerPool(std::size_t threads, std::size_t max_queued);
+  // A priority the system refuses leaves the thread at normal priority (logged nowhere: raising
+  // niceness and SCHED_IDLE need no privilege on Linux, so it does not happen in practice).
+  WorkerPool(std::size_t threads, std::size_t max_queued,
+             WorkerPriority priority = WorkerPriority::kNormal);
   ~WorkerPool(); // drain() then join
   WorkerPool(const WorkerPool&) = delete;
   WorkerPool& operator=(const WorkerPool&) = delete;
@@ -54,6 +73,7 @@ class WorkerPool {
   void drain();
 
   [[nodiscard]] std::size_t thread_count() const { return threads_.size(); }
+  [[nodiscard]] WorkerPriority priority() const { return priority_; }
   [[nodiscard]] std::size_t queued() const;
   [[nodiscard]] bool accepting() const;
   // Jobs queued or running.
@@ -65,12 +85,14 @@ class WorkerPool {
     StopCondition stop;
   };
   void run();
+  void apply_priority() const;
 
   mutable std::mutex mutex_;
   std::condition_variable work_available_;
   std::condition_variable idle_;
   std::deque<Entry> queue_;
   std::size_t max_queued_;
+  WorkerPriority priority_;
   std::size_t running_ = 0;
   bool accepting_ = true;
   bool stopping_ = false;
