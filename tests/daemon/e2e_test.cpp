@@ -71,6 +71,27 @@ class DaemonE2E : public ::testing::Test {
     ASSERT_EQ(server_->hub().subscriber_count(), n);
   }
 
+  // A daemon fed by a fake source and the bounding-box analyzer, one subscriber (with or without
+  // previews) already registered, and device "pen0" attached.
+  struct LiveRig {
+    std::shared_ptr<FakeSampleSource> source = std::make_shared<FakeSampleSource>();
+    std::shared_ptr<penshape::testing::BoundingBoxAnalyzer> analyzer =
+        std::make_shared<penshape::testing::BoundingBoxAnalyzer>();
+    std::unique_ptr<v1::Live::Stub> live;
+    grpc::ClientContext ctx;
+    std::unique_ptr<grpc::ClientReader<v1::LiveEvent>> reader;
+  };
+  void start_live_rig(LiveRig& rig, bool previews) {
+    start({rig.source, nullptr, rig.analyzer});
+    rig.live = v1::Live::NewStub(channel());
+    rig.ctx.set_deadline(in(30s));
+    v1::SubscribeRequest request;
+    request.set_include_previews(previews);
+    rig.reader = rig.live->Subscribe(&rig.ctx, request);
+    wait_for_subscribers(1);
+    rig.source->attach("pen0");
+  }
+
   TempDir dir_;
   penshape::daemon::DaemonConfig config_;
   std::unique_ptr<PenshapeServer> server_;
@@ -253,18 +274,11 @@ TEST_F(DaemonE2E, SubscribeDeliversTheSourcesStrokesWithTheirAnalysis) {
 }
 
 TEST_F(DaemonE2E, PreviewsArriveWhileAStrokeIsDrawn) {
-  auto source = std::make_shared<FakeSampleSource>();
-  auto analyzer = std::make_shared<penshape::testing::BoundingBoxAnalyzer>();
-  start({source, nullptr, analyzer});
-  auto live = v1::Live::NewStub(channel());
-  grpc::ClientContext ctx;
-  ctx.set_deadline(in(30s));
-  v1::SubscribeRequest request;
-  request.set_include_previews(true);
-  auto reader = live->Subscribe(&ctx, request);
-  wait_for_subscribers(1);
-  source->attach("pen0");
-  source->emit_stroke("pen0", 40, 2ms); // the first sample already asks for a preview
+  LiveRig rig;
+  start_live_rig(rig, true);
+  auto& analyzer = rig.analyzer;
+  auto& reader = rig.reader;
+  rig.source->emit_stroke("pen0", 40, 2ms); // the first sample already asks for a preview
 
   std::vector<double> confidences;
   bool shape = false;
@@ -289,53 +303,37 @@ TEST_F(DaemonE2E, PreviewsArriveWhileAStrokeIsDrawn) {
 }
 
 TEST_F(DaemonE2E, NoPreviewIsComputedWhenNoSubscriberAsksForPreviews) {
-  auto source = std::make_shared<FakeSampleSource>();
-  auto analyzer = std::make_shared<penshape::testing::BoundingBoxAnalyzer>();
-  start({source, nullptr, analyzer});
-  auto live = v1::Live::NewStub(channel());
-  grpc::ClientContext ctx;
-  ctx.set_deadline(in(30s));
-  auto reader = live->Subscribe(&ctx, v1::SubscribeRequest{});
-  wait_for_subscribers(1);
-  source->attach("pen0");
-  source->emit_stroke("pen0", 40, 2ms);
+  LiveRig rig;
+  start_live_rig(rig, false);
+  rig.source->emit_stroke("pen0", 40, 2ms);
   v1::LiveEvent event;
   bool shape = false;
-  while (!shape && reader->Read(&event)) shape = event.has_shape();
+  while (!shape && rig.reader->Read(&event)) shape = event.has_shape();
   ASSERT_TRUE(shape);
-  EXPECT_EQ(analyzer->calls.load(), 1);
-  EXPECT_EQ(analyzer->previews.load(), 0);
-  ctx.TryCancel();
+  EXPECT_EQ(rig.analyzer->calls.load(), 1);
+  EXPECT_EQ(rig.analyzer->previews.load(), 0);
+  rig.ctx.TryCancel();
 }
 
 TEST_F(DaemonE2E, AHangingPreviewIsCancelledAndTheStrokesShapeStillArrives) {
-  auto source = std::make_shared<FakeSampleSource>();
-  auto analyzer = std::make_shared<penshape::testing::BoundingBoxAnalyzer>();
-  analyzer->hold_previews = true;
-  start({source, nullptr, analyzer});
-  auto live = v1::Live::NewStub(channel());
-  grpc::ClientContext ctx;
-  ctx.set_deadline(in(30s));
-  v1::SubscribeRequest request;
-  request.set_include_previews(true);
-  auto reader = live->Subscribe(&ctx, request);
-  wait_for_subscribers(1);
-  source->attach("pen0");
-  source->emit_stroke("pen0", 40, 2ms); // a preview starts at the first sample and never ends
+  LiveRig rig;
+  rig.analyzer->hold_previews = true;
+  start_live_rig(rig, true);
+  rig.source->emit_stroke("pen0", 40, 2ms); // a preview starts at the first sample, never ends
   v1::LiveEvent event;
   bool shape = false;
-  while (!shape && reader->Read(&event)) {
+  while (!shape && rig.reader->Read(&event)) {
     EXPECT_FALSE(event.has_preview());
     shape = event.has_shape();
   }
   ASSERT_TRUE(shape);
-  EXPECT_EQ(analyzer->previews_started.load(), 1); // one at a time per device
+  EXPECT_EQ(rig.analyzer->previews_started.load(), 1); // one at a time per device
   const auto until = std::chrono::steady_clock::now() + 10s;
-  while (analyzer->previews_cancelled.load() < 1 && std::chrono::steady_clock::now() < until) {
+  while (rig.analyzer->previews_cancelled.load() < 1 && std::chrono::steady_clock::now() < until) {
     std::this_thread::sleep_for(1ms);
   }
-  EXPECT_EQ(analyzer->previews_cancelled.load(), 1); // the stroke's end (or staleness) stops it
-  ctx.TryCancel();
+  EXPECT_EQ(rig.analyzer->previews_cancelled.load(), 1); // the stroke's end (or staleness)
+  rig.ctx.TryCancel();
 }
 
 TEST_F(DaemonE2E, SixtyFourClientsKeepUpWhileOneSubscriberNeverReads) {
