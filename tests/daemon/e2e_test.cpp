@@ -299,7 +299,7 @@ TEST_F(DaemonE2E, PreviewsArriveWhileAStrokeIsDrawn) {
     EXPECT_GT(confidences[i], confidences[i - 1]); // later previews see more samples
   }
   EXPECT_LE(confidences.back(), 40.0);
-  ctx.TryCancel();
+  rig.ctx.TryCancel();
 }
 
 TEST_F(DaemonE2E, NoPreviewIsComputedWhenNoSubscriberAsksForPreviews) {
