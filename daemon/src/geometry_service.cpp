@@ -146,6 +146,31 @@ Rational positive(const v1::Scalar& s, bool present, const std::string& field,
   return v;
 }
 
+// Runs a streaming search on the geometry lane: progress messages while it runs (ProgressStream),
+// then one last message with the result (filled by `compute`) and its timings.
+template <typename Response, typename Compute>
+grpc::Status run_search(DaemonState& state, grpc::ServerContext* context,
+                        grpc::ServerWriter<Response>* writer, Clock::time_point arrived,
+                        bool radius_search, Compute compute) {
+  Response last;
+  std::uint64_t queued_us = 0;
+  const grpc::Status status = run_on_pool(
+      state.pool, context, state.limits,
+      [&](const StopCondition& stop) {
+        const auto started = Clock::now();
+        ProgressStream<Response> progress(writer, arrived, radius_search);
+        compute(stop, progress, last.mutable_result());
+        last.mutable_result()->mutable_timings()->set_compute_us(micros_since(started));
+        return grpc::Status::OK;
+      },
+      &queued_us);
+  if (!status.ok()) return status;
+  last.mutable_result()->mutable_timings()->set_queued_us(queued_us);
+  last.mutable_result()->mutable_timings()->set_total_us(micros_since(arrived));
+  writer->Write(last);
+  return grpc::Status::OK;
+}
+
 } // namespace
 
 grpc::Status GeometryServiceImpl::SearchTolerance(
@@ -164,30 +189,18 @@ grpc::Status GeometryServiceImpl::SearchTolerance(
   });
   if (!status.ok()) return status;
   if (!state_.geometry) return not_in_this_build("SearchTolerance: no engine in this build");
-  v1::SearchToleranceResponse last;
-  std::uint64_t queued_us = 0;
-  status = run_on_pool(
-      state_.pool, context, state_.limits,
-      [&](const StopCondition& stop) {
-        const auto started = Clock::now();
-        ProgressStream<v1::SearchToleranceResponse> progress(writer, arrived, false);
+  return run_search(
+      state_, context, writer, arrived, false,
+      [&](const StopCondition& stop, ProgressStream<v1::SearchToleranceResponse>& progress,
+          v1::SearchToleranceResult* out) {
         const ToleranceSearchResult r = state_.geometry->search_tolerance(
             q, radius, width, engine, cancel_hook(stop), core_limits(state_.limits),
             [&](const DeconstructResult& d) { progress.decided(d); });
-        v1::SearchToleranceResult* out = last.mutable_result();
         to_proto(r.eps_low, out->mutable_lower());
         to_proto(r.eps_high, out->mutable_upper());
         to_proto(r.solution.solution, out->mutable_solution());
         to_proto_params(r.solution, out->mutable_params());
-        out->mutable_timings()->set_compute_us(micros_since(started));
-        return grpc::Status::OK;
-      },
-      &queued_us);
-  if (!status.ok()) return status;
-  last.mutable_result()->mutable_timings()->set_queued_us(queued_us);
-  last.mutable_result()->mutable_timings()->set_total_us(micros_since(arrived));
-  writer->Write(last);
-  return grpc::Status::OK;
+      });
 }
 
 grpc::Status GeometryServiceImpl::SearchRadius(
@@ -211,31 +224,19 @@ grpc::Status GeometryServiceImpl::SearchRadius(
   });
   if (!status.ok()) return status;
   if (!state_.geometry) return not_in_this_build("SearchRadius: no engine in this build");
-  v1::SearchRadiusResponse last;
-  std::uint64_t queued_us = 0;
-  status = run_on_pool(
-      state_.pool, context, state_.limits,
-      [&](const StopCondition& stop) {
-        const auto started = Clock::now();
-        ProgressStream<v1::SearchRadiusResponse> progress(writer, arrived, true);
+  return run_search(
+      state_, context, writer, arrived, true,
+      [&](const StopCondition& stop, ProgressStream<v1::SearchRadiusResponse>& progress,
+          v1::SearchRadiusResult* out) {
         const RadiusSearchResult r = state_.geometry->search_radius(
             q, tolerance, width, upper, engine, cancel_hook(stop), core_limits(state_.limits),
             [&](const DeconstructResult& d) { progress.decided(d); });
-        v1::SearchRadiusResult* out = last.mutable_result();
         to_proto(r.r_low, out->mutable_lower());
         to_proto(r.r_high, out->mutable_upper());
         to_proto(r.solution_at_low.solution, out->mutable_solution());
         to_proto_params(r.solution_at_low, out->mutable_params());
         out->set_converged(r.converged);
-        out->mutable_timings()->set_compute_us(micros_since(started));
-        return grpc::Status::OK;
-      },
-      &queued_us);
-  if (!status.ok()) return status;
-  last.mutable_result()->mutable_timings()->set_queued_us(queued_us);
-  last.mutable_result()->mutable_timings()->set_total_us(micros_since(arrived));
-  writer->Write(last);
-  return grpc::Status::OK;
+      });
 }
 
 grpc::Status GeometryServiceImpl::SuggestRadius(
@@ -262,13 +263,10 @@ grpc::Status GeometryServiceImpl::SuggestRadius(
   if (!status.ok()) return status;
   if (!state_.geometry) return not_in_this_build("SuggestRadius: no engine in this build");
   const std::size_t max_candidates = request->max_candidates() == 0 ? 3 : request->max_candidates();
-  v1::SuggestRadiusResponse last;
-  std::uint64_t queued_us = 0;
-  status = run_on_pool(
-      state_.pool, context, state_.limits,
-      [&](const StopCondition& stop) {
-        const auto started = Clock::now();
-        ProgressStream<v1::SuggestRadiusResponse> progress(writer, arrived, true);
+  return run_search(
+      state_, context, writer, arrived, true,
+      [&](const StopCondition& stop, ProgressStream<v1::SuggestRadiusResponse>& progress,
+          v1::SuggestRadiusResult* out) {
         options.progress = [&](std::size_t done, std::size_t total) {
           progress.samples_done(done, total);
           return !stop.should_stop();
@@ -276,7 +274,6 @@ grpc::Status GeometryServiceImpl::SuggestRadius(
         const SuggestResult r = state_.geometry->suggest_radius(
             q, options, engine, cancel_hook(stop), core_limits(state_.limits));
         if (r.stopped_early) throw Cancelled();
-        v1::SuggestRadiusResult* out = last.mutable_result();
         auto fill = [](const RadiusSample& sample, v1::RadiusCandidate* c) {
           to_proto(sample.radius, c->mutable_radius());
           to_proto(sample.eps_low, c->mutable_tolerance_lower());
@@ -289,15 +286,7 @@ grpc::Status GeometryServiceImpl::SuggestRadius(
           to_proto(r.suggestions[i].solution.solution, c->mutable_solution());
         }
         for (const RadiusSample& sample : r.samples) fill(sample, out->add_samples());
-        out->mutable_timings()->set_compute_us(micros_since(started));
-        return grpc::Status::OK;
-      },
-      &queued_us);
-  if (!status.ok()) return status;
-  last.mutable_result()->mutable_timings()->set_queued_us(queued_us);
-  last.mutable_result()->mutable_timings()->set_total_us(micros_since(arrived));
-  writer->Write(last);
-  return grpc::Status::OK;
+      });
 }
 
 grpc::Status analyze_stroke(DaemonState& state, grpc::ServerContext* context, const Stroke& stroke,
