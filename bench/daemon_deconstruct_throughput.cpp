@@ -22,6 +22,7 @@
 #include <thread>
 #include <vector>
 
+#include "bench_support.hpp"
 #include "penshape/daemon/geometry_backend.hpp"
 #include "penshape/daemon/proto_convert.hpp"
 #include "penshape/daemon/server.hpp"
@@ -94,12 +95,6 @@ struct Row {
   double p50_us = 0, p99_us = 0;
 };
 
-double percentile(std::vector<double>& v, double q) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  return v[std::min(v.size() - 1, static_cast<std::size_t>(q * static_cast<double>(v.size())))];
-}
-
 Row direct(const v1::DeconstructRequest& req, double seconds) {
   auto b = backend();
   const penshape::daemon::Limits limits;
@@ -118,8 +113,9 @@ Row direct(const v1::DeconstructRequest& req, double seconds) {
   row.calls = latencies.size();
   row.per_second =
       static_cast<double>(row.calls) / std::chrono::duration<double>(Clock::now() - t0).count();
-  row.p50_us = percentile(latencies, 0.5);
-  row.p99_us = percentile(latencies, 0.99);
+  const auto p = penshape::bench::percentiles(latencies);
+  row.p50_us = p.p50;
+  row.p99_us = p.p99;
   return row;
 }
 
@@ -158,33 +154,21 @@ Row through_daemon(const v1::DeconstructRequest& req, int clients, double second
   row.failures = failures;
   row.per_second =
       static_cast<double>(row.calls) / std::chrono::duration<double>(Clock::now() - t0).count();
-  row.p50_us = percentile(all, 0.5);
-  row.p99_us = percentile(all, 0.99);
+  const auto p = penshape::bench::percentiles(all);
+  row.p50_us = p.p50;
+  row.p99_us = p.p99;
   return row;
 }
 
 } // namespace
 
 int main(int argc, char** argv) {
-  double seconds = 2;
-  bool json = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--json") {
-      json = true;
-    } else if (arg == "--seconds" && i + 1 < argc) {
-      seconds = std::atof(argv[++i]);
-    } else {
-      std::fprintf(stderr, "usage: daemon_deconstruct_throughput [--seconds N] [--json]\n");
-      return 2;
-    }
-  }
-  if (!(seconds > 0 && seconds <= 600)) {
-    std::fprintf(stderr, "daemon_deconstruct_throughput: --seconds must be in (0, 600]\n");
-    return 2;
-  }
-  std::string dir = (std::filesystem::temp_directory_path() / "penshape-bench-XXXXXX").string();
-  if (::mkdtemp(dir.data()) == nullptr) return 1;
+  const auto args =
+      penshape::bench::parse_seconds_args(argc, argv, "daemon_deconstruct_throughput", 2);
+  if (!args) return 2;
+  const double seconds = args->seconds;
+  const bool json = args->json;
+  const std::string dir = penshape::bench::make_scratch_dir();
   const v1::DeconstructRequest req = request();
   penshape::daemon::ServerOptions options;
   options.address = "unix:" + dir + "/bench.sock";

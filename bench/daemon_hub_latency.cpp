@@ -23,6 +23,7 @@
 #include <thread>
 #include <vector>
 
+#include "bench_support.hpp"
 #include "penshape/daemon/sample_source.hpp"
 #include "penshape/daemon/server.hpp"
 #include "penshape/daemon/shape_hub.hpp"
@@ -70,57 +71,11 @@ class PacedSource final : public penshape::daemon::SampleSource {
   penshape::daemon::SampleSink* sink_ = nullptr;
 };
 
-struct ProcessUsage {
-  double cpu_seconds = 0;
-  long rss_kb = 0;
-};
-
-ProcessUsage usage() {
-  ProcessUsage u;
-  std::ifstream stat("/proc/self/stat");
-  std::string text((std::istreambuf_iterator<char>(stat)), {});
-  // Fields after the command name (which may contain spaces) start after the last ')'.
-  std::istringstream fields(text.substr(text.rfind(')') + 2));
-  std::string field;
-  unsigned long long utime = 0, stime = 0;
-  for (int i = 3; i <= 15 && fields >> field; ++i) {
-    if (i == 14) utime = std::stoull(field);
-    if (i == 15) stime = std::stoull(field);
-  }
-  u.cpu_seconds = static_cast<double>(utime + stime) / static_cast<double>(sysconf(_SC_CLK_TCK));
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while (std::getline(status, line)) {
-    if (line.rfind("VmRSS:", 0) == 0) u.rss_kb = std::stol(line.substr(6));
-  }
-  return u;
-}
-
-struct Percentiles {
-  double p50 = 0, p99 = 0, max = 0;
-  std::size_t n = 0;
-};
-
-Percentiles percentiles(std::vector<std::int64_t> v) {
-  Percentiles p;
-  p.n = v.size();
-  if (v.empty()) return p;
-  std::sort(v.begin(), v.end());
-  auto at = [&](double q) {
-    return static_cast<double>(
-        v[std::min(v.size() - 1, static_cast<std::size_t>(q * static_cast<double>(v.size())))]);
-  };
-  p.p50 = at(0.50);
-  p.p99 = at(0.99);
-  p.max = static_cast<double>(v.back());
-  return p;
-}
-
 struct Row {
   std::string name;
   std::string path;
   int subscribers = 0;
-  Percentiles latency_us;
+  penshape::bench::Percentiles latency_us;
   std::uint64_t lost = 0;
   double cpu_percent = 0;
   long rss_kb = 0;
@@ -186,16 +141,18 @@ Row run_case(const std::string& name, int grpc_subscribers, int samples, const s
     std::this_thread::sleep_for(1ms);
   }
   std::this_thread::sleep_for(100ms); // connections settle
-  const ProcessUsage before = usage();
+  const penshape::bench::ProcessUsage before = penshape::bench::process_usage();
   const auto t0 = std::chrono::steady_clock::now();
   source->emit(samples, 1000);
   for (auto& t : readers) t.join();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const ProcessUsage after = usage();
+  const penshape::bench::ProcessUsage after = penshape::bench::process_usage();
   direct.reset();
-  std::vector<std::int64_t> all;
-  for (auto& l : latencies) all.insert(all.end(), l.begin(), l.end());
-  row.latency_us = percentiles(std::move(all));
+  std::vector<double> all;
+  for (auto& l : latencies) {
+    for (std::int64_t us : l) all.push_back(static_cast<double>(us));
+  }
+  row.latency_us = penshape::bench::percentiles(std::move(all));
   row.lost = lost;
   row.cpu_percent = 100.0 * (after.cpu_seconds - before.cpu_seconds) / wall;
   row.rss_kb = after.rss_kb;
@@ -225,9 +182,9 @@ Row idle_case(const std::string& dir, double seconds, int subscribers) {
     std::this_thread::sleep_for(1ms);
   }
   std::this_thread::sleep_for(200ms);
-  const ProcessUsage before = usage();
+  const penshape::bench::ProcessUsage before = penshape::bench::process_usage();
   std::this_thread::sleep_for(std::chrono::duration<double>(seconds));
-  const ProcessUsage after = usage();
+  const penshape::bench::ProcessUsage after = penshape::bench::process_usage();
   for (auto& ctx : contexts) ctx->TryCancel();
   for (auto& t : clients) t.join();
   Row row;
@@ -242,25 +199,11 @@ Row idle_case(const std::string& dir, double seconds, int subscribers) {
 } // namespace
 
 int main(int argc, char** argv) {
-  double seconds = 3;
-  bool json = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--json") {
-      json = true;
-    } else if (arg == "--seconds" && i + 1 < argc) {
-      seconds = std::atof(argv[++i]);
-    } else {
-      std::fprintf(stderr, "usage: daemon_hub_latency [--seconds N] [--json]\n");
-      return 2;
-    }
-  }
-  if (!(seconds > 0 && seconds <= 600)) {
-    std::fprintf(stderr, "daemon_hub_latency: --seconds must be in (0, 600]\n");
-    return 2;
-  }
-  std::string dir = (std::filesystem::temp_directory_path() / "penshape-bench-XXXXXX").string();
-  if (::mkdtemp(dir.data()) == nullptr) return 1;
+  const auto args = penshape::bench::parse_seconds_args(argc, argv, "daemon_hub_latency", 3);
+  if (!args) return 2;
+  const double seconds = args->seconds;
+  const bool json = args->json;
+  const std::string dir = penshape::bench::make_scratch_dir();
   const int samples = static_cast<int>(seconds * 1000);
 
   std::vector<Row> rows;

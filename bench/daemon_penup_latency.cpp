@@ -11,7 +11,6 @@
 //
 //   build/release/bench/daemon_penup_latency [--rounds N] [--json]
 #include <grpcpp/grpcpp.h>
-#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -27,6 +26,7 @@
 #include <thread>
 #include <vector>
 
+#include "bench_support.hpp"
 #include "penshape/daemon/recognizing_analyzer.hpp"
 #include "penshape/daemon/sample_source.hpp"
 #include "penshape/daemon/server.hpp"
@@ -80,21 +80,8 @@ class StrokeSource final : public penshape::daemon::SampleSource {
   penshape::daemon::SampleSink* sink_ = nullptr;
 };
 
-struct Percentiles {
-  double p50 = 0, p99 = 0, max = 0;
-  std::size_t n = 0;
-};
-
-Percentiles percentiles(std::vector<double> v) {
-  Percentiles p;
-  if (v.empty()) return p;
-  std::sort(v.begin(), v.end());
-  p.n = v.size();
-  p.p50 = v[v.size() / 2];
-  p.p99 = v[std::min(v.size() - 1, static_cast<std::size_t>(0.99 * static_cast<double>(v.size())))];
-  p.max = v.back();
-  return p;
-}
+using penshape::bench::Percentiles;
+using penshape::bench::percentiles;
 
 void print_row(bool json, const char* name, const Percentiles& p, const char* unit,
                const char* target) {
@@ -116,24 +103,6 @@ struct PhaseResult {
   double cpu_percent = 0.0; // process CPU time / wall time while replaying (server + subscriber)
   double rss_mb = 0.0;      // peak resident set of the whole process (VmHWM)
 };
-
-double process_cpu_seconds() {
-  rusage u{};
-  ::getrusage(RUSAGE_SELF, &u);
-  const auto sec = [](const timeval& t) {
-    return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_usec) * 1e-6;
-  };
-  return sec(u.ru_utime) + sec(u.ru_stime);
-}
-
-double peak_rss_mb() {
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while (std::getline(status, line)) {
-    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
-  }
-  return 0.0;
-}
 
 // Replays every stroke `rounds` times at 1 kHz through a fresh penshaped with one gRPC subscriber
 // (samples, shapes, and previews when asked: previews then run on the idle lane while drawing).
@@ -180,7 +149,7 @@ PhaseResult run_phase(const std::string& dir, const penshape::drivers::ReplayRes
   });
   while (server.hub().subscriber_count() < 1) std::this_thread::sleep_for(1ms);
   std::this_thread::sleep_for(100ms);
-  const double cpu0 = process_cpu_seconds();
+  const double cpu0 = penshape::bench::process_usage().cpu_seconds;
   const auto wall0 = std::chrono::steady_clock::now();
   std::uint64_t id = 0;
   for (int r = 0; r < rounds; ++r) {
@@ -193,8 +162,9 @@ PhaseResult run_phase(const std::string& dir, const penshape::drivers::ReplayRes
   reader.join();
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  result.cpu_percent = 100.0 * (process_cpu_seconds() - cpu0) / wall;
-  result.rss_mb = peak_rss_mb();
+  const penshape::bench::ProcessUsage used = penshape::bench::process_usage();
+  result.cpu_percent = 100.0 * (used.cpu_seconds - cpu0) / wall;
+  result.rss_mb = static_cast<double>(used.peak_rss_kb) / 1024.0;
   for (const auto& [sid, t] : delivered_at) {
     if (up_at.count(sid) != 0) {
       result.penup_ms.push_back(static_cast<double>(t - up_at[sid]) / 1000.0);
@@ -237,8 +207,7 @@ int main(int argc, char** argv) {
     }
   }
 
-  const std::string dir = "/tmp/penshape-bench-" + std::to_string(::getpid());
-  std::filesystem::create_directories(dir);
+  const std::string dir = penshape::bench::make_scratch_dir();
   const PhaseResult plain = run_phase(dir, decoded, analyzer, rounds, false);
   const PhaseResult with_previews = run_phase(dir, decoded, analyzer, rounds, true);
   std::filesystem::remove_all(dir);
