@@ -1,6 +1,7 @@
 #include "pipeline.hpp"
 
 #include <chrono>
+#include <utility>
 
 #include "call_runner.hpp"
 #include "penshape/daemon/proto_convert.hpp"
@@ -42,9 +43,7 @@ void Pipeline::stroke_started(const std::string& device_id, std::uint64_t stroke
     Drawing& drawing = drawing_[device_id];
     drawing.ended->store(true); // a stroke that never finished (device reset): its preview stops
     drawing.ended = std::make_shared<std::atomic<bool>>(false);
-    drawing.partial = Stroke{};
-    drawing.partial.id = stroke_id;
-    if (known) drawing.partial.tablet = device.tablet;
+    drawing.restart(stroke_id, known ? device.tablet : TabletInfo{});
   }
 }
 
@@ -59,9 +58,10 @@ void Pipeline::sample(const std::string& device_id, std::uint64_t stroke_id,
   if (!state_.analyzer || stroke_id == 0) return;
   std::lock_guard lock(mutex_);
   const auto it = drawing_.find(device_id);
-  if (it == drawing_.end() || it->second.partial.id != stroke_id) return;
-  if (it->second.partial.samples.size() >= state_.limits.max_stroke_samples) return;
-  it->second.partial.samples.push_back(sample);
+  if (it == drawing_.end() || it->second.stroke_id != stroke_id) return;
+  if (it->second.samples >= state_.limits.max_stroke_samples) return;
+  it->second.open.push_back(sample);
+  ++it->second.samples;
   maybe_preview(device_id, it->second);
 }
 
@@ -72,9 +72,22 @@ void Pipeline::maybe_preview(const std::string& device_id, Drawing& drawing) {
   if (!state_.hub.wants_previews()) return;
   drawing.preview_running = true;
   drawing.last_preview = now;
-  const PenSettings settings = settings_for(state_, drawing.partial.tablet);
-  auto job = [this, device_id, partial = drawing.partial, settings](const StopCondition& stop) {
+  const PenSettings settings = settings_for(state_, drawing.tablet);
+  if (!drawing.open.empty()) {
+    drawing.sealed.push_back(
+        std::make_shared<const std::vector<PenSample>>(std::exchange(drawing.open, {})));
+  }
+  auto job = [this, device_id, id = drawing.stroke_id, tablet = drawing.tablet,
+              blocks = drawing.sealed, count = drawing.samples,
+              settings](const StopCondition& stop) {
     try {
+      Stroke partial; // assembled here, on the preview lane
+      partial.id = id;
+      partial.tablet = tablet;
+      partial.samples.reserve(count);
+      for (const auto& block : blocks) {
+        partial.samples.insert(partial.samples.end(), block->begin(), block->end());
+      }
       std::vector<v1::Shape> candidates =
           state_.analyzer->preview(partial, settings, cancel_hook(stop));
       if (!candidates.empty()) {
@@ -113,8 +126,10 @@ void Pipeline::stroke_finished(const std::string& device_id, Stroke stroke) {
     if (it != drawing_.end()) it->second.ended->store(true);
     if (it != drawing_.end() && !it->second.preview_running)
       drawing_.erase(it);
-    else if (it != drawing_.end())
-      it->second.partial = Stroke{}; // its preview job still runs (and stops soon)
+    else if (it != drawing_.end()) {
+      // Its preview job still runs (and stops soon): drop the samples, keep the entry.
+      it->second.restart(0, TabletInfo{});
+    }
   }
   if (!state_.analyzer) {
     publish_stroke(state_.hub, device_id, stroke, nullptr,

@@ -10,6 +10,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <vector>
 
 #include "daemon_state.hpp"
 
@@ -33,13 +34,27 @@ class Pipeline final : public SampleSink {
   void wait_idle();
 
  private:
-  // The stroke a device is drawing, kept only when there is an analyzer (for previews).
+  // The stroke a device is drawing, kept only when there is an analyzer (for previews). Its
+  // samples are kept in sealed, shared blocks plus an open tail, so that asking for a preview
+  // costs the reader thread a few pointer copies, never a copy of the whole stroke.
   struct Drawing {
-    Stroke partial;
+    std::uint64_t stroke_id = 0;
+    TabletInfo tablet;
+    std::vector<std::shared_ptr<const std::vector<PenSample>>> sealed;
+    std::vector<PenSample> open;
+    std::size_t samples = 0;
     std::chrono::steady_clock::time_point last_preview{};
     bool preview_running = false;
     // Set when the stroke ends: its preview job (if any) stops.
     std::shared_ptr<std::atomic<bool>> ended = std::make_shared<std::atomic<bool>>(false);
+
+    void restart(std::uint64_t id, const TabletInfo& t) {
+      stroke_id = id;
+      tablet = t;
+      sealed.clear();
+      open.clear();
+      samples = 0;
+    }
   };
   void job_started();
   void job_done();
