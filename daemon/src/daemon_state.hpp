@@ -5,6 +5,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -37,7 +38,7 @@ struct DaemonState {
               std::map<std::string, PenSettingsUpdate> per_device)
       : limits(l),
         pool(l.worker_threads, l.worker_queue_jobs),
-        hub(l.max_subscribers),
+        hub(l.max_subscribers, l.max_raw_report_subscribers),
         settings(defaults, std::move(per_device)) {}
 
   const Limits limits;
@@ -61,5 +62,9 @@ PenSettings settings_for(const DaemonState& state, const TabletInfo& tablet);
 void publish_stroke(ShapeHub& hub, const std::string& device_id, const Stroke& stroke,
                     const StrokeAnalysis* analysis, const std::string& not_analysed,
                     const v1::Timings& timings);
+
+// Publishes one raw input report (RawReport). The caller checks hub.wants_raw_reports() first.
+void publish_raw_report(ShapeHub& hub, const std::string& device_id,
+                        std::span<const std::uint8_t> bytes, std::int64_t time_us);
 
 } // namespace penshape::daemon
