@@ -1,6 +1,7 @@
 #include "record_command_capture.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 
 #include "penshape/drivers/hid_descriptor.hpp"
@@ -21,6 +22,19 @@ std::uint16_t usb_id(std::uint32_t value, const char* field) {
                                 std::to_string(value) + " is not a 16-bit id");
   }
   return static_cast<std::uint16_t>(value);
+}
+
+// " 05 0d …": hid-recorder's byte lists.
+std::string hex(const std::vector<std::uint8_t>& bytes) {
+  std::string out;
+  out.reserve(bytes.size() * 3);
+  constexpr const char* kDigits = "0123456789abcdef";
+  for (const std::uint8_t b : bytes) {
+    out += ' ';
+    out += kDigits[b >> 4U];
+    out += kDigits[b & 15U];
+  }
+  return out;
 }
 
 } // namespace
@@ -64,8 +78,23 @@ CaptureWriter::CaptureWriter(std::ostream& out, const drivers::Recording& header
     text += "# " + one_line(comment.substr(begin, end - begin)) + "\n";
     begin = end + 1;
   }
+  // hid-recorder's own order (D:, R:, N:, P:, I:, then the events after a second D:), so a
+  // capture diffs cleanly against one made by hid-recorder; vendor strings are penshape comments.
   text += "D: 0\n";
-  text += drivers::hid_recorder_header(header);
+  text += "R: " + std::to_string(header.descriptor.size()) + hex(header.descriptor) + "\n";
+  text += "N: " + header.identity.name + "\n";
+  text += "P: " + header.phys + "\n";
+  if (header.has_identity) {
+    char ids[48];
+    std::snprintf(ids, sizeof ids, "I: %x %04x %04x\n", static_cast<unsigned>(header.identity.bus),
+                  static_cast<unsigned>(header.identity.vendor_id),
+                  static_cast<unsigned>(header.identity.product_id));
+    text += ids;
+  }
+  for (const auto& [index, bytes] : header.vendor_strings) {
+    text += "# penshape-string: " + std::to_string(index) + hex(bytes) + "\n";
+  }
+  text += "D: 0\n";
   put(text);
   header_bytes_ = bytes_;
 }

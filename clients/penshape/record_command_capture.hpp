@@ -4,10 +4,11 @@
 // events), so the file replays here (`penshape replay --local`, `penshaped --replay`) and in
 // hid-tools (hid-replay) exactly like the device.
 //
-// Layout: `#` comment lines saying where it came from, `D: 0`, then the drivers' hid-recorder
-// header (N:, P:, I:, `# penshape-string:` vendor strings, R:), then one `E: sec.usec len bytes`
-// line per report. Times are relative to the first report written, as hid-recorder's are, and
-// never decrease (a clock that steps back repeats the previous time).
+// Layout, as hid-recorder writes it: `#` comment lines saying where it came from, `D: 0`, R:, N:,
+// P:, I: (left out when bus and ids are unknown), the vendor strings as `# penshape-string:`
+// comments (recording.hpp), `D: 0`, then one `E: sec.usec len bytes` line per report. Times are
+// relative to the first report written, as hid-recorder's are, and never decrease (a clock that
+// steps back repeats the previous time).
 #include <cstdint>
 #include <deque>
 #include <optional>

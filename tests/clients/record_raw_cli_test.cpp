@@ -119,7 +119,9 @@ TEST(RecordRawCli, CapturesTheDevicesOwnDescriptorAndEveryReport) {
   ASSERT_EQ(captured.size(), original.size());
   for (std::size_t i = 0; i < original.size(); ++i) {
     ASSERT_EQ(captured[i], original[i]) << "report " << i;
-    if (i > 0) ASSERT_LE(event_time_us(captured[i - 1]), event_time_us(captured[i])) << i;
+    if (i > 0) {
+      ASSERT_LE(event_time_us(captured[i - 1]), event_time_us(captured[i])) << i;
+    }
   }
   EXPECT_EQ(event_time_us(captured.front()), 0);
   // Parsed, it is the same device and stream.
