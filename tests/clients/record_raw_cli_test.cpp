@@ -89,6 +89,12 @@ struct RecordedReplay {
     daemon.signal(SIGTERM);
     daemon_exit_code = daemon.wait();
   }
+  ~RecordedReplay() {
+    std::error_code ignored;
+    fs::remove_all(file.parent_path(), ignored);
+  }
+  RecordedReplay(const RecordedReplay&) = delete;
+  RecordedReplay& operator=(const RecordedReplay&) = delete;
   std::string address;
   fs::path file;
   ChildProcess daemon;
@@ -194,6 +200,7 @@ TEST(RecordRawCli, RefusesADaemonWithoutRawReportsUnlessDecoded) {
   daemon.source->draw("pen-a", down);
   ASSERT_EQ(record.wait(), 0) << record.output();
   EXPECT_EQ(lines_starting(file, "E: ").size(), down.size() + 2); // hover, stroke, tip up
+  fs::remove_all(file.parent_path());
 }
 
 TEST(RecordRawCli, WaitStopsCleanlyWhenNoTabletComes) {
@@ -206,6 +213,7 @@ TEST(RecordRawCli, WaitStopsCleanlyWhenNoTabletComes) {
   EXPECT_NE(record.output().find("no tablet was attached; nothing recorded"), std::string::npos)
       << record.output();
   EXPECT_FALSE(fs::exists(file));
+  fs::remove_all(file.parent_path());
 }
 
 TEST(RecordRawCli, BadUsageExitsWithTwo) {
