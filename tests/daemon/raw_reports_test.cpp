@@ -12,6 +12,7 @@
 #include <thread>
 #include <vector>
 
+#include "penshape/daemon/config.hpp"
 #include "penshape/daemon/device_manager_source.hpp"
 #include "penshape/daemon/server.hpp"
 #include "penshape/daemon/shape_hub.hpp"
@@ -154,6 +155,20 @@ TEST(RawReportsHub, SlowRawSubscriberLosesOnlyItsOldestReports) {
     EXPECT_EQ(d.event->raw_report().time_us(), t);
     EXPECT_EQ(d.dropped, 0U);
   }
+}
+
+TEST(RawReportsHub, TheLimitIsAConfigKeyAndZeroTurnsRawReportsOff) {
+  EXPECT_EQ(daemon::parse_config("", "empty.conf").limits.max_raw_report_subscribers, 8U);
+  const auto config = daemon::parse_config("max_raw_report_subscribers = 0\n", "test.conf");
+  EXPECT_EQ(config.limits.max_raw_report_subscribers, 0U);
+  EXPECT_ANY_THROW(daemon::parse_config("max_raw_report_subscribers = 5000\n", "test.conf"));
+  daemon::ShapeHub hub(8, config.limits.max_raw_report_subscribers);
+  daemon::EventFilter raw;
+  raw.raw_reports = true;
+  daemon::ShapeHub::Refusal why = daemon::ShapeHub::Refusal::kNone;
+  EXPECT_EQ(hub.subscribe(raw, 4, &why), nullptr);
+  EXPECT_EQ(why, daemon::ShapeHub::Refusal::kRawFull);
+  EXPECT_FALSE(hub.wants_raw_reports());
 }
 
 // --- over gRPC ----------------------------------------------------------------------------------
