@@ -2,6 +2,8 @@
 // reader thread would), the daemon's pipeline publishes them to the shape hub, and subscribers
 // receive them — in process straight from the hub (the baseline: no gRPC) and as real gRPC
 // clients over a unix socket. Latency = sample emitted (CLOCK_MONOTONIC) → subscriber holds it.
+// The source hands raw reports to the daemon the way the device manager source does (only while
+// someone captures them); the last case measures a sample subscriber beside one raw capture.
 // Also the process's CPU use (utime + stime from /proc/self/stat) and resident memory
 // (/proc/self/status), idle and under load. The clients run in this process too, so CPU and RSS
 // include them: an upper bound for the daemon alone.
@@ -11,6 +13,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -53,6 +56,7 @@ class PacedSource final : public penshape::daemon::SampleSource {
   // Emits `count` samples at `rate_hz`, blocking.
   void emit(int count, int rate_hz) {
     const auto period = std::chrono::microseconds(1'000'000 / rate_hz);
+    std::array<std::uint8_t, 8> report{0x02, 0, 0x10, 0x27, 0x64, 0x00, 0x00, 0x01};
     auto next = std::chrono::steady_clock::now();
     for (int i = 0; i < count; ++i) {
       std::this_thread::sleep_until(next);
@@ -63,6 +67,12 @@ class PacedSource final : public penshape::daemon::SampleSource {
       s.tip = true;
       s.in_range = true;
       s.time_us = monotonic_us();
+      // The device manager source's read path: the report itself first, only while someone
+      // captures raw reports.
+      if (sink_->wants_raw_reports()) {
+        report[1] = static_cast<std::uint8_t>(i);
+        sink_->raw_report("bench", report, s.time_us);
+      }
       sink_->sample("bench", 1, s);
     }
   }
@@ -81,8 +91,11 @@ struct Row {
   long rss_kb = 0;
 };
 
-// Runs one case: `grpc_subscribers` gRPC clients (or one in-process hub subscription when 0).
-Row run_case(const std::string& name, int grpc_subscribers, int samples, const std::string& dir) {
+// Runs one case: `grpc_subscribers` gRPC clients (or one in-process hub subscription when 0),
+// beside `raw_captures` gRPC clients taking raw reports (as `penshape record` does) whose own
+// latency is not measured.
+Row run_case(const std::string& name, int grpc_subscribers, int samples, const std::string& dir,
+             int raw_captures = 0) {
   auto source = std::make_shared<PacedSource>();
   penshape::daemon::ServerOptions options;
   options.address = "unix:" + dir + "/bench.sock";
@@ -137,7 +150,24 @@ Row run_case(const std::string& name, int grpc_subscribers, int samples, const s
       });
     }
   }
-  while (server.hub().subscriber_count() < static_cast<std::size_t>(row.subscribers)) {
+  std::vector<std::unique_ptr<grpc::ClientContext>> capture_contexts;
+  std::vector<std::thread> captures;
+  for (int c = 0; c < raw_captures; ++c) {
+    capture_contexts.push_back(std::make_unique<grpc::ClientContext>());
+    captures.emplace_back([&address = options.address, ctx = capture_contexts.back().get()] {
+      auto live =
+          v1::Live::NewStub(grpc::CreateChannel(address, grpc::InsecureChannelCredentials()));
+      v1::SubscribeRequest request;
+      request.set_include_raw_reports(true);
+      auto reader = live->Subscribe(ctx, request);
+      v1::LiveEvent event;
+      while (reader->Read(&event)) {
+      }
+      (void)reader->Finish();
+    });
+  }
+  while (server.hub().subscriber_count() <
+         static_cast<std::size_t>(row.subscribers + raw_captures)) {
     std::this_thread::sleep_for(1ms);
   }
   std::this_thread::sleep_for(100ms); // connections settle
@@ -145,6 +175,8 @@ Row run_case(const std::string& name, int grpc_subscribers, int samples, const s
   const auto t0 = std::chrono::steady_clock::now();
   source->emit(samples, 1000);
   for (auto& t : readers) t.join();
+  for (auto& ctx : capture_contexts) ctx->TryCancel();
+  for (auto& t : captures) t.join();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const penshape::bench::ProcessUsage after = penshape::bench::process_usage();
   direct.reset();
@@ -212,6 +244,7 @@ int main(int argc, char** argv) {
   rows.push_back(run_case("baseline: hub direct", 0, samples, dir));
   rows.push_back(run_case("gRPC, 1 subscriber", 1, samples, dir));
   rows.push_back(run_case("gRPC, 8 subscribers", 8, samples, dir));
+  rows.push_back(run_case("gRPC, 1 + raw capture", 1, samples, dir, 1));
   std::filesystem::remove_all(dir);
 
   if (json) {

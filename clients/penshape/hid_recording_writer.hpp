@@ -1,7 +1,8 @@
 #pragma once
 // Writes pen samples as a hid-recorder text file (the format of the hid-tools project: `R:`
 // report descriptor, `N:` name, `P:` physical path, `I:` bus vid pid, `E: sec.usec len bytes`),
-// for `penshape record`.
+// for `penshape record --decoded` (a daemon without raw reports; record_command_capture.hpp
+// writes the device's own bytes).
 //
 // penshaped's API delivers decoded samples, not the tablet's raw reports, so the file carries a
 // synthetic descriptor: a standard HID digitizer pen (usage page 0x0D) whose logical ranges are

@@ -111,6 +111,8 @@ void apply_global_key(const LineContext& at, const std::string& key, std::string
       {"max_subscribers", [&] { l.max_subscribers = parse_size(at, key, value, 1, 4'096); }},
       {"subscriber_queue_events",
        [&] { l.subscriber_queue_events = parse_size(at, key, value, 1, 1'000'000); }},
+      {"max_raw_report_subscribers",
+       [&] { l.max_raw_report_subscribers = parse_size(at, key, value, 0, 4'096); }},
   };
   const auto it = handlers.find(key);
   if (it != handlers.end()) {

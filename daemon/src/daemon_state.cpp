@@ -35,6 +35,20 @@ void to_proto(const DeviceDescriptor& device, v1::DeviceInfo* out) {
   to_proto(device.tablet, out->mutable_tablet());
   out->set_source(device.source);
   out->set_replay(device.replay);
+  const HidDescription& hid = device.hid;
+  if (hid.report_descriptor.empty()) return; // nothing to capture a device by
+  v1::HidFacts* facts = out->mutable_hid();
+  facts->set_report_descriptor(hid.report_descriptor.data(), hid.report_descriptor.size());
+  facts->set_name(hid.name);
+  facts->set_phys(hid.phys);
+  facts->set_bus(static_cast<std::uint32_t>(hid.bus));
+  facts->set_vendor_id(hid.vendor_id);
+  facts->set_product_id(hid.product_id);
+  for (const auto& [index, bytes] : hid.vendor_strings) {
+    v1::VendorString* s = facts->add_vendor_strings();
+    s->set_index(index);
+    s->set_data(bytes.data(), bytes.size());
+  }
 }
 
 PenSettings settings_for(const DaemonState& state, const TabletInfo& tablet) {
@@ -60,6 +74,16 @@ void publish_stroke(ShapeHub& hub, const std::string& device_id, const Stroke& s
   for (const auto& alternative : analysis->alternatives) *s->add_alternatives() = alternative;
   *s->mutable_timings() = timings;
   hub.publish(std::move(shape));
+}
+
+void publish_raw_report(ShapeHub& hub, const std::string& device_id,
+                        std::span<const std::uint8_t> bytes, std::int64_t time_us) {
+  v1::LiveEvent event;
+  event.set_device_id(device_id);
+  v1::RawReport* report = event.mutable_raw_report();
+  report->set_data(bytes.data(), bytes.size());
+  report->set_time_us(time_us);
+  hub.publish(std::move(event));
 }
 
 } // namespace penshape::daemon

@@ -5,6 +5,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -47,7 +48,7 @@ struct DaemonState {
         pool(l.worker_threads, l.worker_queue_jobs, WorkerPriority::kBatch),
         stroke_pool(l.stroke_worker_threads, l.worker_queue_jobs, WorkerPriority::kInteractive),
         preview_pool(1, kPreviewQueueJobs, WorkerPriority::kIdle),
-        hub(l.max_subscribers),
+        hub(l.max_subscribers, l.max_raw_report_subscribers),
         settings(defaults, std::move(per_device)) {}
 
   // Previews in flight are at most one per device (pipeline.hpp); more queued would be stale.
@@ -76,5 +77,9 @@ PenSettings settings_for(const DaemonState& state, const TabletInfo& tablet);
 void publish_stroke(ShapeHub& hub, const std::string& device_id, const Stroke& stroke,
                     const StrokeAnalysis* analysis, const std::string& not_analysed,
                     const v1::Timings& timings);
+
+// Publishes one raw input report (RawReport). The caller checks hub.wants_raw_reports() first.
+void publish_raw_report(ShapeHub& hub, const std::string& device_id,
+                        std::span<const std::uint8_t> bytes, std::int64_t time_us);
 
 } // namespace penshape::daemon

@@ -16,7 +16,11 @@ void DeviceManagerSource::start(SampleSink& sink) {
   callbacks.on_sample = [this](drivers::DeviceId id, const PenSample& s) { on_sample(id, s); };
   callbacks.on_stroke = [this](drivers::DeviceId id, Stroke&& s) { on_stroke(id, std::move(s)); };
   const bool live = backend_ != nullptr;
-  manager_ = std::make_unique<drivers::DeviceManager>(std::move(backend_), std::move(callbacks));
+  manager_ = std::make_unique<drivers::DeviceManager>(
+      std::move(backend_), std::move(callbacks), drivers::DeviceManagerOptions{},
+      [this](drivers::DeviceId id, std::span<const std::uint8_t> bytes, std::int64_t t) {
+        on_report(id, bytes, t);
+      });
   if (live) manager_->start();
 }
 
@@ -51,6 +55,16 @@ void DeviceManagerSource::on_attach(const drivers::AttachedDevice& device) {
   d.tablet = device.tablet;
   d.source = device.key;
   d.replay = device.key.rfind("replay", 0) == 0;
+  const drivers::Recording& h = device.header;
+  d.hid.report_descriptor = h.descriptor;
+  d.hid.name = h.identity.name;
+  d.hid.phys = h.phys;
+  if (h.has_identity) {
+    d.hid.bus = h.identity.bus;
+    d.hid.vendor_id = h.identity.vendor_id;
+    d.hid.product_id = h.identity.product_id;
+  }
+  d.hid.vendor_strings = h.vendor_strings;
   {
     std::lock_guard lock(mutex_);
     tracked_[device.id].descriptor = d;
@@ -91,6 +105,19 @@ void DeviceManagerSource::on_sample(drivers::DeviceId id, const PenSample& sampl
   }
   if (started) sink_->stroke_started(name, stroke_id);
   sink_->sample(name, stroke_id, sample);
+}
+
+void DeviceManagerSource::on_report(drivers::DeviceId id, std::span<const std::uint8_t> bytes,
+                                    std::int64_t time_us) {
+  if (!sink_->wants_raw_reports()) return;
+  std::string name;
+  {
+    std::lock_guard lock(mutex_);
+    const auto it = tracked_.find(id);
+    if (it == tracked_.end()) return;
+    name = it->second.descriptor.id;
+  }
+  sink_->raw_report(name, bytes, time_us);
 }
 
 void DeviceManagerSource::on_stroke(drivers::DeviceId id, Stroke&& stroke) {

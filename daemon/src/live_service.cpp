@@ -59,6 +59,12 @@ grpc::Status LiveServiceImpl::subscribe(EventFilter filter, std::size_t capacity
   if (why == ShapeHub::Refusal::kClosed) {
     return {grpc::StatusCode::UNAVAILABLE, "the daemon is shutting down"};
   }
+  if (why == ShapeHub::Refusal::kRawFull) {
+    return {grpc::StatusCode::RESOURCE_EXHAUSTED,
+            "include_raw_reports: too many subscribers take raw reports (limit "
+            "max_raw_report_subscribers = " +
+                std::to_string(state_.limits.max_raw_report_subscribers) + ")"};
+  }
   return {grpc::StatusCode::RESOURCE_EXHAUSTED, "too many subscribers (limit max_subscribers = " +
                                                     std::to_string(state_.limits.max_subscribers) +
                                                     ")"};
@@ -101,6 +107,7 @@ grpc::Status LiveServiceImpl::Subscribe(grpc::ServerContext* context,
   EventFilter filter;
   filter.samples = request->include_samples();
   filter.previews = request->include_previews();
+  filter.raw_reports = request->include_raw_reports();
   filter.device_ids.insert(request->device_ids().begin(), request->device_ids().end());
   std::unique_ptr<Subscription> subscription;
   if (grpc::Status s = subscribe(

@@ -29,6 +29,11 @@ class Pipeline final : public SampleSink {
   void sample(const std::string& device_id, std::uint64_t stroke_id,
               const PenSample& sample) override;
   void stroke_finished(const std::string& device_id, Stroke stroke) override;
+  [[nodiscard]] bool wants_raw_reports() const override { return state_.hub.wants_raw_reports(); }
+  void raw_report(const std::string& device_id, std::span<const std::uint8_t> bytes,
+                  std::int64_t time_us) override {
+    publish_raw_report(state_.hub, device_id, bytes, time_us); // straight through, like samples
+  }
 
   // Returns once every job handed to the workers (analyses, previews) has been published.
   void wait_idle();

@@ -16,7 +16,10 @@ bool EventFilter::accepts(const v1::LiveEvent& event) const {
   switch (event.kind_case()) {
     case v1::LiveEvent::kDeviceAttached:
     case v1::LiveEvent::kDeviceDetached:
-      if (!devices) return false;
+      if (!devices && !raw_reports) return false;
+      break;
+    case v1::LiveEvent::kRawReport:
+      if (!raw_reports) return false;
       break;
     case v1::LiveEvent::kSamples:
       if (!samples) return false;
@@ -87,7 +90,8 @@ std::uint64_t Subscription::dropped_total() const {
   return dropped_total_;
 }
 
-ShapeHub::ShapeHub(std::size_t max_subscribers) : max_subscribers_(max_subscribers) {}
+ShapeHub::ShapeHub(std::size_t max_subscribers, std::size_t max_raw_subscribers)
+    : max_subscribers_(max_subscribers), max_raw_subscribers_(max_raw_subscribers) {}
 
 ShapeHub::~ShapeHub() { close(); }
 
@@ -99,19 +103,25 @@ std::unique_ptr<Subscription> ShapeHub::subscribe(EventFilter filter, std::size_
     refusal = Refusal::kClosed;
   else if (subscribers_.size() >= max_subscribers_)
     refusal = Refusal::kFull;
+  else if (filter.raw_reports && raw_subscribers_.load() >= max_raw_subscribers_)
+    refusal = Refusal::kRawFull;
   if (why != nullptr) *why = refusal;
   if (refusal != Refusal::kNone) return nullptr;
+  const bool raw = filter.raw_reports;
   std::unique_ptr<Subscription> subscription(new Subscription(*this, std::move(filter), capacity));
   subscribers_.push_back(subscription.get());
   if (subscription->filter_.previews) preview_subscribers_.fetch_add(1);
+  if (raw) raw_subscribers_.fetch_add(1);
   return subscription;
 }
 
 void ShapeHub::unsubscribe(Subscription* subscription) {
   std::unique_lock lock(mutex_);
   const auto it = std::remove(subscribers_.begin(), subscribers_.end(), subscription);
-  if (it != subscribers_.end() && subscription->filter_.previews) preview_subscribers_.fetch_sub(1);
+  if (it == subscribers_.end()) return;
   subscribers_.erase(it, subscribers_.end());
+  if (subscription->filter_.previews) preview_subscribers_.fetch_sub(1);
+  if (subscription->filter_.raw_reports) raw_subscribers_.fetch_sub(1);
 }
 
 void ShapeHub::publish(v1::LiveEvent event) {

@@ -16,8 +16,11 @@ struct DeviceManager::Device {
 };
 
 DeviceManager::DeviceManager(std::unique_ptr<DeviceBackend> backend, DeviceCallbacks callbacks,
-                             DeviceManagerOptions options)
-    : backend_(std::move(backend)), callbacks_(std::move(callbacks)), options_(options) {}
+                             DeviceManagerOptions options, DeviceReportCallback on_report)
+    : backend_(std::move(backend)),
+      callbacks_(std::move(callbacks)),
+      options_(options),
+      on_report_(std::move(on_report)) {}
 
 DeviceManager::~DeviceManager() { stop(); }
 
@@ -57,19 +60,23 @@ DeviceId DeviceManager::start_reader(AttachedDevice info, const DeviceProfile& p
   d->info = info;
   d->source = std::move(source);
   const DeviceId id = info.id;
-  d->pipeline =
-      std::make_unique<PenPipeline>(profile, options_.segmenter,
-                                    PenCallbacks{.on_sample =
-                                                     [this, id](const PenSample& s) {
-                                                       if (callbacks_.on_sample)
-                                                         callbacks_.on_sample(id, s);
-                                                     },
-                                                 .on_stroke =
-                                                     [this, id](Stroke&& s) {
-                                                       s.id = next_stroke_id_++;
-                                                       if (callbacks_.on_stroke)
-                                                         callbacks_.on_stroke(id, std::move(s));
-                                                     }});
+  PenCallbacks callbacks;
+  callbacks.on_sample = [this, id](const PenSample& s) {
+    if (callbacks_.on_sample) callbacks_.on_sample(id, s);
+  };
+  callbacks.on_stroke = [this, id](Stroke&& s) {
+    s.id = next_stroke_id_++;
+    if (callbacks_.on_stroke) callbacks_.on_stroke(id, std::move(s));
+  };
+  // Only a manager asked to pass reports on adds a call per report to the read path.
+  ReportCallback on_report;
+  if (on_report_) {
+    on_report = [this, id](std::span<const std::uint8_t> bytes, std::int64_t t) {
+      on_report_(id, bytes, t);
+    };
+  }
+  d->pipeline = std::make_unique<PenPipeline>(profile, options_.segmenter, std::move(callbacks),
+                                              std::move(on_report));
   Device* raw = d.get();
   {
     std::lock_guard lock(mutex_);
@@ -103,18 +110,36 @@ DeviceId DeviceManager::attach_source(const DeviceIdentity& identity,
                                       std::span<const std::uint8_t> descriptor,
                                       const VendorStrings& vendor_strings,
                                       std::unique_ptr<ReportSource> source, std::string key) {
-  const DeviceProfile profile = build_profile(identity, descriptor, vendor_strings);
+  Recording header;
+  header.identity = identity;
+  header.has_identity = identity.vendor_id != 0 || identity.product_id != 0;
+  header.descriptor.assign(descriptor.begin(), descriptor.end());
+  header.vendor_strings = vendor_strings;
+  return attach_with_header(std::move(header), std::move(source), std::move(key));
+}
+
+DeviceId DeviceManager::attach_with_header(Recording header, std::unique_ptr<ReportSource> source,
+                                           std::string key) {
+  const DeviceProfile profile =
+      build_profile(header.identity, header.descriptor, header.vendor_strings);
   AttachedDevice info;
   info.key = key.empty() ? "source:" + std::to_string(next_id_.load()) : std::move(key);
   info.tablet = profile.info;
   info.protocol = profile.protocol;
+  info.header = std::move(header);
   return start_reader(std::move(info), profile, std::move(source));
 }
 
 DeviceId DeviceManager::attach_replay(const Recording& recording, ReplaySpeed speed) {
-  return attach_source(recording.identity, recording.descriptor, recording.vendor_strings,
-                       std::make_unique<RecordingSource>(recording.events, speed),
-                       "replay:" + std::to_string(next_id_.load()));
+  Recording header; // everything but the reports, which the source gets
+  header.identity = recording.identity;
+  header.has_identity = recording.has_identity;
+  header.phys = recording.phys;
+  header.descriptor = recording.descriptor;
+  header.vendor_strings = recording.vendor_strings;
+  return attach_with_header(std::move(header),
+                            std::make_unique<RecordingSource>(recording.events, speed),
+                            "replay:" + std::to_string(next_id_.load()));
 }
 
 void DeviceManager::reap_finished() {
@@ -168,6 +193,12 @@ void DeviceManager::scan_once() {
       info.key = c.key;
       info.tablet = profile.info;
       info.protocol = profile.protocol;
+      info.header.identity = c.identity;
+      if (!c.hid_name.empty()) info.header.identity.name = c.hid_name;
+      info.header.has_identity = true;
+      info.header.phys = c.phys;
+      info.header.descriptor = c.descriptor;
+      info.header.vendor_strings = strings;
       start_reader(std::move(info), profile, std::move(source));
     } catch (const std::exception& e) {
       // A device we cannot use now (permissions, a half-initialised node): the next rescan or

@@ -62,16 +62,21 @@ std::vector<std::uint8_t> read_descriptor(const std::string& path) {
   return out;
 }
 
-// Bus and name from the HID device's uevent (HID_ID=0003:0000056A:00000061, HID_NAME=…).
-void read_uevent(const std::string& path, DeviceIdentity& id) {
+// Bus and name from the HID device's uevent (HID_ID=0003:0000056A:00000061, HID_NAME=…); the
+// kernel's name and phys too when asked (what hid-recorder writes as N: and P:).
+void read_uevent(const std::string& path, DeviceIdentity& id, std::string* hid_name = nullptr,
+                 std::string* phys = nullptr) {
   const std::string node = fs::path(path).filename().string();
   std::ifstream in(fs::path("/sys/class/hidraw") / node / "device/uevent");
   std::string line;
   while (std::getline(in, line)) {
     if (line.rfind("HID_ID=", 0) == 0) {
       id.bus = static_cast<Bus>(std::stoul(line.substr(7, 4), nullptr, 16));
-    } else if (line.rfind("HID_NAME=", 0) == 0 && id.name.empty()) {
-      id.name = line.substr(9);
+    } else if (line.rfind("HID_NAME=", 0) == 0) {
+      if (id.name.empty()) id.name = line.substr(9);
+      if (hid_name != nullptr) *hid_name = line.substr(9);
+    } else if (line.rfind("HID_PHYS=", 0) == 0 && phys != nullptr) {
+      *phys = line.substr(9);
     }
   }
 }
@@ -158,7 +163,7 @@ class HidrawBackend final : public DeviceBackend {
       c.identity.vendor_id = d->vendor_id;
       c.identity.product_id = d->product_id;
       c.identity.name = narrow(d->product_string);
-      read_uevent(c.key, c.identity);
+      read_uevent(c.key, c.identity, &c.hid_name, &c.phys);
       // Only tablets we know, or anything whose descriptor declares a pen.
       c.descriptor = read_descriptor(c.key);
       if (find_tablet(d->vendor_id, d->product_id) == nullptr) {
@@ -222,7 +227,9 @@ std::size_t record_hidraw(const std::string& path, std::ostream& out, const std:
   ensure_hid_init();
   Recording header;
   header.descriptor = read_descriptor(path);
-  read_uevent(path, header.identity);
+  std::string hid_name;
+  read_uevent(path, header.identity, &hid_name, &header.phys);
+  if (!hid_name.empty()) header.identity.name = hid_name;
   {
     hid_device_info* info = hid_enumerate(0, 0);
     for (const hid_device_info* d = info; d != nullptr; d = d->next) {

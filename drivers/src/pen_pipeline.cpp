@@ -3,11 +3,12 @@
 namespace penshape::drivers {
 
 PenPipeline::PenPipeline(const DeviceProfile& profile, SegmenterOptions options,
-                         PenCallbacks callbacks)
+                         PenCallbacks callbacks, ReportCallback on_report)
     : decoder_(profile.decoder),
       tablet_(profile.info),
       segmenter_(profile.info, options),
-      callbacks_(std::move(callbacks)) {}
+      callbacks_(std::move(callbacks)),
+      on_report_(std::move(on_report)) {}
 
 void PenPipeline::deliver(std::optional<Stroke>&& stroke) {
   if (!stroke) return;
@@ -17,6 +18,7 @@ void PenPipeline::deliver(std::optional<Stroke>&& stroke) {
 
 void PenPipeline::on_report(std::span<const std::uint8_t> report, std::int64_t time_us) {
   ++counters_.reports;
+  if (on_report_) on_report_(report, time_us);
   PenSample s;
   switch (decoder_.decode(report, time_us, s)) {
     case DecodeStatus::kJunk:

@@ -296,7 +296,7 @@ TEST(LiveCli, RecordWritesAHidRecorderFileOfTheSamples) {
   daemon.source->attach("pen-a");
   const auto file = temp_dir("record") / "pen.hid.txt";
   ChildProcess record(
-      {kCli, "record", file.string(), "--strokes", "1", "--address", daemon.address});
+      {kCli, "record", file.string(), "--decoded", "--strokes", "1", "--address", daemon.address});
   ASSERT_TRUE(record.wait_for_output("recording pen-a into")) << record.output();
   const Stroke stroke = daemon.source->draw("pen-a", rectangle_samples());
   ASSERT_EQ(record.wait(), 0) << record.output();
@@ -362,7 +362,7 @@ TEST(LiveCli, RecordedFileReplaysToTheSameSamples) {
   daemon.source->attach("pen-a");
   const auto file = temp_dir("replay") / "pen.hid.txt";
   ChildProcess record(
-      {kCli, "record", file.string(), "--strokes", "1", "--address", daemon.address});
+      {kCli, "record", file.string(), "--decoded", "--strokes", "1", "--address", daemon.address});
   ASSERT_TRUE(record.wait_for_output("recording pen-a into")) << record.output();
   const Stroke stroke = daemon.source->draw("pen-a", rectangle_samples());
   ASSERT_EQ(record.wait(), 0) << record.output();
@@ -457,8 +457,8 @@ TEST(LiveCli, RecordRefusesWhatItCannotRecord) {
     EXPECT_NE(out.find("no device 'pen-z'"), std::string::npos) << out;
   }
   {
-    const auto [code, out] =
-        cli({"record", "/nonexistent-dir/x.txt", "--device", "pen-a", "--address", daemon.address});
+    const auto [code, out] = cli({"record", "/nonexistent-dir/x.txt", "--device", "pen-a",
+                                  "--decoded", "--address", daemon.address});
     EXPECT_EQ(code, 2) << out;
     EXPECT_NE(out.find("cannot write /nonexistent-dir/x.txt"), std::string::npos) << out;
   }
@@ -468,7 +468,7 @@ TEST(LiveCli, RecordStopsWhenTheTabletIsUnplugged) {
   TestDaemon daemon("record-detach");
   daemon.source->attach("pen-a");
   const auto file = temp_dir("detach") / "pen.hid.txt";
-  ChildProcess record({kCli, "record", file.string(), "--address", daemon.address});
+  ChildProcess record({kCli, "record", file.string(), "--decoded", "--address", daemon.address});
   ASSERT_TRUE(record.wait_for_output("recording pen-a into")) << record.output();
   daemon.source->draw("pen-a", rectangle_samples());
   daemon.source->detach("pen-a");

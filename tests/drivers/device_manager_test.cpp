@@ -362,5 +362,94 @@ TEST(DeviceManager, AttachReplayAtOriginalSpeedMatchesFastReplay) {
   expect_same_strokes(j.strokes, fast.strokes);
 }
 
+// The raw-report callback gets every report as read — those that decode to a sample, a report ID
+// the pen layout does not know, an out-of-range frame — each before the sample it decodes to; the
+// attach event carries what a capture's header needs (the kernel's name and phys win).
+TEST(DeviceManager, EveryReportReachesTheReportCallbackBeforeItsSample) {
+  auto backend = std::make_unique<FakeBackend>();
+  FakeBackend* fake = backend.get();
+  Journal j;
+  std::mutex order_mutex;
+  std::vector<std::string> order;
+  std::vector<HidEvent> reports;
+  DeviceCallbacks callbacks = j.callbacks();
+  callbacks.on_sample = [&, inner = callbacks.on_sample](DeviceId id, const PenSample& s) {
+    {
+      std::lock_guard lock(order_mutex);
+      order.push_back("sample " + std::to_string(s.time_us));
+    }
+    inner(id, s);
+  };
+  DeviceManager m(std::move(backend), std::move(callbacks), rescan_every(50ms),
+                  [&](DeviceId, std::span<const std::uint8_t> bytes, std::int64_t t) {
+                    {
+                      std::lock_guard lock(order_mutex);
+                      order.push_back("report " + std::to_string(t));
+                      reports.push_back({t, std::vector<std::uint8_t>(bytes.begin(), bytes.end())});
+                    }
+                    { std::lock_guard wake(j.mutex); } // the waiter is checking or waiting
+                    j.cv.notify_all();
+                  });
+  DeviceCandidate c = penpartner_candidate("/dev/hidraw-fake-raw");
+  c.hid_name = "WACOM Fake HID Name";
+  c.phys = "usb-fake-1/input0";
+  fake->plug(c);
+  m.start();
+  ASSERT_TRUE(j.wait_for([&] { return j.attached.size() == 1 && fake->last_source(); }));
+  {
+    std::lock_guard lock(j.mutex);
+    const Recording& header = j.attached[0].header;
+    EXPECT_EQ(header.identity.name, "WACOM Fake HID Name");
+    EXPECT_EQ(header.phys, "usb-fake-1/input0");
+    EXPECT_TRUE(header.has_identity);
+    EXPECT_EQ(header.identity.vendor_id, 0x056a);
+    EXPECT_EQ(header.identity.product_id, 0x0061);
+    EXPECT_EQ(header.descriptor, penpartner().descriptor);
+    EXPECT_TRUE(header.events.empty());
+  }
+  const std::vector<HidEvent> sent{
+      {1000, pen(true, 100, 200, 50)},
+      {2000, {0x63, 0, 0, 0, 0, 0, 0, 0}}, // another report ID: no sample
+      {3000, pen(true, 0x7fff, 200, 50)},  // beyond x_max (3250): dropped as corrupt
+      {4000, pen(false, 101, 200, 0)},
+      {5000, {0x02}}, // too short: junk
+  };
+  FakeSource* src = fake->last_source();
+  for (const HidEvent& e : sent) src->push(e.bytes, e.time_us);
+  ASSERT_TRUE(j.wait_for([&] {
+    std::lock_guard lock(order_mutex);
+    return reports.size() == sent.size();
+  }));
+  m.stop();
+  std::lock_guard lock(order_mutex);
+  EXPECT_EQ(reports, sent);
+  EXPECT_EQ(order,
+            (std::vector<std::string>{"report 1000", "sample 1000", "report 2000", "report 3000",
+                                      "report 4000", "sample 4000", "report 5000"}));
+}
+
+// Replays hand the recording's own header and every event to the same callback.
+TEST(DeviceManager, ReplaysPassEveryRecordedReportOn) {
+  Recording rec = penpartner();
+  rec.events.resize(200);
+  Journal j;
+  std::mutex mutex;
+  std::vector<HidEvent> reports;
+  DeviceManager m(nullptr, j.callbacks(), {},
+                  [&](DeviceId, std::span<const std::uint8_t> bytes, std::int64_t t) {
+                    std::lock_guard lock(mutex);
+                    reports.push_back({t, std::vector<std::uint8_t>(bytes.begin(), bytes.end())});
+                  });
+  m.attach_replay(rec, ReplaySpeed::kAsFastAsPossible);
+  ASSERT_TRUE(j.wait_for([&] { return j.count("detach:ended") == 1; }));
+  std::lock_guard lock(mutex);
+  EXPECT_EQ(reports, rec.events);
+  std::lock_guard journal_lock(j.mutex);
+  ASSERT_EQ(j.attached.size(), 1U);
+  Recording header = rec;
+  header.events.clear();
+  EXPECT_EQ(j.attached[0].header, header);
+}
+
 } // namespace
 } // namespace penshape::drivers

@@ -4,7 +4,8 @@
 //
 // The manager reports samples and finished strokes; this adapter adds the StrokeStarted the
 // daemon publishes (at the first tip-down sample) and numbers strokes itself so the samples of a
-// stroke and the finished stroke carry the same id.
+// stroke and the finished stroke carry the same id. Every raw report goes to the sink as well, but
+// only while the sink wants_raw_reports(): otherwise the reader thread pays one atomic load.
 #include <atomic>
 #include <chrono>
 #include <map>
@@ -44,6 +45,7 @@ class DeviceManagerSource final : public SampleSource {
   void on_detach(drivers::DeviceId id);
   void on_sample(drivers::DeviceId id, const PenSample& sample);
   void on_stroke(drivers::DeviceId id, Stroke&& stroke);
+  void on_report(drivers::DeviceId id, std::span<const std::uint8_t> bytes, std::int64_t time_us);
 
   std::unique_ptr<drivers::DeviceBackend> backend_;
   std::unique_ptr<drivers::DeviceManager> manager_;

@@ -17,6 +17,7 @@
 // | concurrent subscribers        | 128          | max_subscribers         | RESOURCE_EXHAUSTED |
 // | events queued per subscriber  | 1,024        | subscriber_queue_events | oldest dropped,
 // counted|
+// | raw-report subscribers        | 8            | max_raw_report_subscribers | RES._EXHAUSTED |
 //
 // Why delta >= r / 2^20: the engines approximate disks of radius r by polygons D̄_{a,b} with
 // b - a about delta; their vertex count grows like 4·sqrt(r / (2·delta)), which reaches the core's
@@ -41,6 +42,9 @@ struct Limits {
   std::size_t stroke_worker_threads = 0; // stroke analysis workers; 0: one per hardware thread
   std::size_t max_subscribers = 128;
   std::size_t subscriber_queue_events = 1'024;
+  // Subscribe calls with include_raw_reports at once (each gets every report of its devices, up
+  // to the tablets' report rate); counted within max_subscribers. 0 turns raw reports off.
+  std::size_t max_raw_report_subscribers = 8;
 };
 
 } // namespace penshape::daemon

@@ -6,8 +6,10 @@
 // Threading: a source calls the sink from any of its threads (typically one per device); the sink
 // never blocks for long (it queues work and returns), so a reader thread keeps up with the tablet.
 // Per device, calls arrive in order: attached, then for each stroke started → samples → finished,
-// then detached.
+// then detached. Raw reports, when the sink wants them, come between attached and detached.
 #include <cstdint>
+#include <map>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -17,11 +19,23 @@
 
 namespace penshape::daemon {
 
+// The device as the HID layer describes it: what a capture (hid-recorder header) needs.
+struct HidDescription {
+  std::vector<std::uint8_t> report_descriptor; // empty: unknown (the device cannot be captured)
+  std::string name;                            // kernel HID name (N:)
+  std::string phys;                            // physical path (P:)
+  Bus bus = Bus::kUnknown;                     // I: bus vendor product
+  std::uint16_t vendor_id = 0;
+  std::uint16_t product_id = 0;
+  std::map<std::uint8_t, std::vector<std::uint8_t>> vendor_strings; // index -> string descriptor
+};
+
 struct DeviceDescriptor {
   std::string id;     // stable while attached, unique among attached devices ("hidraw3")
   TabletInfo tablet;  // maxima and resolution of its samples
   std::string source; // device path or recording file name
   bool replay = false;
+  HidDescription hid{};
 };
 
 class SampleSink {
@@ -36,6 +50,14 @@ class SampleSink {
                       const PenSample& sample) = 0;
   // Tip up: the whole stroke (also emitted for a stroke cut short by detach or stop()).
   virtual void stroke_finished(const std::string& device_id, Stroke stroke) = 0;
+  // Whether anyone wants raw reports now. A source asks before each raw_report call, so a reader
+  // thread copies nothing while nobody captures (a cheap, lock-free check).
+  [[nodiscard]] virtual bool wants_raw_reports() const { return false; }
+  // Every input report as the device sent it (before decoding, also those that decode to no
+  // sample), before the samples it decodes to; time_us on the device's clock (the samples'
+  // clock). `bytes` lives only for the call.
+  virtual void raw_report(const std::string& /*device_id*/, std::span<const std::uint8_t> /*bytes*/,
+                          std::int64_t /*time_us*/) {}
 };
 
 class SampleSource {

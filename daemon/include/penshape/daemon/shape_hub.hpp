@@ -5,6 +5,10 @@
 // short lock; a full queue drops its *oldest* event and counts it. The subscriber learns the count
 // with its next event (Delivery::dropped), so a slow reader loses old events, knows how many, and
 // never stalls the producer or the other subscribers.
+//
+// Raw reports are the highest-rate events: a producer builds one only while wants_raw_reports()
+// (some subscriber asked for them; a relaxed atomic load), so they cost nothing otherwise, and at
+// most max_raw_subscribers subscriptions may ask for them at once.
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -31,6 +35,9 @@ struct EventFilter {
   bool strokes = true;  // stroke_started / stroke_finished / shape
   bool samples = false;
   bool previews = false;
+  // raw_report events, and with them device_attached / device_detached of the chosen devices, so
+  // a capture sees in one ordered stream where each device's reports begin and end.
+  bool raw_reports = false;
   std::set<std::string> device_ids; // empty: every device
   [[nodiscard]] bool accepts(const v1::LiveEvent& event) const;
 };
@@ -78,14 +85,16 @@ class Subscription {
 
 class ShapeHub {
  public:
-  explicit ShapeHub(std::size_t max_subscribers);
+  // max_raw_subscribers: how many of them may take raw reports (EventFilter::raw_reports).
+  explicit ShapeHub(std::size_t max_subscribers, std::size_t max_raw_subscribers = 8);
   ~ShapeHub();
   ShapeHub(const ShapeHub&) = delete;
   ShapeHub& operator=(const ShapeHub&) = delete;
 
-  enum class Refusal { kNone, kFull, kClosed };
+  enum class Refusal { kNone, kFull, kRawFull, kClosed };
   // A new subscription with a queue of `capacity` events (>= 1); null when max_subscribers are
-  // subscribed or the hub is closed (`why` says which).
+  // subscribed, when it wants raw reports and max_raw_subscribers already take them, or when the
+  // hub is closed (`why` says which).
   std::unique_ptr<Subscription> subscribe(EventFilter filter, std::size_t capacity,
                                           Refusal* why = nullptr);
 
@@ -94,6 +103,11 @@ class ShapeHub {
   void publish(v1::LiveEvent event);
   // Ends every subscription once its queue is drained; new subscriptions are refused.
   void close();
+
+  // Some subscriber takes raw reports now. Lock-free: producers call it once per report.
+  [[nodiscard]] bool wants_raw_reports() const {
+    return raw_subscribers_.load(std::memory_order_relaxed) != 0;
+  }
 
   [[nodiscard]] std::size_t subscriber_count() const;
   // Some subscriber asked for preview candidates (previews cost geometry: none without a reader).
@@ -105,6 +119,8 @@ class ShapeHub {
   void unsubscribe(Subscription* subscription);
 
   const std::size_t max_subscribers_;
+  const std::size_t max_raw_subscribers_;
+  std::atomic<std::size_t> raw_subscribers_{0}; // changed under mutex_ (exclusive)
   mutable std::shared_mutex mutex_; // guards subscribers_ and closed_; shared while publishing
   std::vector<Subscription*> subscribers_;
   bool closed_ = false;

@@ -45,6 +45,9 @@ struct AttachedDevice {
   std::string key; // backend key, e.g. /dev/hidraw3, or "replay:N"
   TabletInfo tablet;
   Protocol protocol = Protocol::kHid;
+  // What a capture's header needs: identity (kernel HID name when known), phys, the report
+  // descriptor and the vendor strings read at open, as the device gave them (no events).
+  Recording header{};
 };
 
 struct DeviceCallbacks {
@@ -54,11 +57,19 @@ struct DeviceCallbacks {
   std::function<void(DeviceId, Stroke&&)> on_stroke; // Stroke::id unique per manager
 };
 
+// Every input report as read (before decoding; also those that give no sample), on the reader
+// thread before the samples it decodes to; the span lives only for the call. It runs once per
+// report, so it must be cheap.
+using DeviceReportCallback =
+    std::function<void(DeviceId, std::span<const std::uint8_t>, std::int64_t time_us)>;
+
 // A device as a backend sees it.
 struct DeviceCandidate {
   std::string key; // stable while plugged
   DeviceIdentity identity;
   std::vector<std::uint8_t> descriptor;
+  std::string hid_name{}; // the kernel's HID name (hid-recorder's N:), "" when unknown
+  std::string phys{};     // the kernel's HID phys (hid-recorder's P:), "" when unknown
 };
 
 // Where devices come from. The live one is make_hidraw_backend(); tests inject fakes.
@@ -93,8 +104,9 @@ struct DeviceManagerOptions {
 
 class DeviceManager {
  public:
+  // on_report: may be empty (then the read path has no extra call at all).
   DeviceManager(std::unique_ptr<DeviceBackend> backend, DeviceCallbacks callbacks,
-                DeviceManagerOptions options = {});
+                DeviceManagerOptions options = {}, DeviceReportCallback on_report = {});
   ~DeviceManager();
   DeviceManager(const DeviceManager&) = delete;
   DeviceManager& operator=(const DeviceManager&) = delete;
@@ -126,10 +138,13 @@ class DeviceManager {
   void reap_finished();
   DeviceId start_reader(AttachedDevice info, const DeviceProfile& profile,
                         std::unique_ptr<ReportSource> source);
+  DeviceId attach_with_header(Recording header, std::unique_ptr<ReportSource> source,
+                              std::string key);
 
   std::unique_ptr<DeviceBackend> backend_;
   DeviceCallbacks callbacks_;
   DeviceManagerOptions options_;
+  DeviceReportCallback on_report_;
   mutable std::mutex mutex_;
   mutable std::condition_variable changed_;
   std::map<DeviceId, std::unique_ptr<Device>> devices_;

@@ -28,9 +28,14 @@ struct PenCallbacks {
   std::function<void(Stroke&&)> on_stroke;         // may be empty
 };
 
+// Every report as read, before it is decoded (so also those that give no sample), with its time;
+// the span lives only for the call.
+using ReportCallback = std::function<void(std::span<const std::uint8_t>, std::int64_t time_us)>;
+
 class PenPipeline {
  public:
-  PenPipeline(const DeviceProfile& profile, SegmenterOptions options, PenCallbacks callbacks);
+  PenPipeline(const DeviceProfile& profile, SegmenterOptions options, PenCallbacks callbacks,
+              ReportCallback on_report = {});
 
   void on_report(std::span<const std::uint8_t> report, std::int64_t time_us);
   void on_idle(std::int64_t now_us);
@@ -47,6 +52,7 @@ class PenPipeline {
   TabletInfo tablet_;
   StrokeSegmenter segmenter_;
   PenCallbacks callbacks_;
+  ReportCallback on_report_; // may be empty
   PipelineCounters counters_;
 };
 
