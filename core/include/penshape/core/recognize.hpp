@@ -66,14 +66,26 @@
 // at most RecognizerConfig::max_samples samples, finite coordinates with |x|, |y| <= 1e9, and a
 // configuration with finite, non-negative pen radius and tolerance and positive fractions.
 //
-// Input is the pen path (samples). The ink polygon and the deconstruction's skeleton P of the
-// engine are not inputs yet: the certificate is stated for the exact ink of the sampled path.
+// Two entries. recognize(samples) sees the pen path only and certifies on the paths as above
+// (Certificate::method "path"): a statement about the ink drawn with one pen radius. It builds
+// no ink polygon. recognize(StrokeInput) takes the whole stroke: the samples, and optionally the
+// ink polygon Q the engine computed (any radii, pressure included) and the deconstruction's
+// skeleton P. With Q the snap is decided by the ink-level certificate (ink_certificate.hpp,
+// method "ink"): the candidates are screened, ranked and checked for plausibility exactly as
+// above with the path certificate (cheap), then every candidate that passed (certified and
+// plausible) is certified again on the inks, and only those that pass the ink certificate can
+// win; the others stay as alternatives whose certificate (method "ink", certified false) says
+// why. Epsilon follows the same rules, with StrokeInput::pen_radius as r when given. With P
+// (a few vertices whose r-offset is within epsilon of Q), its vertices also seed the corners of
+// the triangle and quadrilateral families: a seeded fit replaces the corner search's fit when
+// its fit error is lower.
 #include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "penshape/core/deconstruct.hpp" // InvalidInput
+#include "penshape/core/ink.hpp"         // InkPolygon
 #include "penshape/core/polygon_set.hpp" // PointD
 
 namespace penshape {
@@ -138,6 +150,10 @@ struct Certificate {
   double epsilon = 0.0;        // the tolerance it was checked against
   double pen_radius = 0.0;     // r used
   double sample_spacing = 0.0; // h of the sampling argument
+  // "path": the bound is on H(stroke path, clean path) (this header's argument), which bounds
+  // the inks when the stroke's ink is its path ⊕ one disk; "ink": the bound is on H(clean ink,
+  // true stroke ink) from the ink polygon (ink_certificate.hpp), pressure-varying ink included.
+  std::string method = "path";
 };
 
 struct ShapeParams {
@@ -175,6 +191,21 @@ struct Recognition {
 
 // Throws InvalidInput (naming the problem) for bad input; see the limits above.
 Recognition recognize(const std::vector<StrokePoint>& samples, const RecognizerConfig& config = {});
+
+// The whole stroke, as the engine knows it (see "Two entries" above). The pointers are not
+// owned and must stay valid during the call; null means "not given".
+struct StrokeInput {
+  std::vector<StrokePoint> samples; // the pen path (as for recognize(samples))
+  const InkPolygon* ink = nullptr;  // Q of these samples, in the samples' unit
+  // Deconstruction's P (a YES answer's solution, same unit): corner seeds for polygons.
+  const PolygonSet* skeleton = nullptr;
+  // The clean ink's pen radius (with pressure: the radius the clean shape is drawn with, e.g.
+  // the stroke's typical radius); <= 0 uses RecognizerConfig::pen_radius and its default rule.
+  double pen_radius = 0.0;
+};
+
+// Throws InvalidInput as recognize(samples) does, and for an empty ink polygon.
+Recognition recognize(const StrokeInput& stroke, const RecognizerConfig& config = {});
 
 // The tolerance and pen radius the recognizer uses for these samples (the rule above).
 struct ToleranceChoice {
