@@ -133,6 +133,9 @@ double brute_force_ink_hausdorff(const InkPolygon& ink, ShapeClass shape, const 
   return worst;
 }
 
+// Largest (bound - Q's bound - estimate) / h seen, printed for the record.
+double g_worst_gap = 0.0;
+
 void expect_tight_and_valid(const InkPolygon& ink, ShapeClass shape, const ShapeParams& params,
                             double r, double epsilon, const std::string& what) {
   const Certificate cert = certify_ink(ink, shape, params, r, epsilon);
@@ -144,6 +147,7 @@ void expect_tight_and_valid(const InkPolygon& ink, ShapeClass shape, const Shape
   // Tight (within 2h) whenever the clean ink is within epsilon of Q (beyond, the certificate
   // may answer with its cheap box bound, which only needs to be valid).
   if (estimate > epsilon) return;
+  g_worst_gap = std::max(g_worst_gap, (cert.bound - ink.hausdorff_bound - estimate) / h);
   EXPECT_LE(cert.bound - ink.hausdorff_bound - estimate, 2 * h)
       << what << " " << to_string(shape) << ": bound " << cert.bound << " estimate " << estimate;
   EXPECT_EQ(cert.certified, cert.bound <= epsilon);
@@ -190,6 +194,7 @@ TEST(InkCertificate, MatchesBruteForceOnDollarStrokes) {
     }
   }
   EXPECT_GE(checked, 12);
+  std::printf("largest bound - estimate so far: %.2f h\n", g_worst_gap);
 }
 
 // A circle drawn with pressure: the radius swings between 1 and 4 around it.
@@ -249,6 +254,7 @@ TEST(InkCertificate, MatchesBruteForceOnPressureStrokes) {
   ShapeParams t;
   t.vertices = {{0, 0}, {120, 10}, {50, 90}};
   expect_tight_and_valid(tri_ink, ShapeClass::kTriangle, t, 2.0, 10.0, "pressure triangle");
+  std::printf("largest bound - estimate so far: %.2f h\n", g_worst_gap);
 }
 
 TEST(InkCertificate, PressureBulgeDoesNotSnapOnTheInk) {
@@ -304,6 +310,72 @@ TEST(InkCertificate, RefusesBadInput) {
   input.samples = {{0, 0, 0}, {10, 0, 0}};
   input.ink = &empty;
   EXPECT_THROW(recognize(input), InvalidInput);
+}
+
+const std::map<std::string, std::set<std::string>> kShapeTargets{
+    {"circle", {"circle", "ellipse"}},
+    {"rectangle", {"rectangle", "square", "quadrilateral"}},
+    {"triangle", {"triangle"}},
+};
+const std::set<std::string> kNonShapes{"pigtail", "question_mark", "left_curly_brace",
+                                       "right_curly_brace", "delete_mark"};
+
+// The $1 logs with the ink certificate deciding every snap (ink built with the recognizer's pen
+// radius): the targets still hold, every snap says "ink", and the path-only answer differs
+// rarely.
+TEST(InkCertificate, DollarTargetsWithTheInkCertificate) {
+  const std::vector<test::Gesture> gestures = test::all_dollar_gestures();
+  ASSERT_EQ(gestures.size(), 2880U);
+  std::map<std::string, std::map<std::string, int>> confusion;
+  int shapes = 0, shapes_ok = 0, non_shapes = 0, non_shape_snaps = 0, differ = 0;
+  for (const test::Gesture& g : gestures) {
+    const bool counted = kShapeTargets.contains(g.kind) || kNonShapes.contains(g.kind);
+    const ToleranceChoice tol = choose_tolerance(g.points, {});
+    const InkPolygon ink = ink_of(g.points, tol.pen_radius);
+    StrokeInput input;
+    input.samples = g.points;
+    input.ink = &ink;
+    const Recognition r = recognize(input);
+    const std::string got = to_string(r.shape);
+    ++confusion[g.kind][got];
+    if (r.shape != ShapeClass::kFreeform) {
+      EXPECT_EQ(r.certificate.method, "ink") << g.file;
+      EXPECT_TRUE(r.certificate.certified) << g.file;
+      EXPECT_LE(r.certificate.bound, r.epsilon) << g.file;
+    }
+    if (recognize(g.points).shape != r.shape) ++differ;
+    if (!counted) continue;
+    if (kShapeTargets.contains(g.kind)) {
+      ++shapes;
+      if (kShapeTargets.at(g.kind).contains(got)) ++shapes_ok;
+    } else {
+      ++non_shapes;
+      if (r.shape != ShapeClass::kFreeform) ++non_shape_snaps;
+    }
+  }
+  std::set<std::string> columns;
+  for (const auto& [kind, row] : confusion) {
+    for (const auto& [c, n] : row) columns.insert(c);
+  }
+  std::printf("%-18s", "gesture\\class");
+  for (const auto& c : columns) std::printf(" %9.9s", c.c_str());
+  std::printf("\n");
+  for (const auto& [kind, row] : confusion) {
+    std::printf("%-18s", kind.c_str());
+    for (const auto& c : columns) {
+      const auto it = row.find(c);
+      std::printf(" %9d", it == row.end() ? 0 : it->second);
+    }
+    std::printf("\n");
+  }
+  const double shape_rate = static_cast<double>(shapes_ok) / shapes;
+  const double snap_rate = static_cast<double>(non_shape_snaps) / non_shapes;
+  std::printf("ink certificate: shapes correct %d / %d = %.1f%%; non-shape snaps %d / %d = %.1f%%; "
+              "class differs from the path-certified answer on %d of %zu strokes\n",
+              shapes_ok, shapes, 100 * shape_rate, non_shape_snaps, non_shapes, 100 * snap_rate,
+              differ, gestures.size());
+  EXPECT_GE(shape_rate, 0.97);
+  EXPECT_LE(snap_rate, 0.02);
 }
 
 } // namespace
