@@ -294,6 +294,7 @@ void confirm_on_ink(const InkRegion& q, std::vector<Scored>& scored) {
     const Certificate& path = sc.candidate.certificate;
     sc.candidate.certificate = certify_ink(q, sc.fit.clean, path.epsilon, path.pen_radius);
     sc.snap = sc.candidate.certificate.certified;
+    if (sc.snap) break; // the winner; later snaps keep their path certificate (alternatives)
   }
   std::stable_sort(scored.begin(), scored.end(), [](const Scored& a, const Scored& b) {
     if (a.snap != b.snap) return a.snap;

@@ -72,10 +72,12 @@
 // ink polygon Q the engine computed (any radii, pressure included) and the deconstruction's
 // skeleton P. With Q the snap is decided by the ink-level certificate (ink_certificate.hpp,
 // method "ink"): the candidates are screened, ranked and checked for plausibility exactly as
-// above with the path certificate (cheap), then every candidate that passed (certified and
-// plausible) is certified again on the inks, and only those that pass the ink certificate can
-// win; the others stay as alternatives whose certificate (method "ink", certified false) says
-// why. Epsilon follows the same rules, with StrokeInput::pen_radius as r when given. With P
+// above with the path certificate (cheap), then the candidates that passed (certified and
+// plausible) are certified again on the inks, best rank first, until one passes: it wins. Those
+// that failed stay as alternatives whose certificate (method "ink", certified false) says why;
+// passed candidates ranked after the winner keep their path certificate (method "path"). A
+// candidate the path screening refused is not tried on the ink (its path bound or plausibility
+// already failed; this keeps the pen-up cost to about one ink certificate per stroke). Epsilon follows the same rules, with StrokeInput::pen_radius as r when given. With P
 // (a few vertices whose r-offset is within epsilon of Q), its vertices also seed the corners of
 // the triangle and quadrilateral families: a seeded fit replaces the corner search's fit when
 // its fit error is lower.
