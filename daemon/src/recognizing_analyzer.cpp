@@ -196,7 +196,7 @@ v1::Shape to_proto_shape(ShapeClass shape, const ShapeParams& params,
   to_proto(exact(certificate.epsilon), cert->mutable_tolerance());
   to_proto(exact(certificate.bound), cert->mutable_hausdorff_bound());
   cert->set_method(certificate.method == "ink" ? "ink-hausdorff-sampling"
-                                                : "path-hausdorff-sampling");
+                                               : "path-hausdorff-sampling");
   return out;
 }
 

@@ -379,7 +379,9 @@ Recognition recognize(const StrokeInput& stroke, const RecognizerConfig& config_
     const recognize_detail::InkRegion q = recognize_detail::prepare_ink(*stroke.ink, tol.epsilon);
     recognize_detail::confirm_on_ink(q, scored);
   }
-  return recognize_detail::choose(std::move(scored), tol.epsilon, tol.pen_radius);
+  Recognition out = recognize_detail::choose(std::move(scored), tol.epsilon, tol.pen_radius);
+  if (stroke.ink) out.certificate.method = "ink"; // freeform too: the ink decided (or screening)
+  return out;
 }
 
 } // namespace penshape

@@ -171,9 +171,9 @@ Certificate certify_ink(const InkRegion& q, const CleanShape& shape, double epsi
   for (std::int64_t j = j0; j <= j1; ++j) {
     const double y = q.origin.y + static_cast<double>(j) * h;
     const std::int64_t k = j - q.first_row;
-    const std::vector<double>& xs =
-        k >= 0 && k < static_cast<std::int64_t>(q.rows.size()) ? q.rows[static_cast<std::size_t>(k)]
-                                                                 : kNoCrossings;
+    const std::vector<double>& xs = k >= 0 && k < static_cast<std::int64_t>(q.rows.size())
+                                        ? q.rows[static_cast<std::size_t>(k)]
+                                        : kNoCrossings;
     std::size_t crossed = 0;
     for (std::int64_t i = i0; i <= i1; ++i) {
       const PointD g{q.origin.x + static_cast<double>(i) * h, y};

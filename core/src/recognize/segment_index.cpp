@@ -17,8 +17,8 @@ SegmentIndex::SegmentIndex(std::vector<Segment> segments, double cell, std::size
     yhi = std::max({yhi, s.a.y, s.b.y});
   }
   const double w = xhi - xlo, h = yhi - ylo;
-  cell_ = std::max({cell, std::sqrt(w * h / static_cast<double>(max_cells)),
-                    1e-9 * std::max({w, h, 1.0})});
+  cell_ = std::max(
+      {cell, std::sqrt(w * h / static_cast<double>(max_cells)), 1e-9 * std::max({w, h, 1.0})});
   origin_ = {xlo, ylo};
   nx_ = static_cast<std::int64_t>(std::floor(w / cell_)) + 1;
   ny_ = static_cast<std::int64_t>(std::floor(h / cell_)) + 1;

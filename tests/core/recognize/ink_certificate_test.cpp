@@ -119,10 +119,10 @@ double brute_force_ink_hausdorff(const InkPolygon& ink, ShapeClass shape, const 
     for (double x = lo.x + 0.61 * step; x <= hi.x; x += step) {
       const PointD p{x, y};
       // Circles by their formula; other shapes by brute force over the (chord) path.
-      const double dc = shape == ShapeClass::kCircle
-                            ? std::abs(std::hypot(p.x - params.center.x, p.y - params.center.y) -
-                                       params.radius_x)
-                            : test::dist_point_path(p, c.path);
+      const double dc =
+          shape == ShapeClass::kCircle
+              ? std::abs(std::hypot(p.x - params.center.x, p.y - params.center.y) - params.radius_x)
+              : test::dist_point_path(p, c.path);
       const bool in_clean_ink = dc <= r - c.chord_error;
       if (!in_clean_ink && dc - c.chord_error - r <= worst) continue; // cannot raise it
       const bool in_q = inside(q, p);
@@ -370,10 +370,11 @@ TEST(InkCertificate, DollarTargetsWithTheInkCertificate) {
   }
   const double shape_rate = static_cast<double>(shapes_ok) / shapes;
   const double snap_rate = static_cast<double>(non_shape_snaps) / non_shapes;
-  std::printf("ink certificate: shapes correct %d / %d = %.1f%%; non-shape snaps %d / %d = %.1f%%; "
-              "class differs from the path-certified answer on %d of %zu strokes\n",
-              shapes_ok, shapes, 100 * shape_rate, non_shape_snaps, non_shapes, 100 * snap_rate,
-              differ, gestures.size());
+  std::printf(
+      "ink certificate: shapes correct %d / %d = %.1f%%; non-shape snaps %d / %d = %.1f%%; "
+      "class differs from the path-certified answer on %d of %zu strokes\n",
+      shapes_ok, shapes, 100 * shape_rate, non_shape_snaps, non_shapes, 100 * snap_rate, differ,
+      gestures.size());
   EXPECT_GE(shape_rate, 0.97);
   EXPECT_LE(snap_rate, 0.02);
 }

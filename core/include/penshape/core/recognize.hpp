@@ -77,10 +77,11 @@
 // that failed stay as alternatives whose certificate (method "ink", certified false) says why;
 // passed candidates ranked after the winner keep their path certificate (method "path"). A
 // candidate the path screening refused is not tried on the ink (its path bound or plausibility
-// already failed; this keeps the pen-up cost to about one ink certificate per stroke). Epsilon follows the same rules, with StrokeInput::pen_radius as r when given. With P
-// (a few vertices whose r-offset is within epsilon of Q), its vertices also seed the corners of
-// the triangle and quadrilateral families: a seeded fit replaces the corner search's fit when
-// its fit error is lower.
+// already failed; this keeps the pen-up cost to about one ink certificate per stroke). Epsilon
+// follows the same rules, with StrokeInput::pen_radius as r when given. With P (a few vertices
+// whose r-offset is within epsilon of Q), its vertices also seed the corners of the triangle and
+// quadrilateral families: a seeded fit replaces the corner search's fit when its fit error is
+// lower.
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -182,10 +183,11 @@ struct Candidate {
 struct Recognition {
   ShapeClass shape = ShapeClass::kFreeform; // kFreeform when nothing certifies
   ShapeParams params;
-  std::vector<PointD> clean;           // empty for freeform
-  double rms = 0.0;                    // of the winner, see Candidate::rms
-  double confidence = 0.0;             // 1 - bound / (2 epsilon) of the winner (0.5..1), 0 freeform
-  Certificate certificate;             // of the winner (certified == false for freeform)
+  std::vector<PointD> clean; // empty for freeform
+  double rms = 0.0;          // of the winner, see Candidate::rms
+  double confidence = 0.0;   // 1 - bound / (2 epsilon) of the winner (0.5..1), 0 freeform
+  Certificate certificate;   // of the winner (certified == false for freeform; its method is
+                             // "ink" whenever the ink polygon was given)
   std::vector<Candidate> alternatives; // the other candidates tried, best bound first
   double epsilon = 0.0;
   double pen_radius = 0.0;
