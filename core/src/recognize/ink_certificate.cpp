@@ -9,6 +9,8 @@ namespace penshape::recognize_detail {
 namespace {
 
 constexpr double kHalfDiagonal = 0.70710678118654757; // >= 1/sqrt(2) (rounded up)
+// Curves (box, ellipse chords) are sampled with at most about this many points.
+constexpr double kMaxCurveSamples = 20'000.0;
 
 // The clean shape's distance function as the grid needs it: an upper bound everywhere (for the
 // Q side) and a test "is the true distance <= rho?" that never says no wrongly (for the
@@ -19,7 +21,8 @@ class ShapeDistance {
     if (shape.kind != CleanShape::Kind::kEllipse) return;
     // The ellipse sampled with arc-length steps <= hs: every point of it is within hs / 2 of a
     // sample, so d(g, ellipse) >= d(g, sample chords) - hs / 2.
-    hs_ = h / 4.0;
+    hs_ = std::max(h / 4.0, 2.0 * std::numbers::pi * std::max(shape.rx, shape.ry) /
+                                kMaxCurveSamples);
     const std::vector<PointD> pts = shape.sample(hs_);
     std::vector<Segment> chords;
     for (std::size_t i = 0; i + 1 < pts.size(); ++i) chords.push_back({pts[i], pts[i + 1]});
@@ -125,10 +128,15 @@ Certificate certify_ink(const InkRegion& q, const CleanShape& shape, double epsi
 
   // The clean ink's box: C sampled with steps <= hs (every point of C within hs / 2 of a
   // sample), grown by r + hs / 2.
-  const double hs = h / 4.0;
+  // Polylines: the vertices give the box exactly. Curves: at most kMaxCurveSamples samples.
+  double hs = 0.0;
+  if (shape.kind != CleanShape::Kind::kPolyline) {
+    const double length = std::abs(shape.sweep) * std::max(shape.rx, shape.ry);
+    hs = std::max(h / 4.0, length / kMaxCurveSamples);
+  }
   PointD lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
   double magnitude = q.magnitude;
-  for (const PointD& p : shape.sample(hs)) {
+  for (const PointD& p : hs > 0 ? shape.sample(hs) : shape.path) {
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
   }

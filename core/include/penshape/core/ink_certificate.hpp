@@ -20,13 +20,16 @@
 //     d(g, C) <= r + h/sqrt(2). G1 is chosen with an exact distance for polylines and circular
 //     arcs; for an ellipse a point is left out only when proven farther (an algebraic bound on
 //     the ellipse equation, then the chords of the ellipse sampled with arc-length steps hs =
-//     h/4: d(g, ellipse) >= d(g, chords) - hs/2). Taking more points only raises the maximum.
+//     h/4, coarser for curves longer than 20,000 such steps: d(g, ellipse) >= d(g, chords) -
+//     hs/2). Taking more points only raises the maximum.
 //     d(g, Q) = 0 when g is inside Q (parity of the crossings of the grid row with Q's edges),
 //     else the distance to Q's nearest edge (a uniform grid of Q's edges).
 //   - S2: if q is in Q then d(g, Q) <= h/sqrt(2) and max(0, d(q, C) - r) <= max(0, d(g, C) - r)
 //     + h/sqrt(2). So S2 <= max{ max(0, d(g, C) - r) : g in G, d(g, Q) <= h/sqrt(2) } +
 //     h/sqrt(2), with d(g, C) bounded from above (exact for polylines and circular arcs; the
 //     distance to a point ON the ellipse otherwise).
+//   - The grid covers Q's box and the clean ink's box (polylines: from the vertices; curves:
+//     from samples with steps hs, grown by hs/2).
 //   - A clean ink whose box reaches more than epsilon + 2h beyond Q's box has a point farther
 //     than epsilon from Q and cannot certify; its bound is the diagonal of the union of the
 //     boxes (no two points of the regions are farther apart), plus Q.hausdorff_bound.
