@@ -21,8 +21,8 @@ class ShapeDistance {
     if (shape.kind != CleanShape::Kind::kEllipse) return;
     // The ellipse sampled with arc-length steps <= hs: every point of it is within hs / 2 of a
     // sample, so d(g, ellipse) >= d(g, sample chords) - hs / 2.
-    hs_ = std::max(h / 4.0, 2.0 * std::numbers::pi * std::max(shape.rx, shape.ry) /
-                                kMaxCurveSamples);
+    hs_ =
+        std::max(h / 4.0, 2.0 * std::numbers::pi * std::max(shape.rx, shape.ry) / kMaxCurveSamples);
     const std::vector<PointD> pts = shape.sample(hs_);
     std::vector<Segment> chords;
     for (std::size_t i = 0; i + 1 < pts.size(); ++i) chords.push_back({pts[i], pts[i + 1]});
@@ -30,6 +30,9 @@ class ShapeDistance {
     cos_ = std::cos(shape.rotation);
     sin_ = std::sin(shape.rotation);
   }
+
+  // True when upper() is the exact distance (up to rounding): polylines and circular arcs.
+  [[nodiscard]] bool exact() const { return shape_.kind != CleanShape::Kind::kEllipse; }
 
   // >= d(g, C): exact for polylines and circular arcs, a point on the ellipse otherwise.
   [[nodiscard]] double upper(PointD g) const { return shape_.distance_to(g); }
@@ -192,12 +195,20 @@ Certificate certify_ink(const InkRegion& q, const CleanShape& shape, double epsi
         worst_ink = std::max(worst_ink, to_shape.upper(g) - r);
         continue;
       }
-      if (to_shape.maybe_within(g, rho)) {
-        worst_clean = std::max(worst_clean, q.edges.nearest_above(g, worst_clean));
+      if (!to_shape.exact()) {
+        if (to_shape.maybe_within(g, rho)) {
+          worst_clean = std::max(worst_clean, q.edges.nearest_above(g, worst_clean));
+        }
+        if (q.edges.any_within(g, near_q)) {
+          worst_ink = std::max(worst_ink, to_shape.upper(g) - r);
+        }
+        continue;
       }
-      if (q.edges.any_within(g, near_q)) {
-        worst_ink = std::max(worst_ink, to_shape.upper(g) - r);
-      }
+      // Exact distance (polylines, circular arcs): one evaluation serves both sides, and the
+      // Q-side test is skipped when it could not raise the maximum.
+      const double dc = to_shape.upper(g);
+      if (dc <= rho) worst_clean = std::max(worst_clean, q.edges.nearest_above(g, worst_clean));
+      if (dc - r > worst_ink && q.edges.any_within(g, near_q)) worst_ink = dc - r;
     }
   }
   cert.bound = std::max(worst_clean, worst_ink) + half_diag + 2.0 * margin + q.hausdorff_bound;
