@@ -5,7 +5,12 @@
 //                         when it submits a finished stroke;
 //   live: pen-up          LiveRecognizer::finish() after the samples were fed one by one: the
 //                         pen-up latency of the live path, which reuses surviving fits;
-//   live: per sample      LiveRecognizer::add() per sample (refits included where they happen).
+//   live: per sample      LiveRecognizer::add() per sample (refits included where they happen);
+//   ink polygon           ink_polygon() of the stroke with the recognizer's pen radius (what the
+//                         daemon computes anyway; context for the next row, not part of it);
+//   recognize + ink cert  recognize(StrokeInput) with that ink polygon: the path screening plus
+//                         the ink-level certificate of the screened candidates (the daemon's
+//                         pen-up path), beside the path-certified baseline in the first row.
 // Each time is measured twice: wall clock and the thread's CPU time (the machine is shared, so
 // wall-clock tails include time the thread was not running). Target: p99 <= 5 ms per stroke.
 //
@@ -24,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "penshape/core/ink.hpp"
 #include "penshape/core/live_recognizer.hpp"
 #include "penshape/core/recognize.hpp"
 
@@ -102,7 +108,9 @@ int main(int argc, char** argv) {
   Series offline{"recognize (offline)", {}, {}};
   Series pen_up{"live: pen-up", {}, {}};
   Series per_sample{"live: per sample", {}, {}};
-  std::size_t snaps = 0;
+  Series ink_build{"ink polygon", {}, {}};
+  Series ink_cert{"recognize + ink cert", {}, {}};
+  std::size_t snaps = 0, ink_snaps = 0;
   penshape::LiveRecognizer live;
   for (int r = 0; r < repeat; ++r) {
     for (const auto& s : strokes) {
@@ -124,12 +132,36 @@ int main(int argc, char** argv) {
       (void)live.finish();
       pen_up.wall_ms.push_back((wall_seconds() - w) * 1e3);
       pen_up.cpu_ms.push_back((thread_cpu_seconds() - c) * 1e3);
+
+      // The ink polygon with the pen radius the recognizer uses, then the ink-certified run.
+      const penshape::ToleranceChoice tol = penshape::choose_tolerance(s, {});
+      std::vector<penshape::InkSample> ink_samples;
+      for (const StrokePoint& p : s) ink_samples.push_back({p.x, p.y, tol.pen_radius});
+      penshape::InkOptions options;
+      options.radius_mm = tol.pen_radius;
+      w = wall_seconds();
+      c = thread_cpu_seconds();
+      const penshape::InkPolygon ink = penshape::ink_polygon(ink_samples, options);
+      ink_build.wall_ms.push_back((wall_seconds() - w) * 1e3);
+      ink_build.cpu_ms.push_back((thread_cpu_seconds() - c) * 1e3);
+      penshape::StrokeInput input;
+      input.samples = s;
+      input.ink = &ink;
+      w = wall_seconds();
+      c = thread_cpu_seconds();
+      const penshape::Recognition with_ink = penshape::recognize(input);
+      ink_cert.wall_ms.push_back((wall_seconds() - w) * 1e3);
+      ink_cert.cpu_ms.push_back((thread_cpu_seconds() - c) * 1e3);
+      if (with_ink.shape != penshape::ShapeClass::kFreeform) ++ink_snaps;
     }
   }
-  const Series* all[] = {&offline, &pen_up, &per_sample};
+  const Series* all[] = {&offline, &pen_up, &per_sample, &ink_build, &ink_cert};
   if (!json) {
-    std::printf("recognition over %zu $1 strokes x %d (snaps: %zu per pass); times in ms\n",
-                strokes.size(), repeat, snaps / static_cast<std::size_t>(repeat));
+    std::printf(
+        "recognition over %zu $1 strokes x %d (snaps per pass: %zu path-certified, %zu "
+        "ink-certified); times in ms\n",
+        strokes.size(), repeat, snaps / static_cast<std::size_t>(repeat),
+        ink_snaps / static_cast<std::size_t>(repeat));
     std::printf("%-22s %8s %9s %9s %9s %9s %9s %9s\n", "case", "n", "p50 cpu", "p99 cpu", "max cpu",
                 "p50 wall", "p99 wall", "target");
   }
@@ -137,7 +169,7 @@ int main(int argc, char** argv) {
     const double p50c = percentile(s->cpu_ms, 0.5), p99c = percentile(s->cpu_ms, 0.99);
     const double maxc = percentile(s->cpu_ms, 1.0);
     const double p50w = percentile(s->wall_ms, 0.5), p99w = percentile(s->wall_ms, 0.99);
-    const bool per_stroke = s != &per_sample;
+    const bool per_stroke = s != &per_sample && s != &ink_build;
     if (json) {
       std::printf(
           "{\"case\":\"%s\",\"n\":%zu,\"p50_cpu_ms\":%.4f,\"p99_cpu_ms\":%.4f,"

@@ -4,7 +4,9 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -15,6 +17,7 @@
 #include "args.hpp"
 #include "command.hpp"
 #include "json_writer.hpp"
+#include "penshape/core/ink.hpp"
 #include "penshape/core/recognize.hpp"
 #include "penshape/render/figure.hpp"
 #include "penshape/render/progress_bar.hpp"
@@ -24,7 +27,8 @@ namespace penshape::cli {
 namespace {
 
 constexpr const char* kHelp =
-    "usage: penshape recognize [--pen-radius R] [--tolerance E] [--json] [--labels] FILE|DIR...\n"
+    "usage: penshape recognize [--pen-radius R] [--tolerance E] [--ink [--pressure]] [--json]\n"
+    "                          [--labels] [--svg-dir DIR] FILE|DIR...\n"
     "\n"
     "Names the shape each stroke was meant to be (segment, polyline, triangle, quadrilateral,\n"
     "rectangle, square, diamond, regular_polygon, circle, ellipse, arc) and snaps only when the\n"
@@ -33,12 +37,21 @@ constexpr const char* kHelp =
     "\n"
     "Input: $1 gesture logs (.xml: <Gesture Name=...><Point X= Y= T=/>...</Gesture>) and JSON\n"
     "lines (.jsonl/.ndjson, one stroke per line: {\"points\":[[x,y,t],...],\"name\":\"...\",\n"
-    "\"label\":\"...\"}, t in seconds and optional). Directories are searched recursively.\n"
+    "\"label\":\"...\"}, t in seconds and optional; a fourth number is the pen pressure in [0, "
+    "1],\n"
+    "for every point or none). Directories are searched recursively.\n"
     "\n"
     "  --pen-radius R  pen radius in the file's unit (default: 2% of each drawing's size)\n"
     "  --tolerance E   Hausdorff tolerance (default: min(4.5 R, 10% of the drawing's size))\n"
+    "  --ink           certify on the inks: build each stroke's ink polygon with the pen radius\n"
+    "                  and certify the snap against it (certificate_method \"ink\"; default:\n"
+    "                  \"path\", the pen paths, exact for one pen radius); seconds include it\n"
+    "  --pressure      with --ink: the ink's radius follows each point's pressure p,\n"
+    "                  R (0.25 + 0.75 p); the clean shape is drawn with the stroke's median\n"
+    "                  radius. Needs pressure in the file (JSON lines; $1 XML has none)\n"
     "  --json          one object per stroke: file, line, name, class, confidence, params,\n"
-    "                  alternatives, certified, certificate, seconds (and label with --labels);\n"
+    "                  alternatives, certified, certificate, certificate_method, seconds (and\n"
+    "                  label with --labels);\n"
     "                  with --labels a final {\"summary\": ...} object\n"
     "  --labels        expected class from the gesture name (triangle03 -> triangle, circle ->\n"
     "                  circle, rectangle -> rectangle, others -> freeform) or the JSON \"label\";\n"
@@ -101,7 +114,43 @@ void write_certificate(JsonWriter& json, const Certificate& c) {
   json.key("epsilon").number(c.epsilon);
   json.key("pen_radius").number(c.pen_radius);
   json.key("sample_spacing").number(c.sample_spacing);
+  json.key("method").string(c.method);
   json.end_object();
+}
+
+// The stroke's ink polygon (radius R, or R (0.25 + 0.75 p) with pressure: ink.hpp's curve with
+// its default min_fraction and gamma) and the recognition certified on it. The clean shape's pen
+// radius is R, or with pressure the median of the samples' radii.
+Recognition recognize_on_ink(const FileStroke& s, const RecognizerConfig& config, bool pressure) {
+  const ToleranceChoice tol = choose_tolerance(s.points, config);
+  // No size (fewer than two distinct points, or none): the recognizer names the problem.
+  if (!(tol.pen_radius > 0) || !std::isfinite(tol.pen_radius)) return recognize(s.points, config);
+  InkOptions options;
+  options.radius_mm = tol.pen_radius;
+  std::vector<InkSample> samples;
+  samples.reserve(s.points.size());
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    double radius = tol.pen_radius;
+    if (pressure) {
+      const double p = std::pow(s.pressure[i], options.gamma);
+      radius *= options.min_fraction + (1.0 - options.min_fraction) * p;
+    }
+    samples.push_back({s.points[i].x, s.points[i].y, radius});
+  }
+  const InkPolygon ink = ink_polygon(samples, options);
+  StrokeInput input;
+  input.samples = s.points;
+  input.ink = &ink;
+  if (pressure) {
+    std::vector<double> radii;
+    for (const InkSample& x : samples) radii.push_back(x.radius);
+    std::nth_element(radii.begin(), radii.begin() + static_cast<std::ptrdiff_t>(radii.size() / 2),
+                     radii.end());
+    input.pen_radius = radii[radii.size() / 2];
+  } else {
+    input.pen_radius = tol.pen_radius;
+  }
+  return recognize(input, config);
 }
 
 } // namespace
@@ -152,7 +201,7 @@ render::StrokeFigure stroke_figure(const FileStroke& s, const Recognition& r) {
 }
 
 int run_recognize(std::span<const std::string_view> args) {
-  const ParsedArgs parsed(args, {.flags = {"--json", "--labels", "--help"},
+  const ParsedArgs parsed(args, {.flags = {"--json", "--labels", "--ink", "--pressure", "--help"},
                                  .options = {"--pen-radius", "--tolerance", "--svg-dir"}});
   if (parsed.flag("--help")) {
     std::puts(kHelp);
@@ -168,6 +217,9 @@ int run_recognize(std::span<const std::string_view> args) {
     config.tolerance = *e;
   }
   if (parsed.positionals().empty()) throw UsageError("no FILE or DIR given");
+  const bool on_ink = parsed.flag("--ink");
+  const bool pressure = parsed.flag("--pressure");
+  if (pressure && !on_ink) throw UsageError("--pressure needs --ink");
   const bool json_out = parsed.flag("--json");
   const bool labels = parsed.flag("--labels");
   const std::optional<std::string> svg_dir = parsed.value("--svg-dir");
@@ -208,7 +260,17 @@ int run_recognize(std::span<const std::string_view> args) {
       Recognition r;
       const auto t0 = std::chrono::steady_clock::now();
       try {
-        r = recognize(s.points, config);
+        if (on_ink) {
+          if (pressure && s.pressure.empty()) {
+            std::fprintf(stderr,
+                         "penshape recognize: %s:%zu: --pressure: the stroke has no pressure\n",
+                         s.file.c_str(), s.line);
+            return kExitBadInput;
+          }
+          r = recognize_on_ink(s, config, pressure);
+        } else {
+          r = recognize(s.points, config);
+        }
       } catch (const InvalidInput& e) {
         std::fprintf(stderr, "penshape recognize: %s:%zu: %s\n", s.file.c_str(), s.line, e.what());
         return kExitBadInput;
@@ -258,6 +320,7 @@ int run_recognize(std::span<const std::string_view> args) {
         }
         json.end_array();
         json.key("certified").boolean(r.certificate.certified);
+        json.key("certificate_method").string(r.certificate.method);
         json.key("certificate");
         write_certificate(json, r.certificate);
         json.key("seconds").number(seconds);

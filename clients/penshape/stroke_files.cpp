@@ -121,7 +121,8 @@ class JsonLine {
         const std::string key = string();
         expect(':');
         if (key == "points") {
-          out.points = points();
+          out.pressure.clear();
+          out.points = points(out.pressure);
           have_points = true;
         } else if (key == "name") {
           out.name = string();
@@ -189,7 +190,7 @@ class JsonLine {
     i_ = j;
     return *v;
   }
-  std::vector<StrokePoint> points() {
+  std::vector<StrokePoint> points(std::vector<double>& pressure) {
     std::vector<StrokePoint> out;
     expect('[');
     if (peek(']')) return out;
@@ -199,7 +200,19 @@ class JsonLine {
       p.x = number();
       expect(',');
       p.y = number();
-      if (accept(',')) p.t = number();
+      bool pressed = false;
+      if (accept(',')) {
+        p.t = number();
+        if (accept(',')) {
+          const double v = number();
+          if (v < 0 || v > 1) error("a pressure value is outside [0, 1]");
+          pressure.push_back(v);
+          pressed = true;
+        }
+      }
+      if (pressed != (pressure.size() == out.size() + 1) || (!pressed && !pressure.empty())) {
+        error("pressure must be given for every point or for none");
+      }
       expect(']');
       out.push_back(p);
     } while (accept(','));

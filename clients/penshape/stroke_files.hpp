@@ -7,7 +7,8 @@
 //    The stroke's name is the gesture's Name attribute.
 //  - `.jsonl` / `.ndjson`: JSON lines, one stroke per non-blank line:
 //        {"points": [[x, y, t], [x, y, t], ...], "name": "circle01", "label": "circle"}
-//    `points` is required: arrays of 2 or 3 finite numbers (x, y and optionally t in seconds).
+//    `points` is required: arrays of 2, 3 or 4 finite numbers (x, y, optionally t in seconds,
+//    optionally the pen pressure in [0, 1] after t); pressure is given for every point or none.
 //    `name` (any string) and `label` (the expected class or a gesture name) are optional; other
 //    keys are ignored. The stroke's line number names it in messages.
 // Malformed input throws StrokeFileError with "file:line: problem".
@@ -29,6 +30,7 @@ struct FileStroke {
   std::string name;     // gesture name / "name" key, may be empty
   std::string label;    // "label" key (JSON lines), else empty
   std::vector<StrokePoint> points;
+  std::vector<double> pressure; // one per point in [0, 1] (JSON lines), or empty: none
 };
 
 std::vector<FileStroke> read_stroke_file(const std::string& path);

@@ -4,8 +4,8 @@
 #include <memory>
 #include <mutex>
 
+#include "penshape/core/ink.hpp"
 #include "penshape/core/live_recognizer.hpp"
-#include "penshape/daemon/ink_analyzer.hpp"
 #include "penshape/daemon/proto_convert.hpp"
 
 namespace penshape::daemon {
@@ -64,6 +64,14 @@ RecognizerConfig config_for(const PenSettings& settings) {
   return config;
 }
 
+// The ink as the ink analyzer draws it: one radius, the settings' pen radius (PenSettings has
+// no pressure curve yet; with one, InkOptions::use_pressure would follow it here).
+InkOptions ink_options_for(const PenSettings& settings) {
+  InkOptions options;
+  options.radius_mm = settings.pen_radius_mm;
+  return options;
+}
+
 bool has_distinct_points(const std::vector<StrokePoint>& pts) {
   for (const auto& p : pts) {
     if (p.x != pts.front().x || p.y != pts.front().y) return true;
@@ -75,15 +83,24 @@ class RecognizingAnalyzer final : public StrokeAnalyzer {
  public:
   StrokeAnalysis analyze(const Stroke& stroke, const PenSettings& settings,
                          const CancelHook& cancel) override {
-    StrokeAnalysis analysis = ink_->analyze(stroke, settings, cancel); // the ink polygon
+    // The ink polygon Q (what the ink analyzer reports), kept to certify the shape on the ink.
+    const InkPolygon ink = ink_polygon(stroke, ink_options_for(settings));
+    if (cancel && cancel()) throw Cancelled();
+    StrokeAnalysis analysis;
+    to_proto(ink.region, &analysis.ink_polygon);
     forget(stroke.id);
 
-    const std::vector<StrokePoint> pts = path_mm(stroke);
-    if (pts.size() < 2 || !has_distinct_points(pts)) {
+    StrokeInput input;
+    input.samples = path_mm(stroke);
+    if (input.samples.size() < 2 || !has_distinct_points(input.samples)) {
       analysis.shape.set_kind(v1::SHAPE_KIND_NONE); // a dot: nothing to snap to
       return analysis;
     }
-    const Recognition r = recognize(pts, config_for(settings));
+    // The clean shape is drawn with the settings' pen radius; the snap is decided by the
+    // ink-level certificate against Q (the path screening picks the candidates cheaply).
+    input.ink = &ink;
+    input.pen_radius = settings.pen_radius_mm;
+    const Recognition r = recognize(input, config_for(settings));
     if (cancel && cancel()) throw Cancelled();
     analysis.shape = to_proto_shape(r.shape, r.params, r.clean, r.certificate, r.confidence);
     for (const Candidate& c : r.alternatives) {
@@ -138,7 +155,6 @@ class RecognizingAnalyzer final : public StrokeAnalyzer {
     std::lock_guard lock(mutex_); // a preview still running keeps its own reference
     live_.erase(stroke_id);
   }
-  std::shared_ptr<StrokeAnalyzer> ink_ = make_ink_analyzer();
   std::mutex mutex_; // guards live_ only
   std::map<std::uint64_t, std::shared_ptr<State>> live_;
 };
@@ -191,7 +207,8 @@ v1::Shape to_proto_shape(ShapeClass shape, const ShapeParams& params,
   to_proto(exact(certificate.pen_radius), cert->mutable_pen_radius());
   to_proto(exact(certificate.epsilon), cert->mutable_tolerance());
   to_proto(exact(certificate.bound), cert->mutable_hausdorff_bound());
-  cert->set_method("path-hausdorff-sampling");
+  cert->set_method(certificate.method == "ink" ? "ink-hausdorff-sampling"
+                                               : "path-hausdorff-sampling");
   return out;
 }
 

@@ -3,10 +3,12 @@
 #include <sys/wait.h>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 namespace {
@@ -102,6 +104,58 @@ TEST(RecognizeCli, BadInputNamesFileAndLine) {
   EXPECT_EQ(run("").exit_code, 2);
   EXPECT_EQ(run("--pen-radius -1 " + quoted(single)).exit_code, 2);
   for (const auto& f : {bad_json, single, nan, truncated}) std::filesystem::remove(f);
+}
+
+// A circle of radius 50 as JSON lines; `pressure(t)` in [0, 1] per point (or none).
+std::string circle_jsonl(double (*pressure)(double)) {
+  std::ostringstream line;
+  line << "{\"points\":[";
+  for (int k = 0; k <= 200; ++k) {
+    const double t = 2 * 3.141592653589793 * k / 200;
+    line << (k > 0 ? "," : "") << "[" << 100 + 50 * std::cos(t) << "," << 100 + 50 * std::sin(t)
+         << "," << k * 0.01;
+    if (pressure) line << "," << pressure(t);
+    line << "]";
+  }
+  line << "],\"label\":\"circle\"}\n";
+  return line.str();
+}
+
+TEST(RecognizeCli, InkCertificateAndPressure) {
+  const auto dollar = data_dir() / "strokes" / "dollar1" / "s02" / "medium" / "triangle01.xml";
+  Result r = run("--ink --json " + quoted(dollar));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("\"class\":\"triangle\""), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"certificate_method\":\"ink\""), std::string::npos) << r.out;
+  r = run("--json " + quoted(dollar));
+  EXPECT_NE(r.out.find("\"certificate_method\":\"path\""), std::string::npos) << r.out;
+  EXPECT_EQ(run("--ink --pressure " + quoted(dollar)).exit_code, 2) << "$1 XML has no pressure";
+  EXPECT_EQ(run("--pressure " + quoted(dollar)).exit_code, 2) << "--pressure needs --ink";
+
+  // Even pressure: a circle, certified on the ink.
+  const auto even = write_temp("even.jsonl", circle_jsonl([](double) { return 0.8; }));
+  r = run("--ink --pressure --pen-radius 10 --tolerance 3 --json " + quoted(even));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("\"class\":\"circle\""), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"certificate_method\":\"ink\""), std::string::npos) << r.out;
+  // Pressed hard on a quarter of it: the path is the same circle, the ink bulges by far more
+  // than the tolerance, so it must not snap on the ink (it does on the paths).
+  const auto bulge = write_temp(
+      "bulge.jsonl", circle_jsonl([](double t) { return t > 1.0 && t < 2.5 ? 1.0 : 0.1; }));
+  r = run("--ink --pressure --pen-radius 10 --tolerance 3 --json " + quoted(bulge));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("\"name\":\"\",\"class\":\"freeform\""), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"certificate_method\":\"ink\""), std::string::npos) << r.out;
+  r = run("--pen-radius 10 --tolerance 3 --json " + quoted(bulge));
+  EXPECT_NE(r.out.find("\"name\":\"\",\"class\":\"circle\""), std::string::npos) << r.out;
+
+  const auto mixed = write_temp("mixed.jsonl", "{\"points\":[[0,0,0,0.5],[10,0,1]]}\n");
+  r = run("--ink " + quoted(mixed));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("every point or for none"), std::string::npos) << r.out;
+  const auto out_of_range = write_temp("range.jsonl", "{\"points\":[[0,0,0,1.5],[10,0,1,1]]}\n");
+  EXPECT_EQ(run(quoted(out_of_range)).exit_code, 2);
+  for (const auto& f : {even, bulge, mixed, out_of_range}) std::filesystem::remove(f);
 }
 
 } // namespace

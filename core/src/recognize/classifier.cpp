@@ -7,6 +7,8 @@
 
 #include "annulus_polish.hpp"
 #include "certificate.hpp"
+#include "ink_certificate.hpp"
+#include "skeleton_seeds.hpp"
 
 namespace penshape::recognize_detail {
 namespace {
@@ -286,6 +288,20 @@ std::vector<Scored> evaluate(const PreparedStroke& s, std::vector<Fit> fits, dou
   return out;
 }
 
+void confirm_on_ink(const InkRegion& q, std::vector<Scored>& scored) {
+  for (Scored& sc : scored) {
+    if (!sc.snap) break; // sorted: the snaps come first
+    const Certificate& path = sc.candidate.certificate;
+    sc.candidate.certificate = certify_ink(q, sc.fit.clean, path.epsilon, path.pen_radius);
+    sc.snap = sc.candidate.certificate.certified;
+    if (sc.snap) break; // the winner; later snaps keep their path certificate (alternatives)
+  }
+  std::stable_sort(scored.begin(), scored.end(), [](const Scored& a, const Scored& b) {
+    if (a.snap != b.snap) return a.snap;
+    return a.rank < b.rank;
+  });
+}
+
 Recognition choose(std::vector<Scored> scored, double epsilon, double pen_radius) {
   Recognition out;
   out.epsilon = epsilon;
@@ -336,15 +352,36 @@ ToleranceChoice choose_tolerance(const std::vector<StrokePoint>& samples,
 }
 
 Recognition recognize(const std::vector<StrokePoint>& samples, const RecognizerConfig& config) {
-  recognize_detail::validate_samples(samples, config);
-  const ToleranceChoice tol = choose_tolerance(samples, config);
-  const PreparedStroke s = recognize_detail::prepare(samples);
-  std::vector<recognize_detail::Scored> scored = recognize_detail::evaluate(
-      s, recognize_detail::fit_all(s, config, tol.epsilon), tol.epsilon, tol.pen_radius, config);
+  StrokeInput input;
+  input.samples = samples;
+  return recognize(input, config);
+}
+
+Recognition recognize(const StrokeInput& stroke, const RecognizerConfig& config_in) {
+  RecognizerConfig config = config_in;
+  if (stroke.pen_radius > 0) config.pen_radius = stroke.pen_radius;
+  recognize_detail::validate_samples(stroke.samples, config);
+  if (stroke.ink && stroke.ink->region.empty()) {
+    throw InvalidInput("recognize: the ink polygon is empty");
+  }
+  const ToleranceChoice tol = choose_tolerance(stroke.samples, config);
+  const PreparedStroke s = recognize_detail::prepare(stroke.samples);
+  std::vector<recognize_detail::Fit> fits = recognize_detail::fit_all(s, config, tol.epsilon);
+  if (stroke.skeleton && !stroke.skeleton->empty() && recognize_detail::is_closed(s, tol.epsilon)) {
+    recognize_detail::apply_skeleton_seeds(s, *stroke.skeleton, fits);
+  }
+  std::vector<recognize_detail::Scored> scored =
+      recognize_detail::evaluate(s, std::move(fits), tol.epsilon, tol.pen_radius, config);
   if (!scored.empty() && scored.front().snap) {
     recognize_detail::polish_with_annulus(s, scored.front(), config);
   }
-  return recognize_detail::choose(std::move(scored), tol.epsilon, tol.pen_radius);
+  if (stroke.ink && !scored.empty() && scored.front().snap) {
+    const recognize_detail::InkRegion q = recognize_detail::prepare_ink(*stroke.ink, tol.epsilon);
+    recognize_detail::confirm_on_ink(q, scored);
+  }
+  Recognition out = recognize_detail::choose(std::move(scored), tol.epsilon, tol.pen_radius);
+  if (stroke.ink) out.certificate.method = "ink"; // freeform too: the ink decided (or screening)
+  return out;
 }
 
 } // namespace penshape

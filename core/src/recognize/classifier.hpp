@@ -38,6 +38,11 @@ struct Scored {
 // checks their plausibility; sorted snaps first, then by rank.
 std::vector<Scored> evaluate(const PreparedStroke& s, std::vector<Fit> fits, double epsilon,
                              double pen_radius, const RecognizerConfig& config);
+// Certifies the snaps (the first, path-certified plausible candidates) again on the inks, best
+// rank first, until one passes: it is the winner; those that failed are no longer snaps, those
+// after the winner keep their path certificates. Re-sorted as evaluate() sorts.
+struct InkRegion;
+void confirm_on_ink(const InkRegion& q, std::vector<Scored>& scored);
 // The recognition from evaluated candidates.
 Recognition choose(std::vector<Scored> scored, double epsilon, double pen_radius);
 

@@ -39,6 +39,47 @@ std::vector<PointD> CleanShape::sample(double h) const {
   return out;
 }
 
+CleanShape clean_shape_of(ShapeClass shape, const ShapeParams& params) {
+  CleanShape c;
+  const auto finite = [](PointD p) { return std::isfinite(p.x) && std::isfinite(p.y); };
+  switch (shape) {
+    case ShapeClass::kFreeform:
+      throw InvalidInput("clean shape: freeform has no clean shape");
+    case ShapeClass::kCircle:
+    case ShapeClass::kArc:
+    case ShapeClass::kEllipse: {
+      const bool ellipse = shape == ShapeClass::kEllipse;
+      c.kind = ellipse ? CleanShape::Kind::kEllipse : CleanShape::Kind::kCircle;
+      c.center = params.center;
+      c.rx = params.radius_x;
+      c.ry = ellipse ? params.radius_y : params.radius_x;
+      c.rotation = ellipse ? params.rotation : 0.0;
+      if (shape == ShapeClass::kArc) {
+        c.t0 = params.start_angle;
+        c.sweep = params.sweep_angle;
+      }
+      if (!finite(c.center) || !(c.rx > 0) || !(c.ry > 0) || !std::isfinite(c.rx) ||
+          !std::isfinite(c.ry) || !std::isfinite(c.rotation) || !std::isfinite(c.t0) ||
+          !std::isfinite(c.sweep) || std::abs(c.sweep) > 2.0 * std::numbers::pi + 1e-9) {
+        throw InvalidInput("clean shape: centre, radii and angles must be finite, radii > 0");
+      }
+      return c;
+    }
+    default:
+      break;
+  }
+  c.kind = CleanShape::Kind::kPolyline;
+  c.path = params.vertices;
+  if (c.path.empty()) throw InvalidInput("clean shape: no vertices");
+  for (const PointD& v : c.path) {
+    if (!finite(v)) throw InvalidInput("clean shape: a vertex is not finite");
+  }
+  if (shape != ShapeClass::kSegment && shape != ShapeClass::kPolyline) {
+    c.path.push_back(c.path.front()); // polygons are closed
+  }
+  return c;
+}
+
 double arc_distance(PointD p, const CleanShape& circle) {
   const PointD d = p - circle.center;
   const double r = norm(d);

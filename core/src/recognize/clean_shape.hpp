@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "geometry.hpp"
+#include "penshape/core/recognize.hpp"
 
 namespace penshape::recognize_detail {
 
@@ -32,6 +33,10 @@ struct CleanShape {
   // exact when Newton converges.
   [[nodiscard]] double distance_to(PointD p) const;
 };
+
+// The clean shape a recognition's class and parameters describe (recognize.hpp, ShapeParams).
+// Throws InvalidInput for freeform and degenerate parameters.
+CleanShape clean_shape_of(ShapeClass shape, const ShapeParams& params);
 
 // Distance from p to a circular arc (exact formula).
 double arc_distance(PointD p, const CleanShape& circle);

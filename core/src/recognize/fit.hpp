@@ -48,6 +48,9 @@ Line fit_line(std::span<const PointD> pts);
 std::optional<Fit> fit_segment(const PreparedStroke& s);
 std::optional<Fit> fit_polyline(const PreparedStroke& s, std::size_t segments);
 std::optional<Fit> fit_polygon(const PreparedStroke& s, std::size_t corners); // 3 or 4
+// A triangle or quadrilateral refined from given corners (3 or 4, e.g. skeleton seeds).
+std::optional<Fit> fit_polygon_from_corners(const PreparedStroke& s,
+                                            const std::vector<PointD>& corners);
 // From a quadrilateral fit: rectangle, square and diamond proposals.
 std::vector<Fit> fit_rectangles(const PreparedStroke& s, const Fit& quadrilateral);
 std::optional<Fit> fit_regular_polygon(const PreparedStroke& s, std::size_t sides, PointD center,

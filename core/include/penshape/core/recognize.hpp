@@ -66,14 +66,33 @@
 // at most RecognizerConfig::max_samples samples, finite coordinates with |x|, |y| <= 1e9, and a
 // configuration with finite, non-negative pen radius and tolerance and positive fractions.
 //
-// Input is the pen path (samples). The ink polygon and the deconstruction's skeleton P of the
-// engine are not inputs yet: the certificate is stated for the exact ink of the sampled path.
+// Two entries. recognize(samples) sees the pen path only and certifies on the paths as above
+// (Certificate::method "path"): a statement about the ink drawn with one pen radius. It builds
+// no ink polygon. recognize(StrokeInput) takes the whole stroke: the samples, and optionally the
+// ink polygon Q the engine computed (any radii, pressure included) and the deconstruction's
+// skeleton P. With Q the snap is decided by the ink-level certificate (ink_certificate.hpp,
+// method "ink"): the candidates are screened, ranked and checked for plausibility exactly as
+// above with the path certificate (cheap), then the candidates that passed (certified and
+// plausible) are certified again on the inks, best rank first, until one passes: it wins. Those
+// that failed stay as alternatives whose certificate (method "ink", certified false) says why;
+// passed candidates ranked after the winner keep their path certificate (method "path"). A
+// candidate the path screening refused is not tried on the ink (its path bound or plausibility
+// already failed; this keeps the pen-up cost to about one ink certificate per stroke). Epsilon
+// follows the same rules, with StrokeInput::pen_radius as r when given. With P (a few vertices
+// whose r-offset is within epsilon of Q), its vertices also seed the corners of the triangle and
+// quadrilateral families: a seeded fit replaces the corner search's fit when its fit error is
+// lower (P's largest outer ring reduced to 3 or 4 vertices). Measured on the $1 logs with P from
+// deconstruct() at eps = r / 2: shape and non-shape rates unchanged, 4 of 1440 classes differ
+// (tests/core/recognize/skeleton_seeds_test.cpp); it is kept because it does not hurt. Pass P
+// from a deconstruction with eps < r: with eps >= r the answer is P = Q, whose vertices are not
+// corners. The plausibility rules (straight_fraction) read the path bound in both entries.
 #include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "penshape/core/deconstruct.hpp" // InvalidInput
+#include "penshape/core/ink.hpp"         // InkPolygon
 #include "penshape/core/polygon_set.hpp" // PointD
 
 namespace penshape {
@@ -138,6 +157,10 @@ struct Certificate {
   double epsilon = 0.0;        // the tolerance it was checked against
   double pen_radius = 0.0;     // r used
   double sample_spacing = 0.0; // h of the sampling argument
+  // "path": the bound is on H(stroke path, clean path) (this header's argument), which bounds
+  // the inks when the stroke's ink is its path ⊕ one disk; "ink": the bound is on H(clean ink,
+  // true stroke ink) from the ink polygon (ink_certificate.hpp), pressure-varying ink included.
+  std::string method = "path";
 };
 
 struct ShapeParams {
@@ -164,10 +187,11 @@ struct Candidate {
 struct Recognition {
   ShapeClass shape = ShapeClass::kFreeform; // kFreeform when nothing certifies
   ShapeParams params;
-  std::vector<PointD> clean;           // empty for freeform
-  double rms = 0.0;                    // of the winner, see Candidate::rms
-  double confidence = 0.0;             // 1 - bound / (2 epsilon) of the winner (0.5..1), 0 freeform
-  Certificate certificate;             // of the winner (certified == false for freeform)
+  std::vector<PointD> clean; // empty for freeform
+  double rms = 0.0;          // of the winner, see Candidate::rms
+  double confidence = 0.0;   // 1 - bound / (2 epsilon) of the winner (0.5..1), 0 freeform
+  Certificate certificate;   // of the winner (certified == false for freeform; its method is
+                             // "ink" whenever the ink polygon was given)
   std::vector<Candidate> alternatives; // the other candidates tried, best bound first
   double epsilon = 0.0;
   double pen_radius = 0.0;
@@ -175,6 +199,21 @@ struct Recognition {
 
 // Throws InvalidInput (naming the problem) for bad input; see the limits above.
 Recognition recognize(const std::vector<StrokePoint>& samples, const RecognizerConfig& config = {});
+
+// The whole stroke, as the engine knows it (see "Two entries" above). The pointers are not
+// owned and must stay valid during the call; null means "not given".
+struct StrokeInput {
+  std::vector<StrokePoint> samples; // the pen path (as for recognize(samples))
+  const InkPolygon* ink = nullptr;  // Q of these samples, in the samples' unit
+  // Deconstruction's P (a YES answer's solution, same unit): corner seeds for polygons.
+  const PolygonSet* skeleton = nullptr;
+  // The clean ink's pen radius (with pressure: the radius the clean shape is drawn with, e.g.
+  // the stroke's typical radius); <= 0 uses RecognizerConfig::pen_radius and its default rule.
+  double pen_radius = 0.0;
+};
+
+// Throws InvalidInput as recognize(samples) does, and for an empty ink polygon.
+Recognition recognize(const StrokeInput& stroke, const RecognizerConfig& config = {});
 
 // The tolerance and pen radius the recognizer uses for these samples (the rule above).
 struct ToleranceChoice {

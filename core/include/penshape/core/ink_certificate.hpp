@@ -1,0 +1,68 @@
+#pragma once
+// The ink-level certificate: a certified upper bound on the Hausdorff distance between a clean
+// shape's ink C ⊕ D_r and the true ink T of a stroke (the exact region the pen disks swept,
+// pressure-varying radii allowed), computed from the stroke's ink polygon Q.
+//
+// Why (and not the path certificate of recognize.hpp): H(path, clean path) bounds the distance of
+// the inks only when the stroke's ink is path ⊕ D_r with one radius. With pressure the ink is
+// not, and Q is what the user saw. Here:
+//     H(C ⊕ D_r, T) <= H(C ⊕ D_r, Q) + H(Q, T) <= H(C ⊕ D_r, Q) + Q.hausdorff_bound     (1)
+// (the triangle inequality of the Hausdorff distance; ink.hpp bounds H(Q, T)).
+//
+// H(C ⊕ D_r, Q) = max(S1, S2) with S1 = sup_{x in C⊕D_r} d(x, Q) and S2 = sup_{q in Q}
+// d(q, C ⊕ D_r) = sup_{q in Q} max(0, d(q, C) - r). Both are sups over 2-D regions of
+// 1-Lipschitz functions that can peak inside a region (d(., Q) inside a hole of Q, d(., C)
+// at a circle's centre), so they are sampled on the square grid G = {o + (i h, j h)} covering
+// both regions' boxes (o = Q's lowest corner):
+//   - every point x of the plane within the box has a grid point g with |x - g| <= h/sqrt(2);
+//   - S1: if x is in C ⊕ D_r then d(g, C) <= r + h/sqrt(2), and d(x, Q) <= d(g, Q) + h/sqrt(2).
+//     So S1 <= max{ d(g, Q) : g in G1 } + h/sqrt(2) for any G1 containing every g with
+//     d(g, C) <= r + h/sqrt(2). G1 is chosen with an exact distance for polylines and circular
+//     arcs; for an ellipse a point is left out only when proven farther (an algebraic bound on
+//     the ellipse equation, then the chords of the ellipse sampled with arc-length steps hs =
+//     h/4, coarser for curves longer than 20,000 such steps: d(g, ellipse) >= d(g, chords) -
+//     hs/2). Taking more points only raises the maximum.
+//     d(g, Q) = 0 when g is inside Q (parity of the crossings of the grid row with Q's edges),
+//     else the distance to Q's nearest edge (a uniform grid of Q's edges).
+//   - S2: if q is in Q then d(g, Q) <= h/sqrt(2) and max(0, d(q, C) - r) <= max(0, d(g, C) - r)
+//     + h/sqrt(2). So S2 <= max{ max(0, d(g, C) - r) : g in G, d(g, Q) <= h/sqrt(2) } +
+//     h/sqrt(2), with d(g, C) bounded from above (exact for polylines and circular arcs; the
+//     distance to a point ON the ellipse otherwise).
+//   - The grid covers Q's box and the clean ink's box (polylines: from the vertices; curves:
+//     from samples with steps hs, grown by hs/2).
+//   - A clean ink whose box reaches more than epsilon + 2h beyond Q's box has a point farther
+//     than epsilon from Q and cannot certify; its bound is the diagonal of the union of the
+//     boxes (no two points of the regions are farther apart), plus Q.hausdorff_bound.
+// Rounding: every quantity is a few double operations on coordinates of magnitude <= M (the
+// largest |coordinate| of Q, of C's samples and of the box), so its error is a small multiple of
+// 2^-52 M; the selections are widened and the result raised by margin = 1e-13 M + 1e-9 (box
+// diagonal), far above that (as in the path certificate). Q's exact rational coordinates are
+// rounded to the nearest double (error <= 2^-53 M, inside the margin). A grid point within
+// rounding of Q's boundary may be classified either way: its distance to Q is within the margin
+// either way.
+// Hence
+//     bound = max(S1 estimate, S2 estimate) + h/sqrt(2) + 2 margin + Q.hausdorff_bound
+//           >= H(C ⊕ D_r, T),
+// and the certificate holds when bound <= epsilon. The bound exceeds the true H(C ⊕ D_r, Q) by
+// at most about 2 h (the grid's h/sqrt(2) twice, once in the selection and once in the value,
+// plus hs/2 for ellipses) plus Q.hausdorff_bound.
+//
+// Spacing: h = epsilon / 10, coarsened so that at most 250,000 grid points are sampled (Q's box
+// grown by 1.3 epsilon each side); with the default tolerance rule a stroke's box is about 8
+// epsilon wide, about 7,000 grid points, under a millisecond.
+#include "penshape/core/ink.hpp"
+#include "penshape/core/recognize.hpp"
+
+namespace penshape {
+
+// The certificate of the clean shape (class and parameters as recognize() reports them: vertices
+// of segments, polylines and polygons, which are closed; centre and radius of circles; centre,
+// radius, start and sweep of arcs; centre, radius_x along `rotation`, radius_y across it for
+// ellipses) drawn with pen radius `pen_radius` against the stroke's ink `ink` (same unit).
+// method "ink", sample_spacing = h. Throws InvalidInput for freeform, an empty ink polygon,
+// non-finite or negative radius, a non-positive epsilon, or degenerate parameters (no vertices,
+// non-positive radii).
+Certificate certify_ink(const InkPolygon& ink, ShapeClass shape, const ShapeParams& params,
+                        double pen_radius, double epsilon);
+
+} // namespace penshape

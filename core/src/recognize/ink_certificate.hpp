@@ -1,0 +1,38 @@
+#pragma once
+// The ink-level certificate (argument in penshape/core/ink_certificate.hpp): the stroke's ink
+// polygon prepared once per stroke for grid sampling, and the bound for one clean shape.
+#include <vector>
+
+#include "clean_shape.hpp"
+#include "penshape/core/ink.hpp"
+#include "penshape/core/recognize.hpp"
+#include "segment_index.hpp"
+
+namespace penshape::recognize_detail {
+
+// The grid spacing is epsilon / kInkGridDivisions, coarsened so that a certificate samples at
+// most kMaxInkGridPoints grid points (ink box grown by the tolerance band on every side).
+inline constexpr double kInkGridDivisions = 10.0;
+inline constexpr double kMaxInkGridPoints = 250'000.0;
+
+// Q in doubles: its edges in a segment grid and, per grid row, the sorted x where edges cross
+// the row (inside/outside along the row by parity).
+struct InkRegion {
+  double hausdorff_bound = 0.0; // InkPolygon::hausdorff_bound
+  double h = 0.0;               // grid spacing
+  PointD origin;                // grid points are origin + (i h, j h), i and j integers
+  PointD lo, hi;                // Q's bounding box
+  double magnitude = 0.0;       // largest |coordinate| of Q (rounding margin)
+  std::int64_t first_row = 0;   // rows[k] is grid row first_row + k
+  std::vector<std::vector<double>> rows;
+  SegmentIndex edges{{}, 1.0};
+};
+
+// Throws InvalidInput when Q is empty or has non-finite coordinates.
+InkRegion prepare_ink(const InkPolygon& ink, double epsilon);
+
+// Upper bound on H(shape ⊕ D_r, true stroke ink) (Certificate::method "ink").
+Certificate certify_ink(const InkRegion& q, const CleanShape& shape, double epsilon,
+                        double pen_radius);
+
+} // namespace penshape::recognize_detail

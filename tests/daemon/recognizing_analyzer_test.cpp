@@ -1,0 +1,69 @@
+// The daemon's recognizing analyzer certifies snaps on the ink polygon it reports: a drawn
+// circle comes back as a circle whose certificate says "ink-hausdorff-sampling", with the bound
+// within the tolerance and the ink polygon present; a scribble stays freeform.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "penshape/daemon/recognizing_analyzer.hpp"
+
+namespace penshape::daemon {
+namespace {
+
+Stroke stroke_from(const std::vector<PointD>& mm) {
+  Stroke s;
+  s.id = 7;
+  s.tablet.x_max = 40000;
+  s.tablet.y_max = 30000;
+  s.tablet.x_resolution = 100; // units per mm
+  s.tablet.y_resolution = 100;
+  s.tablet.pressure_max = 1023;
+  std::int64_t t = 0;
+  for (const PointD& p : mm) {
+    PenSample ps;
+    ps.time_us = t += 5000;
+    ps.x = static_cast<std::int32_t>(std::lround(p.x * 100));
+    ps.y = static_cast<std::int32_t>(std::lround(p.y * 100));
+    ps.pressure = 600;
+    ps.in_range = ps.tip = true;
+    s.samples.push_back(ps);
+  }
+  s.samples.back().tip = false;
+  return s;
+}
+
+TEST(RecognizingAnalyzer, CircleIsCertifiedOnTheInk) {
+  std::vector<PointD> mm;
+  for (int k = 0; k <= 200; ++k) {
+    const double t = 2 * std::numbers::pi * k / 200.0;
+    mm.push_back({100 + 30 * std::cos(t) + 0.2 * std::sin(7 * t), 80 + 30 * std::sin(t)});
+  }
+  mm.push_back(mm[1]); // the overlap a closing hand draws, then tip up
+  const auto analyzer = make_recognizing_analyzer();
+  PenSettings settings;
+  settings.pen_radius_mm = 0.8;
+  const StrokeAnalysis a = analyzer->analyze(stroke_from(mm), settings, {});
+  EXPECT_GT(a.ink_polygon.polygons_size(), 0);
+  ASSERT_EQ(a.shape.kind(), v1::SHAPE_KIND_CIRCLE);
+  EXPECT_EQ(a.shape.certificate().method(), "ink-hausdorff-sampling");
+  EXPECT_LE(a.shape.certificate().hausdorff_bound().approx(),
+            a.shape.certificate().tolerance().approx());
+  EXPECT_NEAR(a.shape.circle().radius(), 30, 1.0);
+  EXPECT_DOUBLE_EQ(a.shape.certificate().pen_radius().approx(), 0.8);
+}
+
+TEST(RecognizingAnalyzer, ScribbleStaysInk) {
+  std::vector<PointD> mm;
+  for (int k = 0; k <= 400; ++k) {
+    const double t = k / 400.0;
+    mm.push_back({100 + 60 * t + 4 * std::sin(40 * t), 80 + 6 * std::cos(33 * t)});
+  }
+  const auto analyzer = make_recognizing_analyzer();
+  const StrokeAnalysis a = analyzer->analyze(stroke_from(mm), PenSettings{}, {});
+  EXPECT_GT(a.ink_polygon.polygons_size(), 0);
+  EXPECT_EQ(a.shape.kind(), v1::SHAPE_KIND_NONE);
+}
+
+} // namespace
+} // namespace penshape::daemon
