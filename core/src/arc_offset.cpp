@@ -107,6 +107,11 @@ void collect(const ClipperLib::PolyNode& node, double grid, double r, double tol
   out.polygons.push_back(std::move(polygon));
 }
 
+// A ring of zero area (fewer than three vertices, or a walk there and back such as [a, p, b, p])
+// is a curve, the degenerate solution simplification returns for a thin stroke: its offset is
+// the offset of the chain of its edges (round ends), not of a region.
+bool is_curve(const Ring& ring) { return ring.size() < 3 || sgn(twice_signed_area(ring)) == 0; }
+
 } // namespace
 
 CurvedRegion offset_with_arcs(const PolygonSet& p, double r, double max_error) {
@@ -116,8 +121,17 @@ CurvedRegion offset_with_arcs(const PolygonSet& p, double r, double max_error) {
   if (!(max_error > 0) || !std::isfinite(max_error) || max_error > r) {
     throw InvalidInput("the arc offset error must be positive, finite and at most the radius");
   }
-  validate_region(p);
-  PolygonSet oriented = p;
+  PolygonSet oriented; // the polygons with area; curves go to `curves`
+  std::vector<const Ring*> curves;
+  for (const PolygonWithHoles& poly : p.polygons) {
+    if (!poly.outer.empty() && is_curve(poly.outer)) {
+      if (!poly.holes.empty()) throw InvalidInput("a polygon of zero area cannot have holes");
+      curves.push_back(&poly.outer);
+    } else {
+      oriented.polygons.push_back(poly);
+    }
+  }
+  if (!oriented.polygons.empty() || curves.empty()) validate_region(oriented);
   normalize_orientation(oriented);
 
   // Grid: three roundings of half a diagonal take at most a quarter of the error; Clipper's
@@ -127,26 +141,33 @@ CurvedRegion offset_with_arcs(const PolygonSet& p, double r, double max_error) {
   std::vector<PointD> vertices;
   Paths rings;
   double extent = r;
+  auto to_path = [&](const Ring& ring) {
+    Path path;
+    for (const auto& v : ring) {
+      const PointD d = to_double(v);
+      vertices.push_back(d);
+      extent = std::max({extent, std::abs(d.x) + r, std::abs(d.y) + r});
+      path.push_back({static_cast<cInt>(std::llround(d.x / grid)),
+                      static_cast<cInt>(std::llround(d.y / grid))});
+    }
+    return path;
+  };
   for (const auto& poly : oriented.polygons) {
-    auto add = [&](const Ring& ring) {
-      Path path;
-      for (const auto& v : ring) {
-        const PointD d = to_double(v);
-        vertices.push_back(d);
-        extent = std::max({extent, std::abs(d.x) + r, std::abs(d.y) + r});
-        path.push_back({static_cast<cInt>(std::llround(d.x / grid)),
-                        static_cast<cInt>(std::llround(d.y / grid))});
-      }
-      rings.push_back(std::move(path));
-    };
-    add(poly.outer);
-    for (const auto& h : poly.holes) add(h);
+    rings.push_back(to_path(poly.outer));
+    for (const auto& h : poly.holes) rings.push_back(to_path(h));
+  }
+  Paths chains; // each curve walked once round, back to its start
+  for (const Ring* curve : curves) {
+    Path chain = to_path(*curve);
+    chain.push_back(chain.front());
+    chains.push_back(std::move(chain));
   }
   if (extent / grid > 1e18) throw InvalidInput("coordinates too large for the requested arc error");
 
   ClipperLib::ClipperOffset offsetter;
   offsetter.ArcTolerance = (max_error * 3 / 4 / 2.25) / grid;
   offsetter.AddPaths(rings, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+  offsetter.AddPaths(chains, ClipperLib::jtRound, ClipperLib::etOpenRound);
   Paths grown;
   offsetter.Execute(grown, r / grid);
   ClipperLib::Clipper clipper;

@@ -36,6 +36,11 @@ class CoreGeometryBackend final : public GeometryBackend {
     return penshape::deconstruct(q, params, cancel, limits);
   }
 
+  SimplifyResult simplify(const PolygonSet& q, const DeconstructResult& raw,
+                          const CancelHook& cancel, const DeconstructLimits& limits) override {
+    return simplify_solution(q, raw, cancel, limits);
+  }
+
   v1::CurvedRegion offset_boundary(const PolygonSet& p, const Rational& radius,
                                    const CancelHook& /*cancel*/) override {
     const CurvedRegion region = offset_with_arcs(p, to_double(radius));

@@ -9,6 +9,12 @@ v1::CurvedRegion GeometryBackend::offset_boundary(const PolygonSet& /*p*/,
       "include_offset: this server's geometry backend cannot compute offset boundaries with arcs");
 }
 
+SimplifyResult GeometryBackend::simplify(const PolygonSet& /*q*/, const DeconstructResult& /*raw*/,
+                                         const CancelHook& /*cancel*/,
+                                         const DeconstructLimits& /*limits*/) {
+  throw NotAvailable("simplify: this server's geometry backend cannot simplify solutions");
+}
+
 ToleranceSearchResult GeometryBackend::search_tolerance(const PolygonSet&, const Rational&,
                                                         const Rational&, EngineKind,
                                                         const CancelHook&, const DeconstructLimits&,

@@ -55,15 +55,10 @@ grpc::Status GeometryServiceImpl::Deconstruct(grpc::ServerContext* context,
       state_.pool, context, state_.limits,
       [&](const StopCondition& stop) {
         const auto started = Clock::now();
-        DeconstructLimits limits;
-        limits.max_input_vertices = state_.limits.max_vertices;
-        const CancelHook hook = cancel_hook(stop);
-        const DeconstructResult result = state_.geometry->deconstruct(q, params, hook, limits);
-        to_proto(result, response);
-        if (request->include_offset() && result.answer == Answer::kYes) {
-          *response->mutable_solution_offset() =
-              state_.geometry->offset_boundary(result.solution, params.radius, hook);
-        }
+        deconstruct_into(
+            *state_.geometry, q, params,
+            {.simplify = request->simplify(), .include_offset = request->include_offset()},
+            cancel_hook(stop), core_limits(state_.limits), response);
         compute_us = micros_since(started);
         return grpc::Status::OK;
       },
@@ -131,12 +126,6 @@ void to_proto_params(const DeconstructResult& r, v1::ResolvedParams* out) {
   to_proto(r.params.tolerance, out->mutable_tolerance());
   to_proto(r.params.precision, out->mutable_precision());
   out->set_engine(to_proto(r.engine));
-}
-
-DeconstructLimits core_limits(const Limits& limits) {
-  DeconstructLimits l;
-  l.max_input_vertices = limits.max_vertices;
-  return l;
 }
 
 Rational positive(const v1::Scalar& s, bool present, const std::string& field,
@@ -287,6 +276,42 @@ grpc::Status GeometryServiceImpl::SuggestRadius(
         }
         for (const RadiusSample& sample : r.samples) fill(sample, out->add_samples());
       });
+}
+
+DeconstructLimits core_limits(const Limits& limits) {
+  DeconstructLimits l;
+  l.max_input_vertices = limits.max_vertices;
+  return l;
+}
+
+void deconstruct_into(GeometryBackend& geometry, const PolygonSet& q,
+                      const DeconstructParams& params, const DeconstructOptions& options,
+                      const CancelHook& cancel, const DeconstructLimits& limits,
+                      v1::DeconstructResponse* response) {
+  DeconstructResult result = geometry.deconstruct(q, params, cancel, limits);
+  const bool yes = result.answer == Answer::kYes;
+  if (yes && options.simplify) {
+    try {
+      SimplifyResult simple = geometry.simplify(q, result, cancel, limits);
+      v1::Simplification* info = response->mutable_simplification();
+      info->set_simplified(simple.simplified);
+      to_proto(simple.tau, info->mutable_tau());
+      info->set_raw_vertices(static_cast<std::uint32_t>(simple.raw_vertices));
+      info->set_solution_vertices(static_cast<std::uint32_t>(simple.solution_vertices));
+      result = std::move(simple.result);
+    } catch (const NotAvailable&) {
+      if (!options.extras_if_available) throw;
+    }
+  }
+  to_proto(result, response);
+  if (yes && options.include_offset) {
+    try {
+      *response->mutable_solution_offset() =
+          geometry.offset_boundary(result.solution, params.radius, cancel);
+    } catch (const NotAvailable&) {
+      if (!options.extras_if_available) throw;
+    }
+  }
 }
 
 grpc::Status analyze_stroke(DaemonState& state, grpc::ServerContext* context, const Stroke& stroke,

@@ -26,6 +26,24 @@ class GeometryServiceImpl final : public v1::Geometry::Service {
   DaemonState& state_;
 };
 
+// The core's limits from the daemon's (max_vertices).
+DeconstructLimits core_limits(const Limits& limits);
+
+// One deconstruction into its response (the Deconstruct RPC and the live StrokeDeconstructed
+// event): decide, then with YES simplify (when asked) and add the offset's boundary (when asked).
+// Timings are left to the caller. Throws what the backend throws.
+struct DeconstructOptions {
+  bool simplify = false;
+  bool include_offset = false;
+  // A backend that cannot simplify or draw offsets (NotAvailable) leaves them out instead of
+  // failing the call (the live event: the certified raw P is still worth sending).
+  bool extras_if_available = false;
+};
+void deconstruct_into(GeometryBackend& geometry, const PolygonSet& q,
+                      const DeconstructParams& params, const DeconstructOptions& options,
+                      const CancelHook& cancel, const DeconstructLimits& limits,
+                      v1::DeconstructResponse* response);
+
 // Runs the analyzer for one stroke on the pool (SubmitStroke, Recognize, StreamSamples).
 grpc::Status analyze_stroke(DaemonState& state, grpc::ServerContext* context, const Stroke& stroke,
                             const PenSettings& settings, StrokeAnalysis* analysis,

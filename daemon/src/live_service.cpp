@@ -107,6 +107,7 @@ grpc::Status LiveServiceImpl::Subscribe(grpc::ServerContext* context,
   EventFilter filter;
   filter.samples = request->include_samples();
   filter.previews = request->include_previews();
+  filter.deconstructions = request->include_deconstruction();
   filter.raw_reports = request->include_raw_reports();
   filter.device_ids.insert(request->device_ids().begin(), request->device_ids().end());
   std::unique_ptr<Subscription> subscription;

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "call_runner.hpp"
+#include "geometry_service.hpp"
 #include "penshape/daemon/proto_convert.hpp"
 
 namespace penshape::daemon {
@@ -154,6 +155,7 @@ void Pipeline::stroke_finished(const std::string& device_id, Stroke stroke) {
       timings.set_total_us(
           static_cast<std::uint64_t>(duration_cast<microseconds>(now - submitted).count()));
       publish_stroke(state_.hub, device_id, stroke, &analysis, "", timings);
+      maybe_deconstruct(device_id, stroke.id, analysis.ink_polygon, settings);
     } catch (const std::exception& e) {
       publish_stroke(state_.hub, device_id, stroke, nullptr,
                      std::string("analysis failed: ") + e.what(), timings);
@@ -170,6 +172,69 @@ void Pipeline::stroke_finished(const std::string& device_id, Stroke stroke) {
     // Never block the reader and never lose the stroke: publish it without its analysis.
     publish_stroke(state_.hub, device_id, stroke, nullptr,
                    "the geometry queue was full; the stroke was not analysed", {});
+  }
+}
+
+// eps = tolerance_fraction * r, delta = precision_fraction * eps (pen_settings.hpp), exact.
+DeconstructParams deconstruct_params_for(const PenSettings& settings) {
+  DeconstructParams params;
+  params.radius = exact(settings.pen_radius_mm);
+  params.tolerance = params.radius * exact(settings.tolerance_fraction);
+  params.precision = params.tolerance * exact(settings.precision_fraction);
+  params.engine = EngineKind::kFast;
+  return params;
+}
+
+// Called on the stroke lane once the stroke's shape is published: the deconstruction runs on the
+// geometry lane (batch priority), so it never delays a shape.
+void Pipeline::maybe_deconstruct(const std::string& device_id, std::uint64_t stroke_id,
+                                 const v1::PolygonSet& ink, const PenSettings& settings) {
+  if (!state_.hub.wants_deconstructions()) return;
+  auto publish = [this, device_id, stroke_id](v1::DeconstructResponse* result,
+                                              const std::string& not_deconstructed) {
+    v1::LiveEvent event;
+    event.set_device_id(device_id);
+    v1::StrokeDeconstructed* d = event.mutable_deconstructed();
+    d->set_stroke_id(stroke_id);
+    if (result != nullptr) d->mutable_result()->Swap(result);
+    d->set_not_deconstructed(not_deconstructed);
+    state_.hub.publish(std::move(event));
+  };
+  if (!state_.geometry) return publish(nullptr, "this build has no deconstruction engine");
+  if (ink.polygons_size() == 0) return publish(nullptr, "the stroke has no ink polygon");
+  const auto submitted = std::chrono::steady_clock::now();
+  auto job = [this, ink, settings, submitted, publish](const StopCondition& stop) {
+    using std::chrono::duration_cast;
+    using std::chrono::microseconds;
+    const auto started = std::chrono::steady_clock::now();
+    v1::DeconstructResponse result;
+    std::string why;
+    try {
+      const PolygonSet q = polygon_set_from_proto(ink, "ink_polygon", state_.limits);
+      deconstruct_into(*state_.geometry, q, deconstruct_params_for(settings),
+                       {.simplify = true, .include_offset = true, .extras_if_available = true},
+                       cancel_hook(stop), core_limits(state_.limits), &result);
+      const auto now = std::chrono::steady_clock::now();
+      v1::Timings* t = result.mutable_timings();
+      t->set_queued_us(
+          static_cast<std::uint64_t>(duration_cast<microseconds>(started - submitted).count()));
+      t->set_compute_us(
+          static_cast<std::uint64_t>(duration_cast<microseconds>(now - started).count()));
+      t->set_total_us(
+          static_cast<std::uint64_t>(duration_cast<microseconds>(now - submitted).count()));
+    } catch (const std::exception& e) {
+      why = stop.deadline_passed() ? "the deconstruction passed its deadline (max_call_seconds)"
+                                   : std::string("deconstruction failed: ") + e.what();
+    }
+    publish(why.empty() ? &result : nullptr, why);
+    job_done();
+  };
+  const StopCondition stop(
+      std::chrono::steady_clock::now() + std::chrono::seconds(state_.limits.max_call_seconds), {});
+  job_started();
+  if (!state_.pool.submit(std::move(job), stop)) {
+    job_done();
+    publish(nullptr, "the geometry queue was full; the stroke was not deconstructed");
   }
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // The daemon's SampleSink: device events and samples go straight to the hub (the reader thread
 // only copies and queues); finished strokes go to the stroke lane for their ink polygon and shape,
-// then to the hub; strokes in progress get previews on the idle-priority preview lane now and
+// then to the hub, and, for subscribers that ask, to the geometry lane for their deconstruction
+// (StrokeDeconstructed); strokes in progress get previews on the idle-priority preview lane now and
 // then, only while some subscriber asks for previews. A preview still queued or running when its
 // stroke ends is cancelled: the stroke's final shape supersedes it.
 #include <atomic>
@@ -64,6 +65,8 @@ class Pipeline final : public SampleSink {
   void job_started();
   void job_done();
   void maybe_preview(const std::string& device_id, Drawing& drawing);
+  void maybe_deconstruct(const std::string& device_id, std::uint64_t stroke_id,
+                         const v1::PolygonSet& ink, const PenSettings& settings);
 
   DaemonState& state_;
   std::mutex mutex_;

@@ -27,6 +27,9 @@ bool EventFilter::accepts(const v1::LiveEvent& event) const {
     case v1::LiveEvent::kPreview:
       if (!previews) return false;
       break;
+    case v1::LiveEvent::kDeconstructed:
+      if (!deconstructions) return false;
+      break;
     case v1::LiveEvent::kStrokeStarted:
     case v1::LiveEvent::kStrokeFinished:
     case v1::LiveEvent::kShape:
@@ -111,6 +114,7 @@ std::unique_ptr<Subscription> ShapeHub::subscribe(EventFilter filter, std::size_
   std::unique_ptr<Subscription> subscription(new Subscription(*this, std::move(filter), capacity));
   subscribers_.push_back(subscription.get());
   if (subscription->filter_.previews) preview_subscribers_.fetch_add(1);
+  if (subscription->filter_.deconstructions) deconstruction_subscribers_.fetch_add(1);
   if (raw) raw_subscribers_.fetch_add(1);
   return subscription;
 }
@@ -121,6 +125,7 @@ void ShapeHub::unsubscribe(Subscription* subscription) {
   if (it == subscribers_.end()) return;
   subscribers_.erase(it, subscribers_.end());
   if (subscription->filter_.previews) preview_subscribers_.fetch_sub(1);
+  if (subscription->filter_.deconstructions) deconstruction_subscribers_.fetch_sub(1);
   if (subscription->filter_.raw_reports) raw_subscribers_.fetch_sub(1);
 }
 
@@ -146,6 +151,8 @@ std::size_t ShapeHub::subscriber_count() const {
 }
 
 bool ShapeHub::wants_previews() const { return preview_subscribers_.load() > 0; }
+
+bool ShapeHub::wants_deconstructions() const { return deconstruction_subscribers_.load() > 0; }
 
 std::uint64_t ShapeHub::published() const { return sequence_.load(); }
 

@@ -68,6 +68,40 @@ TEST(ArcOffset, SquareHasFourSegmentsAndFourArcs) {
   }
 }
 
+// Simplification and the convex path return curves (zero-area rings): their offset is the
+// stroke of the curve with round ends.
+TEST(ArcOffset, ASegmentIsAStadium) {
+  const PolygonSet segment{{{{{0, 0}, {6, 0}}, {}}}};
+  const CurvedRegion region = offset_with_arcs(segment, 1.0);
+  ASSERT_EQ(region.polygons.size(), 1U);
+  EXPECT_TRUE(region.polygons[0].holes.empty());
+  const Counts c =
+      check_ring(region.polygons[0].outer, test::to_region_d(segment), 1.0, region.max_error);
+  EXPECT_EQ(c.arcs, 2U * 9);
+  EXPECT_EQ(c.segments, 2U * 9);
+}
+
+TEST(ArcOffset, APolylineWalkedThereAndBackIsItsStroke) {
+  const PolygonSet polyline{{{{{0, 0}, {4, 0}, {4, 3}, {4, 0}}, {}}}};
+  const CurvedRegion region = offset_with_arcs(polyline, 1.0);
+  ASSERT_EQ(region.polygons.size(), 1U);
+  EXPECT_TRUE(region.polygons[0].holes.empty());
+  const Counts c =
+      check_ring(region.polygons[0].outer, test::to_region_d(polyline), 1.0, region.max_error);
+  EXPECT_EQ(c.arcs, 3U * 9); // both ends and the outside of the corner
+}
+
+TEST(ArcOffset, APointIsADiskAndCurvesSitBesideRegions) {
+  const PolygonSet mixed{{{{{20, 20}}, {}}, {{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {}}}};
+  const CurvedRegion region = offset_with_arcs(mixed, 1.0);
+  ASSERT_EQ(region.polygons.size(), 2U);
+  for (const auto& polygon : region.polygons) {
+    check_ring(polygon.outer, test::to_region_d(mixed), 1.0, region.max_error);
+  }
+  const PolygonSet curve_with_hole{{{{{0, 0}, {6, 0}}, {{{1, 1}, {2, 1}, {2, 2}}}}}};
+  EXPECT_THROW((void)offset_with_arcs(curve_with_hole, 1.0), InvalidInput);
+}
+
 TEST(ArcOffset, HoleShrinksWithSharpCorners) {
   PolygonSet frame{{{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{{2, 2}, {2, 8}, {8, 8}, {8, 2}}}}}};
   const CurvedRegion region = offset_with_arcs(frame, 1.0);

@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <future>
+#include <map>
 #include <set>
 #include <thread>
 
@@ -334,6 +335,57 @@ TEST_F(DaemonE2E, AHangingPreviewIsCancelledAndTheStrokesShapeStillArrives) {
   }
   EXPECT_EQ(rig.analyzer->previews_cancelled.load(), 1); // the stroke's end (or staleness)
   rig.ctx.TryCancel();
+}
+
+TEST_F(DaemonE2E, DeconstructionsFollowTheShapeOnlyForSubscribersThatAsk) {
+  config_.settings.tolerance_fraction = 2; // eps >= r: the fake backend answers YES with P = Q
+  auto source = std::make_shared<FakeSampleSource>();
+  auto analyzer = std::make_shared<penshape::testing::BoundingBoxAnalyzer>();
+  start({source, std::make_shared<penshape::testing::FakeGeometryBackend>(), analyzer});
+  auto live = v1::Live::NewStub(channel());
+  grpc::ClientContext asking_ctx;
+  grpc::ClientContext plain_ctx;
+  asking_ctx.set_deadline(in(30s));
+  plain_ctx.set_deadline(in(30s));
+  v1::SubscribeRequest asking_request;
+  asking_request.set_include_deconstruction(true);
+  auto asking = live->Subscribe(&asking_ctx, asking_request);
+  auto plain = live->Subscribe(&plain_ctx, v1::SubscribeRequest{});
+  wait_for_subscribers(2);
+  source->attach("pen0");
+  source->emit_stroke("pen0", 30);
+  source->emit_stroke("pen0", 30);
+
+  // The asking subscriber: per stroke finished, shape, then its deconstruction (P = Q here).
+  std::map<std::uint64_t, v1::PolygonSet> ink;
+  std::set<std::uint64_t> shaped;
+  std::set<std::uint64_t> deconstructed;
+  v1::LiveEvent event;
+  while (deconstructed.size() < 2 && asking->Read(&event)) {
+    if (event.has_stroke_finished()) {
+      ink[event.stroke_finished().stroke().id()] = event.stroke_finished().ink_polygon();
+    }
+    if (event.has_shape()) shaped.insert(event.shape().stroke_id());
+    if (!event.has_deconstructed()) continue;
+    const v1::StrokeDeconstructed& d = event.deconstructed();
+    EXPECT_EQ(d.not_deconstructed(), "");
+    EXPECT_EQ(shaped.count(d.stroke_id()), 1U) << "the shape comes first";
+    EXPECT_EQ(d.result().answer(), v1::ANSWER_YES);
+    EXPECT_EQ(d.result().solution().polygons_size(), ink[d.stroke_id()].polygons_size());
+    EXPECT_EQ(d.result().params().radius().approx(), 1.0); // the settings' r and eps = 2 r
+    EXPECT_EQ(d.result().params().tolerance().approx(), 2.0);
+    deconstructed.insert(d.stroke_id());
+  }
+  EXPECT_EQ(deconstructed, (std::set<std::uint64_t>{1, 2}));
+  // The other one: both strokes' shapes and nothing else.
+  std::size_t shapes = 0;
+  while (shapes < 2 && plain->Read(&event)) {
+    EXPECT_FALSE(event.has_deconstructed());
+    if (event.has_shape()) ++shapes;
+  }
+  EXPECT_EQ(shapes, 2U);
+  asking_ctx.TryCancel();
+  plain_ctx.TryCancel();
 }
 
 TEST_F(DaemonE2E, SixtyFourClientsKeepUpWhileOneSubscriberNeverReads) {

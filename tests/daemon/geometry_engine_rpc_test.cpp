@@ -15,6 +15,7 @@
 
 #include "penshape/core/deconstruct.hpp"
 #include "penshape/core/search.hpp"
+#include "penshape/core/simplify.hpp"
 #include "penshape/daemon/geometry_backend.hpp"
 #include "penshape/daemon/proto_convert.hpp"
 #include "penshape/daemon/server.hpp"
@@ -118,6 +119,36 @@ TEST_F(GeometryEngineRpc, DeconstructEqualsTheCoreLibrary) {
                 direct.hausdorff_bound.get_str(10));
     }
   }
+}
+
+TEST_F(GeometryEngineRpc, SimplifyEqualsTheCoreSimplification) {
+  v1::DeconstructRequest request;
+  *request.mutable_polygon() = read_exact_polygon("authors_demo_1_01_work1.txt");
+  request.mutable_radius()->set_rational("1");
+  request.mutable_tolerance()->set_rational("1/2");
+  request.set_simplify(true);
+  grpc::ClientContext ctx;
+  ctx.set_deadline(std::chrono::system_clock::now() + 120s);
+  v1::DeconstructResponse response;
+  const grpc::Status status = stub_->Deconstruct(&ctx, request, &response);
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  ASSERT_EQ(response.answer(), v1::ANSWER_YES);
+  ASSERT_TRUE(response.has_simplification());
+
+  const penshape::daemon::Limits limits;
+  const penshape::PolygonSet q =
+      penshape::daemon::polygon_set_from_proto(request.polygon(), "polygon", limits);
+  const auto params = penshape::daemon::deconstruct_params_from_proto(request, limits);
+  const penshape::SimplifyResult direct =
+      penshape::simplify_solution(q, penshape::deconstruct(q, params));
+  EXPECT_EQ(response.simplification().simplified(), direct.simplified);
+  EXPECT_EQ(response.simplification().raw_vertices(), direct.raw_vertices);
+  EXPECT_EQ(response.simplification().solution_vertices(), direct.solution_vertices);
+  EXPECT_LE(response.simplification().solution_vertices(),
+            response.simplification().raw_vertices());
+  v1::PolygonSet expected;
+  penshape::daemon::to_proto(direct.result.solution, &expected);
+  EXPECT_EQ(response.solution().SerializeAsString(), expected.SerializeAsString());
 }
 
 TEST_F(GeometryEngineRpc, ACancelledLargeDeconstructionStops) {

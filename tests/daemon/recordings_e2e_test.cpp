@@ -10,17 +10,21 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "penshape/daemon/device_manager_source.hpp"
+#include "penshape/daemon/geometry_backend.hpp"
+#include "penshape/daemon/proto_convert.hpp"
 #include "penshape/daemon/recognizing_analyzer.hpp"
 #include "penshape/daemon/server.hpp"
 #include "penshape/daemon/shape_hub.hpp"
 #include "penshape/drivers/recording.hpp"
 #include "penshape/v1/live.grpc.pb.h"
+#include "support/hausdorff_check.hpp"
 
 namespace {
 
@@ -124,6 +128,102 @@ TEST(RecordingsE2E, EveryBundledRecordingGivesItsExpectedStrokesAndShapes) {
     ctx.TryCancel();
   }
   EXPECT_GE(recordings, 2U);
+}
+
+// A solution as sent, read without the API's input checks (a simplified P may be a curve: a ring
+// of two points, or of zero area).
+penshape::PolygonSet solution_from_proto(const v1::PolygonSet& set) {
+  auto ring = [](const v1::Ring& r) {
+    penshape::Ring out;
+    for (const auto& p : r.exact_points()) {
+      out.push_back({penshape::Rational(p.x()), penshape::Rational(p.y())});
+    }
+    return out;
+  };
+  penshape::PolygonSet out;
+  for (const auto& polygon : set.polygons()) {
+    penshape::PolygonWithHoles pw;
+    pw.outer = ring(polygon.outer());
+    for (const auto& hole : polygon.holes()) pw.holes.push_back(ring(hole));
+    out.polygons.push_back(std::move(pw));
+  }
+  return out;
+}
+
+// With a subscriber that asks for deconstructions, every stroke of every bundled recording also
+// gets its StrokeDeconstructed after its shape; each YES is checked by the tests' own sampling
+// Hausdorff estimate (no engine code): H(offset(P, r), Q) <= the certified bound, within the
+// estimate's error.
+TEST(RecordingsE2E, EveryBundledStrokeIsDeconstructedAndEachYesHolds) {
+  std::size_t recordings = 0;
+  std::size_t yes = 0;
+  for (const auto& entry : fs::directory_iterator(fs::path(PENSHAPE_SOURCE_DIR) / "recordings")) {
+    if (entry.path().extension() != ".hidrec") continue;
+    ++recordings;
+    SCOPED_TRACE(entry.path().filename().string());
+    penshape::daemon::ServerOptions options;
+    options.address = "unix-abstract:penshape-rec-deconstruct-" + std::to_string(::getpid()) + "-" +
+                      std::to_string(recordings);
+    options.config.limits.subscriber_queue_events = 1U << 16;
+    auto source = std::make_shared<penshape::daemon::DeviceManagerSource>(nullptr);
+    penshape::daemon::PenshapeServer server(options,
+                                            {source, penshape::daemon::make_core_geometry_backend(),
+                                             penshape::daemon::make_recognizing_analyzer()});
+    auto live =
+        v1::Live::NewStub(grpc::CreateChannel(options.address, grpc::InsecureChannelCredentials()));
+    grpc::ClientContext ctx;
+    ctx.set_deadline(std::chrono::system_clock::now() + 300s);
+    v1::SubscribeRequest request;
+    request.set_include_deconstruction(true);
+    auto reader = live->Subscribe(&ctx, request);
+    const auto until = std::chrono::steady_clock::now() + 30s;
+    while (server.hub().subscriber_count() < 1 && std::chrono::steady_clock::now() < until) {
+      std::this_thread::sleep_for(1ms);
+    }
+    ASSERT_EQ(server.hub().subscriber_count(), 1U);
+    const auto recording = penshape::drivers::load_recording_file(entry.path());
+    source->replay(recording, penshape::drivers::ReplaySpeed::kAsFastAsPossible);
+    fs::path expected_path = entry.path();
+    expected_path.replace_extension(".expected");
+    const std::size_t strokes = expected_lines(expected_path).size();
+
+    std::map<std::uint64_t, v1::PolygonSet> ink;
+    std::set<std::uint64_t> shaped;
+    std::size_t deconstructed = 0;
+    v1::LiveEvent event;
+    const penshape::daemon::Limits limits;
+    while (deconstructed < strokes && reader->Read(&event)) {
+      if (event.has_stroke_finished()) {
+        ink[event.stroke_finished().stroke().id()] = event.stroke_finished().ink_polygon();
+      }
+      if (event.has_shape()) shaped.insert(event.shape().stroke_id());
+      if (!event.has_deconstructed()) continue;
+      ++deconstructed;
+      const v1::StrokeDeconstructed& d = event.deconstructed();
+      SCOPED_TRACE("stroke " + std::to_string(d.stroke_id()));
+      EXPECT_EQ(d.not_deconstructed(), "");
+      EXPECT_EQ(shaped.count(d.stroke_id()), 1U) << "the shape comes first";
+      if (d.result().answer() != v1::ANSWER_YES) continue;
+      ++yes;
+      const penshape::PolygonSet q =
+          penshape::daemon::polygon_set_from_proto(ink.at(d.stroke_id()), "ink", limits);
+      const penshape::PolygonSet p = solution_from_proto(d.result().solution());
+      ASSERT_FALSE(p.polygons.empty());
+      const double r = d.result().params().radius().approx();
+      const double eps = d.result().params().tolerance().approx();
+      const double bound = d.result().certificate().hausdorff_bound().approx();
+      EXPECT_LE(bound, eps);
+      EXPECT_TRUE(d.result().has_simplification());
+      EXPECT_GT(d.result().solution_offset().polygons_size(), 0);
+      const auto estimate = penshape::test::hausdorff_to_offset(
+          penshape::test::region_skeleton(p), r, penshape::test::to_region_d(q), eps / 4);
+      EXPECT_LE(estimate.value, bound + estimate.error);
+    }
+    EXPECT_EQ(deconstructed, strokes);
+    ctx.TryCancel();
+  }
+  EXPECT_GE(recordings, 2U);
+  EXPECT_GT(yes, 0U);
 }
 
 } // namespace

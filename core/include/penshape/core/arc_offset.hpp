@@ -38,8 +38,11 @@ struct CurvedRegion {
 };
 
 // offset(P, r) for a valid region P (validate_region) and r > 0; max_error 0 means r / 1000.
-// Throws InvalidInput on bad input (non-positive or non-finite r or error, invalid P, sizes
-// beyond the int64 grid).
+// P may also hold curves, the degenerate solutions of simplification and of the convex path: an
+// outer ring of zero area without holes (a point [a], a segment [a, b], a polyline walked there
+// and back [a, p, b, p]) stands for the chain of its edges, whose offset has round ends.
+// Throws InvalidInput on bad input (non-positive or non-finite r or error, invalid P, a curve
+// with holes, sizes beyond the int64 grid).
 CurvedRegion offset_with_arcs(const PolygonSet& p, double r, double max_error = 0.0);
 
 } // namespace penshape

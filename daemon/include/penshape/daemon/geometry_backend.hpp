@@ -9,6 +9,7 @@
 #include "penshape/core/deconstruct.hpp"
 #include "penshape/core/polygon_set.hpp"
 #include "penshape/core/search.hpp"
+#include "penshape/core/simplify.hpp"
 #include "penshape/v1/types.pb.h"
 
 namespace penshape::daemon {
@@ -30,6 +31,10 @@ class GeometryBackend {
   // NotAvailable unless the backend can compute it.
   virtual v1::CurvedRegion offset_boundary(const PolygonSet& p, const Rational& radius,
                                            const CancelHook& cancel);
+  // simplify_solution() semantics (core/include/penshape/core/simplify.hpp): `raw` is a YES of
+  // deconstruct(q, raw.params). Throws NotAvailable unless the backend can simplify.
+  virtual SimplifyResult simplify(const PolygonSet& q, const DeconstructResult& raw,
+                                  const CancelHook& cancel, const DeconstructLimits& limits);
 
   // The searches of core/include/penshape/core/search.hpp on q; `observe` sees every decision
   // (for progress). Throw NotAvailable unless the backend has them; InvalidInput, Cancelled.

@@ -38,6 +38,7 @@ struct EventFilter {
   // raw_report events, and with them device_attached / device_detached of the chosen devices, so
   // a capture sees in one ordered stream where each device's reports begin and end.
   bool raw_reports = false;
+  bool deconstructions = false;     // stroke_deconstructed (computed only while someone asks)
   std::set<std::string> device_ids; // empty: every device
   [[nodiscard]] bool accepts(const v1::LiveEvent& event) const;
 };
@@ -112,6 +113,8 @@ class ShapeHub {
   [[nodiscard]] std::size_t subscriber_count() const;
   // Some subscriber asked for preview candidates (previews cost geometry: none without a reader).
   [[nodiscard]] bool wants_previews() const;
+  // Some subscriber asked for stroke deconstructions (also computed only for a reader).
+  [[nodiscard]] bool wants_deconstructions() const;
   [[nodiscard]] std::uint64_t published() const;
 
  private:
@@ -128,6 +131,7 @@ class ShapeHub {
   std::mutex publish_mutex_;
   std::atomic<std::uint64_t> sequence_{0};
   std::atomic<std::size_t> preview_subscribers_{0};
+  std::atomic<std::size_t> deconstruction_subscribers_{0};
 };
 
 // CLOCK_MONOTONIC in microseconds (LiveEvent.published_us).
