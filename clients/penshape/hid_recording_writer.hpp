@@ -4,7 +4,7 @@
 // for `penshape record --decoded` (a daemon without raw reports; record_command_capture.hpp
 // writes the device's own bytes).
 //
-// penshaped's API delivers decoded samples, not the tablet's raw reports, so the file carries a
+// Such a daemon delivers decoded samples, not the tablet's raw reports, so the file carries a
 // synthetic descriptor: a standard HID digitizer pen (usage page 0x0D) whose logical ranges are
 // the tablet's and whose physical ranges encode its resolution. Any HID parser (ours, the
 // kernel's, hid-tools') decodes it back to the same samples.

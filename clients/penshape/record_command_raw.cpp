@@ -216,7 +216,8 @@ int record_raw(v1::Live::Stub& stub, const RecordOptions& options, CancelOnSigna
       (options.duration_seconds && status.error_code() == grpc::StatusCode::DEADLINE_EXCEEDED);
   if (!normal_end) {
     const RpcFailure f = describe_rpc_failure(status, "Subscribe", options.address);
-    if (!recording.started()) return give_up(record_fail(f.message, f.exit_code));
+    // A call refused or broken before any report (e.g. the raw-subscriber limit): no half file.
+    if (recording.reports() == 0) return give_up(record_fail(f.message, f.exit_code));
     return record_fail(f.message, f.exit_code);
   }
   if (!recording.started()) {

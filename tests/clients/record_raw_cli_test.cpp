@@ -203,6 +203,26 @@ TEST(RecordRawCli, RefusesADaemonWithoutRawReportsUnlessDecoded) {
   fs::remove_all(file.parent_path());
 }
 
+// penshaped configured to take no raw subscriber: the capture is refused with the daemon's
+// reason and leaves no file behind.
+TEST(RecordRawCli, ARefusedSubscriptionLeavesNoFile) {
+  const fs::path dir = temp_dir("refused");
+  const fs::path config = dir / "penshaped.conf";
+  std::ofstream(config) << "max_raw_report_subscribers = 0\n";
+  const std::string address = unique_test_address("refused");
+  ChildProcess daemon(
+      {PENSHAPED, "--config", config.string(), "--listen", address, "--replay", kOriginal});
+  ASSERT_TRUE(daemon.wait_for_output("replaying")) << daemon.output();
+  const fs::path file = dir / "capture.hid.txt";
+  const auto [code, out] = run_program({kCli, "record", file.string(), "--address", address});
+  EXPECT_EQ(code, 1) << out;
+  EXPECT_NE(out.find("max_raw_report_subscribers = 0"), std::string::npos) << out;
+  EXPECT_FALSE(fs::exists(file));
+  daemon.signal(SIGTERM);
+  EXPECT_EQ(daemon.wait(), 0) << daemon.output();
+  fs::remove_all(dir);
+}
+
 TEST(RecordRawCli, WaitStopsCleanlyWhenNoTabletComes) {
   TestDaemon daemon("record-raw-none");
   const fs::path file = temp_dir("none") / "capture.hid.txt";
