@@ -192,7 +192,7 @@ int main(int argc, char** argv) {
       if (rot_min_ok) {
         Row r = make_row("min-width", "transl+rot", "1-degree sampling", n, m);
         MinWidthResult res;
-        r.target_s = seconds([&] { res = min_width_rotation(tp, pts); });
+        r.target_s = seconds([&] { res = min_width_rotation(tp, OuterOffset::kLinearized, pts); });
         r.target_result = "delta=" + fmt(res.delta_upper);
         if (n * m <= 100 * 16) {
           double best = INFINITY;
@@ -222,7 +222,8 @@ int main(int argc, char** argv) {
       if (rot_cover_ok) {
         Row r = make_row("max-cover", "transl+rot", "1-degree sampling", n, m);
         MaxCoverResult res;
-        r.target_s = seconds([&] { res = max_cover_rotation(tp, 3.0, noisy); });
+        r.target_s =
+            seconds([&] { res = max_cover_rotation(tp, OuterOffset::kLinearized, 3.0, noisy); });
         r.target_result =
             "k=" + std::to_string(res.covered.size()) + "/ub " + std::to_string(res.upper_bound);
         if (n * m <= 100 * 8) {

@@ -121,7 +121,7 @@ TEST(AnnulusRealData, RotationHelpsATriangle) {
   const double s = x1 - x0;
   const TemplatePolygon tri = make_convex_template({{0, 0}, {s, 0}, {s / 2, s * 0.866}});
   const MinWidthResult t = min_width_translation(tri, OuterOffset::kLinearized, pts);
-  const MinWidthResult r = min_width_rotation(tri, pts);
+  const MinWidthResult r = min_width_rotation(tri, OuterOffset::kLinearized, pts);
   EXPECT_LE(r.delta_upper, t.delta_upper + 1e-6);
   EXPECT_EQ(oracle::count(tri.vertices(), oracle::Kind::kLinearized, r.delta_upper,
                           {r.placement.tx, r.placement.ty, r.placement.theta}, pts, 1e-9),
