@@ -77,7 +77,7 @@ struct RotationOptions {
   double translation_resolution = 1e-7;
   // Budgets: translation solves (method 2), cell evaluations (method 3). Exhausting one ends the
   // search with honest bounds (UNDECIDED, delta_lower < delta_upper, upper_bound > covered).
-  std::size_t max_evaluations = 400;
+  std::size_t max_evaluations = 2000;
   std::size_t max_cells = 400'000;
   // Method 1 for kLinearized max-cover up to this many points (after merging duplicates),
   // method 3 above.
