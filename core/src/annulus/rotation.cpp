@@ -47,9 +47,12 @@ MaxCoverResult max_cover_rotation(const TemplatePolygon& p, OuterOffset outer, d
   validate_delta(delta, limits);
   validate_options(options);
   RotationMethod m = pick(p, outer, options);
-  if (m == RotationMethod::kDiagram && options.method == RotationMethod::kAuto &&
-      detail::merge_duplicates(points).points.size() > options.diagram_max_points) {
-    m = RotationMethod::kCellSearch; // the diagram sweep is cubic in n
+  if (m == RotationMethod::kDiagram && options.method == RotationMethod::kAuto) {
+    const auto n = static_cast<double>(detail::merge_duplicates(points).points.size());
+    const auto vertices = static_cast<double>(p.size());
+    if (n * n * n * vertices * vertices > options.diagram_max_work) {
+      m = RotationMethod::kCellSearch; // the diagram sweep is cubic in n
+    }
   }
   switch (m) {
     case RotationMethod::kDiagram:

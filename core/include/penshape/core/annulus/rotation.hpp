@@ -13,11 +13,11 @@
 //    boundary, or two points on two boundary edges, parametrised by theta; along each family the
 //    other points' containing sets are unions of theta-intervals (sine-curve boundaries). An
 //    optimal placement lies on such a family, so the sweep finds it. O(n^3 m^2) worst case for
-//    max-cover (kAuto uses it up to RotationOptions::diagram_max_points distinct points, method 3
-//    above); the decision and the minimum width stop a family at its first excluded point and are
-//    much faster. Degenerate inputs (parallel contact edges defining the only optimum) may be
-//    missed; the result is still a verified placement. (The arcs of the round offset would give
-//    quartic equations here; methods 2 and 3 avoid them.)
+//    max-cover (kAuto uses it up to RotationOptions::diagram_max_work, method 3 above); the
+//    decision and the minimum width stop a family at its first excluded point and are much faster.
+//    Degenerate inputs (parallel contact edges defining the only optimum) may be missed; the result
+//    is still a verified placement. (The arcs of the round offset would give quartic equations
+//    here; methods 2 and 3 avoid them.)
 //
 // The bound behind methods 2 and 3. Rotating the points by -theta about their centroid c instead
 // of rotating the template gives the same placements:
@@ -79,9 +79,9 @@ struct RotationOptions {
   // search with honest bounds (UNDECIDED, delta_lower < delta_upper, upper_bound > covered).
   std::size_t max_evaluations = 2000;
   std::size_t max_cells = 400'000;
-  // Method 1 for kLinearized max-cover up to this many points (after merging duplicates),
-  // method 3 above.
-  std::size_t diagram_max_points = 120;
+  // kAuto, kLinearized max-cover: method 1 while n^3 m^2 (n distinct points, m template
+  // vertices) is at most this (about a second), method 3 above.
+  double diagram_max_work = 64e6;
 };
 
 // A placement maximising the points covered. Placement.tan_half_theta carries the exact rotation;
