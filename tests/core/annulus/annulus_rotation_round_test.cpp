@@ -236,5 +236,32 @@ TEST(RotationRound, RejectsBadOptions) {
   EXPECT_THROW(min_width_rotation(simple, OuterOffset::kLinearized, pts), InvalidInput);
 }
 
+TEST(RotationRound, DegenerateInputs) {
+  const TemplatePolygon sq = make_convex_template({{-1, -1}, {1, -1}, {1, 1}, {-1, 1}});
+  // One point, the same point many times, collinear points: answers stay certified.
+  const std::vector<std::vector<PointD>> inputs{
+      {{5, 5}}, std::vector<PointD>(50, PointD{2, 3}), {{0, 0}, {0.6, 0}, {1.2, 0}, {1.8, 0}}};
+  for (const auto& pts : inputs) {
+    const DecisionResult d = decide_rotation(sq, OuterOffset::kRound, 0.1, pts);
+    ASSERT_EQ(d.answer, Answer::kYes) << pts.size();
+    EXPECT_EQ(oracle::count(sq.vertices(), oracle::Kind::kRound, 0.1, pose_of(d.placement), pts),
+              pts.size());
+    const MaxCoverResult c = max_cover_rotation(sq, OuterOffset::kRound, 0.1, pts);
+    EXPECT_EQ(c.covered.size(), pts.size());
+    EXPECT_EQ(c.upper_bound, pts.size());
+    const MinWidthResult w = min_width_rotation(sq, OuterOffset::kRound, pts);
+    EXPECT_LE(w.delta_lower, w.delta_upper);
+    EXPECT_EQ(oracle::count(sq.vertices(), oracle::Kind::kRound, w.delta_upper,
+                            pose_of(w.placement), pts, 1e-9),
+              pts.size());
+  }
+  // Four collinear points spanning 3 (more than a side, about the diagonal): the inner two are
+  // deep inside whenever the outer two are near the boundary, so the width is large.
+  const std::vector<PointD> line{{0, 0}, {1, 0}, {2, 0}, {3, 0}};
+  const MinWidthResult w = min_width_rotation(sq, OuterOffset::kRound, line);
+  EXPECT_GT(w.delta_lower, 0.2);
+  EXPECT_EQ(decide_rotation(sq, OuterOffset::kRound, 0.1, line).answer, Answer::kNo);
+}
+
 } // namespace
 } // namespace penshape::annulus
