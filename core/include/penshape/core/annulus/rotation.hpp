@@ -73,8 +73,8 @@ struct RotationOptions {
   // Branch and bound (methods 2 and 3): intervals / cells whose angle reach is below this
   // (radians) and, for cells, whose translation half-diagonal is below translation_resolution
   // times the problem scale, are not split further; their bounds are reported as they stand.
-  double angle_resolution = 1e-7;
-  double translation_resolution = 1e-7;
+  double angle_resolution = 1e-9;
+  double translation_resolution = 1e-9;
   // Budgets: translation solves (method 2), cell evaluations (method 3). Exhausting one ends the
   // search with honest bounds (UNDECIDED, delta_lower < delta_upper, upper_bound > covered).
   std::size_t max_evaluations = 2000;
