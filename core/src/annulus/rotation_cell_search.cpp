@@ -40,7 +40,8 @@ class CoverSearch {
         options_(options),
         wp_(merge_duplicates(points)),
         frame_(wp_.points),
-        an_(prepare(p, outer, delta)),
+        // Measures do not depend on delta; the box is that of the widened annulus.
+        an_(prepare(p, outer, delta + annulus_margin(p, delta, points))),
         margin_(annulus_margin(p, delta, points)),
         slack_(frame_.slack(p, delta + margin_)),
         min_half_(options.translation_resolution * problem_scale(p, points)),
@@ -51,9 +52,8 @@ class CoverSearch {
     for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<std::uint32_t>(i);
     for (int k = 0; k < kFirstSlices; ++k) {
       Cell cell;
-      cell.box =
-          translation_domain(frame_, an_.box, margin_ + slack_, -kPi + 2.0 * kPi * k / kFirstSlices,
-                             -kPi + 2.0 * kPi * (k + 1) / kFirstSlices);
+      cell.box = translation_domain(frame_, an_.box, slack_, -kPi + 2.0 * kPi * k / kFirstSlices,
+                                    -kPi + 2.0 * kPi * (k + 1) / kFirstSlices);
       evaluate(cell, all);
       push(std::move(cell));
     }
