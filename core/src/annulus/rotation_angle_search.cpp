@@ -1,5 +1,5 @@
 // Branch and bound over the rotation angle with the translation solvers (rotation.hpp, method 2):
-// decision and minimum width for the round outer offset and simple templates.
+// decision, minimum width and max-cover, any outer offset the translation solvers take.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -33,7 +33,7 @@ DecisionResult decide_rotation_angles(const TemplatePolygon& p, OuterOffset oute
   std::size_t evaluations = 0;
   bool unresolved = false;
   std::priority_queue<AngleNode> queue;
-  // Returns false when the interval is excluded; sets r to kYes when a witness is verified.
+  // Drops the interval on a robust NO, sets r to kYes on a verified witness, else queues it.
   auto evaluate = [&](double lo, double hi) {
     const RotatedFrame::Angle a = RotatedFrame::angle(0.5 * (lo + hi));
     const double reach = angle_reach(a, lo, hi);
