@@ -225,7 +225,7 @@ int main(int argc, char** argv) {
           MinWidthResult res;
           r.target_s = seconds([&] { res = min_width_rotation(tp, outer, pts); });
           r.target_result = width(res);
-          if (round && n <= 100) {
+          if (round && nm <= 1000 * 4) {
             RotationOptions o;
             o.method = RotationMethod::kAngleSearch;
             MinWidthResult b;
