@@ -78,7 +78,7 @@ struct RotationOptions {
   // Budgets: translation solves (method 2), cell evaluations (method 3). Exhausting one ends the
   // search with honest bounds (UNDECIDED, delta_lower < delta_upper, upper_bound > covered).
   std::size_t max_evaluations = 2000;
-  std::size_t max_cells = 400'000;
+  std::size_t max_cells = 2'000'000; // about a second and 30 MB at n = 1,000
   // kAuto, kLinearized max-cover: method 1 while n^3 m^2 (n distinct points, m template
   // vertices) is at most this (about a second), method 3 above.
   double diagram_max_work = 64e6;
