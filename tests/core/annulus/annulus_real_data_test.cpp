@@ -121,11 +121,54 @@ TEST(AnnulusRealData, RotationHelpsATriangle) {
   const double s = x1 - x0;
   const TemplatePolygon tri = make_convex_template({{0, 0}, {s, 0}, {s / 2, s * 0.866}});
   const MinWidthResult t = min_width_translation(tri, OuterOffset::kLinearized, pts);
-  const MinWidthResult r = min_width_rotation(tri, pts);
+  const MinWidthResult r = min_width_rotation(tri, OuterOffset::kLinearized, pts);
   EXPECT_LE(r.delta_upper, t.delta_upper + 1e-6);
   EXPECT_EQ(oracle::count(tri.vertices(), oracle::Kind::kLinearized, r.delta_upper,
                           {r.placement.tx, r.placement.ty, r.placement.theta}, pts, 1e-9),
             pts.size());
+}
+
+TEST(AnnulusRealData, RoundRotationOnTriangleStrokes) {
+  // Equilateral triangle templates of each stroke's size, true (round) offset, with rotation.
+  const auto files = strokes("triangle", 2);
+  ASSERT_GE(files.size(), 5u) << "missing data in " << data_dir();
+  for (const auto& f : files) {
+    const auto pts = read_gesture(f);
+    double x0 = pts[0].x, x1 = x0;
+    for (const PointD& q : pts) {
+      x0 = std::min(x0, q.x);
+      x1 = std::max(x1, q.x);
+    }
+    const double s = x1 - x0;
+    const TemplatePolygon tri = make_convex_template({{0, 0}, {s, 0}, {s / 2, s * 0.866}});
+    const MinWidthResult t = min_width_translation(tri, OuterOffset::kRound, pts);
+    const MinWidthResult r = min_width_rotation(tri, OuterOffset::kRound, pts);
+    EXPECT_LE(r.delta_lower, r.delta_upper) << f;
+    EXPECT_LE(r.delta_upper, t.delta_upper + 1e-9) << f;
+    EXPECT_LE(r.delta_upper - r.delta_lower, 1e-4 * s) << f;
+    const oracle::Pose pose{r.placement.tx, r.placement.ty, r.placement.theta};
+    EXPECT_EQ(oracle::count(tri.vertices(), oracle::Kind::kRound, r.delta_upper, pose, pts, 1e-9),
+              pts.size())
+        << f;
+    // Decisions on both sides of the certified interval; max-cover at 60% of the width.
+    EXPECT_EQ(decide_rotation(tri, OuterOffset::kRound, r.delta_upper * 1.01, pts).answer,
+              Answer::kYes)
+        << f;
+    EXPECT_EQ(decide_rotation(tri, OuterOffset::kRound, r.delta_lower * 0.99, pts).answer,
+              Answer::kNo)
+        << f;
+    const MaxCoverResult c = max_cover_rotation(tri, OuterOffset::kRound, 0.6 * r.delta_upper, pts);
+    EXPECT_LT(c.upper_bound, pts.size()) << f;
+    EXPECT_GE(
+        c.covered.size(),
+        max_cover_translation(tri, OuterOffset::kRound, 0.6 * r.delta_upper, pts).covered.size())
+        << f;
+    const oracle::Pose cp{c.placement.tx, c.placement.ty, c.placement.theta};
+    EXPECT_EQ(
+        oracle::count(tri.vertices(), oracle::Kind::kRound, 0.6 * r.delta_upper, cp, pts, 1e-9),
+        c.covered.size())
+        << f;
+  }
 }
 
 } // namespace

@@ -18,7 +18,7 @@ TEST(RotationVsOracle, MaxCoverCountsEqualBruteForce) {
     const auto pts = oracle::points_near(rng, poly, 5, 0.2, {u(rng), u(rng), 6.3 * u(rng)}, 0.3);
     const double delta = 0.05 + 0.2 * u(rng);
     const std::size_t expected = oracle::max_cover_rotation(tp.vertices(), delta, pts);
-    const MaxCoverResult r = max_cover_rotation(tp, delta, pts);
+    const MaxCoverResult r = max_cover_rotation(tp, OuterOffset::kLinearized, delta, pts);
     EXPECT_EQ(r.upper_bound, expected) << "trial " << trial;
     EXPECT_EQ(r.covered.size(), expected) << "trial " << trial;
     // The oracle agrees with the covered set (theta from the exact rotation parameter).
@@ -35,7 +35,7 @@ TEST(RotationVsOracle, MinimumWidthMatchesBruteForce) {
     const auto poly = oracle::random_convex(rng, 3 + trial % 2, 1.0);
     const TemplatePolygon tp = make_convex_template(poly);
     const auto pts = oracle::points_near(rng, poly, 5, 0.15, {u(rng), u(rng), 6.3 * u(rng)});
-    const MinWidthResult r = min_width_rotation(tp, pts);
+    const MinWidthResult r = min_width_rotation(tp, OuterOffset::kLinearized, pts);
     // Oracle: bisection on the triple-contact max-cover.
     double lo = 0, hi = r.delta_upper + 0.5;
     while (hi - lo > 1e-9) {
@@ -65,8 +65,9 @@ TEST(RotationVsOracle, DecisionMatchesBruteForce) {
       const double mid = 0.5 * (lo + hi);
       (oracle::max_cover_rotation(tp.vertices(), mid, pts) == pts.size() ? hi : lo) = mid;
     }
-    EXPECT_EQ(decide_rotation(tp, hi * 0.95, pts).answer, Answer::kNo) << "trial " << trial;
-    const DecisionResult yes = decide_rotation(tp, hi * 1.05, pts);
+    EXPECT_EQ(decide_rotation(tp, OuterOffset::kLinearized, hi * 0.95, pts).answer, Answer::kNo)
+        << "trial " << trial;
+    const DecisionResult yes = decide_rotation(tp, OuterOffset::kLinearized, hi * 1.05, pts);
     ASSERT_EQ(yes.answer, Answer::kYes) << "trial " << trial;
     EXPECT_EQ(oracle::count(tp.vertices(), oracle::Kind::kLinearized, hi * 1.05,
                             pose_of(yes.placement), pts, 1e-12),
@@ -83,9 +84,9 @@ TEST(Rotation, RotatedSquareIsRecovered) {
     pts.push_back(
         {std::cos(a) * v.x - std::sin(a) * v.y + 5, std::sin(a) * v.x + std::cos(a) * v.y});
   }
-  EXPECT_EQ(decide_rotation(sq, 1e-6, pts).answer, Answer::kYes);
+  EXPECT_EQ(decide_rotation(sq, OuterOffset::kLinearized, 1e-6, pts).answer, Answer::kYes);
   EXPECT_EQ(decide_translation(sq, OuterOffset::kLinearized, 0.1, pts).answer, Answer::kNo);
-  const MinWidthResult r = min_width_rotation(sq, pts);
+  const MinWidthResult r = min_width_rotation(sq, OuterOffset::kLinearized, pts);
   EXPECT_LT(r.delta_upper, 1e-6);
 }
 

@@ -34,7 +34,9 @@ TEST(AnnulusValidation, NonConvexTemplateWhereConvexIsRequired) {
               decide_translation(simple, OuterOffset::kLinearized, 0.1, pts);
             }).find("convex"),
             std::string::npos);
-  EXPECT_NE(error_of([&] { max_cover_rotation(simple, 0.1, pts); }).find("convex"),
+  EXPECT_NE(error_of([&] {
+              max_cover_rotation(simple, OuterOffset::kLinearized, 0.1, pts);
+            }).find("convex"),
             std::string::npos);
   EXPECT_NE(error_of([&] { OnlineContainment(simple, OuterOffset::kRound, 0.1); }).find("convex"),
             std::string::npos);
@@ -103,7 +105,8 @@ TEST(AnnulusValidation, BadPointsAndDelta) {
   Limits small;
   small.max_rotation_points = 3;
   EXPECT_NE(error_of([&] {
-              min_width_rotation(sq, {{0, 0}, {1, 0}, {0, 1}, {1, 1}}, {}, small);
+              min_width_rotation(sq, OuterOffset::kLinearized, {{0, 0}, {1, 0}, {0, 1}, {1, 1}}, {},
+                                 {}, small);
             }).find("at most 3"),
             std::string::npos);
   OnlineContainment online(sq, OuterOffset::kRound, 0.1);

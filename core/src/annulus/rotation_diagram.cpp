@@ -1,0 +1,519 @@
+// Translation and rotation (Section 3.3), linearized outer offset: sweeps over the one-parameter
+// families of placements that make up the skeleton of the rotation diagrams (rotation.hpp, method
+// 1).
+#include "rotation_internal.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+#include "point_set.hpp"
+#include "prepared_annulus.hpp"
+#include "translation_internal.hpp"
+
+namespace penshape::annulus {
+namespace detail {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+inline PointD perp(PointD d) { return {d.y, -d.x}; } // R(-theta) d = cos * d + sin * perp(d)
+inline double norm(PointD a) { return std::sqrt(a.x * a.x + a.y * a.y); }
+
+// A boundary edge of the inner (hole) or outer linearized offset, template frame.
+struct CurveEdge {
+  PointD a, v, n;
+  double H;
+};
+
+double point_segment_distance(PointD p, PointD a, PointD v) {
+  const double len2 = dot(v, v);
+  const double t = len2 > 0.0 ? std::clamp(dot(sub(p, a), v) / len2, 0.0, 1.0) : 0.0;
+  return norm(sub(p, add(a, mul(v, t))));
+}
+
+struct RotationGeometry {
+  std::vector<Edge> edges; // template edges (unit normals)
+  double delta = 0.0;
+  std::vector<CurveEdge> curve[2]; // 0: outer, 1: inner
+  std::vector<PointD> corners[2];
+  double diameter = 0.0;          // of the outer offset
+  std::vector<double> dmin, dmax; // distance ranges between curve edges (flattened)
+  std::size_t total = 0;
+
+  bool has_hole = false;
+
+  RotationGeometry(const TemplatePolygon& p, DeltaPair d) : delta(d.member) {
+    const PreparedAnnulus an = prepare(p, OuterOffset::kLinearized, d);
+    edges = an.edges;
+    has_hole = an.has_hole;
+    corners[0] = an.outer_poly;
+    corners[1] = an.inner;
+    for (int c = 0; c < 2; ++c) {
+      const auto& poly = corners[c];
+      for (std::size_t k = 0; k < poly.size(); ++k) {
+        CurveEdge e;
+        e.a = poly[k];
+        e.v = sub(poly[(k + 1) % poly.size()], poly[k]);
+        const double len = norm(e.v);
+        e.n = len > 0.0 ? PointD{e.v.y / len, -e.v.x / len} : PointD{0.0, 0.0};
+        e.H = dot(e.n, e.a);
+        if (len > 0.0) curve[c].push_back(e);
+      }
+    }
+    for (const PointD& a : corners[0]) {
+      for (const PointD& b : corners[0]) diameter = std::max(diameter, norm(sub(a, b)));
+    }
+    total = curve[0].size() + curve[1].size();
+    dmin.assign(total * total, 0.0);
+    dmax.assign(total * total, 0.0);
+    for (std::size_t x = 0; x < total; ++x) {
+      for (std::size_t y = 0; y < total; ++y) {
+        const CurveEdge& e = at(x);
+        const CurveEdge& f = at(y);
+        const PointD e1 = add(e.a, e.v);
+        const PointD f1 = add(f.a, f.v);
+        double lo =
+            std::min({point_segment_distance(e.a, f.a, f.v), point_segment_distance(e1, f.a, f.v),
+                      point_segment_distance(f.a, e.a, e.v), point_segment_distance(f1, e.a, e.v)});
+        // Crossing segments are at distance 0.
+        const double o1 = cross(e.v, sub(f.a, e.a));
+        const double o2 = cross(e.v, sub(f1, e.a));
+        const double o3 = cross(f.v, sub(e.a, f.a));
+        const double o4 = cross(f.v, sub(e1, f.a));
+        if (o1 * o2 <= 0.0 && o3 * o4 <= 0.0) lo = 0.0;
+        dmin[x * total + y] = lo;
+        dmax[x * total + y] = std::max(
+            {norm(sub(e.a, f.a)), norm(sub(e.a, f1)), norm(sub(e1, f.a)), norm(sub(e1, f1))});
+      }
+    }
+  }
+  [[nodiscard]] const CurveEdge& at(std::size_t x) const {
+    return x < curve[0].size() ? curve[0][x] : curve[1][x - curve[0].size()];
+  }
+  [[nodiscard]] bool is_outer(std::size_t x) const { return x < curve[0].size(); }
+
+  // Angles in `V` where W(theta) = k0 + kc cos + ks sin lies in the annulus.
+  [[nodiscard]] IntervalSet member(PointD k0, PointD kc, PointD ks, const IntervalSet& V) const {
+    if (V.empty()) return {};
+    const double lo = V.front().lo;
+    const double hi = V.back().hi;
+    const double mid = 0.5 * (lo + hi);
+    const double reach = (norm(kc) + norm(ks)) * 0.5 * (hi - lo);
+    const PointD wm = add(k0, add(mul(kc, std::cos(mid)), mul(ks, std::sin(mid))));
+    double f = -INFINITY;
+    for (const Edge& e : edges) f = std::max(f, dot(e.n, wm) - e.h);
+    // f is 1-Lipschitz and W moves at most `reach` over V.
+    if (f > delta + reach) return {};
+    if (f < -delta - reach && has_hole) return {};
+    if (f <= delta - reach && (f >= -delta + reach || !has_hole)) return V;
+    // Per constraint: n . W moves at most (|n.kc| + |n.ks|) * half over V; constraints that hold
+    // (or fail) on all of V need no trigonometry.
+    const double half = 0.5 * (hi - lo);
+    IntervalSet out = V;
+    for (const Edge& e : edges) {
+      const double A = dot(e.n, kc);
+      const double B = dot(e.n, ks);
+      const double C = e.h + delta - dot(e.n, k0);
+      const double v = dot(e.n, wm) - e.h - delta; // <= 0 inside
+      const double r = (std::abs(A) + std::abs(B)) * half;
+      if (v + r < 0.0) continue;
+      if (v - r > 0.0) return {};
+      IntervalSet next;
+      for (const Interval& iv : out) trig_leq(A, B, C, iv.lo, iv.hi, next);
+      out.swap(next);
+      if (out.empty()) return out;
+    }
+    if (!has_hole) return out;
+    IntervalSet hole = V;
+    for (const Edge& e : edges) {
+      const double A = dot(e.n, kc);
+      const double B = dot(e.n, ks);
+      const double C = e.h - delta - dot(e.n, k0);
+      const double v = dot(e.n, wm) - e.h + delta;
+      const double r = (std::abs(A) + std::abs(B)) * half;
+      if (v + r < 0.0) continue;
+      if (v - r > 0.0) return out; // the hole misses all of V
+      IntervalSet next;
+      for (const Interval& iv : hole) trig_leq(A, B, C, iv.lo, iv.hi, next);
+      hole.swap(next);
+      if (hole.empty()) return out;
+    }
+    // Hole ends clamped by V are not boundaries of the open hole: push them just past.
+    for (Interval& h : hole) {
+      for (const Interval& v : V) {
+        if (h.lo == v.lo) h.lo = std::nextafter(h.lo, -INFINITY);
+        if (h.hi == v.hi) h.hi = std::nextafter(h.hi, INFINITY);
+      }
+    }
+    return subtract_interior(out, hole);
+  }
+};
+
+void restrict_trig(IntervalSet& V, double A, double B, double C) {
+  IntervalSet next;
+  for (const Interval& iv : V) trig_leq(A, B, C, iv.lo, iv.hi, next);
+  V.swap(next);
+}
+
+// A family: the template point of anchor i is z(theta) = Z0 + Zc cos + Zs sin.
+struct Family {
+  std::size_t i;
+  std::size_t j; // second contact, or SIZE_MAX
+  PointD Z0, Zc, Zs;
+  IntervalSet V;
+};
+
+Placement placement_at(const Family& f, PointD qi, double theta) {
+  Placement pl;
+  pl.tan_half_theta = std::tan(0.5 * theta);
+  const double u = pl.tan_half_theta;
+  const double c = (1.0 - u * u) / (1.0 + u * u);
+  const double s = 2.0 * u / (1.0 + u * u);
+  pl.theta = 2.0 * std::atan(u);
+  const PointD z = add(f.Z0, add(mul(f.Zc, c), mul(f.Zs, s)));
+  pl.tx = qi.x - (c * z.x - s * z.y);
+  pl.ty = qi.y - (s * z.x + c * z.y);
+  return pl;
+}
+
+struct Search {
+  Search(const TemplatePolygon& p_, const std::vector<PointD>& original_, const WeightedPoints& wp_,
+         const RotationGeometry& g_, bool decide_, bool verify_, const std::vector<bool>* hull_,
+         std::vector<std::size_t> order_, double tol_, double delta_check_)
+      : p(p_),
+        original(original_),
+        wp(wp_),
+        g(g_),
+        decide(decide_),
+        verify(verify_),
+        hull(hull_),
+        order(std::move(order_)),
+        tol(tol_),
+        delta_check(delta_check_) {}
+
+  const TemplatePolygon& p;
+  const std::vector<PointD>& original;
+  const WeightedPoints& wp;
+  const RotationGeometry& g;
+  bool decide;                   // decision mode: every point must be contained
+  bool verify;                   // decision mode: check witnesses exactly (else any survivor)
+  const std::vector<bool>* hull; // decision mode: outer contacts only on hull points
+  std::vector<std::size_t> order;
+  double tol;
+  // Results.
+  std::size_t best = 0;
+  Placement best_placement;
+  bool found = false;
+  bool undecided = false;
+  double delta_check = 0.0; // decision: delta for the exact check
+  struct Event {
+    double pos;
+    long w;
+  };
+  std::vector<Event> events;
+  // Which family gave the best count (i, j, edge or corner indices), and a filter that makes
+  // enumerate() visit only that family (used to re-find the witness in the narrowed annulus).
+  std::array<std::size_t, 4> best_key{};
+  std::optional<std::array<std::size_t, 4>> only;
+  std::array<std::size_t, 4> key{};
+
+  // Returns true to stop the search (decision found).
+  bool run(const Family& f) {
+    const auto& pts = wp.points;
+    const PointD qi = pts[f.i];
+    if (decide) {
+      IntervalSet S = f.V;
+      for (std::size_t t = 0; t < order.size(); ++t) {
+        const std::size_t k = order[t];
+        if (k == f.i || k == f.j) continue;
+        const PointD d = sub(pts[k], qi);
+        if (norm(d) > g.diameter + tol) {
+          S.clear();
+        } else {
+          S = g.member(f.Z0, add(f.Zc, d), add(f.Zs, perp(d)), S);
+        }
+        if (S.empty()) {
+          std::swap(order[t], order[0]);
+          return false;
+        }
+      }
+      std::size_t bi = 0;
+      for (std::size_t x = 1; x < S.size(); ++x) {
+        if (S[x].hi - S[x].lo > S[bi].hi - S[bi].lo) bi = x;
+      }
+      const Placement pl = placement_at(f, qi, 0.5 * (S[bi].lo + S[bi].hi));
+      if (!verify) {
+        found = true;
+        return true;
+      }
+      if (covered_exactly(p, OuterOffset::kLinearized, delta_check, pl, original).size() ==
+          original.size()) {
+        best_placement = pl;
+        found = true;
+        return true;
+      }
+      undecided = true;
+      return false;
+    }
+    events.clear();
+    const long base = static_cast<long>(wp.weight[f.i]) +
+                      (f.j == SIZE_MAX ? 0L : static_cast<long>(wp.weight[f.j]));
+    for (std::size_t k = 0; k < pts.size(); ++k) {
+      if (k == f.i || k == f.j) continue;
+      const PointD d = sub(pts[k], qi);
+      if (norm(d) > g.diameter + tol) continue;
+      const long w = static_cast<long>(wp.weight[k]);
+      for (const Interval& iv : g.member(f.Z0, add(f.Zc, d), add(f.Zs, perp(d)), f.V)) {
+        events.push_back({iv.lo, w});
+        events.push_back({iv.hi, -w});
+      }
+    }
+    std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) {
+      return a.pos < b.pos || (a.pos == b.pos && a.w > b.w);
+    });
+    long cur = base;
+    if (static_cast<std::size_t>(cur) > best) {
+      best = static_cast<std::size_t>(cur);
+      best_placement = placement_at(f, qi, 0.5 * (f.V.front().lo + f.V.front().hi));
+      best_key = key;
+      found = true;
+    }
+    for (std::size_t e = 0; e < events.size(); ++e) {
+      cur += events[e].w;
+      if (static_cast<std::size_t>(cur) > best) {
+        best = static_cast<std::size_t>(cur);
+        const double next = e + 1 < events.size() ? events[e + 1].pos : events[e].pos;
+        best_placement = placement_at(f, qi, 0.5 * (events[e].pos + next));
+        best_key = key;
+        found = true;
+      }
+    }
+    return false;
+  }
+
+  void enumerate() {
+    const auto& pts = wp.points;
+    const std::size_t n = pts.size();
+    const IntervalSet full{{-kPi, kPi}};
+    // One point at a corner of an offset boundary.
+    for (std::size_t i = 0; i < n; ++i) {
+      for (int c = 0; c < 2; ++c) {
+        if (c == 0 && decide && !(*hull)[i]) continue;
+        for (const PointD& z : g.corners[c]) {
+          key = {i, SIZE_MAX, static_cast<std::size_t>(c),
+                 static_cast<std::size_t>(&z - &g.corners[c][0])};
+          if (only && *only != key) continue;
+          if (run(Family{i, SIZE_MAX, z, {0, 0}, {0, 0}, full})) return;
+        }
+      }
+    }
+    // Two points on two boundary edges.
+    for (std::size_t i = 0; i < n; ++i) {
+      for (std::size_t j = i + 1; j < n; ++j) {
+        const PointD d = sub(pts[j], pts[i]);
+        const double rho = norm(d);
+        if (rho > g.diameter + tol) continue;
+        const PointD dp = perp(d);
+        for (std::size_t x = 0; x < g.total; ++x) {
+          if (decide && g.is_outer(x) && !(*hull)[i]) continue;
+          const CurveEdge& ea = g.at(x);
+          for (std::size_t y = 0; y < g.total; ++y) {
+            if (decide && g.is_outer(y) && !(*hull)[j]) continue;
+            if (rho < g.dmin[x * g.total + y] - tol || rho > g.dmax[x * g.total + y] + tol) {
+              continue;
+            }
+            const CurveEdge& eb = g.at(y);
+            const double nbea = dot(eb.n, ea.v);
+            if (std::abs(nbea) <= 1e-12 * norm(ea.v)) continue; // parallel contact edges
+            const double a0 = (eb.H - dot(eb.n, ea.a)) / nbea;
+            const double ac = -dot(eb.n, d) / nbea;
+            const double as = -dot(eb.n, dp) / nbea;
+            IntervalSet V = full;
+            restrict_trig(V, -ac, -as, a0);     // sigma >= 0
+            restrict_trig(V, ac, as, 1.0 - a0); // sigma <= 1
+            if (V.empty()) continue;
+            const PointD Z0 = add(ea.a, mul(ea.v, a0));
+            const PointD Zc = mul(ea.v, ac);
+            const PointD Zs = mul(ea.v, as);
+            const double L2 = dot(eb.v, eb.v);
+            const double t0 = dot(sub(Z0, eb.a), eb.v) / L2;
+            const double tc = dot(add(Zc, d), eb.v) / L2;
+            const double ts = dot(add(Zs, dp), eb.v) / L2;
+            restrict_trig(V, -tc, -ts, t0);     // j's position on edge b >= 0
+            restrict_trig(V, tc, ts, 1.0 - t0); // <= 1
+            if (V.empty()) continue;
+            key = {i, j, x, y};
+            if (only && *only != key) continue;
+            if (run(Family{i, j, Z0, Zc, Zs, V})) return;
+          }
+        }
+      }
+    }
+  }
+};
+
+DecisionResult decide_rotation_core(const TemplatePolygon& p, double delta,
+                                    const std::vector<PointD>& points, const WeightedPoints& wp,
+                                    const std::vector<bool>& hull, std::vector<std::size_t>& order,
+                                    const Placement* hint) {
+  DecisionResult r;
+  r.margin = annulus_margin(p, delta, points);
+  for (const Placement& guess : {centred_placement(p, points), hint ? *hint : Placement{}}) {
+    if (width_at(p, OuterOffset::kLinearized, guess, points) <= delta &&
+        covered_exactly(p, OuterOffset::kLinearized, delta, guess, points).size() ==
+            points.size()) {
+      r.answer = Answer::kYes;
+      r.placement = guess;
+      return r;
+    }
+  }
+  // NO with the widened annulus, witnesses from the narrowed one (see translation.cpp).
+  {
+    const RotationGeometry wide(p, widened(delta, r.margin));
+    Search s(p, points, wp, wide, true, false, &hull, std::move(order), 10.0 * r.margin, delta);
+    s.enumerate();
+    order = std::move(s.order);
+    if (!s.found) {
+      r.answer = Answer::kNo;
+      return r;
+    }
+  }
+  const RotationGeometry narrow(p, narrowed(delta, r.margin));
+  Search s(p, points, wp, narrow, true, true, &hull, std::move(order), 10.0 * r.margin, delta);
+  s.enumerate();
+  order = std::move(s.order);
+  r.answer = s.found ? Answer::kYes : Answer::kUndecided;
+  if (s.found) r.placement = s.best_placement;
+  return r;
+}
+
+// Clarkson-style iteration: decide on a small subset first. A robust NO for the subset is a NO
+// for all points; a subset witness that misses points brings the worst missed points in.
+DecisionResult decide_rotation_iterative(const TemplatePolygon& p, double delta,
+                                         const std::vector<PointD>& points, const Placement* hint) {
+  const std::size_t n = points.size();
+  std::vector<char> taken(n, 0);
+  std::vector<PointD> subset;
+  auto take = [&](std::size_t i) {
+    if (!taken[i]) {
+      taken[i] = 1;
+      subset.push_back(points[i]);
+    }
+  };
+  for (int k = 0; k < 8; ++k) {
+    const double a = kPi * k / 4.0;
+    const PointD dir{std::cos(a), std::sin(a)};
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < n; ++i) {
+      if (dot(points[i], dir) > dot(points[best], dir)) best = i;
+    }
+    take(best);
+    take(static_cast<std::size_t>(k) * n / 8);
+  }
+  std::optional<Placement> last;
+  if (hint) last = *hint;
+  for (;;) {
+    const WeightedPoints wp = merge_duplicates(subset);
+    const std::vector<bool> hull = hull_boundary(wp.points);
+    std::vector<std::size_t> order(wp.points.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    DecisionResult r =
+        decide_rotation_core(p, delta, subset, wp, hull, order, last ? &*last : nullptr);
+    if (r.answer == Answer::kNo) return r;
+    if (r.answer == Answer::kUndecided && subset.size() == n) return r;
+    if (r.answer == Answer::kYes) {
+      const auto covered = covered_exactly(p, OuterOffset::kLinearized, delta, r.placement, points);
+      if (covered.size() == n) return r;
+      last = r.placement;
+      // The worst missed points join the subset.
+      std::vector<std::pair<double, std::size_t>> missed;
+      std::size_t c = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (c < covered.size() && covered[c] == i) {
+          ++c;
+          continue;
+        }
+        missed.push_back({-width_at(p, OuterOffset::kLinearized, r.placement, {points[i]}), i});
+      }
+      const std::size_t take_n = std::min<std::size_t>(8, missed.size());
+      std::partial_sort(missed.begin(), missed.begin() + static_cast<std::ptrdiff_t>(take_n),
+                        missed.end());
+      for (std::size_t k = 0; k < take_n; ++k) take(missed[k].second);
+    } else {
+      for (std::size_t i = 0; i < n; ++i) take(i); // undecided on the subset: use everything
+    }
+  }
+}
+
+} // namespace
+
+MaxCoverResult max_cover_rotation_diagram(const TemplatePolygon& p, double delta,
+                                          const std::vector<PointD>& points) {
+  const WeightedPoints wp = merge_duplicates(points);
+  const double margin = annulus_margin(p, delta, points);
+  MaxCoverResult res;
+  std::array<std::size_t, 4> best_key{};
+  {
+    const RotationGeometry wide(p, widened(delta, margin));
+    Search s(p, points, wp, wide, false, false, nullptr, {}, 10.0 * margin, delta);
+    s.enumerate();
+    res.upper_bound = s.best;
+    best_key = s.best_key;
+  }
+  // The witness: first only the family that gave the upper bound, in the narrowed annulus.
+  const RotationGeometry narrow(p, narrowed(delta, margin));
+  Search s(p, points, wp, narrow, false, false, nullptr, {}, 10.0 * margin, delta);
+  s.only = best_key;
+  s.enumerate();
+  res.placement = s.best_placement;
+  if (s.best < res.upper_bound) {
+    Search full(p, points, wp, narrow, false, false, nullptr, {}, 10.0 * margin, delta);
+    full.enumerate();
+    res.placement = full.best_placement;
+  }
+  res.covered = covered_exactly(p, OuterOffset::kLinearized, delta, res.placement, points);
+  return res;
+}
+
+DecisionResult decide_rotation_diagram(const TemplatePolygon& p, double delta,
+                                       const std::vector<PointD>& points) {
+  return decide_rotation_iterative(p, delta, points, nullptr);
+}
+
+MinWidthResult min_width_rotation_diagram(const TemplatePolygon& p,
+                                          const std::vector<PointD>& points,
+                                          const MinWidthOptions& options) {
+  const OuterOffset lin = OuterOffset::kLinearized;
+  MinWidthResult res;
+  res.placement = centred_placement(p, points);
+  const double w0 = width_at(p, lin, res.placement, points);
+  double hi = certify_width(p, lin, res.placement, w0, annulus_margin(p, w0, points), points);
+  const double scale = problem_scale(p, points);
+  const double tol = std::max({options.absolute_tolerance, options.relative_tolerance * scale,
+                               4.0 * annulus_margin(p, hi, points)});
+  double lo = 0.0;
+  double search_lo = 0.0;
+  while (hi - search_lo > tol && res.decisions < options.max_decisions) {
+    const double mid = 0.5 * (search_lo + hi);
+    const DecisionResult r = decide_rotation_iterative(p, mid, points, &res.placement);
+    ++res.decisions;
+    if (r.answer == Answer::kYes) {
+      const double w = width_at(p, lin, r.placement, points);
+      hi = std::min(mid, certify_width(p, lin, r.placement, w, r.margin, points));
+      res.placement = r.placement;
+    } else if (r.answer == Answer::kNo) {
+      lo = search_lo = mid;
+    } else {
+      search_lo = mid;
+    }
+  }
+  res.delta_upper = hi;
+  res.delta_lower = lo;
+  return res;
+}
+
+} // namespace detail
+} // namespace penshape::annulus
