@@ -1,0 +1,42 @@
+#pragma once
+// A candidate shape kept alive while samples arrive (live_recognizer.hpp, "How candidates are
+// kept"): convex polygons through the on-line annulus decision, the others by their distance
+// at the fitted placement.
+#include <cstddef>
+#include <optional>
+#include <span>
+
+#include "classifier.hpp"
+#include "penshape/core/annulus/online.hpp"
+
+namespace penshape::recognize_detail {
+
+bool convex_polygon(ShapeClass c);
+
+struct LiveCandidate {
+  Fit fit;
+  Family family;
+  double rank = 0.0;
+  double epsilon = 0.0;
+  std::size_t generation = 0; // the refit round that made it
+  std::size_t id = 0;         // unique per recognizer: tells the preview it changed
+  std::optional<annulus::OnlineContainment> online; // convex polygons
+  bool alive = true;
+
+  // A candidate from a certified plausible fit on `s`; convex polygons are seeded with the
+  // stroke's fit points (`coordinate_magnitude` fixes the decision's robustness margin).
+  static LiveCandidate make(Scored&& scored, const PreparedStroke& s, double epsilon,
+                            double coordinate_magnitude);
+
+  // Feeds one point; false once the candidate can no longer fit.
+  bool accept(PointD p);
+  // Feeds points in order, stopping at the first that kills it.
+  bool accept_all(std::span<const PointD> points);
+
+  // The fit moved to the on-line decision's verified translation (when it has one).
+  [[nodiscard]] Fit placed() const;
+  // The translation placed() applies (zero without a verified one).
+  [[nodiscard]] PointD shift() const;
+};
+
+} // namespace penshape::recognize_detail
