@@ -72,9 +72,11 @@ struct LiveRecognizer::State {
   std::size_t next_check = 0;      // kBounded: kept points at which triggers are checked next
   double last_fit_size = 0.0;
   bool last_fit_closed = false;
+  int last_stage = 0;       // kBounded: RefitRound::stage of the last round
   std::size_t failures = 0; // consecutive rounds without a snap (back-off)
   std::size_t preview_id = std::numeric_limits<std::size_t>::max();
   PointD preview_shift;
+  std::size_t preview_version = 0;
 
   State(const RecognizerConfig& c, const LiveOptions& o)
       : config(c), options(o), path(o.policy == RefitPolicy::kBounded ? o.thin_fraction : 0.0) {}
@@ -117,7 +119,7 @@ struct LiveRecognizer::State {
     candidates.clear();
     for (Scored& sc : scored) {
       if (!sc.snap) continue;
-      LiveCandidate c = LiveCandidate::make(std::move(sc), s, tol.epsilon, path.magnitude());
+      LiveCandidate c = LiveCandidate::make(std::move(sc), s, tol.epsilon, path.magnitude(), false);
       if (!c.alive) continue;
       c.generation = generation;
       c.id = next_id++;
@@ -151,6 +153,7 @@ struct LiveRecognizer::State {
     last_fit_size = path.size();
     round.emplace(s, tol, path.kept().size(), config);
     last_fit_closed = round->closed();
+    last_stage = round->stage();
   }
 
   void round_step() {
@@ -160,8 +163,8 @@ struct LiveRecognizer::State {
     const std::span<const PointD> later =
         std::span<const PointD>(kept).subspan(std::min(round->kept_at_start(), kept.size()));
     for (Scored& sc : snaps) {
-      LiveCandidate c =
-          LiveCandidate::make(std::move(sc), round->stroke(), round->epsilon(), path.magnitude());
+      LiveCandidate c = LiveCandidate::make(std::move(sc), round->stroke(), round->epsilon(),
+                                            path.magnitude(), true);
       // Catch up with the points kept since the round's snapshot.
       if (!c.alive || !c.accept_all(later)) continue;
       c.generation = generation;
@@ -172,8 +175,10 @@ struct LiveRecognizer::State {
       candidates.push_back(std::move(c));
     }
     if (!round->done()) return;
-    // Families the round did not confirm (no longer plausible, or of the other closure) go.
-    std::erase_if(candidates, [this](const LiveCandidate& c) { return c.generation < generation; });
+    // Older candidates of families the round did not refit stay while they are alive: being
+    // alive is what "can still fit" means (a prospect of a closed shape keeps its place while
+    // the stroke closes, even if the closed fit does not certify yet); finish() filters by
+    // closure and certifies.
     failures = round->found_snap() ? 0 : failures + 1;
     round.reset();
   }
@@ -182,19 +187,23 @@ struct LiveRecognizer::State {
     if (path.kept_grew()) feed(path.kept().back());
     if (round) {
       round_step(); // at most one family per call
-    } else if (path.kept().size() >= next_check &&
-               path.kept().size() >= last_fit_points + interval()) {
-      next_check = path.kept().size() + options.refit_interval;
-      const ToleranceChoice tol = path.tolerance(config);
-      const PreparedStroke s =
-          recognize_detail::prepare_points(path.fit_path(options.max_fit_points));
+    } else if (path.kept().size() >= last_fit_points + interval()) {
+      // Nothing alive is known at once; the other triggers need the stroke's shape, so they
+      // are looked at only every refit_interval kept points.
       const bool none_alive = alive() == 0;
-      const bool grown = path.size() > kGrowthForRefit * last_fit_size;
-      const bool closure_changed =
-          !none_alive && recognize_detail::is_closed(s, tol.epsilon) != last_fit_closed;
-      if (none_alive || grown || closure_changed) {
-        start_round(s, tol);
-        round_step();
+      if (none_alive || path.kept().size() >= next_check) {
+        next_check = path.kept().size() + options.refit_interval;
+        const ToleranceChoice tol = path.tolerance(config);
+        const PreparedStroke s =
+            recognize_detail::prepare_points(path.fit_path(options.max_fit_points));
+        const bool grown = path.size() > kGrowthForRefit * last_fit_size;
+        // Closing or opening the stroke, or coming most of the way round, changes which
+        // families apply.
+        const bool stage_changed = RefitRound::stage(s, tol.epsilon) != last_stage;
+        if (none_alive || grown || stage_changed) {
+          start_round(s, tol);
+          round_step();
+        }
       }
     }
     return update_preview();
@@ -220,7 +229,10 @@ struct LiveRecognizer::State {
     const PointD shift = best->shift();
     // The previous policy redrew the preview on every sample; the bounded one only when the
     // candidate or its placement changed.
-    if (bounded() && best->id == preview_id && shift == preview_shift) return false;
+    if (bounded() && best->id == preview_id && best->version == preview_version &&
+        shift == preview_shift) {
+      return false;
+    }
     const ShapeClass before = preview.shape;
     const Fit f = best->placed();
     preview.shape = f.shape;

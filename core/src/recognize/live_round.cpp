@@ -5,6 +5,18 @@
 #include <cmath>
 
 namespace penshape::recognize_detail {
+namespace {
+
+// When an open stroke is worth trying as a closed shape still being drawn (live_round.hpp).
+constexpr double kProspectLength = 1.5; // stroke length / size at least
+constexpr double kProspectGap = 0.75;   // end-to-start gap / size at most
+// As the classifier's rule for snaps: a shape is drawn once.
+constexpr double kMaxTracing = 1.6;
+// The classifier's rank weights (recognize.hpp: rank = (bound + 2 rms) / eps + 0.15 dof).
+constexpr double kRmsWeight = 2.0;
+constexpr double kPricePerParameter = 0.15;
+
+} // namespace
 
 RefitRound::RefitRound(PreparedStroke stroke, const ToleranceChoice& tolerance,
                        std::size_t kept_at_start, const RecognizerConfig& config)
@@ -12,9 +24,17 @@ RefitRound::RefitRound(PreparedStroke stroke, const ToleranceChoice& tolerance,
       tolerance_(tolerance),
       kept_at_start_(kept_at_start),
       config_(config),
-      closed_(is_closed(stroke_, tolerance.epsilon)) {
+      closed_(is_closed(stroke_, tolerance.epsilon)),
+      stage_(stage(stroke_, tolerance.epsilon)) {
   // Cheap, common families first: the preview appears sooner.
   if (!closed_) {
+    // A stroke most of the way round is more likely a closed shape than an open one.
+    if (stage_ == 1) {
+      for (const Kind k : {Kind::kTriangle, Kind::kCircle, Kind::kQuadrilateral, Kind::kRectangles,
+                           Kind::kEllipse}) {
+        steps_.push_back({k, 0, true});
+      }
+    }
     steps_.push_back({Kind::kSegment});
     steps_.push_back({Kind::kArc});
     for (std::size_t k = 2; k <= config.max_polyline_segments; ++k) {
@@ -32,42 +52,11 @@ RefitRound::RefitRound(PreparedStroke stroke, const ToleranceChoice& tolerance,
   }
 }
 
-std::vector<Family> RefitRound::families() const {
-  std::vector<Family> out;
-  for (const Step& s : steps_) {
-    switch (s.kind) {
-      case Kind::kSegment:
-        out.push_back({ShapeClass::kSegment, 0});
-        break;
-      case Kind::kPolyline:
-        out.push_back({ShapeClass::kPolyline, s.n});
-        break;
-      case Kind::kArc:
-        out.push_back({ShapeClass::kArc, 0});
-        break;
-      case Kind::kCircle:
-        out.push_back({ShapeClass::kCircle, 0});
-        break;
-      case Kind::kTriangle:
-        out.push_back({ShapeClass::kTriangle, 0});
-        break;
-      case Kind::kQuadrilateral:
-        out.push_back({ShapeClass::kQuadrilateral, 0});
-        break;
-      case Kind::kRectangles:
-        out.push_back({ShapeClass::kRectangle, 0});
-        out.push_back({ShapeClass::kSquare, 0});
-        out.push_back({ShapeClass::kDiamond, 0});
-        break;
-      case Kind::kRegularPolygon:
-        out.push_back({ShapeClass::kRegularPolygon, s.n});
-        break;
-      case Kind::kEllipse:
-        out.push_back({ShapeClass::kEllipse, 0});
-        break;
-    }
-  }
-  return out;
+int RefitRound::stage(const PreparedStroke& stroke, double epsilon) {
+  if (is_closed(stroke, epsilon)) return 2;
+  return stroke.length >= kProspectLength * stroke.size && stroke.gap <= kProspectGap * stroke.size
+             ? 1
+             : 0;
 }
 
 std::vector<Scored> RefitRound::step() {
@@ -113,13 +102,34 @@ std::vector<Scored> RefitRound::step() {
       break;
   }
   std::vector<Scored> scored =
-      evaluate(stroke_, std::move(fits), tolerance_.epsilon, tolerance_.pen_radius, config_);
+      s.prospective
+          ? prospects(std::move(fits))
+          : evaluate(stroke_, std::move(fits), tolerance_.epsilon, tolerance_.pen_radius, config_);
   std::vector<Scored> snaps;
   for (Scored& sc : scored) {
     if (sc.snap) snaps.push_back(std::move(sc));
   }
   found_snap_ = found_snap_ || !snaps.empty();
   return snaps;
+}
+
+std::vector<Scored> RefitRound::prospects(std::vector<Fit> fits) const {
+  const double eps = tolerance_.epsilon;
+  const double stroke_length = path_length(stroke_.fit_points);
+  std::vector<Scored> out;
+  for (Fit& f : fits) {
+    double worst = 0.0;
+    for (const PointD& p : stroke_.points) worst = std::max(worst, f.clean.distance_to(p));
+    if (!(worst <= eps)) continue;
+    if (stroke_length > kMaxTracing * path_length(f.clean.sample(stroke_.size / 64.0))) continue;
+    Scored sc;
+    sc.rank = (worst + kRmsWeight * rms_distance(stroke_.fit_points, f.clean)) / eps +
+              kPricePerParameter * degrees_of_freedom(f);
+    sc.snap = true;
+    sc.fit = std::move(f);
+    out.push_back(std::move(sc));
+  }
+  return out;
 }
 
 } // namespace penshape::recognize_detail

@@ -2,6 +2,14 @@
 // A refit round of the bounded live policy (live_recognizer.hpp, "Refit policy"): the families
 // that apply to a snapshot of the stroke, fitted and certified one per step so that no single
 // add() pays for all of them.
+//
+// An open stroke that has gone most of the way round (it is at least 1.5 times as long as its
+// size and its end is within 0.75 times its size of its start) also tries the closed families
+// as prospects: a closed shape the stroke can still become. A prospect needs only the
+// one-sided test that matters before pen-up, every point of the fitted path within epsilon of
+// the shape (estimated on the path's points, not certified), and the stroke must not trace the
+// shape over (at most 1.6 times its length, as for snaps); it ranks like a snap with that
+// one-sided distance in place of the certified bound.
 #include <cstddef>
 #include <optional>
 #include <vector>
@@ -17,6 +25,10 @@ class RefitRound {
   RefitRound(PreparedStroke stroke, const ToleranceChoice& tolerance, std::size_t kept_at_start,
              const RecognizerConfig& config);
 
+  // Which families a round on this stroke tries: 0 open, 1 open with closed prospects,
+  // 2 closed. A change of stage starts a new round.
+  static int stage(const PreparedStroke& stroke, double epsilon);
+
   [[nodiscard]] bool done() const { return next_ >= steps_.size(); }
   // Fits and evaluates the next family; returns its certified plausible fits (snaps).
   std::vector<Scored> step();
@@ -24,10 +36,9 @@ class RefitRound {
   [[nodiscard]] const PreparedStroke& stroke() const { return stroke_; }
   [[nodiscard]] double epsilon() const { return tolerance_.epsilon; }
   [[nodiscard]] bool closed() const { return closed_; }
+  [[nodiscard]] int stage() const { return stage_; }
   [[nodiscard]] std::size_t kept_at_start() const { return kept_at_start_; }
   [[nodiscard]] bool found_snap() const { return found_snap_; }
-  // The families this round fits (confirmed or dropped when it ends).
-  [[nodiscard]] std::vector<Family> families() const;
 
  private:
   enum class Kind {
@@ -43,14 +54,17 @@ class RefitRound {
   };
   struct Step {
     Kind kind;
-    std::size_t n = 0; // polyline vertices / regular polygon sides
+    std::size_t n = 0;        // polyline vertices / regular polygon sides
+    bool prospective = false; // a closed family tried on an open stroke
   };
+  std::vector<Scored> prospects(std::vector<Fit> fits) const;
 
   PreparedStroke stroke_;
   ToleranceChoice tolerance_;
   std::size_t kept_at_start_ = 0;
   RecognizerConfig config_;
   bool closed_ = false;
+  int stage_ = 0;
   bool found_snap_ = false;
   std::vector<Step> steps_;
   std::size_t next_ = 0;
