@@ -26,6 +26,10 @@ struct LiveCandidate {
   std::optional<annulus::OnlineContainment> online; // convex polygons
   bool alive = true;
   bool grow_open = true;
+  bool prospect = false; // a closed shape fitted on an open stroke (live_round.hpp)
+  // Fitted on the stroke as it is at pen-up's closure, and not grown since: finish() may reuse
+  // it (prospects and grown shapes fit a partial stroke; a fresh fit ranks them better).
+  [[nodiscard]] bool reusable() const { return !prospect && version == 0; }
 
   // A candidate from a certified plausible fit on `s`; convex polygons are seeded with the
   // stroke's fit points (`coordinate_magnitude` fixes the decision's robustness margin).

@@ -165,6 +165,7 @@ struct LiveRecognizer::State {
     for (Scored& sc : snaps) {
       LiveCandidate c = LiveCandidate::make(std::move(sc), round->stroke(), round->epsilon(),
                                             path.magnitude(), true);
+      c.prospect = round->last_step_prospective();
       // Catch up with the points kept since the round's snapshot.
       if (!c.alive || !c.accept_all(later)) continue;
       c.generation = generation;
@@ -286,7 +287,7 @@ Recognition LiveRecognizer::finish() {
   // Survivors of the right kind (closed or open) are certified against the whole stroke.
   std::vector<Fit> reused;
   for (const LiveCandidate& c : st.candidates) {
-    if (!c.alive || closed_family(c.fit.shape) != closed) continue;
+    if (!c.alive || !c.reusable() || closed_family(c.fit.shape) != closed) continue;
     reused.push_back(c.placed());
   }
   std::vector<Scored> scored =

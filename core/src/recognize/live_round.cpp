@@ -62,6 +62,7 @@ int RefitRound::stage(const PreparedStroke& stroke, double epsilon) {
 std::vector<Scored> RefitRound::step() {
   if (done()) return {};
   const Step s = steps_[next_++];
+  last_prospective_ = s.prospective;
   std::vector<Fit> fits;
   auto add = [&fits](std::optional<Fit> f) {
     if (f && std::isfinite(f->fit_error)) fits.push_back(std::move(*f));

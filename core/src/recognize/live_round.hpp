@@ -39,6 +39,8 @@ class RefitRound {
   [[nodiscard]] int stage() const { return stage_; }
   [[nodiscard]] std::size_t kept_at_start() const { return kept_at_start_; }
   [[nodiscard]] bool found_snap() const { return found_snap_; }
+  // Whether the last step() fitted a closed family as a prospect on an open stroke.
+  [[nodiscard]] bool last_step_prospective() const { return last_prospective_; }
 
  private:
   enum class Kind {
@@ -66,6 +68,7 @@ class RefitRound {
   bool closed_ = false;
   int stage_ = 0;
   bool found_snap_ = false;
+  bool last_prospective_ = false;
   std::vector<Step> steps_;
   std::size_t next_ = 0;
   std::optional<Fit> quadrilateral_; // shared by the quadrilateral and rectangle steps

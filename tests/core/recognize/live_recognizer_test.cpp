@@ -2,7 +2,10 @@
 // offline recognizer at pen-up.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "penshape/core/live_recognizer.hpp"
 #include "penshape/core/recognize.hpp"
@@ -55,8 +58,153 @@ TEST(LiveRecognizer, AgreesWithOfflineOnTheDollarLogs) {
   EXPECT_LT(static_cast<double>(refits), 0.25 * static_cast<double>(samples));
 }
 
-TEST(LiveRecognizer, PreviewTracksAGrowingSegmentThenCorner) {
+bool clear_shape(const test::Gesture& g) {
+  return g.kind == "circle" || g.kind == "rectangle" || g.kind == "triangle";
+}
+
+// Clear shapes show a preview well before pen-up: at 80% of their samples.
+TEST(LiveRecognizer, PreviewAtEightyPercentOfClearShapes) {
   LiveRecognizer live;
+  int shapes = 0, previewed = 0;
+  for (const test::Gesture& g : test::all_dollar_gestures()) {
+    if (!clear_shape(g)) continue;
+    const std::size_t at = g.points.size() * 4 / 5;
+    bool shown = false;
+    for (std::size_t i = 0; i < g.points.size(); ++i) {
+      live.add(g.points[i]);
+      if (i + 1 == at) shown = live.preview().shape != ShapeClass::kFreeform;
+    }
+    (void)live.finish();
+    ++shapes;
+    if (shown) ++previewed;
+  }
+  std::printf("non-freeform preview at 80%% of the samples: %d / %d clear shapes\n", previewed,
+              shapes);
+  ASSERT_GT(shapes, 500);
+  EXPECT_GE(static_cast<double>(previewed) / shapes, 0.9);
+}
+
+// finish() stays recognize()'s answer at least as often with the bounded policy as with the
+// previous eager one, and each policy's snaps are certified.
+TEST(LiveRecognizer, BoundedFinishAgreesWithOfflineAsOftenAsEager) {
+  LiveOptions eager_options;
+  eager_options.policy = RefitPolicy::kEager;
+  LiveRecognizer eager({}, eager_options);
+  LiveRecognizer bounded;
+  int strokes = 0, eager_agree = 0, bounded_agree = 0;
+  for (const test::Gesture& g : test::all_dollar_gestures()) {
+    for (const StrokePoint& p : g.points) {
+      eager.add(p);
+      bounded.add(p);
+    }
+    const Recognition e = eager.finish();
+    const Recognition b = bounded.finish();
+    const Recognition offline = recognize(g.points);
+    ++strokes;
+    if (e.shape == offline.shape) ++eager_agree;
+    if (b.shape == offline.shape) ++bounded_agree;
+    if (b.shape != ShapeClass::kFreeform) {
+      ASSERT_TRUE(b.certificate.certified) << g.file;
+      EXPECT_LE(b.certificate.bound, b.epsilon) << g.file;
+    }
+  }
+  std::printf("finish() == recognize(): eager %d / %d, bounded %d / %d\n", eager_agree, strokes,
+              bounded_agree, strokes);
+  EXPECT_GE(bounded_agree, eager_agree);
+}
+
+// The bounded policy fits at most one family per add() call; the eager one fits them all at
+// once (counted, not timed).
+TEST(LiveRecognizer, AtMostOneFamilyFitPerAdd) {
+  LiveOptions eager_options;
+  eager_options.policy = RefitPolicy::kEager;
+  LiveRecognizer eager({}, eager_options);
+  LiveRecognizer bounded;
+  std::size_t eager_most = 0, bounded_most = 0, bounded_fits = 0;
+  for (const test::Gesture& g : test::all_dollar_gestures()) {
+    for (const StrokePoint& p : g.points) {
+      const std::size_t e0 = eager.stats().family_fits, b0 = bounded.stats().family_fits;
+      eager.add(p);
+      bounded.add(p);
+      eager_most = std::max(eager_most, eager.stats().family_fits - e0);
+      bounded_most = std::max(bounded_most, bounded.stats().family_fits - b0);
+    }
+    bounded_fits += bounded.stats().family_fits;
+    (void)eager.finish();
+    (void)bounded.finish();
+  }
+  EXPECT_EQ(bounded_most, 1u);
+  EXPECT_GT(eager_most, 5u); // the baseline really is the all-at-once policy
+  EXPECT_GT(bounded_fits, 0u);
+}
+
+// A dense stream (a $1 circle with 40 samples between each two logged ones, as a fast tablet
+// sends them): the live path is thinned to points thin_fraction * size apart, so the points fed
+// to candidates do not grow with the sample rate, and the answers stay right.
+TEST(LiveRecognizer, ThinsADenseStream) {
+  const std::vector<test::Gesture> gestures = test::all_dollar_gestures();
+  int checked = 0;
+  for (const test::Gesture& g : gestures) {
+    if (g.kind != "circle" || checked >= 6) continue;
+    std::vector<StrokePoint> dense;
+    double length = 0.0;
+    double lox = g.points[0].x, hix = lox, loy = g.points[0].y, hiy = loy;
+    for (std::size_t i = 0; i + 1 < g.points.size(); ++i) {
+      const StrokePoint a = g.points[i], b = g.points[i + 1];
+      length += std::hypot(b.x - a.x, b.y - a.y);
+      for (int k = 0; k < 40; ++k) {
+        const double f = k / 40.0;
+        dense.push_back({a.x + f * (b.x - a.x), a.y + f * (b.y - a.y), a.t + f * (b.t - a.t)});
+      }
+    }
+    for (const StrokePoint& p : g.points) {
+      lox = std::min(lox, p.x), hix = std::max(hix, p.x);
+      loy = std::min(loy, p.y), hiy = std::max(hiy, p.y);
+    }
+    dense.push_back(g.points.back());
+    LiveRecognizer live;
+    bool previewed = false;
+    for (const StrokePoint& p : dense) {
+      live.add(p);
+      previewed = previewed || live.preview().shape != ShapeClass::kFreeform;
+    }
+    const LiveStats stats = live.stats();
+    // Kept points are at least size / 64 apart once the drawing has its full size; before,
+    // the size is smaller, so allow a factor of two.
+    const double size = std::hypot(hix - lox, hiy - loy);
+    EXPECT_LE(static_cast<double>(stats.kept_points), 2 * 64 * length / size + 2) << g.file;
+    EXPECT_LE(stats.kept_points, dense.size() / 4) << g.file;
+    EXPECT_TRUE(previewed) << g.file;
+    const Recognition at_pen_up = live.finish();
+    EXPECT_EQ(at_pen_up.shape, recognize(dense).shape) << g.file;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 6);
+}
+
+TEST(LiveRecognizer, BadOptions) {
+  LiveOptions o;
+  o.refit_interval = 0;
+  EXPECT_THROW(LiveRecognizer({}, o), InvalidInput);
+  o = {};
+  o.max_refit_interval = 4; // below refit_interval
+  EXPECT_THROW(LiveRecognizer({}, o), InvalidInput);
+  o = {};
+  o.max_fit_points = 8;
+  EXPECT_THROW(LiveRecognizer({}, o), InvalidInput);
+  o = {};
+  o.thin_fraction = NAN;
+  EXPECT_THROW(LiveRecognizer({}, o), InvalidInput);
+  o.thin_fraction = 0.5;
+  EXPECT_THROW(LiveRecognizer({}, o), InvalidInput);
+}
+
+class LivePolicies : public ::testing::TestWithParam<RefitPolicy> {};
+
+TEST_P(LivePolicies, PreviewTracksAGrowingSegmentThenCorner) {
+  LiveOptions options;
+  options.policy = GetParam();
+  LiveRecognizer live({}, options);
   for (int k = 0; k <= 100; ++k) live.add({2.0 * k, 0.5 * k, 0.01 * k});
   EXPECT_EQ(live.preview().shape, ShapeClass::kSegment);
   for (int k = 1; k <= 100; ++k) live.add({200.0 + 0.5 * k, 50.0 + 2.0 * k, 1 + 0.01 * k});
@@ -65,6 +213,9 @@ TEST(LiveRecognizer, PreviewTracksAGrowingSegmentThenCorner) {
   EXPECT_EQ(r.shape, ShapeClass::kPolyline);
   EXPECT_TRUE(r.certificate.certified);
 }
+
+INSTANTIATE_TEST_SUITE_P(LiveRecognizer, LivePolicies,
+                         ::testing::Values(RefitPolicy::kBounded, RefitPolicy::kEager));
 
 TEST(LiveRecognizer, BadInput) {
   LiveRecognizer live;

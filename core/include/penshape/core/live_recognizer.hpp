@@ -81,7 +81,7 @@ struct LiveOptions {
   std::size_t refit_interval = 8;      // kept points (kBounded) or samples (kEager)
   std::size_t max_refit_interval = 64; // kBounded: back-off cap
   std::size_t max_fit_points = 256;    // kBounded: points of the path a live fit uses
-  double thin_fraction = 1.0 / 200.0;  // kBounded: spacing of kept points / drawing size
+  double thin_fraction = 1.0 / 64.0;   // kBounded: spacing of kept points / drawing size
 };
 
 class LiveRecognizer {
