@@ -62,9 +62,14 @@ LiveCandidate LiveCandidate::make(Scored&& scored, const PreparedStroke& s, doub
     try {
       const annulus::TemplatePolygon t = annulus::make_convex_template(scored.fit.params.vertices);
       c.online.emplace(t, annulus::OuterOffset::kRound, epsilon, coordinate_magnitude);
-      // Seeded with the fit points (48 along the stroke at the fit; the certificate already
-      // covers the fitted path at the fitted placement), then fed every later point.
-      for (const PointD& p : s.fit_points) c.online->add(p);
+      // Seeded with every other fit point along the stroke at the fit (ends kept; they pin the
+      // translation as well for a preview at half the structures' cost, and the certificate
+      // already covers the fitted path), as one batch (one witness search), then fed every
+      // later point. finish() certifies against every sample anyway.
+      std::vector<PointD> seeds;
+      for (std::size_t i = 0; i < s.fit_points.size(); i += 2) seeds.push_back(s.fit_points[i]);
+      if (!(seeds.back() == s.fit_points.back())) seeds.push_back(s.fit_points.back());
+      c.online->add_all(seeds);
       c.alive = c.online->answer() != Answer::kNo; // a certified fit cannot be a NO
     } catch (const InvalidInput&) {
       c.online.reset(); // a degenerate template: fall back to the fixed placement
@@ -112,6 +117,10 @@ bool LiveCandidate::accept(PointD p) {
 }
 
 bool LiveCandidate::accept_all(std::span<const PointD> points) {
+  if (online) {
+    if (alive && !points.empty()) alive = online->add_all(points) != Answer::kNo;
+    return alive;
+  }
   for (const PointD& p : points) {
     if (!accept(p)) return false;
   }

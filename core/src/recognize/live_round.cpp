@@ -61,6 +61,12 @@ int RefitRound::stage(const PreparedStroke& stroke, double epsilon) {
 
 std::vector<Scored> RefitRound::step() {
   if (done()) return {};
+  if (!pending_.empty()) {
+    std::vector<Fit> one;
+    one.push_back(std::move(pending_.back()));
+    pending_.pop_back();
+    return finish_step(std::move(one), last_prospective_);
+  }
   const Step s = steps_[next_++];
   last_prospective_ = s.prospective;
   std::vector<Fit> fits;
@@ -91,6 +97,10 @@ std::vector<Scored> RefitRound::step() {
     case Kind::kRectangles:
       if (quadrilateral_) {
         for (Fit& f : fit_rectangles(stroke_, *quadrilateral_)) add(std::move(f));
+        while (fits.size() > 1) {
+          pending_.push_back(std::move(fits.back()));
+          fits.pop_back();
+        }
       }
       break;
     case Kind::kRegularPolygon:
@@ -102,10 +112,13 @@ std::vector<Scored> RefitRound::step() {
       add(fit_ellipse(stroke_));
       break;
   }
-  std::vector<Scored> scored =
-      s.prospective
-          ? prospects(std::move(fits))
-          : evaluate(stroke_, std::move(fits), tolerance_.epsilon, tolerance_.pen_radius, config_);
+  return finish_step(std::move(fits), s.prospective);
+}
+
+std::vector<Scored> RefitRound::finish_step(std::vector<Fit> fits, bool prospective) {
+  std::vector<Scored> scored = prospective ? prospects(std::move(fits))
+                                           : evaluate(stroke_, std::move(fits), tolerance_.epsilon,
+                                                      tolerance_.pen_radius, config_);
   std::vector<Scored> snaps;
   for (Scored& sc : scored) {
     if (sc.snap) snaps.push_back(std::move(sc));

@@ -29,8 +29,9 @@ class RefitRound {
   // 2 closed. A change of stage starts a new round.
   static int stage(const PreparedStroke& stroke, double epsilon);
 
-  [[nodiscard]] bool done() const { return next_ >= steps_.size(); }
-  // Fits and evaluates the next family; returns its certified plausible fits (snaps).
+  [[nodiscard]] bool done() const { return next_ >= steps_.size() && pending_.empty(); }
+  // Fits and evaluates the next family (fits made together are evaluated one per step);
+  // returns its certified plausible fits (snaps).
   std::vector<Scored> step();
 
   [[nodiscard]] const PreparedStroke& stroke() const { return stroke_; }
@@ -60,6 +61,7 @@ class RefitRound {
     bool prospective = false; // a closed family tried on an open stroke
   };
   std::vector<Scored> prospects(std::vector<Fit> fits) const;
+  std::vector<Scored> finish_step(std::vector<Fit> fits, bool prospective);
 
   PreparedStroke stroke_;
   ToleranceChoice tolerance_;
@@ -73,6 +75,7 @@ class RefitRound {
   std::size_t next_ = 0;
   std::optional<Fit> quadrilateral_; // shared by the quadrilateral and rectangle steps
   std::optional<Fit> circle_;        // shared by the circle and regular polygon steps
+  std::vector<Fit> pending_; // fits made together (rectangle, square, diamond), one per step
 };
 
 } // namespace penshape::recognize_detail

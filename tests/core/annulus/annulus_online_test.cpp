@@ -1,6 +1,8 @@
 // The on-line decision equals the off-line decision on every prefix.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "annulus_oracle.hpp"
 #include "penshape/core/annulus/online.hpp"
 #include "penshape/core/annulus/translation.hpp"
@@ -51,6 +53,55 @@ TEST_P(OnlineVsOffline, EveryPrefixAgrees) {
 
 INSTANTIATE_TEST_SUITE_P(Outer, OnlineVsOffline,
                          ::testing::Values(OuterOffset::kRound, OuterOffset::kLinearized));
+
+// Batches (add_all) answer as the off-line decision on the same points, whatever the split.
+TEST_P(OnlineVsOffline, BatchesAgree) {
+  const OuterOffset outer = GetParam();
+  std::mt19937 rng(77u + static_cast<unsigned>(outer));
+  std::uniform_real_distribution<double> u(0, 1);
+  std::size_t no_answers = 0, yes_answers = 0;
+  for (unsigned trial = 0; trial < 25; ++trial) {
+    const auto poly = oracle::random_convex(rng, 3 + trial % 5, 1.0);
+    const TemplatePolygon tp = make_convex_template(poly);
+    const auto pts = oracle::points_near(rng, poly, 30, 0.12, {2 * u(rng), u(rng), 0.0}, 0.03);
+    const double delta = 0.08 + 0.08 * u(rng);
+    OnlineContainment online(tp, outer, delta, 10.0);
+    std::vector<PointD> prefix;
+    std::size_t at = 0;
+    while (at < pts.size()) {
+      const std::size_t take = std::min<std::size_t>(1 + rng() % 9, pts.size() - at);
+      const std::vector<PointD> batch(pts.begin() + static_cast<std::ptrdiff_t>(at),
+                                      pts.begin() + static_cast<std::ptrdiff_t>(at + take));
+      at += take;
+      prefix.insert(prefix.end(), batch.begin(), batch.end());
+      const Answer on = online.add_all(batch);
+      const Answer off = decide_translation(tp, outer, delta, prefix).answer;
+      ASSERT_EQ(on, off) << "trial " << trial << " prefix " << prefix.size();
+      ASSERT_EQ(online.points(), prefix.size());
+      if (on == Answer::kYes) {
+        ++yes_answers;
+        const oracle::Pose pose{online.placement().tx, online.placement().ty, 0};
+        EXPECT_EQ(oracle::count(tp.vertices(),
+                                outer == OuterOffset::kRound ? oracle::Kind::kRound
+                                                             : oracle::Kind::kLinearized,
+                                delta, pose, prefix, 1e-12),
+                  prefix.size());
+      }
+      no_answers += on == Answer::kNo ? 1 : 0;
+    }
+  }
+  EXPECT_GT(no_answers, 5u);
+  EXPECT_GT(yes_answers, 5u);
+}
+
+TEST(Online, BatchWithANonFinitePointAddsNothing) {
+  const TemplatePolygon sq = make_convex_template({{0, 0}, {10, 0}, {10, 10}, {0, 10}});
+  OnlineContainment online(sq, OuterOffset::kRound, 0.5, 20.0);
+  const std::vector<PointD> bad{{0, 0}, {NAN, 1}};
+  EXPECT_THROW(online.add_all(bad), InvalidInput);
+  EXPECT_EQ(online.points(), 0u);
+  EXPECT_EQ(online.add_all(std::vector<PointD>{}), Answer::kUndecided);
+}
 
 TEST(Online, PruningKeepsFewStructures) {
   // Many points on a square's boundary: most points cannot touch the annulus boundary of a

@@ -7,7 +7,7 @@
 // candidate stays alive while new samples arrive:
 //   - convex polygon candidates (triangle, quadrilateral, rectangle, square, diamond, regular
 //     polygon) run the on-line annulus decision (penshape/core/annulus/online.hpp): the
-//     candidate is the template, delta = epsilon, seeded with the 48 fit points of the stroke
+//     candidate is the template, delta = epsilon, seeded with every other fit point of the stroke
 //     at the time of the fit; it dies as soon as NO translate of its epsilon-annulus contains
 //     them and every later point fed to it (a final NO for that template);
 //   - the other candidates (segment, polyline, circle, ellipse, arc) die when a point fed to

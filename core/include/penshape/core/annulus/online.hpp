@@ -11,6 +11,7 @@
 // search when the witness breaks. Convex templates only (simple ones: use decide_translation).
 #include <cstddef>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "penshape/core/annulus/annulus_template.hpp"
@@ -30,6 +31,12 @@ class OnlineContainment {
   // Adds a point (InvalidInput if not finite) and returns the answer for all points so far:
   // kYes with an exactly verified placement(), kNo (final), or kUndecided (within the margin).
   Answer add(PointD q);
+  // Adds points in order (InvalidInput, adding none, if one is not finite) and returns the
+  // answer for all points so far, with the same guarantees as add(): NO exactly when no
+  // translate of the (margin-widened) annulus contains them all, YES with a verified
+  // placement. The witness is looked for once, after the last point (a batch pays the
+  // structures, not a search per point). An empty batch returns answer().
+  Answer add_all(std::span<const PointD> points);
 
   [[nodiscard]] Answer answer() const;
   [[nodiscard]] const Placement& placement() const; // valid when answer() == kYes
