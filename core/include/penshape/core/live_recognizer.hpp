@@ -7,39 +7,53 @@
 // candidate stays alive while new samples arrive:
 //   - convex polygon candidates (triangle, quadrilateral, rectangle, square, diamond, regular
 //     polygon) run the on-line annulus decision (penshape/core/annulus/online.hpp): the
-//     candidate is the template, delta = epsilon, seeded with every other fit point of the stroke
-//     at the time of the fit; it dies as soon as NO translate of its epsilon-annulus contains
-//     them and every later point fed to it (a final NO for that template);
+//     candidate is the template, delta = epsilon, seeded (one batch) with every other fit point
+//     of the stroke at the time of the fit; it dies as soon as NO translate of its
+//     epsilon-annulus contains them and every later point fed to it (a final NO);
 //   - the other candidates (segment, polyline, circle, ellipse, arc) die when a point fed to
-//     them lies farther than epsilon from them at their fitted placement.
+//     them lies farther than epsilon from them at their fitted placement, except that with
+//     kBounded open shapes grow with the pen: a point beyond the end of a segment, of a
+//     polyline's last segment or of an arc, within epsilon of its line or circle and going on
+//     in the same direction, extends the shape to it.
 // The preview is the best-ranked candidate still alive. It is a candidate, not a certificate.
 //
 // Refit policy (LiveOptions::policy):
 //   - kBounded (default; the daemon calls add() on every sample of a 1 kHz stream): the work of
 //     one add() is bounded.
 //       * The path used for live fits is thinned: a sample is kept only when it lies at least
-//         thin_fraction * (drawing size) from the last kept one (1 kHz pens move a few
-//         hundredths of a millimetre per sample). The thinned path stays within that distance
-//         of the pen path, far below epsilon (max_tolerance_fraction of the size). Candidates
-//         are fed the kept points only, and a live fit uses at most max_fit_points of them
-//         (evenly strided beyond that).
-//       * A refit is a round over the families that apply (open: segment, arc, polylines;
-//         closed: circle, triangle, quadrilateral, rectangle/square/diamond, ellipse, regular
-//         polygons): at most ONE family is fitted and certified per add() call, so a round is
-//         spread over about a dozen samples. A new fit of a family replaces that family's old
-//         candidate; at the end of a round, families the round did not confirm are dropped.
-//       * A round starts, at most once per `interval` kept points, when nothing is alive, when
-//         the stroke closed or opened, or when the drawing grew by half since the last round.
-//         `interval` starts at refit_interval and doubles after each round that found no snap
-//         (a scribble or writing), up to max_refit_interval; a round with a snap resets it.
+//         thin_fraction * (drawing size so far) from the last kept one (a 1 kHz pen moves a
+//         few hundredths of a millimetre per sample). The thinned path stays within that
+//         distance of the pen path, far below epsilon (max_tolerance_fraction of the size).
+//         Kept points number about (length / size + ln(size / first step)) / thin_fraction.
+//         Candidates are fed the kept points only, and a live fit uses at most
+//         max_fit_points of them (evenly strided beyond that).
+//       * A refit is a round over the families that apply: at most ONE family is fitted and
+//         certified per add() call (rectangle, square and diamond, fitted together, are
+//         evaluated one per call), so a round is spread over about a dozen samples. Open
+//         strokes try segment, arc and polylines; closed strokes circle, triangle,
+//         quadrilateral, rectangle/square/diamond, ellipse and regular polygons. An open stroke
+//         most of the way round (at least 1.5 times as long as its size, its end within 0.75
+//         times its size of its start) first tries circle, triangle, quadrilateral,
+//         rectangle/square/diamond and ellipse as prospects: shapes it can still become, kept
+//         when every point of the fitted path is within epsilon of them (one-sided, estimated,
+//         not certified) and the stroke does not trace them over. A new fit of a family
+//         replaces that family's older candidate; older candidates of other families stay
+//         while alive.
+//       * A round starts, at most once per `interval` kept points, when nothing is alive
+//         (checked on every call), or, checked every refit_interval kept points, when the
+//         stroke closed, opened or came most of the way round, or when the drawing grew by
+//         half since the last round. `interval` starts at refit_interval and doubles after
+//         each round that found nothing (a scribble or writing), up to max_refit_interval; a
+//         round that found a candidate resets it.
 //   - kEager (the previous behaviour, kept as the benchmark baseline): every sample is fed to
 //     the candidates, and a full refit of every family on the whole stroke runs inside one
 //     add() call when nothing is alive (at most every refit_interval samples), when the stroke
 //     closes or opens, or when the drawing has grown by half since the last fit.
 //
-// Pen-up (finish, both policies): each family's surviving candidate (moved to the on-line
-// decision's verified translation) is certified against the whole stroke (every sample) and
-// used as that family's fit; families without a survivor, or whose survivor fails the
+// Pen-up (finish, both policies): each family's surviving candidate of the stroke's closure
+// (moved to the on-line decision's verified translation; not a prospect nor a grown open
+// shape, which fit a partial stroke) is certified against the whole stroke (every sample) and
+// used as that family's fit; families without such a survivor, or whose survivor fails the
 // certificate, are fitted afresh on the whole stroke. The choice then follows recognize()'s
 // rules exactly (same tolerance, plausibility and ranking), so the answer carries the same
 // certificate guarantee; it can differ from recognize() on the same samples only where a
