@@ -1,4 +1,13 @@
-// On-line containment decision under translation (Section 4) with the pruning of Section 4.3.
+// On-line containment decision under translation (Section 4) with the pruning of Section 4.3,
+// for convex templates and, with the round outer offset, simple ones (Section 5).
+//
+// Why the same structures serve simple templates: a translate containing every point can be
+// moved until some point meets the region's boundary, so a placement exists iff some point's
+// boundary-anchored set survives every other point (the off-line decision's argument,
+// translation.cpp). For a simple template the prepared annulus has no separate hole: every
+// boundary piece of the delta-wide region (the 2m offset segments and m vertex arcs) is in
+// outer_curve, and inner_curve is empty, so each point keeps one set per piece. Pruning is
+// unchanged: a point whose sets all empty can be on the boundary of no containing placement.
 #include "penshape/core/annulus/online.hpp"
 
 #include <algorithm>
@@ -169,7 +178,11 @@ struct OnlineContainment::State {
 
 OnlineContainment::OnlineContainment(const TemplatePolygon& p, OuterOffset outer, double delta,
                                      double coordinate_magnitude, const Limits& limits) {
-  if (!p.convex()) throw InvalidInput("the on-line decision needs a convex template");
+  if (!p.convex() && outer == OuterOffset::kLinearized) {
+    throw InvalidInput(
+        "the on-line decision with the linearized outer offset needs a convex "
+        "template (simple templates: kRound)");
+  }
   validate_delta(delta, limits);
   if (!std::isfinite(coordinate_magnitude) || coordinate_magnitude < 0.0) {
     throw InvalidInput("coordinate magnitude must be finite and non-negative");

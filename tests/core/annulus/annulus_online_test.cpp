@@ -103,6 +103,79 @@ TEST(Online, BatchWithANonFinitePointAddsNothing) {
   EXPECT_EQ(online.add_all(std::vector<PointD>{}), Answer::kUndecided);
 }
 
+// A random star-shaped (simple, usually non-convex) polygon.
+std::vector<PointD> random_star(std::mt19937& rng, std::size_t m) {
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<PointD> v;
+  for (std::size_t k = 0; k < m; ++k) {
+    const double a =
+        2 * 3.14159265358979 * (static_cast<double>(k) + 0.3 * u(rng)) / static_cast<double>(m);
+    const double r = 0.25 + 1.25 * u(rng);
+    v.push_back({r * std::cos(a), r * std::sin(a)});
+  }
+  return v;
+}
+
+// Simple templates (Section 5, kRound): the on-line answer equals the off-line decision on
+// every prefix, whether points come one by one or in batches, and YES witnesses pass the
+// brute-force oracle.
+TEST(OnlineSimple, EveryPrefixAgreesWithOffline) {
+  std::mt19937 rng(97);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::size_t no_answers = 0, yes_answers = 0;
+  int nonconvex = 0;
+  for (unsigned trial = 0; trial < 24; ++trial) {
+    const auto poly = random_star(rng, 5 + trial % 3);
+    const TemplatePolygon tp = make_simple_template(poly);
+    try {
+      (void)make_convex_template(poly);
+    } catch (const InvalidInput&) {
+      ++nonconvex;
+    }
+    const auto pts = oracle::points_near(rng, poly, 14, 0.12, {u(rng), u(rng), 0.0}, 0.05);
+    const double delta = 0.06 + 0.12 * u(rng);
+    OnlineContainment one_by_one(tp, OuterOffset::kRound, delta, 10.0);
+    OnlineContainment batched(tp, OuterOffset::kRound, delta, 10.0);
+    std::vector<PointD> prefix;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      prefix.push_back(pts[i]);
+      const Answer on = one_by_one.add(pts[i]);
+      const Answer off = decide_translation(tp, OuterOffset::kRound, delta, prefix).answer;
+      ASSERT_EQ(on, off) << "trial " << trial << " prefix " << prefix.size();
+      if (i % 3 == 2 || i + 1 == pts.size()) {
+        const std::size_t from = i - std::min<std::size_t>(i, i % 3);
+        const std::vector<PointD> batch(pts.begin() + static_cast<std::ptrdiff_t>(from),
+                                        pts.begin() + static_cast<std::ptrdiff_t>(i + 1));
+        ASSERT_EQ(batched.add_all(batch), off) << "trial " << trial << " prefix " << i + 1;
+      }
+      if (on == Answer::kYes) {
+        ++yes_answers;
+        const oracle::Pose pose{one_by_one.placement().tx, one_by_one.placement().ty, 0};
+        EXPECT_EQ(oracle::count(tp.vertices(), oracle::Kind::kSimple, delta, pose, prefix, 1e-12),
+                  prefix.size());
+      }
+      no_answers += on == Answer::kNo ? 1 : 0;
+    }
+    EXPECT_LE(one_by_one.max_active_structures(), pts.size());
+  }
+  EXPECT_GT(nonconvex, 8);
+  EXPECT_GT(no_answers, 10u);
+  EXPECT_GT(yes_answers, 10u);
+}
+
+TEST(OnlineSimple, LinearizedNeedsAConvexTemplate) {
+  const TemplatePolygon l = make_simple_template({{0, 0}, {4, 0}, {4, 1}, {1, 1}, {1, 4}, {0, 4}});
+  EXPECT_THROW(OnlineContainment(l, OuterOffset::kLinearized, 0.2, 10.0), InvalidInput);
+  OnlineContainment round(l, OuterOffset::kRound, 0.2, 10.0);
+  // Points along the L's boundary fit; a point in the middle of the L's inner corner region
+  // (far from every edge) cannot join them.
+  for (const PointD q : {PointD{0, 0}, PointD{4, 0}, PointD{0, 4}, PointD{1, 2}, PointD{3, 1}}) {
+    EXPECT_EQ(round.add(q), Answer::kYes);
+  }
+  EXPECT_EQ(round.add({2.5, 2.5}), Answer::kNo);
+  EXPECT_EQ(round.add({0, 0}), Answer::kNo); // final
+}
+
 TEST(Online, PruningKeepsFewStructures) {
   // Many points on a square's boundary: most points cannot touch the annulus boundary of a
   // containing placement, so they are discarded (Section 4.3).

@@ -8,7 +8,9 @@
 // witness placement; while new points fall inside it the answer costs one exact check, otherwise
 // a new witness is searched over all points (anchored sweeps, narrowed annulus, exact check).
 // Cost per point O(h m^2) for the structures (h = active structures, Sec. 4.3), plus the witness
-// search when the witness breaks. Convex templates only (simple ones: use decide_translation).
+// search when the witness breaks. Convex templates (kRound or kLinearized) and simple templates
+// (kRound only; the delta-wide region of Section 5: each point keeps one set per offset piece,
+// 3m pieces, so a point costs O(h m^2) as for convex templates, with the larger constant).
 #include <cstddef>
 #include <memory>
 #include <span>
@@ -20,8 +22,9 @@ namespace penshape::annulus {
 
 class OnlineContainment {
  public:
-  // Throws InvalidInput for a non-convex template or a bad delta. The robustness margin is fixed
-  // from the template, delta and `coordinate_magnitude` (the expected largest |x|, |y| of points).
+  // Throws InvalidInput for a simple (non-convex) template with kLinearized, or a bad delta. The
+  // robustness margin is fixed from the template, delta and `coordinate_magnitude` (the expected
+  // largest |x|, |y| of points).
   OnlineContainment(const TemplatePolygon& p, OuterOffset outer, double delta,
                     double coordinate_magnitude = 0.0, const Limits& limits = {});
   ~OnlineContainment();
