@@ -1,8 +1,18 @@
-// On-line containment decision under translation (Section 4) with the pruning of Section 4.3.
+// On-line containment decision under translation (Section 4) with the pruning of Section 4.3,
+// for convex templates and, with the round outer offset, simple ones (Section 5).
+//
+// Why the same structures serve simple templates: a translate containing every point can be
+// moved until some point meets the region's boundary, so a placement exists iff some point's
+// boundary-anchored set survives every other point (the off-line decision's argument,
+// translation.cpp). For a simple template the prepared annulus has no separate hole: every
+// boundary piece of the delta-wide region (the 2m offset segments and m vertex arcs) is in
+// outer_curve, and inner_curve is empty, so each point keeps one set per piece. Pruning is
+// unchanged: a point whose sets all empty can be on the boundary of no containing placement.
 #include "penshape/core/annulus/online.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 #include "prepared_annulus.hpp"
 #include "translation_internal.hpp"
@@ -55,14 +65,19 @@ struct OnlineContainment::State {
     return any;
   }
 
-  Answer add(PointD q) {
+  static void check_finite(PointD q, std::size_t index) {
     if (!std::isfinite(q.x) || !std::isfinite(q.y)) {
-      throw InvalidInput("point " + std::to_string(pts.size()) + " is not finite");
+      throw InvalidInput("point " + std::to_string(index) + " is not finite");
     }
+  }
+
+  // Records q and updates the structures with it (the O(h m^2) part); false once the answer is
+  // a (final) NO.
+  bool push(PointD q) {
     const std::size_t idx = pts.size();
     pts.push_back(q);
     structures.emplace_back();
-    if (answer == Answer::kNo) return answer; // final
+    if (answer == Answer::kNo) return false; // final
     // Update the active structures with the new point; discard the ones that empty.
     std::vector<std::size_t> survivors;
     for (std::size_t s : active) {
@@ -96,9 +111,20 @@ struct OnlineContainment::State {
     }
     active.swap(survivors);
     max_active = std::max(max_active, active.size());
-    if (active.empty()) return answer = Answer::kNo;
+    if (active.empty()) {
+      answer = Answer::kNo;
+      return false;
+    }
+    return true;
+  }
+
+  // The answer after the points `fresh` were pushed: the witness if it still holds for all of
+  // them, else reconciliation and a new witness search over all points.
+  Answer decide(std::span<const PointD> fresh) {
     // The last witness may still hold.
-    if (has_witness && annulus_contains_exactly(p, outer, delta, witness, q)) {
+    if (has_witness && std::all_of(fresh.begin(), fresh.end(), [&](PointD q) {
+          return annulus_contains_exactly(p, outer, delta, witness, q);
+        })) {
       return answer = Answer::kYes;
     }
     has_witness = false;
@@ -134,11 +160,29 @@ struct OnlineContainment::State {
     active.swap(keep);
     return answer = result;
   }
+
+  Answer add(PointD q) {
+    check_finite(q, pts.size());
+    if (!push(q)) return answer;
+    return decide(std::span<const PointD>(&q, 1));
+  }
+
+  Answer add_all(std::span<const PointD> qs) {
+    for (std::size_t i = 0; i < qs.size(); ++i) check_finite(qs[i], pts.size() + i);
+    bool no = false;
+    for (const PointD& q : qs) no = !push(q) || no; // after a NO, points are only recorded
+    if (no || qs.empty()) return answer;
+    return decide(qs);
+  }
 };
 
 OnlineContainment::OnlineContainment(const TemplatePolygon& p, OuterOffset outer, double delta,
                                      double coordinate_magnitude, const Limits& limits) {
-  if (!p.convex()) throw InvalidInput("the on-line decision needs a convex template");
+  if (!p.convex() && outer == OuterOffset::kLinearized) {
+    throw InvalidInput(
+        "the on-line decision with the linearized outer offset needs a convex "
+        "template (simple templates: kRound)");
+  }
   validate_delta(delta, limits);
   if (!std::isfinite(coordinate_magnitude) || coordinate_magnitude < 0.0) {
     throw InvalidInput("coordinate magnitude must be finite and non-negative");
@@ -163,6 +207,9 @@ OnlineContainment::OnlineContainment(OnlineContainment&&) noexcept = default;
 OnlineContainment& OnlineContainment::operator=(OnlineContainment&&) noexcept = default;
 
 Answer OnlineContainment::add(PointD q) { return state_->add(q); }
+Answer OnlineContainment::add_all(std::span<const PointD> points) {
+  return state_->add_all(points);
+}
 Answer OnlineContainment::answer() const { return state_->answer; }
 const Placement& OnlineContainment::placement() const { return state_->witness; }
 std::size_t OnlineContainment::points() const { return state_->pts.size(); }

@@ -38,8 +38,11 @@ TEST(AnnulusValidation, NonConvexTemplateWhereConvexIsRequired) {
               max_cover_rotation(simple, OuterOffset::kLinearized, 0.1, pts);
             }).find("convex"),
             std::string::npos);
-  EXPECT_NE(error_of([&] { OnlineContainment(simple, OuterOffset::kRound, 0.1); }).find("convex"),
-            std::string::npos);
+  // The on-line decision takes simple templates with the round outer offset only.
+  EXPECT_NE(
+      error_of([&] { OnlineContainment(simple, OuterOffset::kLinearized, 0.1); }).find("convex"),
+      std::string::npos);
+  EXPECT_EQ(error_of([&] { OnlineContainment(simple, OuterOffset::kRound, 0.1); }), "no error");
 }
 
 TEST(AnnulusValidation, DegenerateTemplates) {
