@@ -13,15 +13,28 @@ CancelOnSignal::CancelOnSignal() {
   pthread_sigmask(SIG_BLOCK, &signals_, &previous_);
 }
 
-void CancelOnSignal::arm(grpc::ClientContext* context) {
-  waiter_ = std::thread([this, context] {
-    int sig = 0;
-    sigwait(&signals_, &sig);
-    if (sig != SIGUSR2) {
-      fired_ = true;
-      context->TryCancel();
-    }
-  });
+CancelOnSignal::Armed CancelOnSignal::arm(grpc::ClientContext* context) {
+  {
+    std::lock_guard lock(mutex_);
+    context_ = context;
+  }
+  if (!waiter_.joinable()) {
+    waiter_ = std::thread([this] {
+      int sig = 0;
+      sigwait(&signals_, &sig);
+      if (sig != SIGUSR2) {
+        fired_ = true;
+        std::lock_guard lock(mutex_);
+        if (context_ != nullptr) context_->TryCancel();
+      }
+    });
+  }
+  return Armed(*this);
+}
+
+void CancelOnSignal::disarm() {
+  std::lock_guard lock(mutex_); // waits for a TryCancel in progress
+  context_ = nullptr;
 }
 
 CancelOnSignal::~CancelOnSignal() {

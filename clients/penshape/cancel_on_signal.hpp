@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <csignal>
+#include <mutex>
 #include <thread>
 
 namespace penshape::cli {
@@ -18,14 +19,32 @@ class CancelOnSignal {
   CancelOnSignal(const CancelOnSignal&) = delete;
   CancelOnSignal& operator=(const CancelOnSignal&) = delete;
 
-  // From now on a signal cancels `context` (which must outlive this object).
-  void arm(grpc::ClientContext* context);
+  // While it lives, a signal cancels the context it was armed with. Declare it after the context:
+  // its destructor waits for a cancellation in progress, so the context is never used after it
+  // is gone (a signal racing with the end of the stream).
+  class Armed {
+   public:
+    explicit Armed(CancelOnSignal& owner) : owner_(&owner) {}
+    ~Armed() { owner_->disarm(); }
+    Armed(const Armed&) = delete;
+    Armed& operator=(const Armed&) = delete;
+
+   private:
+    CancelOnSignal* owner_;
+  };
+
+  // From now on, while the returned guard lives, a signal cancels `context`.
+  [[nodiscard]] Armed arm(grpc::ClientContext* context);
   [[nodiscard]] bool fired() const { return fired_.load(); }
 
  private:
+  void disarm();
+
   sigset_t signals_{};
   sigset_t previous_{};
   std::atomic<bool> fired_{false};
+  std::mutex mutex_;                       // guards context_ (held while cancelling it)
+  grpc::ClientContext* context_ = nullptr; // armed with, until disarmed
   std::thread waiter_;
 };
 

@@ -68,7 +68,7 @@ int record_decoded(v1::Live::Stub& stub, const RecordOptions& options, CancelOnS
   request.add_device_ids(device->id());
   request.set_include_samples(true);
   auto reader = stub.Subscribe(&context, request);
-  cancel.arm(&context);
+  const auto armed = cancel.arm(&context);
   // Subscribe carries no detach events here: a second stream watches for the tablet going away.
   std::atomic<bool> detached{false};
   const std::string device_id = device->id();

@@ -148,7 +148,7 @@ int record_raw(v1::Live::Stub& stub, const RecordOptions& options, CancelOnSigna
   }
   request.set_include_raw_reports(true);
   auto reader = stub.Subscribe(&context, request);
-  cancel.arm(&context);
+  const auto armed = cancel.arm(&context);
   reader->WaitForInitialMetadata(); // subscribed: nothing from now on is missed
 
   if (device) {

@@ -175,7 +175,7 @@ int run_watch(std::span<const std::string_view> args) {
                            std::chrono::microseconds(static_cast<std::int64_t>(*duration * 1e6)));
     }
     auto reader = stub->Subscribe(&context, request);
-    cancel.arm(&context);
+    const auto armed = cancel.arm(&context);
     reader->WaitForInitialMetadata();
     std::fprintf(stderr, "penshape watch: subscribed to %s (Ctrl-C to stop)\n", address.c_str());
     // Events from both streams print under one lock, and count towards --count together.
