@@ -34,7 +34,7 @@ if [ -z "$recording" ]; then
   sleep 1  # the first scan of hidraw devices
   if "$bin/clients/penshape" devices --json --socket "$socket" | grep -q "{"; then
     echo "run: reading the attached tablet(s); draw, Ctrl-C to stop"
-    "$bin/clients/penshape" watch --devices --socket "$socket"
+    "$bin/clients/penshape" watch --devices --deconstructions --socket "$socket"
     exit 0
   fi
   kill -TERM "$daemon_pid"; wait "$daemon_pid" 2>/dev/null || true; daemon_pid=
@@ -45,4 +45,4 @@ fi
 # Watch until the recording has played (its last report time) plus time to recognize.
 last=$(grep '^E:' "$recording" | tail -n 1 | awk '{print $2}')
 start_daemon --replay "$recording" --replay-delay 1
-"$bin/clients/penshape" watch --socket "$socket" --duration "$(awk -v t="$last" 'BEGIN{print int(t) + 4}')"
+"$bin/clients/penshape" watch --deconstructions --socket "$socket" --duration "$(awk -v t="$last" 'BEGIN{print int(t) + 4}')"

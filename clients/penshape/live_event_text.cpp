@@ -174,6 +174,25 @@ void write_shape_json(JsonWriter& json, const v1::Shape& shape) {
   json.end_object();
 }
 
+std::string answer_word(v1::Answer a) {
+  switch (a) {
+    case v1::ANSWER_YES:
+      return "YES";
+    case v1::ANSWER_NO:
+      return "NO";
+    case v1::ANSWER_UNDECIDED:
+      return "UNDECIDED";
+    default:
+      return "unknown";
+  }
+}
+
+std::string millimetres(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g mm", v);
+  return buf;
+}
+
 std::string event_json(const v1::LiveEvent& event) {
   JsonWriter json;
   json.begin_object();
@@ -232,6 +251,25 @@ std::string event_json(const v1::LiveEvent& event) {
       json.key("compute_us")
           .integer(static_cast<std::int64_t>(event.shape().timings().compute_us()));
       break;
+    case v1::LiveEvent::kDeconstructed: {
+      const auto& d = event.deconstructed();
+      const auto& r = d.result();
+      json.key("type").string("deconstructed");
+      json.key("stroke_id").integer(static_cast<std::int64_t>(d.stroke_id()));
+      json.key("not_deconstructed").string(d.not_deconstructed());
+      json.key("answer").string(d.not_deconstructed().empty() ? answer_word(r.answer()) : "");
+      json.key("pen_radius").number(r.params().radius().approx());
+      json.key("tolerance").number(r.params().tolerance().approx());
+      json.key("precision").number(r.params().precision().approx());
+      json.key("hausdorff_bound").number(r.certificate().hausdorff_bound().approx());
+      json.key("solution_vertices")
+          .integer(static_cast<std::int64_t>(r.simplification().solution_vertices()));
+      json.key("raw_vertices")
+          .integer(static_cast<std::int64_t>(r.simplification().raw_vertices()));
+      json.key("simplified").boolean(r.simplification().simplified());
+      json.key("compute_us").integer(static_cast<std::int64_t>(r.timings().compute_us()));
+      break;
+    }
     case v1::LiveEvent::kDropped:
       json.key("type").string("dropped");
       json.key("count").integer(static_cast<std::int64_t>(event.dropped().count()));
@@ -284,6 +322,23 @@ std::string event_line(const v1::LiveEvent& event) {
       return who + "stroke " + std::to_string(event.shape().stroke_id()) +
              (event.shape().shape().kind() == v1::SHAPE_KIND_NONE ? " is " : " is a ") +
              shape_summary(event.shape().shape());
+    case v1::LiveEvent::kDeconstructed: {
+      const auto& d = event.deconstructed();
+      const auto& r = d.result();
+      std::string out = who + "stroke " + std::to_string(d.stroke_id()) + " deconstructed: ";
+      if (!d.not_deconstructed().empty()) return out + "not done (" + d.not_deconstructed() + ")";
+      out += answer_word(r.answer());
+      if (r.answer() == v1::ANSWER_YES) {
+        out += ", P has " + std::to_string(r.simplification().solution_vertices()) + " vertices";
+        if (r.simplification().simplified()) {
+          out += " (simplified from " + std::to_string(r.simplification().raw_vertices()) + ")";
+        }
+        out +=
+            ", H(offset(P, r), ink) <= " + millimetres(r.certificate().hausdorff_bound().approx());
+      }
+      return out + " [r " + millimetres(r.params().radius().approx()) + ", eps " +
+             millimetres(r.params().tolerance().approx()) + "]";
+    }
     case v1::LiveEvent::kDropped:
       return who + "this client lost " + std::to_string(event.dropped().count()) +
              " events (reading too slowly)";

@@ -23,7 +23,7 @@ namespace penshape::cli {
 namespace {
 
 constexpr const char* kHelp =
-    "usage: penshape watch [--json] [--samples] [--previews] [--devices]\n"
+    "usage: penshape watch [--json] [--samples] [--previews] [--deconstructions] [--devices]\n"
     "                      [--device ID[,ID...]]\n"
     "                      [--count N] [--duration SECONDS] [--svg-dir DIR]\n"
     "                      [--socket PATH | --address ADDR]\n\n"
@@ -32,11 +32,16 @@ constexpr const char* kHelp =
     "options:\n"
     "  --json             one JSON object per event: sequence, published_us, device_id, type\n"
     "                     (device_attached, device_detached, stroke_started, samples,\n"
-    "                     stroke_finished, preview, shape, dropped) and the type's fields\n"
-    "                     (stroke_id; samples; shape {kind, confidence, vertices | circle |\n"
-    "                     ellipse | arc, hausdorff_bound, tolerance, pen_radius, method} in mm)\n"
+    "                     stroke_finished, preview, shape, deconstructed, dropped) and the\n"
+    "                     type's fields (stroke_id; samples; shape {kind, confidence,\n"
+    "                     vertices | circle | ellipse | arc, hausdorff_bound, tolerance,\n"
+    "                     pen_radius, method} in mm; deconstructed {answer, solution_vertices,\n"
+    "                     raw_vertices, simplified, hausdorff_bound, tolerance, precision,\n"
+    "                     pen_radius, compute_us, not_deconstructed})\n"
     "  --samples          also the raw pen samples (many events per second)\n"
     "  --previews         also the shapes a stroke in progress would snap to\n"
+    "  --deconstructions  also each stroke's offset deconstruction: the outline P whose\n"
+    "                     pen-radius offset is certified within eps of the ink (after the shape)\n"
     "  --devices          also devices attached (those attached now first) and detached\n"
     "  --device IDS       only these devices (ids from `penshape devices`, comma-separated)\n"
     "  --count N          stop after N events\n"
@@ -133,8 +138,9 @@ std::vector<std::string> split_ids(const std::string& text) {
 
 int run_watch(std::span<const std::string_view> args) {
   const ParsedArgs parsed(
-      args, live_arg_spec({.flags = {"--json", "--samples", "--previews", "--devices"},
-                           .options = {"--device", "--count", "--duration", "--svg-dir"}}));
+      args, live_arg_spec(
+                {.flags = {"--json", "--samples", "--previews", "--deconstructions", "--devices"},
+                 .options = {"--device", "--count", "--duration", "--svg-dir"}}));
   if (parsed.flag("--help")) {
     std::printf(kHelp, kLiveOptionsHelp);
     return kExitOk;
@@ -151,6 +157,7 @@ int run_watch(std::span<const std::string_view> args) {
   v1::SubscribeRequest request;
   request.set_include_samples(parsed.flag("--samples"));
   request.set_include_previews(parsed.flag("--previews"));
+  request.set_include_deconstruction(parsed.flag("--deconstructions"));
   if (const auto ids = parsed.value("--device")) {
     for (const auto& id : split_ids(*ids)) request.add_device_ids(id);
   }

@@ -160,7 +160,8 @@ inline std::string unique_test_address(const std::string& tag) {
 }
 
 struct TestDaemon {
-  explicit TestDaemon(const std::string& tag, bool with_analyzer = true)
+  explicit TestDaemon(const std::string& tag, bool with_analyzer = true,
+                      std::shared_ptr<daemon::GeometryBackend> geometry = nullptr)
       : address(unique_test_address(tag)),
         source(std::make_shared<ScriptedSource>()),
         analyzer(with_analyzer ? std::make_shared<SquareAnalyzer>() : nullptr) {
@@ -169,6 +170,7 @@ struct TestDaemon {
     daemon::ServerParts parts;
     parts.source = source;
     parts.analyzer = analyzer;
+    parts.geometry = std::move(geometry);
     server = std::make_unique<daemon::PenshapeServer>(options, parts);
   }
   std::string address;
