@@ -46,14 +46,19 @@ void set_point(PointD p, v1::Point* out) {
   out->set_y(p.y);
 }
 
+// A sample in millimetres (a resolution of 0, unknown, takes device units as millimetres).
+StrokePoint point_mm(const PenSample& s, const TabletInfo& tablet) {
+  const double rx = tablet.x_resolution > 0 ? tablet.x_resolution : 1.0;
+  const double ry = tablet.y_resolution > 0 ? tablet.y_resolution : 1.0;
+  return {s.x / rx, s.y / ry, static_cast<double>(s.time_us) * 1e-6};
+}
+
 // The pen path in millimetres: only samples with the tip down draw.
 std::vector<StrokePoint> path_mm(const Stroke& stroke) {
-  const double rx = stroke.tablet.x_resolution > 0 ? stroke.tablet.x_resolution : 1.0;
-  const double ry = stroke.tablet.y_resolution > 0 ? stroke.tablet.y_resolution : 1.0;
   std::vector<StrokePoint> out;
   out.reserve(stroke.samples.size());
   for (const PenSample& s : stroke.samples) {
-    if (s.tip) out.push_back({s.x / rx, s.y / ry, static_cast<double>(s.time_us) * 1e-6});
+    if (s.tip) out.push_back(point_mm(s, stroke.tablet));
   }
   return out;
 }
@@ -114,14 +119,15 @@ class RecognizingAnalyzer final : public StrokeAnalyzer {
 
   std::vector<v1::Shape> preview(const Stroke& partial, const PenSettings& settings,
                                  const CancelHook& cancel) override {
-    const std::vector<StrokePoint> pts = path_mm(partial);
     std::shared_ptr<State> st = live_state(partial.id, settings);
     // Only this stroke's state is locked while feeding, so a finishing stroke's analysis (and
     // other devices' previews) never wait for a preview.
     std::lock_guard lock(st->mutex);
-    for (; st->fed < pts.size(); ++st->fed) {
+    // Only the samples this recognizer has not seen are converted and fed.
+    for (; st->fed < partial.samples.size(); ++st->fed) {
       if (cancel && cancel()) throw Cancelled(); // the stroke ended: its shape supersedes this
-      st->live.add(pts[st->fed]);
+      const PenSample& s = partial.samples[st->fed];
+      if (s.tip) st->live.add(point_mm(s, partial.tablet));
     }
     std::vector<v1::Shape> out;
     const LivePreview& p = st->live.preview();
@@ -139,7 +145,7 @@ class RecognizingAnalyzer final : public StrokeAnalyzer {
     explicit State(const RecognizerConfig& config) : live(config) {}
     std::mutex mutex; // held while feeding samples
     LiveRecognizer live;
-    std::size_t fed = 0;
+    std::size_t fed = 0; // samples of the stroke seen (tip up or down)
   };
   std::shared_ptr<State> live_state(std::uint64_t stroke_id, const PenSettings& settings) {
     std::lock_guard lock(mutex_);

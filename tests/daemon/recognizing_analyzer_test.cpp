@@ -65,5 +65,38 @@ TEST(RecognizingAnalyzer, ScribbleStaysInk) {
   EXPECT_EQ(a.shape.kind(), v1::SHAPE_KIND_NONE);
 }
 
+// Previews while the pen moves: the analyzer is handed the stroke so far, again and again (the
+// pipeline's preview lane); a circle is previewed as one before pen-up, and a cancelled preview
+// (the stroke ended) throws Cancelled.
+TEST(RecognizingAnalyzer, PreviewsAGrowingCircleAndStopsWhenCancelled) {
+  std::vector<PointD> mm;
+  for (int k = 0; k <= 200; ++k) {
+    const double t = 2 * std::numbers::pi * k / 200.0;
+    mm.push_back({100 + 30 * std::cos(t), 80 + 30 * std::sin(t)});
+  }
+  const Stroke whole = stroke_from(mm);
+  const auto analyzer = make_recognizing_analyzer();
+  PenSettings settings;
+  settings.pen_radius_mm = 0.8;
+  v1::ShapeKind last = v1::SHAPE_KIND_UNSPECIFIED;
+  for (std::size_t n = 20; n <= 190; n += 10) {
+    Stroke partial = whole;
+    partial.samples.resize(n);
+    const auto shapes = analyzer->preview(partial, settings, {});
+    const auto again = analyzer->preview(partial, settings, {}); // nothing new: same answer
+    ASSERT_EQ(shapes.size(), again.size());
+    if (!shapes.empty()) {
+      EXPECT_EQ(shapes[0].kind(), again[0].kind());
+      EXPECT_FALSE(shapes[0].has_certificate()); // a preview is not certified
+      last = shapes[0].kind();
+    }
+  }
+  EXPECT_EQ(last, v1::SHAPE_KIND_CIRCLE) << "at 95% of a circle the preview is a circle";
+
+  Stroke next = whole;
+  next.id = 8;
+  EXPECT_THROW((void)analyzer->preview(next, settings, [] { return true; }), Cancelled);
+}
+
 } // namespace
 } // namespace penshape::daemon
