@@ -8,43 +8,17 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cstdint>
 #endif
 
 namespace penshape::daemon {
 
 #if defined(__linux__)
-namespace {
 
-// The kernel's struct sched_attr (include/uapi/linux/sched/types.h); glibc has no wrapper and
-// the uapi header clashes with <sched.h>.
-struct SchedAttr {
-  std::uint32_t size;
-  std::uint32_t sched_policy;
-  std::uint64_t sched_flags;
-  std::int32_t sched_nice;
-  std::uint32_t sched_priority;
-  std::uint64_t sched_runtime; // SCHED_OTHER: the requested slice, in [100 µs, 100 ms]
-  std::uint64_t sched_deadline;
-  std::uint64_t sched_period;
-};
-
-constexpr std::uint64_t kShortestSliceNs = 100'000;
-
-} // namespace
-
-void lower_current_thread(int nice_increment, bool short_slice) {
+void lower_current_thread(int nice_increment) {
+  // Linux keeps niceness per thread: PRIO_PROCESS with a thread id changes only that thread.
   const auto tid = static_cast<id_t>(::syscall(SYS_gettid));
-  const int nice = std::min(::getpriority(PRIO_PROCESS, tid) + nice_increment, 19);
-  if (short_slice) {
-    SchedAttr attr{};
-    attr.size = sizeof(attr);
-    attr.sched_policy = SCHED_OTHER;
-    attr.sched_nice = nice;
-    attr.sched_runtime = kShortestSliceNs;
-    if (::syscall(SYS_sched_setattr, 0, &attr, 0U) == 0) return;
-  }
-  (void)::setpriority(PRIO_PROCESS, tid, nice);
+  (void)::setpriority(PRIO_PROCESS, tid,
+                      std::min(::getpriority(PRIO_PROCESS, tid) + nice_increment, 19));
 }
 
 void make_current_thread_idle() {
@@ -55,7 +29,7 @@ void make_current_thread_idle() {
 
 #else
 
-void lower_current_thread(int /*nice_increment*/, bool /*short_slice*/) {}
+void lower_current_thread(int /*nice_increment*/) {}
 void make_current_thread_idle() {}
 
 #endif

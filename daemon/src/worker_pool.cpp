@@ -18,16 +18,16 @@ WorkerPool::WorkerPool(std::size_t threads, std::size_t max_queued, WorkerPriori
   }
 }
 
-// Called on the worker thread itself: Linux keeps niceness, slice and policy per thread.
+// Called on the worker thread itself: Linux keeps niceness and policy per thread.
 void WorkerPool::apply_priority() const {
   switch (priority_) {
     case WorkerPriority::kNormal:
       break;
     case WorkerPriority::kInteractive:
-      lower_current_thread(kInteractiveNice, true);
+      lower_current_thread(kInteractiveNice);
       break;
     case WorkerPriority::kBatch:
-      lower_current_thread(kBatchNice, true);
+      lower_current_thread(kBatchNice);
       break;
     case WorkerPriority::kIdle:
       make_current_thread_idle();

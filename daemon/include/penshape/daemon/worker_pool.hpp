@@ -43,8 +43,6 @@ class StopCondition {
 };
 
 // How the pool's threads are scheduled (Linux; elsewhere every pool runs at normal priority).
-// The lowered priorities also ask for the shortest time slice, so a thread that wakes up (a
-// tablet reader, a gRPC writer) gets the core within about 100 µs (thread_scheduling.hpp).
 enum class WorkerPriority {
   kNormal,      // as the daemon's other threads
   kInteractive, // nice + kInteractiveNice: work a user waits for (a stroke's shape)
