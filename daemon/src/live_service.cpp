@@ -7,6 +7,7 @@
 #include "call_runner.hpp"
 #include "geometry_service.hpp"
 #include "penshape/daemon/proto_convert.hpp"
+#include "pipeline.hpp"
 
 namespace penshape::daemon {
 namespace {
@@ -210,6 +211,28 @@ grpc::Status LiveServiceImpl::StreamSamples(
     return grpc::Status::OK;
   };
 
+  // Previews: the stroke in progress after a batch, at the pipeline's pace.
+  const bool previews = message.start().include_previews() && state_.analyzer;
+  auto last_preview = std::chrono::steady_clock::time_point{};
+  auto maybe_preview = [&]() -> bool {
+    const auto now = std::chrono::steady_clock::now();
+    if (!previews || !current || now - last_preview < Pipeline::kPreviewInterval) return true;
+    last_preview = now;
+    std::vector<v1::Shape> candidates;
+    try {
+      candidates = state_.analyzer->preview(*current, settings,
+                                            [context] { return context->IsCancelled(); });
+    } catch (...) {
+      return true; // a hint: a failed preview is skipped, the stroke still gets its shape
+    }
+    if (candidates.empty()) return true;
+    v1::LiveEvent event;
+    v1::PreviewCandidates* preview = event.mutable_preview();
+    preview->set_stroke_id(current->id);
+    for (auto& c : candidates) *preview->add_candidates() = std::move(c);
+    return write_event(std::move(event));
+  };
+
   std::size_t batch_index = 0;
   while (stream->Read(&message)) {
     ++batch_index;
@@ -244,6 +267,7 @@ grpc::Status LiveServiceImpl::StreamSamples(
         if (grpc::Status s = finish_stroke(); !s.ok()) return s;
       }
     }
+    if (!maybe_preview()) return grpc::Status::CANCELLED;
   }
   // The client finished sending: a stroke still down ends here.
   if (current) return finish_stroke();

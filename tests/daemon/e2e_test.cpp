@@ -731,6 +731,67 @@ TEST_F(DaemonE2E, StreamSamplesCutsTheAppsStrokesAndAnswersEach) {
   EXPECT_EQ(analyzer->calls.load(), 2);
 }
 
+// An app streaming one stroke in four batches, 60 ms apart (longer than the preview interval).
+std::vector<v1::LiveEvent> stream_batched_stroke(v1::Live::Stub& live, bool include_previews) {
+  grpc::ClientContext ctx;
+  ctx.set_deadline(in(30s));
+  auto stream = live.StreamSamples(&ctx);
+  v1::StreamSamplesRequest start_message;
+  penshape::daemon::to_proto(penshape::testing::test_tablet(),
+                             start_message.mutable_start()->mutable_tablet());
+  start_message.mutable_start()->set_include_previews(include_previews);
+  EXPECT_TRUE(stream->Write(start_message));
+  for (int batch = 0; batch < 4; ++batch) {
+    v1::StreamSamplesRequest samples;
+    for (int i = 0; i < 5; ++i) {
+      const int k = batch * 5 + i;
+      auto* s = samples.mutable_samples()->add_samples();
+      s->set_time_us(k * 1000);
+      s->set_x(100 * k);
+      s->set_y(100);
+      s->set_tip(k < 19);
+    }
+    EXPECT_TRUE(stream->Write(samples));
+    std::this_thread::sleep_for(60ms);
+  }
+  stream->WritesDone();
+  std::vector<v1::LiveEvent> events;
+  v1::LiveEvent event;
+  while (stream->Read(&event)) events.push_back(event);
+  EXPECT_TRUE(stream->Finish().ok());
+  return events;
+}
+
+TEST_F(DaemonE2E, StreamSamplesSendsPreviewsOnlyWhenAsked) {
+  auto analyzer = std::make_shared<penshape::testing::BoundingBoxAnalyzer>();
+  start({nullptr, nullptr, analyzer});
+  auto live = v1::Live::NewStub(channel());
+
+  const auto plain = stream_batched_stroke(*live, false);
+  for (const auto& e : plain) EXPECT_FALSE(e.has_preview());
+  EXPECT_EQ(analyzer->previews.load(), 0);
+
+  const auto events = stream_batched_stroke(*live, true);
+  std::vector<double> seen; // the fake's confidence: samples seen by the preview
+  bool shape = false;
+  for (const auto& e : events) {
+    if (e.has_shape()) shape = true;
+    if (!e.has_preview()) continue;
+    EXPECT_FALSE(shape) << "previews come before the stroke's shape";
+    ASSERT_EQ(e.preview().candidates_size(), 1);
+    seen.push_back(e.preview().candidates(0).confidence());
+  }
+  EXPECT_TRUE(shape);
+  // Batches 1-3 end with the stroke in progress (the 4th ends it): previews after 5, 10 and 15
+  // samples, the later two unless the server read their batches within 50 ms of the last preview.
+  ASSERT_FALSE(seen.empty());
+  EXPECT_EQ(seen.front(), 5.0); // the first batch always gets one
+  for (std::size_t i = 0; i < seen.size(); ++i) {
+    EXPECT_TRUE(seen[i] == 5.0 || seen[i] == 10.0 || seen[i] == 15.0) << seen[i];
+    if (i > 0) EXPECT_GT(seen[i], seen[i - 1]);
+  }
+}
+
 TEST_F(DaemonE2E, SubmitStrokeAnswersAndPublishes) {
   config_.device_settings["056a:0010"].pen_radius_mm = 2.0; // the test tablet's model
   auto analyzer = std::make_shared<penshape::testing::BoundingBoxAnalyzer>();
