@@ -788,7 +788,9 @@ TEST_F(DaemonE2E, StreamSamplesSendsPreviewsOnlyWhenAsked) {
   EXPECT_EQ(seen.front(), 5.0); // the first batch always gets one
   for (std::size_t i = 0; i < seen.size(); ++i) {
     EXPECT_TRUE(seen[i] == 5.0 || seen[i] == 10.0 || seen[i] == 15.0) << seen[i];
-    if (i > 0) EXPECT_GT(seen[i], seen[i - 1]);
+    if (i > 0) {
+      EXPECT_GT(seen[i], seen[i - 1]);
+    }
   }
 }
 
