@@ -48,6 +48,17 @@ int BoardModel::server_shape(std::uint64_t server_id, const v1::Shape& shape) {
   return static_cast<int>(s - strokes_.data());
 }
 
+int BoardModel::server_preview(std::uint64_t server_id, const v1::Shape* best) {
+  BoardStroke* s = find(server_id);
+  if (s == nullptr || s->finished || s->answered) return -1; // too late: the answer rules
+  if (best != nullptr) {
+    s->preview = *best;
+  } else {
+    s->preview.reset();
+  }
+  return static_cast<int>(s - strokes_.data());
+}
+
 int BoardModel::server_not_analysed(std::uint64_t server_id, const std::string& why) {
   BoardStroke* s = find(server_id);
   if (s == nullptr) return -1;
@@ -60,6 +71,7 @@ int BoardModel::server_finished(std::uint64_t server_id) {
   BoardStroke* s = find(server_id);
   if (s == nullptr) return -1;
   s->finished = true;
+  s->preview.reset();
   return static_cast<int>(s - strokes_.data());
 }
 

@@ -16,14 +16,15 @@ struct PointPx {
 };
 
 struct BoardStroke {
-  std::vector<PointPx> points;    // window pixels, tip down
-  float pen_radius_px = 4;        // the pen radius when it was drawn
-  std::uint64_t server_id = 0;    // the daemon's stroke id (0 until StrokeStarted arrives)
-  std::optional<v1::Shape> shape; // a certified shape (never SHAPE_KIND_NONE)
-  bool snapped = false;           // shape shown instead of the raw stroke
-  bool finished = false;          // StrokeFinished arrived (a shape may follow)
-  bool answered = false;          // the daemon has answered (shape, none, or not analysed)
-  std::string note;               // e.g. "not analysed: ..." or "no shape"
+  std::vector<PointPx> points;      // window pixels, tip down
+  float pen_radius_px = 4;          // the pen radius when it was drawn
+  std::uint64_t server_id = 0;      // the daemon's stroke id (0 until StrokeStarted arrives)
+  std::optional<v1::Shape> shape;   // a certified shape (never SHAPE_KIND_NONE)
+  std::optional<v1::Shape> preview; // while drawing: what it would snap to now (a hint)
+  bool snapped = false;             // shape shown instead of the raw stroke
+  bool finished = false;            // StrokeFinished arrived (a shape may follow)
+  bool answered = false;            // the daemon has answered (shape, none, or not analysed)
+  std::string note;                 // e.g. "not analysed: ..." or "no shape"
 };
 
 class BoardModel {
@@ -38,6 +39,8 @@ class BoardModel {
   // The result for a server stroke; returns the stroke's index, or -1 when unknown.
   int server_shape(std::uint64_t server_id, const v1::Shape& shape);
   int server_not_analysed(std::uint64_t server_id, const std::string& why);
+  // A preview of a stroke still being drawn (the best candidate; none clears it).
+  int server_preview(std::uint64_t server_id, const v1::Shape* best);
   // StrokeFinished with its analysis done: a ShapeRecognized, when the daemon recognizes shapes,
   // follows right after it on the same stream.
   int server_finished(std::uint64_t server_id);

@@ -104,8 +104,9 @@ std::vector<PointPx> shape_polyline(const v1::Shape& shape) {
 void draw_board(SDL_Renderer* renderer, const BoardModel& model) {
   SDL_SetRenderDrawColor(renderer, kBackground.r, kBackground.g, kBackground.b, 255);
   SDL_RenderClear(renderer);
-  Triangles faint(kFaintInk), raw(kRawInk), shapes(kShapeInk);
+  Triangles faint(kFaintInk), guide(kPreviewInk), raw(kRawInk), shapes(kShapeInk);
   for (const BoardStroke& s : model.strokes()) {
+    if (s.preview && !s.finished) guide.ink(shape_polyline(*s.preview), s.pen_radius_px / 3);
     if (s.snapped && s.shape) {
       faint.ink(s.points, s.pen_radius_px);
       shapes.ink(shape_polyline(*s.shape), s.pen_radius_px);
@@ -114,6 +115,7 @@ void draw_board(SDL_Renderer* renderer, const BoardModel& model) {
     }
   }
   faint.draw(renderer);
+  guide.draw(renderer);
   raw.draw(renderer);
   shapes.draw(renderer);
 }

@@ -18,6 +18,7 @@ inline constexpr Rgb kBackground{255, 255, 255};
 inline constexpr Rgb kRawInk{110, 70, 170};
 inline constexpr Rgb kFaintInk{228, 220, 240};
 inline constexpr Rgb kShapeInk{200, 30, 30};
+inline constexpr Rgb kPreviewInk{245, 190, 190}; // a thin guide under the stroke being drawn
 
 // The center line of a shape in window pixels, as a polyline (closed shapes repeat the first
 // point at the end); circles, ellipses and arcs are sampled finely.

@@ -44,6 +44,7 @@ void DaemonLink::start(double pen_radius_mm, double tolerance_fraction) {
   *first.mutable_start()->mutable_tablet() = tablet_;
   first.mutable_start()->mutable_settings()->set_pen_radius_mm(pen_radius_mm);
   first.mutable_start()->mutable_settings()->set_tolerance_fraction(tolerance_fraction);
+  first.mutable_start()->set_include_previews(true); // a guide of the shape while drawing
   stream_->Write(first);
   reader_ = std::thread([this] {
     v1::LiveEvent event;

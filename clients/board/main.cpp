@@ -211,6 +211,12 @@ class Board {
         dirty_ = true;
       } else if (e.has_stroke_finished()) {
         model_.server_finished(e.stroke_finished().stroke().id());
+      } else if (e.has_preview()) {
+        const auto& p = e.preview();
+        if (model_.server_preview(p.stroke_id(),
+                                  p.candidates_size() > 0 ? &p.candidates(0) : nullptr) >= 0) {
+          dirty_ = true;
+        }
       } else if (e.has_shape()) {
         const int i = model_.server_shape(e.shape().stroke_id(), e.shape().shape());
         if (i >= 0) {

@@ -95,6 +95,26 @@ TEST(BoardModel, FinishedStrokesWithoutAShapeSettleAfterTheStreamIsDrained) {
   EXPECT_EQ(m.settle_finished(), 0);
 }
 
+TEST(BoardModel, PreviewsGuideTheStrokeBeingDrawnUntilItsAnswer) {
+  BoardModel m;
+  m.begin_stroke({1, 1}, 6);
+  m.extend_stroke({5, 5});
+  m.server_stroke_started(3);
+  const v1::Shape guess = square_shape();
+  EXPECT_EQ(m.server_preview(3, &guess), 0);
+  ASSERT_TRUE(m.strokes()[0].preview.has_value());
+  EXPECT_EQ(m.strokes()[0].preview->kind(), v1::SHAPE_KIND_SQUARE);
+  EXPECT_EQ(m.server_preview(3, nullptr), 0); // nothing fits any more
+  EXPECT_FALSE(m.strokes()[0].preview.has_value());
+  EXPECT_EQ(m.server_preview(3, &guess), 0);
+  m.end_stroke({9, 9});
+  EXPECT_EQ(m.server_finished(3), 0);
+  EXPECT_FALSE(m.strokes()[0].preview.has_value()); // the answer replaces the guide
+  EXPECT_EQ(m.server_preview(3, &guess), -1);       // a late preview changes nothing
+  EXPECT_FALSE(m.strokes()[0].preview.has_value());
+  EXPECT_EQ(m.server_preview(99, &guess), -1); // unknown stroke
+}
+
 std::string write_file(const std::string& name, const std::string& text) {
   const auto path = std::filesystem::temp_directory_path() /
                     ("penshape-board-core-" + std::to_string(::getpid()) + "-" + name);
