@@ -197,9 +197,10 @@ struct LiveRecognizer::State {
       if (none_alive || path.kept().size() >= next_check) {
         next_check = path.kept().size() + options.refit_interval;
         const ToleranceChoice tol = path.tolerance(config);
-        const PreparedStroke s = recognize_detail::prepare_points(
-            path.fit_path(options.max_fit_points),
-            recognize_detail::thinning_tolerance(config, tol.epsilon));
+        // The live path is thinned and capped already (LivePath): no certified thinning on
+        // top, whose tau would only loosen the previews' certificates.
+        const PreparedStroke s =
+            recognize_detail::prepare_points(path.fit_path(options.max_fit_points), 0.0);
         const bool grown = path.size() > kGrowthForRefit * last_fit_size;
         // Closing or opening the stroke, or coming most of the way round, changes which
         // families apply.
