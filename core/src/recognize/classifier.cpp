@@ -91,7 +91,9 @@ std::string implausibility(const PreparedStroke& s, const Fit& f, const Certific
     return "the stroke turns far more than the shape (wiggles: writing or a scribble)";
   }
   const bool straight_open = f.shape == ShapeClass::kSegment || f.shape == ShapeClass::kPolyline;
-  if (straight_open && c.bound > config.straight_fraction * c.epsilon) {
+  // Precision is a property of the drawing: read it on the bound of the (thinned) path the
+  // fit was checked on, without the thinning's tau (which says nothing about the hand).
+  if (straight_open && c.bound - s.thinning > config.straight_fraction * c.epsilon) {
     return "a straight open shape must fit within straight_fraction * epsilon";
   }
   if (f.shape == ShapeClass::kPolyline) {
