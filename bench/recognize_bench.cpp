@@ -8,7 +8,7 @@
 // Cases per density, side by side in one run:
 //   recognize, unthinned  recognize() with thin_tolerance_fraction = 0: the previous path (every
 //                         sample certified, linear scans), the baseline;
-//   recognize (offline)   recognize() with the defaults (thinned within epsilon / 20, segment
+//   recognize (offline)   recognize() with the defaults (thinned within epsilon / 50, segment
 //                         grid): what a client pays when it submits a finished stroke;
 //   live: pen-up          LiveRecognizer::finish() after the samples were fed one by one: the
 //                         pen-up latency of the live path, which reuses surviving fits;
