@@ -55,9 +55,9 @@
 // shape, which fit a partial stroke) is certified against the whole stroke (every sample,
 // thinned within a certified tolerance as recognize() thins it: recognize.hpp, "Dense
 // strokes") and used as that family's fit; families without such a survivor, or whose
-// survivor fails the certificate, are fitted afresh on the whole stroke. The choice then follows recognize()'s
-// rules exactly (same tolerance, plausibility and ranking), so the answer carries the same
-// certificate guarantee; it can differ from recognize() on the same samples only where a
+// survivor fails the certificate, are fitted afresh on the whole stroke. The choice then
+// follows recognize()'s rules exactly (same tolerance, plausibility and ranking), so the
+// answer carries the same certificate guarantee; it can differ from recognize() on the same samples only where a
 // reused fit ranks differently from a fresh one.
 #include <cstddef>
 #include <memory>
