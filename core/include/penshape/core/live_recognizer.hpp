@@ -57,8 +57,8 @@
 // strokes") and used as that family's fit; families without such a survivor, or whose
 // survivor fails the certificate, are fitted afresh on the whole stroke. The choice then
 // follows recognize()'s rules exactly (same tolerance, plausibility and ranking), so the
-// answer carries the same certificate guarantee; it can differ from recognize() on the same samples only where a
-// reused fit ranks differently from a fresh one.
+// answer carries the same certificate guarantee; it can differ from recognize() on the same
+// samples only where a reused fit ranks differently from a fresh one.
 #include <cstddef>
 #include <memory>
 #include <vector>
