@@ -1,20 +1,29 @@
-// Recognition time per stroke over the shared $1 gesture logs (subjects s01..s06, all speeds).
+// Recognition time per stroke over the shared $1 gesture logs (subjects s01..s06, all speeds),
+// at two densities:
+//   $1 as logged   the samples as the logs hold them (about 100-450 per stroke);
+//   $1 at 1 kHz    every --khz-stride'th stroke (default 4), linearly interpolated by time to
+//                  one sample per millisecond between its first and last time stamps (what a
+//                  1 kHz tablet delivers: thousands of samples per stroke).
 //
-// Cases, side by side in one run:
-//   recognize (offline)   recognize() on the whole stroke: the baseline, what a client pays
-//                         when it submits a finished stroke;
+// Cases per density, side by side in one run:
+//   recognize, unthinned  recognize() with thin_tolerance_fraction = 0: the previous path (every
+//                         sample certified, linear scans), the baseline;
+//   recognize (offline)   recognize() with the defaults (thinned within epsilon / 50, segment
+//                         grid): what a client pays when it submits a finished stroke;
 //   live: pen-up          LiveRecognizer::finish() after the samples were fed one by one: the
 //                         pen-up latency of the live path, which reuses surviving fits;
+//   live: pen-up unthin.  the same with thin_tolerance_fraction = 0 (baseline);
 //   live: per sample      LiveRecognizer::add() per sample (refits included where they happen);
 //   ink polygon           ink_polygon() of the stroke with the recognizer's pen radius (what the
 //                         daemon computes anyway; context for the next row, not part of it);
 //   recognize + ink cert  recognize(StrokeInput) with that ink polygon: the path screening plus
 //                         the ink-level certificate of the screened candidates (the daemon's
-//                         pen-up path), beside the path-certified baseline in the first row.
+//                         pen-up path), beside the path-certified rows.
 // Each time is measured twice: wall clock and the thread's CPU time (the machine is shared, so
 // wall-clock tails include time the thread was not running). Target: p99 <= 5 ms per stroke.
 //
-// Usage: recognize_bench [--json] [--repeat N]   (data dir: $PENSHAPE_SHARED_DATA_DIR)
+// Usage: recognize_bench [--json] [--repeat N] [--khz-stride K]
+//        (data dir: $PENSHAPE_SHARED_DATA_DIR)
 #include <time.h>
 
 #include <algorithm>
@@ -70,6 +79,26 @@ std::vector<std::vector<StrokePoint>> load_strokes(const std::filesystem::path& 
   return out;
 }
 
+// One sample per millisecond between the first and last time stamps, linearly interpolated by
+// time between the two logged samples around it; the last logged sample ends the stroke.
+std::vector<StrokePoint> at_1khz(const std::vector<StrokePoint>& in) {
+  if (in.size() < 2) return in;
+  std::vector<StrokePoint> out;
+  const double t0 = in.front().t, t1 = in.back().t;
+  std::size_t j = 0;
+  for (std::size_t k = 0;; ++k) {
+    const double t = t0 + 1e-3 * static_cast<double>(k);
+    if (t > t1) break;
+    while (j + 2 < in.size() && in[j + 1].t < t) ++j;
+    const StrokePoint& a = in[j];
+    const StrokePoint& b = in[j + 1];
+    const double f = b.t > a.t ? std::clamp((t - a.t) / (b.t - a.t), 0.0, 1.0) : 1.0;
+    out.push_back({a.x + f * (b.x - a.x), a.y + f * (b.y - a.y), t});
+  }
+  out.push_back(in.back());
+  return out;
+}
+
 struct Series {
   std::string name;
   std::vector<double> wall_ms;
@@ -83,18 +112,86 @@ double percentile(std::vector<double> v, double q) {
   return v[std::min(i, v.size() - 1)];
 }
 
+struct Density {
+  std::string name;
+  Series unthinned, offline, pen_up, pen_up_unthinned, per_sample, ink_build, ink_cert;
+  std::size_t strokes = 0, samples = 0, snaps = 0, unthinned_snaps = 0, ink_snaps = 0;
+  std::size_t differ = 0; // strokes whose class differs between thinned and unthinned
+};
+
+template <typename F>
+void timed(Series& s, F&& f) {
+  const double w = wall_seconds(), c = thread_cpu_seconds();
+  f();
+  s.wall_ms.push_back((wall_seconds() - w) * 1e3);
+  s.cpu_ms.push_back((thread_cpu_seconds() - c) * 1e3);
+}
+
+Density run(const std::string& name, const std::vector<std::vector<StrokePoint>>& strokes,
+            int repeat) {
+  Density d;
+  d.name = name;
+  d.unthinned.name = "recognize, unthinned";
+  d.offline.name = "recognize (offline)";
+  d.pen_up.name = "live: pen-up";
+  d.pen_up_unthinned.name = "live: pen-up unthin.";
+  d.per_sample.name = "live: per sample";
+  d.ink_build.name = "ink polygon";
+  d.ink_cert.name = "recognize + ink cert";
+  penshape::RecognizerConfig unthinned_config;
+  unthinned_config.thin_tolerance_fraction = 0.0;
+  penshape::LiveRecognizer live;
+  penshape::LiveRecognizer live_unthinned(unthinned_config);
+  for (int r = 0; r < repeat; ++r) {
+    for (const auto& s : strokes) {
+      ++d.strokes;
+      d.samples += s.size();
+      penshape::Recognition old_rec, rec;
+      timed(d.unthinned, [&] { old_rec = penshape::recognize(s, unthinned_config); });
+      timed(d.offline, [&] { rec = penshape::recognize(s); });
+      if (rec.shape != penshape::ShapeClass::kFreeform) ++d.snaps;
+      if (old_rec.shape != penshape::ShapeClass::kFreeform) ++d.unthinned_snaps;
+      if (rec.shape != old_rec.shape) ++d.differ;
+
+      for (const StrokePoint& p : s) timed(d.per_sample, [&] { live.add(p); });
+      timed(d.pen_up, [&] { (void)live.finish(); });
+      for (const StrokePoint& p : s) live_unthinned.add(p);
+      timed(d.pen_up_unthinned, [&] { (void)live_unthinned.finish(); });
+
+      // The ink polygon with the pen radius the recognizer uses, then the ink-certified run.
+      const penshape::ToleranceChoice tol = penshape::choose_tolerance(s, {});
+      std::vector<penshape::InkSample> ink_samples;
+      for (const StrokePoint& p : s) ink_samples.push_back({p.x, p.y, tol.pen_radius});
+      penshape::InkOptions options;
+      options.radius_mm = tol.pen_radius;
+      penshape::InkPolygon ink;
+      timed(d.ink_build, [&] { ink = penshape::ink_polygon(ink_samples, options); });
+      penshape::StrokeInput input;
+      input.samples = s;
+      input.ink = &ink;
+      penshape::Recognition with_ink;
+      timed(d.ink_cert, [&] { with_ink = penshape::recognize(input); });
+      if (with_ink.shape != penshape::ShapeClass::kFreeform) ++d.ink_snaps;
+    }
+  }
+  return d;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
   bool json = false;
   int repeat = 1;
+  std::size_t khz_stride = 4;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--json") == 0) {
       json = true;
     } else if (std::strcmp(argv[i], "--repeat") == 0 && i + 1 < argc) {
       repeat = std::max(1, std::atoi(argv[++i]));
+    } else if (std::strcmp(argv[i], "--khz-stride") == 0 && i + 1 < argc) {
+      khz_stride = static_cast<std::size_t>(std::max(1, std::atoi(argv[++i])));
     } else {
-      std::fprintf(stderr, "usage: recognize_bench [--json] [--repeat N]\n");
+      std::fprintf(stderr, "usage: recognize_bench [--json] [--repeat N] [--khz-stride K]\n");
       return 2;
     }
   }
@@ -105,81 +202,39 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "recognize_bench: no $1 logs under %s\n", data.string().c_str());
     return 2;
   }
-  Series offline{"recognize (offline)", {}, {}};
-  Series pen_up{"live: pen-up", {}, {}};
-  Series per_sample{"live: per sample", {}, {}};
-  Series ink_build{"ink polygon", {}, {}};
-  Series ink_cert{"recognize + ink cert", {}, {}};
-  std::size_t snaps = 0, ink_snaps = 0;
-  penshape::LiveRecognizer live;
-  for (int r = 0; r < repeat; ++r) {
-    for (const auto& s : strokes) {
-      double w = wall_seconds(), c = thread_cpu_seconds();
-      const penshape::Recognition rec = penshape::recognize(s);
-      offline.wall_ms.push_back((wall_seconds() - w) * 1e3);
-      offline.cpu_ms.push_back((thread_cpu_seconds() - c) * 1e3);
-      if (rec.shape != penshape::ShapeClass::kFreeform) ++snaps;
-
-      for (const StrokePoint& p : s) {
-        w = wall_seconds();
-        c = thread_cpu_seconds();
-        live.add(p);
-        per_sample.wall_ms.push_back((wall_seconds() - w) * 1e3);
-        per_sample.cpu_ms.push_back((thread_cpu_seconds() - c) * 1e3);
-      }
-      w = wall_seconds();
-      c = thread_cpu_seconds();
-      (void)live.finish();
-      pen_up.wall_ms.push_back((wall_seconds() - w) * 1e3);
-      pen_up.cpu_ms.push_back((thread_cpu_seconds() - c) * 1e3);
-
-      // The ink polygon with the pen radius the recognizer uses, then the ink-certified run.
-      const penshape::ToleranceChoice tol = penshape::choose_tolerance(s, {});
-      std::vector<penshape::InkSample> ink_samples;
-      for (const StrokePoint& p : s) ink_samples.push_back({p.x, p.y, tol.pen_radius});
-      penshape::InkOptions options;
-      options.radius_mm = tol.pen_radius;
-      w = wall_seconds();
-      c = thread_cpu_seconds();
-      const penshape::InkPolygon ink = penshape::ink_polygon(ink_samples, options);
-      ink_build.wall_ms.push_back((wall_seconds() - w) * 1e3);
-      ink_build.cpu_ms.push_back((thread_cpu_seconds() - c) * 1e3);
-      penshape::StrokeInput input;
-      input.samples = s;
-      input.ink = &ink;
-      w = wall_seconds();
-      c = thread_cpu_seconds();
-      const penshape::Recognition with_ink = penshape::recognize(input);
-      ink_cert.wall_ms.push_back((wall_seconds() - w) * 1e3);
-      ink_cert.cpu_ms.push_back((thread_cpu_seconds() - c) * 1e3);
-      if (with_ink.shape != penshape::ShapeClass::kFreeform) ++ink_snaps;
-    }
-  }
-  const Series* all[] = {&offline, &pen_up, &per_sample, &ink_build, &ink_cert};
-  if (!json) {
-    std::printf(
-        "recognition over %zu $1 strokes x %d (snaps per pass: %zu path-certified, %zu "
-        "ink-certified); times in ms\n",
-        strokes.size(), repeat, snaps / static_cast<std::size_t>(repeat),
-        ink_snaps / static_cast<std::size_t>(repeat));
-    std::printf("%-22s %8s %9s %9s %9s %9s %9s %9s\n", "case", "n", "p50 cpu", "p99 cpu", "max cpu",
-                "p50 wall", "p99 wall", "target");
-  }
-  for (const Series* s : all) {
-    const double p50c = percentile(s->cpu_ms, 0.5), p99c = percentile(s->cpu_ms, 0.99);
-    const double maxc = percentile(s->cpu_ms, 1.0);
-    const double p50w = percentile(s->wall_ms, 0.5), p99w = percentile(s->wall_ms, 0.99);
-    const bool per_stroke = s != &per_sample && s != &ink_build;
-    if (json) {
+  std::vector<std::vector<StrokePoint>> dense;
+  for (std::size_t i = 0; i < strokes.size(); i += khz_stride) dense.push_back(at_1khz(strokes[i]));
+  const Density densities[] = {run("$1 as logged", strokes, repeat),
+                               run("$1 at 1 kHz", dense, repeat)};
+  for (const Density& d : densities) {
+    const Series* all[] = {&d.unthinned,  &d.offline,   &d.pen_up,  &d.pen_up_unthinned,
+                           &d.per_sample, &d.ink_build, &d.ink_cert};
+    if (!json) {
       std::printf(
-          "{\"case\":\"%s\",\"n\":%zu,\"p50_cpu_ms\":%.4f,\"p99_cpu_ms\":%.4f,"
-          "\"max_cpu_ms\":%.4f,\"p50_wall_ms\":%.4f,\"p99_wall_ms\":%.4f,"
-          "\"target_p99_ms\":%s}\n",
-          s->name.c_str(), s->cpu_ms.size(), p50c, p99c, maxc, p50w, p99w,
-          per_stroke ? "5" : "null");
-    } else {
-      std::printf("%-22s %8zu %9.3f %9.3f %9.3f %9.3f %9.3f %9s\n", s->name.c_str(),
-                  s->cpu_ms.size(), p50c, p99c, maxc, p50w, p99w, per_stroke ? "p99<=5" : "-");
+          "%s: %zu strokes, %.0f samples per stroke; snaps: %zu thinned, %zu unthinned (%zu "
+          "classes differ), %zu ink-certified; times in ms\n",
+          d.name.c_str(), d.strokes,
+          static_cast<double>(d.samples) / static_cast<double>(std::max<std::size_t>(1, d.strokes)),
+          d.snaps, d.unthinned_snaps, d.differ, d.ink_snaps);
+      std::printf("%-22s %8s %9s %9s %9s %9s %9s %9s\n", "case", "n", "p50 cpu", "p99 cpu",
+                  "max cpu", "p50 wall", "p99 wall", "target");
+    }
+    for (const Series* s : all) {
+      const double p50c = percentile(s->cpu_ms, 0.5), p99c = percentile(s->cpu_ms, 0.99);
+      const double maxc = percentile(s->cpu_ms, 1.0);
+      const double p50w = percentile(s->wall_ms, 0.5), p99w = percentile(s->wall_ms, 0.99);
+      const bool per_stroke = s != &d.per_sample && s != &d.ink_build;
+      if (json) {
+        std::printf(
+            "{\"density\":\"%s\",\"case\":\"%s\",\"n\":%zu,\"p50_cpu_ms\":%.4f,"
+            "\"p99_cpu_ms\":%.4f,\"max_cpu_ms\":%.4f,\"p50_wall_ms\":%.4f,"
+            "\"p99_wall_ms\":%.4f,\"target_p99_ms\":%s}\n",
+            d.name.c_str(), s->name.c_str(), s->cpu_ms.size(), p50c, p99c, maxc, p50w, p99w,
+            per_stroke ? "5" : "null");
+      } else {
+        std::printf("%-22s %8zu %9.3f %9.3f %9.3f %9.3f %9.3f %9s\n", s->name.c_str(),
+                    s->cpu_ms.size(), p50c, p99c, maxc, p50w, p99w, per_stroke ? "p99<=5" : "-");
+      }
     }
   }
   return 0;

@@ -34,8 +34,7 @@ bool polish_with_annulus(const PreparedStroke& s, Scored& winner, const Recogniz
   for (PointD& v : moved.clean.path) v = v + shift;
   for (PointD& v : moved.params.vertices) v = v + shift;
   moved.params.center = moved.params.center + shift;
-  const Certificate after =
-      certify(s.points, moved.clean, before.epsilon, before.pen_radius, s.size);
+  const Certificate after = certify(s, moved.clean, before.epsilon, before.pen_radius);
   if (!after.certified || after.bound >= before.bound) return false;
   (void)config;
   winner.fit = moved;

@@ -13,15 +13,6 @@
 namespace penshape::recognize_detail {
 namespace {
 
-// A candidate's rank (recognize.hpp): its certified bound and twice its RMS distance in units of
-// epsilon, plus a price per free parameter, so a simpler shape wins unless a richer one fits
-// clearly better. Regular polygons are priced as 6 parameters: with many sides they approach the
-// circle, and the circle is the simpler reading of a round stroke.
-constexpr double kPricePerParameter = 0.15;
-constexpr double kRmsWeight = 2.0;
-// A shape is drawn once: the stroke may be at most this much longer than the clean shape
-// (overshoot, a closing overlap and wobble stay well below).
-constexpr double kMaxTracing = 1.6;
 // ... and turns at most half a turn more than the clean shape does (end hooks, a closing
 // overlap), measured on 16 points along the stroke (pen jitter averages out).
 constexpr double kMaxExtraTurning = std::numbers::pi;
@@ -100,7 +91,9 @@ std::string implausibility(const PreparedStroke& s, const Fit& f, const Certific
     return "the stroke turns far more than the shape (wiggles: writing or a scribble)";
   }
   const bool straight_open = f.shape == ShapeClass::kSegment || f.shape == ShapeClass::kPolyline;
-  if (straight_open && c.bound > config.straight_fraction * c.epsilon) {
+  // Precision is a property of the drawing: read it on the bound of the (thinned) path the
+  // fit was checked on, without the thinning's tau (which says nothing about the hand).
+  if (straight_open && c.bound - s.thinning > config.straight_fraction * c.epsilon) {
     return "a straight open shape must fit within straight_fraction * epsilon";
   }
   if (f.shape == ShapeClass::kPolyline) {
@@ -266,7 +259,7 @@ std::vector<Scored> evaluate(const PreparedStroke& s, std::vector<Fit> fits, dou
     c.shape = f.shape;
     c.params = f.params;
     if (f.fit_error <= kCertifyIfBelow * epsilon) {
-      c.certificate = certify(s.points, f.clean, epsilon, pen_radius, s.size);
+      c.certificate = certify(s, f.clean, epsilon, pen_radius);
     } else {
       c.certificate.epsilon = epsilon;
       c.certificate.pen_radius = pen_radius;
@@ -365,7 +358,8 @@ Recognition recognize(const StrokeInput& stroke, const RecognizerConfig& config_
     throw InvalidInput("recognize: the ink polygon is empty");
   }
   const ToleranceChoice tol = choose_tolerance(stroke.samples, config);
-  const PreparedStroke s = recognize_detail::prepare(stroke.samples);
+  const PreparedStroke s = recognize_detail::prepare(
+      stroke.samples, recognize_detail::thinning_tolerance(config, tol.epsilon));
   std::vector<recognize_detail::Fit> fits = recognize_detail::fit_all(s, config, tol.epsilon);
   if (stroke.skeleton && !stroke.skeleton->empty() && recognize_detail::is_closed(s, tol.epsilon)) {
     recognize_detail::apply_skeleton_seeds(s, *stroke.skeleton, fits);

@@ -13,6 +13,17 @@ namespace penshape::recognize_detail {
 inline constexpr double kClosureEpsilons = 2.0;
 bool is_closed(const PreparedStroke& s, double epsilon);
 
+// A candidate's rank (recognize.hpp): its certified bound and twice its RMS distance in units of
+// epsilon, plus a price per free parameter, so a simpler shape wins unless a richer one fits
+// clearly better. Regular polygons are priced as 6 parameters: with many sides they approach the
+// circle, and the circle is the simpler reading of a round stroke. The live recognizer's
+// prospects rank with the same weights.
+inline constexpr double kPricePerParameter = 0.15;
+inline constexpr double kRmsWeight = 2.0;
+// A shape is drawn once: the stroke may be at most this much longer than the clean shape
+// (overshoot, a closing overlap and wobble stay well below). Snaps and live prospects alike.
+inline constexpr double kMaxTracing = 1.6;
+
 // A family: the class, and the vertex count for polylines and regular polygons (else 0).
 struct Family {
   ShapeClass shape = ShapeClass::kFreeform;

@@ -110,7 +110,8 @@ struct LiveRecognizer::State {
     last_fit_points = path.points().size();
     last_fit_size = path.size();
     const ToleranceChoice tol = choose_tolerance(samples, config);
-    const PreparedStroke s = recognize_detail::prepare_points(path.points());
+    const PreparedStroke s = recognize_detail::prepare_points(
+        path.points(), recognize_detail::thinning_tolerance(config, tol.epsilon));
     last_fit_closed = recognize_detail::is_closed(s, tol.epsilon);
     std::vector<Fit> fits = recognize_detail::fit_all(s, config, tol.epsilon);
     stats.family_fits += fits.size();
@@ -138,7 +139,8 @@ struct LiveRecognizer::State {
     if (!none_alive) {
       // Closing or opening the stroke changes which families apply.
       const ToleranceChoice tol = choose_tolerance(samples, config);
-      const PreparedStroke s = recognize_detail::prepare_points(path.points());
+      // Closure reads the fit points only: no thinning needed.
+      const PreparedStroke s = recognize_detail::prepare_points(path.points(), 0.0);
       closure_changed = recognize_detail::is_closed(s, tol.epsilon) != last_fit_closed;
     }
     if (none_alive || grown || closure_changed) eager_refit();
@@ -195,8 +197,10 @@ struct LiveRecognizer::State {
       if (none_alive || path.kept().size() >= next_check) {
         next_check = path.kept().size() + options.refit_interval;
         const ToleranceChoice tol = path.tolerance(config);
+        // The live path is thinned and capped already (LivePath): no certified thinning on
+        // top, whose tau would only loosen the previews' certificates.
         const PreparedStroke s =
-            recognize_detail::prepare_points(path.fit_path(options.max_fit_points));
+            recognize_detail::prepare_points(path.fit_path(options.max_fit_points), 0.0);
         const bool grown = path.size() > kGrowthForRefit * last_fit_size;
         // Closing or opening the stroke, or coming most of the way round, changes which
         // families apply.
@@ -281,7 +285,8 @@ Recognition LiveRecognizer::finish() {
   State& st = *state_;
   recognize_detail::validate_samples(st.samples, st.config);
   const ToleranceChoice tol = choose_tolerance(st.samples, st.config);
-  const PreparedStroke s = recognize_detail::prepare_points(st.path.points());
+  const PreparedStroke s = recognize_detail::prepare_points(
+      st.path.points(), recognize_detail::thinning_tolerance(st.config, tol.epsilon));
   const bool closed = recognize_detail::is_closed(s, tol.epsilon);
 
   // Survivors of the right kind (closed or open) are certified against the whole stroke.

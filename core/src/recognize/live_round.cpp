@@ -10,11 +10,7 @@ namespace {
 // When an open stroke is worth trying as a closed shape still being drawn (live_round.hpp).
 constexpr double kProspectLength = 1.5; // stroke length / size at least
 constexpr double kProspectGap = 0.75;   // end-to-start gap / size at most
-// As the classifier's rule for snaps: a shape is drawn once.
-constexpr double kMaxTracing = 1.6;
-// The classifier's rank weights (recognize.hpp: rank = (bound + 2 rms) / eps + 0.15 dof).
-constexpr double kRmsWeight = 2.0;
-constexpr double kPricePerParameter = 0.15;
+// Tracing limit and rank weights: the classifier's (classifier.hpp), shared with snaps.
 
 } // namespace
 

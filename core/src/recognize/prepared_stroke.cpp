@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include "thin_path.hpp"
+
 namespace penshape::recognize_detail {
 
 namespace {
@@ -45,6 +47,9 @@ void validate_samples(const std::vector<StrokePoint>& samples, const RecognizerC
       !std::isfinite(config.arc_monotone_turning)) {
     throw InvalidInput("recognize: the configuration's fractions must be finite and positive");
   }
+  if (!(config.thin_tolerance_fraction >= 0.0 && config.thin_tolerance_fraction <= 0.25)) {
+    throw InvalidInput("recognize: thin_tolerance_fraction must be within [0, 0.25]");
+  }
   if (samples.empty()) throw InvalidInput("recognize: the stroke has no samples");
   if (samples.size() > config.max_samples) {
     throw InvalidInput("recognize: the stroke has " + std::to_string(samples.size()) +
@@ -66,33 +71,44 @@ void validate_samples(const std::vector<StrokePoint>& samples, const RecognizerC
   throw InvalidInput("recognize: the stroke needs at least two distinct positions");
 }
 
-PreparedStroke prepare_points(std::vector<PointD> points) {
+double thinning_tolerance(const RecognizerConfig& config, double epsilon) {
+  return config.thin_tolerance_fraction * epsilon;
+}
+
+PreparedStroke prepare_points(std::vector<PointD> points, double tau) {
   PreparedStroke p;
-  p.points = std::move(points);
-  PointD lo = p.points.front();
+  PointD lo = points.front();
   PointD hi = lo;
-  for (const PointD& q : p.points) {
+  for (const PointD& q : points) {
     lo = {std::min(lo.x, q.x), std::min(lo.y, q.y)};
     hi = {std::max(hi.x, q.x), std::max(hi.y, q.y)};
   }
+  // Size, length, gap and the fit points come from every sample (linear, and as without
+  // thinning); the certificate and the fitters' point scans use the thinned path.
   p.size = distance(lo, hi);
-  p.length = path_length(p.points);
-  p.gap = distance(p.points.front(), p.points.back());
-  p.fit_points = resample(p.points, kFitPoints);
+  p.length = path_length(points);
+  p.gap = distance(points.front(), points.back());
+  p.fit_points = resample(points, kFitPoints);
+  if (tau > 0.0) {
+    p.points = thin_path(points, tau);
+    p.thinning = tau;
+  } else {
+    p.points = std::move(points);
+  }
   PointD sum;
   for (const PointD& q : p.fit_points) sum = sum + q;
   p.centroid = (1.0 / static_cast<double>(p.fit_points.size())) * sum;
   return p;
 }
 
-PreparedStroke prepare(const std::vector<StrokePoint>& samples) {
+PreparedStroke prepare(const std::vector<StrokePoint>& samples, double tau) {
   std::vector<PointD> points;
   points.reserve(samples.size());
   for (const StrokePoint& s : samples) {
     const PointD q{s.x, s.y};
     if (points.empty() || !(points.back() == q)) points.push_back(q);
   }
-  return prepare_points(std::move(points));
+  return prepare_points(std::move(points), tau);
 }
 
 } // namespace penshape::recognize_detail

@@ -1,6 +1,7 @@
 #pragma once
-// A validated stroke ready for fitting: duplicates removed, its size, and an arc-length
-// resampling that every fitter works on (so a long stroke costs no more to fit than a short one).
+// A validated stroke ready for fitting: duplicates removed, thinned within a certified tolerance
+// (recognize.hpp, "Dense strokes"), its size, and an arc-length resampling that every fitter
+// works on (so a long or dense stroke costs no more to fit than a short one).
 #include <vector>
 
 #include "geometry.hpp"
@@ -11,11 +12,14 @@ namespace penshape::recognize_detail {
 inline constexpr std::size_t kFitPoints = 48; // resampled points the fitters use
 
 struct PreparedStroke {
-  std::vector<PointD> points;     // the pen path: samples without consecutive duplicates
-  std::vector<PointD> fit_points; // kFitPoints points evenly spaced along the path, ends kept
+  // The pen path A' the certificate and the fitters see: the samples without consecutive
+  // duplicates, thinned so that H(A, A') <= thinning (A = every distinct sample).
+  std::vector<PointD> points;
+  double thinning = 0.0;          // tau: the certificate adds it to its bound (0: not thinned)
+  std::vector<PointD> fit_points; // kFitPoints points evenly spaced along A, ends kept
   PointD centroid;                // of fit_points
-  double length = 0.0;            // path length
-  double size = 0.0;              // bounding-box diagonal
+  double length = 0.0;            // length of A
+  double size = 0.0;              // bounding-box diagonal of A
   double gap = 0.0;               // distance from the last point to the first
 };
 
@@ -23,8 +27,12 @@ struct PreparedStroke {
 // distinct positions.
 void validate_samples(const std::vector<StrokePoint>& samples, const RecognizerConfig& config);
 
-// Assumes validate_samples passed.
-PreparedStroke prepare(const std::vector<StrokePoint>& samples);
-PreparedStroke prepare_points(std::vector<PointD> points); // points already deduplicated
+// The thinning tolerance tau for a stroke checked against epsilon (RecognizerConfig::
+// thin_tolerance_fraction * epsilon; 0 turns thinning off).
+double thinning_tolerance(const RecognizerConfig& config, double epsilon);
+
+// Assumes validate_samples passed. `tau` as thinning_tolerance() gives it.
+PreparedStroke prepare(const std::vector<StrokePoint>& samples, double tau);
+PreparedStroke prepare_points(std::vector<PointD> points, double tau); // already deduplicated
 
 } // namespace penshape::recognize_detail

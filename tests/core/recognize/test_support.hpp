@@ -58,6 +58,27 @@ inline std::vector<Gesture> all_dollar_gestures() {
   return out;
 }
 
+// The stroke as a 1 kHz tablet would send it: one sample per millisecond from the first time
+// stamp to the last, each linearly interpolated by time between the two logged samples around
+// it, and the last logged sample at the end.
+inline std::vector<StrokePoint> at_one_khz(const std::vector<StrokePoint>& in) {
+  if (in.size() < 2) return in;
+  std::vector<StrokePoint> out;
+  std::size_t j = 0;
+  for (std::size_t k = 0;; ++k) {
+    const double t = in.front().t + 1e-3 * static_cast<double>(k);
+    if (t > in.back().t) break;
+    while (j + 2 < in.size() && in[j + 1].t < t) ++j;
+    const StrokePoint& a = in[j];
+    const StrokePoint& b = in[j + 1];
+    double f = b.t > a.t ? (t - a.t) / (b.t - a.t) : 1.0;
+    f = f < 0 ? 0 : (f > 1 ? 1 : f);
+    out.push_back({a.x + f * (b.x - a.x), a.y + f * (b.y - a.y), t});
+  }
+  out.push_back(in.back());
+  return out;
+}
+
 // ---- Independent distance computations (brute force, no shared code with the recognizer) ----
 
 inline double dist_point_segment(PointD p, PointD a, PointD b) {

@@ -52,12 +52,13 @@
 //
 // Pen-up (finish, both policies): each family's surviving candidate of the stroke's closure
 // (moved to the on-line decision's verified translation; not a prospect nor a grown open
-// shape, which fit a partial stroke) is certified against the whole stroke (every sample) and
-// used as that family's fit; families without such a survivor, or whose survivor fails the
-// certificate, are fitted afresh on the whole stroke. The choice then follows recognize()'s
-// rules exactly (same tolerance, plausibility and ranking), so the answer carries the same
-// certificate guarantee; it can differ from recognize() on the same samples only where a
-// reused fit ranks differently from a fresh one.
+// shape, which fit a partial stroke) is certified against the whole stroke (every sample,
+// thinned within a certified tolerance as recognize() thins it: recognize.hpp, "Dense
+// strokes") and used as that family's fit; families without such a survivor, or whose
+// survivor fails the certificate, are fitted afresh on the whole stroke. The choice then
+// follows recognize()'s rules exactly (same tolerance, plausibility and ranking), so the
+// answer carries the same certificate guarantee; it can differ from recognize() on the same
+// samples only where a reused fit ranks differently from a fresh one.
 #include <cstddef>
 #include <memory>
 #include <vector>

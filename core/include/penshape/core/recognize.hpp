@@ -23,6 +23,30 @@
 // The certified bound is therefore  bound = max(both one-sided maxima) + h/2 + margin  >= H(A, B)
 // >= H(inks) by (1). A stroke snaps to a clean shape only when bound <= epsilon.
 //
+// Dense strokes (thinning). A 1 kHz tablet sends thousands of samples per stroke; the cost must
+// follow the drawing, not the sample rate. Before fitting and certifying, the path A (every
+// distinct sample) is thinned to a sub-path A' (Douglas-Peucker with tolerance
+// tau = thin_tolerance_fraction * epsilon, on windows of at most 128 samples whose ends are
+// kept, so the worst case stays linear; first and last samples kept). Claim: H(A, A') <= tau.
+//   - sup_{a in A} d(a, A') <= tau: each dropped sample v_j lies between two kept samples v_i,
+//     v_k (i < j < k) and Douglas-Peucker dropped it only because d(v_j, [v_i, v_k]) <= tau;
+//     every edge [v_j, v_j+1] of A lies between the same kept pair, so both its ends are within
+//     tau of the chord [v_i, v_k], and the distance to a segment (a convex set) is a convex
+//     function, hence at most tau along the whole edge.
+//   - sup_{b in A'} d(b, A) <= tau: let b be on the chord [v_i, v_k], b = v_i + t (v_k - v_i).
+//     The sub-path A[i..k] is continuous from v_i (projection parameter 0 onto the chord's
+//     line) to v_k (parameter 1), so by continuity some point a of it projects exactly onto b;
+//     then |a - b| = d(a, [v_i, v_k]) <= tau by the first part. (A degenerate chord v_i = v_k
+//     is a point of A itself.)
+// So, by the triangle inequality for the Hausdorff distance,
+//     H(A, B) <= H(A', B) + H(A, A') <= H(A', B) + tau,
+// and the path certificate bounds H(A', B) as above and adds tau (plus one more rounding margin
+// for the thinning's own distance tests). Everything else (fits, plausibility, ranking) may use
+// A': the fit points, size, length and closure still come from every sample. The distance to
+// the thinned stroke is looked up in a uniform grid of its segments. The ink certificate works
+// on the ink polygon and is not affected. thin_tolerance_fraction = 0 turns both off (the
+// previous behaviour, kept as the benchmark baseline).
+//
 // Tolerance epsilon (RecognizerConfig): epsilon = min(tolerance_pen_radii * r,
 // max_tolerance_fraction * size), where size is the diagonal of the stroke's bounding box. It is
 // measured in pen radii because the ink of a wider pen hides larger wobbles; it is bounded by the
@@ -64,7 +88,8 @@
 //
 // Limits (explicit, InvalidInput when exceeded): at least 2 samples with distinct positions,
 // at most RecognizerConfig::max_samples samples, finite coordinates with |x|, |y| <= 1e9, and a
-// configuration with finite, non-negative pen radius and tolerance and positive fractions.
+// configuration with finite, non-negative pen radius and tolerance, positive fractions and
+// 0 <= thin_tolerance_fraction <= 0.25.
 //
 // Two entries. recognize(samples) sees the pen path only and certifies on the paths as above
 // (Certificate::method "path"): a statement about the ink drawn with one pen radius. It builds
@@ -145,6 +170,13 @@ struct RecognizerConfig {
   double arc_monotone_turning = 0.8;
   // Open polylines have at most this many segments (more is handwriting, not a shape).
   std::size_t max_polyline_segments = 3;
+  // Dense strokes: the path is thinned within tau = thin_tolerance_fraction * epsilon before
+  // fitting and certifying, and tau is added to the certified bound ("Dense strokes" above).
+  // 1/50 costs 2% of the tolerance; measured on the $1 logs (as logged and at 1 kHz): 97.6% of
+  // the shapes named right as unthinned, 1% non-shape snaps, 14 of 2880 classes differ from
+  // unthinned (1/20 lost 3 of 540 shapes whose bound was within tau of epsilon). Limit:
+  // 0 <= thin_tolerance_fraction <= 0.25; 0 turns thinning (and the segment grid) off.
+  double thin_tolerance_fraction = 0.02;
   // Input limit.
   std::size_t max_samples = 100'000;
 };
