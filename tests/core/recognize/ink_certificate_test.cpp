@@ -312,13 +312,8 @@ TEST(InkCertificate, RefusesBadInput) {
   EXPECT_THROW(recognize(input), InvalidInput);
 }
 
-const std::map<std::string, std::set<std::string>> kShapeTargets{
-    {"circle", {"circle", "ellipse"}},
-    {"rectangle", {"rectangle", "square", "quadrilateral"}},
-    {"triangle", {"triangle"}},
-};
-const std::set<std::string> kNonShapes{"pigtail", "question_mark", "left_curly_brace",
-                                       "right_curly_brace", "delete_mark"};
+using test::kNonShapes;
+using test::kShapeTargets;
 
 // The $1 logs with the ink certificate deciding every snap (ink built with the recognizer's pen
 // radius): the targets still hold, every snap says "ink", and the path-only answer differs
@@ -353,21 +348,7 @@ TEST(InkCertificate, DollarTargetsWithTheInkCertificate) {
       if (r.shape != ShapeClass::kFreeform) ++non_shape_snaps;
     }
   }
-  std::set<std::string> columns;
-  for (const auto& [kind, row] : confusion) {
-    for (const auto& [c, n] : row) columns.insert(c);
-  }
-  std::printf("%-18s", "gesture\\class");
-  for (const auto& c : columns) std::printf(" %9.9s", c.c_str());
-  std::printf("\n");
-  for (const auto& [kind, row] : confusion) {
-    std::printf("%-18s", kind.c_str());
-    for (const auto& c : columns) {
-      const auto it = row.find(c);
-      std::printf(" %9d", it == row.end() ? 0 : it->second);
-    }
-    std::printf("\n");
-  }
+  test::print_confusion_table(confusion);
   const double shape_rate = static_cast<double>(shapes_ok) / shapes;
   const double snap_rate = static_cast<double>(non_shape_snaps) / non_shapes;
   std::printf(

@@ -16,31 +16,8 @@
 namespace penshape {
 namespace {
 
-const std::map<std::string, std::set<std::string>> kShapeTargets{
-    {"circle", {"circle", "ellipse"}},
-    {"rectangle", {"rectangle", "square", "quadrilateral"}},
-    {"triangle", {"triangle"}},
-};
-const std::set<std::string> kNonShapes{"pigtail", "question_mark", "left_curly_brace",
-                                       "right_curly_brace", "delete_mark"};
-
-void print_confusion(const std::map<std::string, std::map<std::string, int>>& confusion) {
-  std::set<std::string> columns;
-  for (const auto& [kind, row] : confusion) {
-    for (const auto& [c, n] : row) columns.insert(c);
-  }
-  std::printf("%-18s", "gesture\\class");
-  for (const auto& c : columns) std::printf(" %9.9s", c.c_str());
-  std::printf("\n");
-  for (const auto& [kind, row] : confusion) {
-    std::printf("%-18s", kind.c_str());
-    for (const auto& c : columns) {
-      const auto it = row.find(c);
-      std::printf(" %9d", it == row.end() ? 0 : it->second);
-    }
-    std::printf("\n");
-  }
-}
+using test::kNonShapes;
+using test::kShapeTargets;
 
 TEST(RecognizeDense, ConfusionTableAndTargetsAtOneKilohertz) {
   const std::vector<test::Gesture> gestures = test::all_dollar_gestures();
@@ -79,7 +56,7 @@ TEST(RecognizeDense, ConfusionTableAndTargetsAtOneKilohertz) {
         << g.file << " " << got << ": independent Hausdorff " << check.hausdorff
         << " exceeds the certified bound " << r.certificate.bound;
   }
-  print_confusion(confusion);
+  test::print_confusion_table(confusion);
   const double shape_rate = static_cast<double>(shapes_ok) / shapes;
   const double snap_rate = static_cast<double>(non_shape_snaps) / non_shapes;
   std::printf(

@@ -17,13 +17,8 @@
 namespace penshape {
 namespace {
 
-const std::map<std::string, std::set<std::string>> kShapeTargets{
-    {"circle", {"circle", "ellipse"}},
-    {"rectangle", {"rectangle", "square", "quadrilateral"}},
-    {"triangle", {"triangle"}},
-};
-const std::set<std::string> kNonShapes{"pigtail", "question_mark", "left_curly_brace",
-                                       "right_curly_brace", "delete_mark"};
+using test::kNonShapes;
+using test::kShapeTargets;
 
 struct Tally {
   int shapes = 0, shapes_ok = 0, non_shapes = 0, non_shape_snaps = 0;

@@ -2,11 +2,14 @@
 // Test helpers for the recognizer, written independently of the recognizer's code: a $1 log
 // reader, the shared data directory, and an independent Hausdorff check of a snap.
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <numbers>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -14,6 +17,37 @@
 #include "penshape/core/recognize.hpp"
 
 namespace penshape::test {
+
+// The reading of the $1 gestures: a shape gesture counts as correct for these classes;
+// the non-shape gestures must stay freeform (star is excluded).
+inline const std::map<std::string, std::set<std::string>> kShapeTargets{
+    {"circle", {"circle", "ellipse"}},
+    {"rectangle", {"rectangle", "square", "quadrilateral"}},
+    {"triangle", {"triangle"}},
+};
+inline const std::set<std::string> kNonShapes{"pigtail", "question_mark", "left_curly_brace",
+                                              "right_curly_brace", "delete_mark"};
+
+// Rows: gesture names; columns: the classes given; cells: counts.
+using ConfusionTable = std::map<std::string, std::map<std::string, int>>;
+
+inline void print_confusion_table(const ConfusionTable& confusion) {
+  std::set<std::string> columns;
+  for (const auto& [kind, row] : confusion) {
+    for (const auto& [c, n] : row) columns.insert(c);
+  }
+  std::printf("%-18s", "gesture\\class");
+  for (const auto& c : columns) std::printf(" %9.9s", c.c_str());
+  std::printf("\n");
+  for (const auto& [kind, row] : confusion) {
+    std::printf("%-18s", kind.c_str());
+    for (const auto& c : columns) {
+      const auto it = row.find(c);
+      std::printf(" %9d", it == row.end() ? 0 : it->second);
+    }
+    std::printf("\n");
+  }
+}
 
 inline std::filesystem::path shared_data_dir() {
   if (const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR")) return env;
