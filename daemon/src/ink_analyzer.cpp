@@ -1,6 +1,5 @@
-// The stroke analyzer this build has: the ink polygon from the core (penshape::ink_polygon). The
-// recognizer (annulus fits) extends it with the shape; until then StrokeAnalysis::shape stays
-// SHAPE_KIND_UNSPECIFIED and no ShapeRecognized is published.
+// The ink-only stroke analyzer: StrokeAnalysis::shape stays SHAPE_KIND_UNSPECIFIED, so no
+// ShapeRecognized is published.
 #include "penshape/daemon/ink_analyzer.hpp"
 
 #include "penshape/core/ink.hpp"
@@ -13,9 +12,7 @@ class InkAnalyzer final : public StrokeAnalyzer {
  public:
   StrokeAnalysis analyze(const Stroke& stroke, const PenSettings& settings,
                          const CancelHook& cancel) override {
-    InkOptions options;
-    options.radius_mm = settings.pen_radius_mm;
-    const InkPolygon ink = ink_polygon(stroke, options);
+    const InkPolygon ink = ink_polygon(stroke, ink_options_for(settings));
     if (cancel && cancel()) throw Cancelled();
     StrokeAnalysis analysis;
     to_proto(ink.region, &analysis.ink_polygon);
@@ -24,6 +21,12 @@ class InkAnalyzer final : public StrokeAnalyzer {
 };
 
 } // namespace
+
+InkOptions ink_options_for(const PenSettings& settings) {
+  InkOptions options;
+  options.radius_mm = settings.pen_radius_mm;
+  return options;
+}
 
 std::shared_ptr<StrokeAnalyzer> make_ink_analyzer() { return std::make_shared<InkAnalyzer>(); }
 

@@ -6,6 +6,7 @@
 
 #include "penshape/core/ink.hpp"
 #include "penshape/core/live_recognizer.hpp"
+#include "penshape/daemon/ink_analyzer.hpp"
 #include "penshape/daemon/proto_convert.hpp"
 
 namespace penshape::daemon {
@@ -67,14 +68,6 @@ RecognizerConfig config_for(const PenSettings& settings) {
   RecognizerConfig config;
   config.pen_radius = settings.pen_radius_mm;
   return config;
-}
-
-// The ink as the ink analyzer draws it: one radius, the settings' pen radius (PenSettings has
-// no pressure curve yet; with one, InkOptions::use_pressure would follow it here).
-InkOptions ink_options_for(const PenSettings& settings) {
-  InkOptions options;
-  options.radius_mm = settings.pen_radius_mm;
-  return options;
 }
 
 bool has_distinct_points(const std::vector<StrokePoint>& pts) {

@@ -1,12 +1,19 @@
 #pragma once
 #include <memory>
 
+#include "penshape/core/ink.hpp"
 #include "penshape/daemon/stroke_analyzer.hpp"
 
 namespace penshape::daemon {
 
-// Ink polygons with the core's penshape::ink_polygon (pen radius from the settings); no shapes.
-// Compiled with PENSHAPE_DAEMON_WITH_ENGINE.
+// How the daemon draws a stroke's ink: one radius, the settings' pen radius (PenSettings has no
+// pressure curve yet; with one, InkOptions::use_pressure would follow it here). Both analyzers
+// use it, so the ink they report is the same.
+InkOptions ink_options_for(const PenSettings& settings);
+
+// Ink polygons with the core's penshape::ink_polygon (ink_options_for); no shapes. The daemon
+// runs the recognizing analyzer (recognizing_analyzer.hpp); this one serves builds and tests that
+// want the ink alone. Compiled with PENSHAPE_DAEMON_WITH_ENGINE.
 std::shared_ptr<StrokeAnalyzer> make_ink_analyzer();
 
 } // namespace penshape::daemon
