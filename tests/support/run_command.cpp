@@ -1,5 +1,7 @@
 #include "run_command.hpp"
 
+#include "test_data.hpp"
+
 #include <sys/wait.h>
 
 #include <array>
@@ -20,9 +22,7 @@ CommandResult run_command(const std::string& command_line) {
 }
 
 std::string shared_data_path(const std::string& relative) {
-  const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR");
-  const std::string dir = env != nullptr && *env != '\0' ? env : PENSHAPE_SHARED_DATA_DIR;
-  return dir + "/" + relative;
+  return shared_data_location() + "/" + relative;
 }
 
 } // namespace penshape::test
