@@ -10,15 +10,16 @@ function(penshape_add_test target)
   cmake_parse_arguments(ARG "" "RESOURCE_LOCK" "SOURCES;LIBS" ${ARGN})
   add_executable(${target} ${ARG_SOURCES})
   penshape_warnings(${target})
-  target_link_libraries(${target} PRIVATE ${ARG_LIBS} GTest::gtest GTest::gtest_main)
+  # Test data is located by penshape_test_data alone (tests/support/test_data.hpp), so that
+  # PENSHAPE_SHARED_DATA_DIR in the environment overrides the cache variable without a rebuild.
+  target_link_libraries(${target} PRIVATE ${ARG_LIBS} penshape_test_data GTest::gtest
+    GTest::gtest_main)
   target_compile_definitions(${target} PRIVATE
-    PENSHAPE_SHARED_DATA_DIR="${PENSHAPE_SHARED_DATA_DIR}"
     PENSHAPE_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
     PENSHAPE_BINARY_DIR="${PROJECT_BINARY_DIR}")
-  set(lock)
+  set(properties)
   if(ARG_RESOURCE_LOCK)
-    set(lock RESOURCE_LOCK ${ARG_RESOURCE_LOCK})
+    set(properties PROPERTIES RESOURCE_LOCK ${ARG_RESOURCE_LOCK})
   endif()
-  gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60 DISCOVERY_MODE PRE_TEST
-    PROPERTIES ENVIRONMENT "PENSHAPE_SHARED_DATA_DIR=${PENSHAPE_SHARED_DATA_DIR}" ${lock})
+  gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60 DISCOVERY_MODE PRE_TEST ${properties})
 endfunction()

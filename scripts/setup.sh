@@ -11,6 +11,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libsdl2-dev xvfb python3-grpcio python3-protobuf
   libpolyclipping-dev
+  dpkg-dev file
 )
 
 missing=()

@@ -9,6 +9,10 @@ ParsedArgs::ParsedArgs(std::span<const std::string_view> args, const ArgSpec& sp
   bool only_positionals = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string_view arg = args[i];
+    if (!only_positionals && arg == "-h" && spec.flags.contains("--help")) {
+      flags_.insert("--help"); // the short form every subcommand's help answers to
+      continue;
+    }
     if (only_positionals || arg.size() < 2 || arg.substr(0, 2) != "--") {
       if (!only_positionals && arg.size() > 1 && arg[0] == '-' && arg != "-") {
         throw UsageError("unknown option '" + std::string(arg) + "'");

@@ -40,4 +40,8 @@ drivers::Recording load_device_file(const ParsedArgs& args) {
   return rec;
 }
 
+std::string device_file_name(const ParsedArgs& args) {
+  return args.positionals().empty() ? std::string() : args.positionals().front();
+}
+
 } // namespace penshape::cli

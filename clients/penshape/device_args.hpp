@@ -11,4 +11,7 @@ namespace penshape::cli {
 // Loads FILE (the single positional). Malformed files throw drivers::RecordingError.
 drivers::Recording load_device_file(const ParsedArgs& args);
 
+// The FILE the command was given, for error messages ("" when there is none).
+std::string device_file_name(const ParsedArgs& args);
+
 } // namespace penshape::cli

@@ -30,13 +30,42 @@ EngineKind engine_option(const ParsedArgs& parsed) {
   throw UsageError("option '--engine' must be fast or reference, got '" + engine + "'");
 }
 
+namespace {
+
+// The same bound as penshaped's (daemon/include/penshape/daemon/limits.hpp): past it the engines'
+// grids and disk approximations stop being meaningful, so such a file is refused up front.
+constexpr double kMaxAbsCoordinate = 1e12;
+
+void check_coordinates(const PolygonSet& q) {
+  const Rational limit(kMaxAbsCoordinate);
+  for (std::size_t i = 0; i < q.polygons.size(); ++i) {
+    const auto check_ring = [&](const Ring& ring, const std::string& name) {
+      for (std::size_t k = 0; k < ring.size(); ++k) {
+        if (abs(ring[k].x) > limit || abs(ring[k].y) > limit) {
+          throw InvalidInput("polygon " + std::to_string(i) + ", " + name + ", vertex " +
+                             std::to_string(k) + ": a coordinate beyond the limit of ±1e12");
+        }
+      }
+    };
+    check_ring(q.polygons[i].outer, "outer ring");
+    for (std::size_t h = 0; h < q.polygons[i].holes.size(); ++h) {
+      check_ring(q.polygons[i].holes[h], "hole " + std::to_string(h));
+    }
+  }
+}
+
+} // namespace
+
 PolygonSet read_polygon_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("cannot read '" + path + "'");
   std::ostringstream text;
   text << in.rdbuf();
   try {
-    return read_polygon_text(text.str());
+    PolygonSet q = read_polygon_text(text.str());
+    check_coordinates(q);
+    validate_region(q);
+    return q;
   } catch (const InvalidInput& e) {
     throw InputError(path + ": " + e.what());
   }

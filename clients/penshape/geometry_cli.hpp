@@ -25,7 +25,8 @@ std::optional<Rational> optional_rational(const ParsedArgs& parsed, const char* 
 // --engine fast|reference (default fast).
 EngineKind engine_option(const ParsedArgs& parsed);
 
-// x-y text or WKT; InputError naming the file (and line) when unreadable or malformed.
+// x-y text or WKT, checked as a region (validate_region) with coordinates within ±1e12 (as
+// penshaped's limit); InputError naming the file (and line) when unreadable or malformed.
 PolygonSet read_polygon_file(const std::string& path);
 
 // Width of the bounding box (x extent); 0 for an empty set.

@@ -61,13 +61,16 @@ int run_hid_describe(std::span<const std::string_view> args) {
     if (rec.descriptor.empty()) throw drivers::RecordingError(0, "the file holds no descriptor");
     profile = drivers::build_profile(rec.identity, rec.descriptor, rec.vendor_strings);
   } catch (const drivers::RecordingError& e) {
-    std::fprintf(stderr, "penshape hid describe: %s\n", e.what());
+    std::fprintf(stderr, "penshape hid describe: %s: %s\n", device_file_name(parsed).c_str(),
+                 e.what());
     return kExitBadInput;
   } catch (const drivers::DescriptorError& e) {
-    std::fprintf(stderr, "penshape hid describe: %s\n", e.what());
+    std::fprintf(stderr, "penshape hid describe: %s: %s\n", device_file_name(parsed).c_str(),
+                 e.what());
     return kExitBadInput;
   } catch (const std::invalid_argument& e) {
-    std::fprintf(stderr, "penshape hid describe: %s\n", e.what());
+    std::fprintf(stderr, "penshape hid describe: %s: %s\n", device_file_name(parsed).c_str(),
+                 e.what());
     return kExitBadInput;
   }
   const auto& reports = profile.descriptor->reports;

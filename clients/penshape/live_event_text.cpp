@@ -52,27 +52,6 @@ void write_sample_json(JsonWriter& json, const v1::PenSample& s) {
   json.end_object();
 }
 
-std::string shape_summary(const v1::Shape& shape) {
-  std::string out = shape_kind_name(shape.kind());
-  if (shape.kind() == v1::SHAPE_KIND_NONE || shape.kind() == v1::SHAPE_KIND_UNSPECIFIED) {
-    return out;
-  }
-  switch (shape.params_case()) {
-    case v1::Shape::kVertices:
-      out += " with " + std::to_string(shape.vertices().vertices_size()) + " vertices";
-      break;
-    case v1::Shape::kCircle:
-      out += format(" r=%.2f mm at (%.2f, %.2f)", shape.circle().radius(),
-                    shape.circle().center().x(), shape.circle().center().y());
-      break;
-    default:
-      break;
-  }
-  out += format(" confidence %.2f, H <= %.3g mm", shape.confidence(),
-                shape.certificate().hausdorff_bound().approx());
-  return out;
-}
-
 } // namespace
 
 std::string shape_kind_name(v1::ShapeKind kind) {
@@ -104,6 +83,27 @@ std::string shape_kind_name(v1::ShapeKind kind) {
     default:
       return "unspecified";
   }
+}
+
+std::string shape_summary(const v1::Shape& shape) {
+  std::string out = shape_kind_name(shape.kind());
+  if (shape.kind() == v1::SHAPE_KIND_NONE || shape.kind() == v1::SHAPE_KIND_UNSPECIFIED) {
+    return out;
+  }
+  switch (shape.params_case()) {
+    case v1::Shape::kVertices:
+      out += " with " + std::to_string(shape.vertices().vertices_size()) + " vertices";
+      break;
+    case v1::Shape::kCircle:
+      out += format(" r=%.2f mm at (%.2f, %.2f)", shape.circle().radius(),
+                    shape.circle().center().x(), shape.circle().center().y());
+      break;
+    default:
+      break;
+  }
+  out += format(" confidence %.2f, H <= %.3g mm", shape.confidence(),
+                shape.certificate().hausdorff_bound().approx());
+  return out;
 }
 
 void write_device_json(JsonWriter& json, const v1::DeviceInfo& device) {

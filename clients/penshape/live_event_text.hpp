@@ -15,6 +15,8 @@ std::string device_line(const v1::DeviceInfo& device);
 
 // The shape's kind as a lowercase word: "square", "circle", "none", ...
 std::string shape_kind_name(v1::ShapeKind kind);
+// One line: the kind, its main parameters, the confidence and the proven bound H.
+std::string shape_summary(const v1::Shape& shape);
 
 // {"kind", "confidence", "vertices":[[x,y],...] | "circle":{...} | "ellipse":{...} | "arc":{...},
 //  "hausdorff_bound", "tolerance", "pen_radius"} (mm)

@@ -8,6 +8,7 @@
 
 #include "args.hpp"
 #include "command.hpp"
+#include "version_command.hpp"
 
 namespace {
 
@@ -27,6 +28,7 @@ int main(int argc, char** argv) {
     print_help();
     return args.empty() ? penshape::cli::kExitBadInput : penshape::cli::kExitOk;
   }
+  if (args[0] == "--version" && args.size() == 1) return penshape::cli::run_version({});
   // Longest match first, so "hid describe" wins over a hypothetical "hid".
   const penshape::cli::Subcommand* best = nullptr;
   std::size_t best_words = 0;

@@ -1,46 +1,88 @@
-// `penshape replay --local FILE [--json]`: decodes a recorded report stream (hid-recorder or
+// `penshape replay FILE [--json]`: decodes a recorded report stream (hid-recorder or
 // usbhid-dump) through the same decoder and segmenter as a live device and prints the samples
-// and strokes.
+// and strokes; with penshaped running (and without --local), each stroke's shape as the daemon
+// certifies it.
 #include "replay_command.hpp"
 
 #include <cstdio>
 
 #include "args.hpp"
 #include "command.hpp"
+#include "daemon_channel.hpp"
 #include "device_args.hpp"
 #include "json_writer.hpp"
+#include "live_event_text.hpp"
 #include "penshape/drivers/replay.hpp"
+#include "replay_daemon.hpp"
 
 namespace penshape::cli {
 namespace {
 
 constexpr const char* kHelp =
-    "usage: penshape replay --local FILE [--json] [--vid HEX --pid HEX] [--descriptor FILE]\n"
-    "                       [--original-speed]\n\n"
+    "usage: penshape replay FILE [--json] [--vid HEX --pid HEX] [--descriptor FILE]\n"
+    "                       [--original-speed] [--local | --socket PATH | --address ADDR]\n\n"
     "Replays FILE (hid-recorder, or a usbhid-dump stream: its busiest interface) through the\n"
-    "live decode path and prints every pen sample and every stroke. --vid/--pid choose the\n"
+    "live decode path and prints every pen sample and every stroke. When penshaped answers (at\n"
+    "--socket/--address, else its default socket) each stroke is also submitted to it and the\n"
+    "shape it certifies is printed after the stroke; otherwise, or with --local, the replay is\n"
+    "local only. Which of the two ran is said on stderr. --vid/--pid choose the\n"
     "tablet (protocol, maxima) when the file has no I: line; --descriptor gives the report\n"
     "descriptor (raw, hex or hid-recorder file) when it has none. --original-speed waits between\n"
     "reports as recorded (default: as fast as possible, same result).\n\n"
     "--json prints one object per line: a sample {\"t\", \"x\", \"y\", \"pressure\", \"tilt_x\",\n"
     "\"tilt_y\", \"tip\", \"in_range\", \"buttons\"} (t in seconds from the first report, x/y in\n"
     "device units), and after each stroke's last sample {\"stroke\", \"t_start\", \"t_end\",\n"
-    "\"samples\"}. Report counts go to stderr. Exit 2 on a malformed file, naming the byte\n"
+    "\"samples\"}, and through penshaped {\"stroke\", \"shape\": {...}} (keys as in penshape "
+    "watch).\n"
+    "Report counts go to stderr. Exit 2 on a malformed file, naming the byte\n"
     "offset.";
 
 double seconds(std::int64_t us) { return static_cast<double>(us) / 1e6; }
 
+// penshaped at the options' address unless --local; says on stderr which way the replay runs.
+std::optional<ReplayDaemon> connect_unless_local(const ParsedArgs& parsed) {
+  if (parsed.flag("--local")) {
+    std::fputs("penshape replay: local (--local): decoded here, no shapes\n", stderr);
+    return std::nullopt;
+  }
+  const std::string address = daemon_address(parsed);
+  std::string why;
+  auto daemon = ReplayDaemon::connect(address, why);
+  if (daemon) {
+    std::fprintf(stderr, "penshape replay: through penshaped at %s: shapes certified by it\n",
+                 address.c_str());
+  } else {
+    std::fprintf(stderr, "penshape replay: local: penshaped does not answer at %s, no shapes\n",
+                 address.c_str());
+  }
+  return daemon;
+}
+
+void print_daemon_shape(ReplayDaemon& daemon, const Stroke& stroke, const TabletInfo& tablet,
+                        bool json) {
+  const v1::Shape shape = daemon.recognize(stroke, tablet);
+  if (json) {
+    JsonWriter w;
+    w.begin_object().key("stroke").integer(static_cast<std::int64_t>(stroke.id)).key("shape");
+    write_shape_json(w, shape);
+    w.end_object();
+    std::puts(w.str().c_str());
+  } else {
+    std::printf("  shape: %s\n", shape_summary(shape).c_str());
+  }
+}
+
 } // namespace
 
 int run_replay(std::span<const std::string_view> args) {
-  const ParsedArgs parsed(args, {.flags = {"--json", "--help", "--local", "--original-speed"},
-                                 .options = {"--vid", "--pid", "--descriptor"}});
+  const ParsedArgs parsed(args, live_arg_spec({.flags = {"--json", "--local", "--original-speed"},
+                                               .options = {"--vid", "--pid", "--descriptor"}}));
   if (parsed.flag("--help")) {
     std::puts(kHelp);
     return kExitOk;
   }
-  if (!parsed.flag("--local")) {
-    throw UsageError("only --local replay exists offline (the daemon replays over gRPC)");
+  if (parsed.flag("--local") && (parsed.value("--socket") || parsed.value("--address"))) {
+    throw UsageError("--local replays without penshaped: it takes no --socket or --address");
   }
   drivers::ReplayResult result;
   try {
@@ -50,21 +92,23 @@ int run_replay(std::span<const std::string_view> args) {
                                       ? drivers::ReplaySpeed::kOriginal
                                       : drivers::ReplaySpeed::kAsFastAsPossible);
   } catch (const drivers::RecordingError& e) {
-    std::fprintf(stderr, "penshape replay: %s\n", e.what());
+    std::fprintf(stderr, "penshape replay: %s: %s\n", device_file_name(parsed).c_str(), e.what());
     return kExitBadInput;
   } catch (const drivers::DescriptorError& e) {
-    std::fprintf(stderr, "penshape replay: %s\n", e.what());
+    std::fprintf(stderr, "penshape replay: %s: %s\n", device_file_name(parsed).c_str(), e.what());
     return kExitBadInput;
   } catch (const std::invalid_argument& e) {
-    std::fprintf(stderr, "penshape replay: %s\n", e.what());
+    std::fprintf(stderr, "penshape replay: %s: %s\n", device_file_name(parsed).c_str(), e.what());
     return kExitBadInput;
   }
   if (result.tablet.x_max == 0) {
     std::fprintf(stderr,
-                 "penshape replay: no pen report layout (give the descriptor in the file, or "
-                 "--vid/--pid of a known tablet)\n");
+                 "penshape replay: %s: no pen report layout (give the descriptor in the file, or "
+                 "--vid/--pid of a known tablet)\n",
+                 device_file_name(parsed).c_str());
     return kExitBadInput;
   }
+  std::optional<ReplayDaemon> daemon = connect_unless_local(parsed);
   // Samples and strokes interleaved in time: a stroke follows its last sample.
   std::size_t next_stroke = 0;
   const bool json = parsed.flag("--json");
@@ -93,6 +137,7 @@ int run_replay(std::span<const std::string_view> args) {
                   static_cast<unsigned long long>(s.id), s.samples.size(),
                   seconds(s.samples.front().time_us), seconds(s.samples.back().time_us));
     }
+    if (daemon) print_daemon_shape(*daemon, s, result.tablet, json);
   };
   for (std::size_t i = 0; i < result.samples.size(); ++i) {
     const PenSample& p = result.samples[i];

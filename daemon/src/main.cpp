@@ -9,11 +9,11 @@
 #include <cstring>
 #include <exception>
 #include <future>
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <thread>
+#include <vector>
 
 #include "log.hpp"
 #include "penshape/core/version.hpp"
@@ -21,10 +21,27 @@
 #include "penshape/daemon/device_manager_source.hpp"
 #include "penshape/daemon/server.hpp"
 #include "penshape/drivers/recording.hpp"
+#include "replay_file.hpp"
 #include "sd_notify.hpp"
 #include "sources.hpp"
 
 namespace {
+
+// The thread that waits for SIGINT/SIGTERM and shuts the server down. Should anything fail while
+// it waits, its destructor signals it and joins, so a failure stops the server cleanly (socket
+// removed) instead of destroying a joinable thread, which would abort the process.
+struct SignalWaiter {
+  template <class F>
+  explicit SignalWaiter(F&& body) : thread(std::forward<F>(body)) {}
+  SignalWaiter(const SignalWaiter&) = delete;
+  SignalWaiter& operator=(const SignalWaiter&) = delete;
+  ~SignalWaiter() {
+    if (!thread.joinable()) return;
+    pthread_kill(thread.native_handle(), SIGTERM);
+    thread.join();
+  }
+  std::thread thread;
+};
 
 constexpr const char* kUsage = R"(usage: penshaped [options]
 
@@ -41,8 +58,10 @@ options:
   --tcp HOST:PORT            also listen on TCP; loopback hosts only unless
   --tcp-allow-non-loopback   is given too
   --replay FILE              replay a recording (hid-recorder format) at its recorded pace as
-                             the only tablet, instead of the tablets attached to this machine
+                             the only tablet, instead of the tablets attached to this machine;
+                             given more than once, the recordings play one after another
   --replay-delay SECONDS     wait this long after startup before replaying (default 0)
+  --replay-loop              play the recordings again and again until stopped (demos, soak)
   --help                     this text
   --version                  the version
 
@@ -56,8 +75,9 @@ struct CommandLine {
   std::string listen;
   std::string tcp;
   bool tcp_allow_non_loopback = false;
-  std::string replay;
+  std::vector<std::string> replays;
   double replay_delay_seconds = 0;
+  bool replay_loop = false;
 };
 
 // Blocks SIGINT/SIGTERM in every thread, then waits for one on a dedicated thread, so the
@@ -73,6 +93,26 @@ sigset_t block_termination_signals() {
 
 using penshape::daemon::log;
 using penshape::daemon::LogLevel;
+
+bool stop_requested(const std::shared_future<void>& stopped) {
+  return stopped.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
+}
+
+// Plays the recordings one after another, each to its end (again and again with --replay-loop),
+// until they are done or the daemon stops.
+void play_recordings(penshape::daemon::DeviceManagerSource& source,
+                     const std::vector<penshape::drivers::Recording>& recordings,
+                     const CommandLine& cli, const std::shared_future<void>& stopped) {
+  do {
+    for (std::size_t i = 0; i < recordings.size() && !stop_requested(stopped); ++i) {
+      log(LogLevel::kInfo, "replaying " + cli.replays[i] + " at its recorded pace");
+      source.replay(recordings[i], penshape::drivers::ReplaySpeed::kOriginal);
+      while (!source.wait_until_idle(std::chrono::milliseconds(200))) {
+        if (stop_requested(stopped)) return;
+      }
+    }
+  } while (cli.replay_loop && !stop_requested(stopped));
+}
 
 // $XDG_CONFIG_HOME/penshape/penshaped.conf (~/.config when unset) when that file exists, else "".
 std::string default_config_path() {
@@ -111,6 +151,14 @@ int main(int argc, char** argv) {
       cli.tcp_allow_non_loopback = true;
       continue;
     }
+    if (arg == "--replay-loop") {
+      cli.replay_loop = true;
+      continue;
+    }
+    if (arg == "--replay" && i + 1 < argc) {
+      cli.replays.emplace_back(argv[++i]);
+      continue;
+    }
     if (arg == "--replay-delay" && i + 1 < argc) {
       char* end = nullptr;
       cli.replay_delay_seconds = std::strtod(argv[++i], &end);
@@ -122,8 +170,7 @@ int main(int argc, char** argv) {
       continue;
     }
     if ((arg == "--config" && value(&cli.config_path)) ||
-        (arg == "--listen" && value(&cli.listen)) || (arg == "--tcp" && value(&cli.tcp)) ||
-        (arg == "--replay" && value(&cli.replay))) {
+        (arg == "--listen" && value(&cli.listen)) || (arg == "--tcp" && value(&cli.tcp))) {
       continue;
     }
     std::fprintf(stderr, "penshaped: unknown or incomplete option '%s' (see --help)\n", argv[i]);
@@ -151,20 +198,26 @@ int main(int argc, char** argv) {
                     : !options.config.listen.empty() ? options.config.listen
                                                      : penshape::daemon::default_address();
 
+  // With --replay the recording is the only device (read and checked now, so a bad file is bad
+  // input before the daemon serves); otherwise the tablets attached to this machine, with hotplug.
+  std::vector<penshape::drivers::Recording> recordings;
+  for (const std::string& file : cli.replays) {
+    try {
+      recordings.push_back(penshape::daemon::load_replay_file(file));
+    } catch (const penshape::daemon::BadReplayFile& e) {
+      log(LogLevel::kError, std::string("--replay ") + e.what());
+      return 2;
+    }
+  }
+  if (cli.replay_loop && recordings.empty()) {
+    std::fputs("penshaped: --replay-loop needs --replay FILE\n", stderr);
+    return 2;
+  }
+
   const sigset_t signals = block_termination_signals();
   try {
-    // With --replay the recording is the only device (read now, so a bad file fails before the
-    // daemon serves); otherwise the tablets attached to this machine, with hotplug.
-    std::optional<penshape::drivers::Recording> recording;
-    if (!cli.replay.empty()) {
-      try {
-        recording = penshape::drivers::load_recording_file(cli.replay);
-      } catch (const std::exception& e) {
-        throw std::runtime_error("--replay " + cli.replay + ": " + e.what());
-      }
-    }
     auto source = std::make_shared<penshape::daemon::DeviceManagerSource>(
-        recording ? nullptr : penshape::drivers::make_hidraw_backend());
+        recordings.empty() ? penshape::drivers::make_hidraw_backend() : nullptr);
     penshape::daemon::ServerParts parts;
     parts.source = source;
     parts.geometry = penshape::daemon::make_geometry_backend();
@@ -181,7 +234,7 @@ int main(int argc, char** argv) {
     penshape::daemon::sd_notify_state("READY=1\nSTATUS=listening on " + where);
     std::promise<void> stopping;
     std::shared_future<void> stopped = stopping.get_future().share();
-    std::thread waiter([&server, &stopping, signals] {
+    SignalWaiter waiter([&server, &stopping, signals] {
       int sig = 0;
       sigwait(&signals, &sig);
       log(LogLevel::kInfo, std::string(strsignal(sig)) + ", shutting down");
@@ -190,13 +243,12 @@ int main(int argc, char** argv) {
       server.shutdown();
     });
     // Clients get --replay-delay to connect before the first report; a signal cancels the replay.
-    if (recording && stopped.wait_for(std::chrono::duration<double>(cli.replay_delay_seconds)) ==
-                         std::future_status::timeout) {
-      source->replay(*recording, penshape::drivers::ReplaySpeed::kOriginal);
-      log(LogLevel::kInfo, "replaying " + cli.replay + " at its recorded pace");
+    if (!recordings.empty() && stopped.wait_for(std::chrono::duration<double>(
+                                   cli.replay_delay_seconds)) == std::future_status::timeout) {
+      play_recordings(*source, recordings, cli, stopped);
     }
     server.wait();
-    waiter.join();
+    waiter.thread.join();
     log(LogLevel::kInfo, "stopped");
   } catch (const std::exception& e) {
     log(LogLevel::kError, e.what());

@@ -89,8 +89,15 @@ DeviceId DeviceManager::start_reader(AttachedDevice info, const DeviceProfile& p
   if (devices_.count(id) == 0) return id; // stop() ran meanwhile and took the device
   // Started under the lock so stop() never sees a listed device whose thread is not set yet.
   raw->thread = std::thread([this, raw] {
-    const LoopEnd end =
-        run_reader_loop(*raw->source, *raw->pipeline, raw->stop, options_.read_poll);
+    // No exception may leave a thread (it would end the process): a source or callback that
+    // throws ends this device's reading as if it had gone, and the rescan retries it.
+    LoopEnd end = LoopEnd::kGone;
+    try {
+      end = run_reader_loop(*raw->source, *raw->pipeline, raw->stop, options_.read_poll);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "penshape drivers: %s: reading stopped: %s\n", raw->info.key.c_str(),
+                   e.what());
+    }
     const DetachReason why = end == LoopEnd::kGone  ? DetachReason::kGone
                              : end == LoopEnd::kEnd ? DetachReason::kEnded
                                                     : DetachReason::kStopped;
@@ -210,8 +217,14 @@ void DeviceManager::scan_once() {
 
 void DeviceManager::hotplug_loop() {
   while (!stopping_) {
-    reap_finished();
-    scan_once();
+    // A failed scan (enumeration, sysfs) is retried at the next change or rescan; it must never
+    // leave the thread.
+    try {
+      reap_finished();
+      scan_once();
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "penshape drivers: device scan failed: %s\n", e.what());
+    }
     if (stopping_) break;
     backend_->wait_for_change(options_.rescan_interval);
   }

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "run_command.hpp"
+#include "test_data.hpp"
 
 #include <array>
 #include <cstdio>
@@ -18,9 +19,7 @@ Result run(const std::string& args) {
 }
 
 std::string polygon(const std::string& name) {
-  const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR");
-  const std::string dir = env != nullptr && *env ? env : PENSHAPE_SHARED_DATA_DIR;
-  return dir + "/polygons/" + name;
+  return penshape::test::data_file("polygons/" + name);
 }
 
 TEST(DeconstructCli, Work1IsYesWithJsonKeys) {

@@ -1,6 +1,6 @@
 #pragma once
-// Reads a gesture of the $1 Unistroke data set (../shared/data/strokes/dollar1): integer pixel
-// points with millisecond times. Tests use these real human strokes as pen input.
+// Reads a gesture of the $1 Unistroke data set (tests/data/strokes/dollar1, ../shared/data/...):
+// integer pixel points with millisecond times. Tests use these real human strokes as pen input.
 #include <cstdint>
 #include <fstream>
 #include <regex>
@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "test_data.hpp"
 
 namespace penshape::testing {
 
@@ -33,14 +35,9 @@ inline std::vector<DollarPoint> read_dollar_gesture(const std::string& path) {
   return out;
 }
 
-inline std::string shared_data_dir() {
-  const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR");
-  return (env != nullptr && *env != '\0') ? env : PENSHAPE_SHARED_DATA_DIR;
-}
-
-// A hand-drawn rectangle (subject 2, slow) from the $1 logs.
+// A hand-drawn rectangle (subject 2, slow) from the $1 logs (bundled in tests/data).
 inline std::string dollar_rectangle_path() {
-  return shared_data_dir() + "/strokes/dollar1/s02/slow/rectangle01.xml";
+  return test::data_file("strokes/dollar1/s02/slow/rectangle01.xml");
 }
 
 } // namespace penshape::testing

@@ -403,8 +403,7 @@ TEST(LiveCli, RecordedFileReplaysToTheSameSamples) {
 // a live device: watch sees the device and its strokes, with the samples the drivers' offline
 // decoder finds in the same file.
 TEST(LiveCli, WatchAgainstTheRealDaemonReplayingARealCapture) {
-  const std::string capture =
-      shared_data_dir() + "/hid/wacom-hid-descriptors/Wacom_PenPartner/hidrecord.txt";
+  const std::string capture = (test::recordings_dir() / "wacom-penpartner.hidrec").string();
   const std::string address = unique_test_address("real-replay");
   ChildProcess daemon({PENSHAPED, "--listen", address, "--replay", capture, "--replay-delay", "3"});
   ASSERT_TRUE(daemon.wait_for_output("listening on")) << daemon.output();
@@ -434,6 +433,48 @@ TEST(LiveCli, WatchAgainstTheRealDaemonReplayingARealCapture) {
                 "\"type\":\"stroke_finished\",\"stroke_id\":1,\"samples\":" + m[1].str() + ","),
             std::string::npos)
       << events[2] << " vs offline " << m[0];
+}
+
+// `penshape replay FILE`: through the real penshaped when it answers (each stroke's shape as the
+// daemon certifies it), locally otherwise; stderr says which.
+TEST(LiveCli, ReplayGoesThroughTheDaemonWhenItRunsAndLocallyOtherwise) {
+  const std::string recording =
+      (test::recordings_dir() / "dollar1-shapes.xppen-deco01v2.hidrec").string();
+  {
+    const auto [code, out] =
+        run_program({kCli, "replay", recording, "--address", unique_test_address("none")});
+    EXPECT_EQ(code, 0) << out;
+    EXPECT_NE(out.find("penshape replay: local: penshaped does not answer"), std::string::npos)
+        << out;
+    EXPECT_EQ(out.find("  shape: "), std::string::npos) << out;
+  }
+  const std::string address = unique_test_address("replay-through");
+  ChildProcess daemon({PENSHAPED, "--listen", address});
+  ASSERT_TRUE(daemon.wait_for_output("listening on")) << daemon.output();
+  const auto [code, out] = run_program({kCli, "replay", recording, "--address", address});
+  EXPECT_EQ(code, 0) << out;
+  EXPECT_NE(out.find("through penshaped at " + address), std::string::npos) << out;
+  // One shape per stroke, and the classes the recording's expectations accept for each.
+  std::vector<std::string> shapes;
+  for (const auto& line : lines(out)) {
+    if (line.rfind("  shape: ", 0) == 0) shapes.push_back(line.substr(9));
+  }
+  std::vector<std::string> expected;
+  for (const auto& line :
+       lines(test::read_file(test::recordings_dir() / "dollar1-shapes.xppen-deco01v2.expected"))) {
+    if (!line.empty() && line[0] != '#') expected.push_back(line);
+  }
+  ASSERT_EQ(shapes.size(), expected.size()) << out;
+  for (std::size_t i = 0; i < shapes.size(); ++i) {
+    const std::string kind = shapes[i].substr(0, shapes[i].find(' '));
+    EXPECT_NE(("|" + expected[i] + "|").find("|" + kind + "|"), std::string::npos)
+        << "stroke " << i + 1 << ": " << shapes[i] << " vs " << expected[i];
+  }
+  const auto [local_code, local] =
+      run_program({kCli, "replay", "--local", recording, "--address", address});
+  EXPECT_EQ(local_code, 2) << local; // --local takes no daemon address
+  daemon.signal(SIGTERM);
+  EXPECT_EQ(daemon.wait(), 0) << daemon.output();
 }
 
 TEST(LiveCli, RecordRefusesWhatItCannotRecord) {

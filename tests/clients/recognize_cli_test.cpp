@@ -11,6 +11,8 @@
 #include <sstream>
 #include <string>
 
+#include "test_data.hpp"
+
 namespace {
 
 struct Result {
@@ -30,10 +32,7 @@ Result run(const std::string& args) {
   return r;
 }
 
-std::filesystem::path data_dir() {
-  if (const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR")) return env;
-  return PENSHAPE_SHARED_DATA_DIR;
-}
+std::filesystem::path data_dir() { return penshape::test::collection_dir(""); }
 
 std::string quoted(const std::filesystem::path& p) {
   std::string out(1, '\'');

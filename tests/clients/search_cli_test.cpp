@@ -7,11 +7,12 @@
 #include <string>
 
 #include "run_command.hpp"
+#include "test_data.hpp"
 
 namespace {
 
+using penshape::test::data_file;
 using penshape::test::run_command;
-using penshape::test::shared_data_path;
 
 std::string cli(const std::string& args) { return std::string(PENSHAPE_CLI) + " " + args; }
 
@@ -22,7 +23,7 @@ double json_number(const std::string& json, const std::string& key) {
 }
 
 TEST(SearchCli, ToleranceIntervalAndSolution) {
-  const auto r = run_command(cli("search-tolerance " + shared_data_path("polygons/authors_S.txt") +
+  const auto r = run_command(cli("search-tolerance " + data_file("polygons/authors_S.txt") +
                                  " --radius 10 --precision 0.05 --json"));
   ASSERT_EQ(r.exit_code, 0) << r.out;
   const double lo = json_number(r.out, "eps_low");
@@ -39,7 +40,7 @@ TEST(SearchCli, ToleranceIntervalAndSolution) {
 
 TEST(SearchCli, RadiusBounds) {
   const auto r = run_command(
-      cli("search-radius " + shared_data_path("polygons/authors_S.txt") + " --tolerance 5 --json"));
+      cli("search-radius " + data_file("polygons/authors_S.txt") + " --tolerance 5 --json"));
   ASSERT_EQ(r.exit_code, 0) << r.out;
   const double lo = json_number(r.out, "r_low");
   const double hi = json_number(r.out, "r_high");
@@ -51,18 +52,18 @@ TEST(SearchCli, RadiusBounds) {
 
 TEST(SearchCli, SuggestRadiusReportsProgressAndSuggestions) {
   const auto r = run_command(
-      cli("suggest-radius " + shared_data_path("polygons/authors_S.txt") + " --samples 5 --json"));
+      cli("suggest-radius " + data_file("polygons/authors_S.txt") + " --samples 5 --json"));
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_NE(r.out.find("suggest-radius: 5/5 radii"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"suggestions\":[{\"radius\":"), std::string::npos) << r.out;
   const auto quiet = run_command(
-      cli("suggest-radius " + shared_data_path("polygons/authors_S.txt") + " --samples 3 --quiet"));
+      cli("suggest-radius " + data_file("polygons/authors_S.txt") + " --samples 3 --quiet"));
   EXPECT_EQ(quiet.exit_code, 0);
   EXPECT_EQ(quiet.out.find("radii"), std::string::npos) << quiet.out;
 }
 
 TEST(SearchCli, DeconstructSimplifiesByDefault) {
-  const std::string file = shared_data_path("polygons/kazakhstan_paper1881.txt");
+  const std::string file = data_file("polygons/kazakhstan_paper1881.txt");
   const auto simplified =
       run_command(cli("deconstruct " + file + " --radius 0.0237 --tolerance 0.0118 --json"));
   const auto raw = run_command(
@@ -77,21 +78,20 @@ TEST(SearchCli, DeconstructSimplifiesByDefault) {
 
 TEST(SearchCli, BadInputExitsTwo) {
   EXPECT_EQ(run_command(cli("search-tolerance /nonexistent --radius 1")).exit_code, 2);
-  EXPECT_EQ(run_command(cli("search-tolerance " + shared_data_path("polygons/authors_S.txt") +
-                            " --radius nan"))
-                .exit_code,
-            2);
   EXPECT_EQ(
-      run_command(cli("search-radius " + shared_data_path("polygons/authors_S.txt"))).exit_code,
-      2); // --tolerance is required
-  EXPECT_EQ(run_command(cli("suggest-radius " + shared_data_path("polygons/authors_S.txt") +
-                            " --samples 2"))
-                .exit_code,
-            2);
-  EXPECT_EQ(run_command(cli("search-tolerance " + shared_data_path("polygons/authors_S.txt") +
-                            " --radius -3"))
-                .exit_code,
-            2);
+      run_command(cli("search-tolerance " + data_file("polygons/authors_S.txt") + " --radius nan"))
+          .exit_code,
+      2);
+  EXPECT_EQ(run_command(cli("search-radius " + data_file("polygons/authors_S.txt"))).exit_code,
+            2); // --tolerance is required
+  EXPECT_EQ(
+      run_command(cli("suggest-radius " + data_file("polygons/authors_S.txt") + " --samples 2"))
+          .exit_code,
+      2);
+  EXPECT_EQ(
+      run_command(cli("search-tolerance " + data_file("polygons/authors_S.txt") + " --radius -3"))
+          .exit_code,
+      2);
 }
 
 } // namespace
@@ -108,21 +108,21 @@ std::string slurp(const std::string& path) {
 TEST(SvgCli, DeconstructAndRecognizeDrawPictures) {
   const std::string svg = std::string(PENSHAPE_BINARY_DIR) + "/svg_cli_test.svg";
   std::remove(svg.c_str());
-  const auto d = run_command(cli("deconstruct " + shared_data_path("polygons/authors_S.txt") +
+  const auto d = run_command(cli("deconstruct " + data_file("polygons/authors_S.txt") +
                                  " --radius 10 --tolerance 5 --svg " + svg));
   ASSERT_EQ(d.exit_code, 0) << d.out;
   const std::string picture = slurp(svg);
   EXPECT_NE(picture.find("<svg"), std::string::npos);
   EXPECT_NE(picture.find(" 0 0 1 "), std::string::npos) << "offset(P, r) is drawn with true arcs";
   EXPECT_NE(picture.find("</svg>"), std::string::npos);
-  EXPECT_EQ(run_command(cli("deconstruct " + shared_data_path("polygons/authors_S.txt") +
+  EXPECT_EQ(run_command(cli("deconstruct " + data_file("polygons/authors_S.txt") +
                             " --radius 10 --tolerance 5 --svg /nonexistent/dir/x.svg"))
                 .exit_code,
             2);
 
   const std::string dir = std::string(PENSHAPE_BINARY_DIR) + "/svg_cli_test_dir";
   const auto r = run_command(cli("recognize --svg-dir " + dir + " " +
-                                 shared_data_path("strokes/dollar1/s02/medium/rectangle01.xml")));
+                                 data_file("strokes/dollar1/s02/medium/rectangle01.xml")));
   ASSERT_EQ(r.exit_code, 0) << r.out;
   const std::string stroke = slurp(dir + "/rectangle01-2.svg");
   EXPECT_NE(stroke.find("<svg"), std::string::npos);

@@ -20,7 +20,7 @@ using render::ShapeOutline;
 using render::StrokeFigure;
 
 PolygonSet read_polygon(const std::string& name) {
-  std::ifstream in(shared_data_dir() + "/polygons/" + name);
+  std::ifstream in(test::data_file("polygons/" + name));
   if (!in) throw std::runtime_error("cannot read " + name);
   PolygonSet set;
   set.polygons.emplace_back();
@@ -151,7 +151,7 @@ TEST(SvgFigure, WithoutSolutionOnlyQIsDrawn) {
 TEST(SvgFigure, StrokeWithCircleAndArcShapes) {
   StrokeFigure f;
   const auto gesture =
-      read_dollar_gesture(shared_data_dir() + "/strokes/dollar1/s02/slow/circle01.xml");
+      read_dollar_gesture(test::data_file("strokes/dollar1/s02/slow/circle01.xml"));
   for (const auto& p : gesture) f.samples.push_back({p.x * 0.2, p.y * 0.2});
   f.pen_radius = 1.5;
   f.tolerance = 0.75;

@@ -4,23 +4,24 @@
 #include <string>
 
 #include "run_command.hpp"
+#include "test_data.hpp"
 
 namespace {
 
+using penshape::test::data_file;
 using penshape::test::run_command;
-using penshape::test::shared_data_path;
 
 std::string cli(const std::string& args) { return std::string(PENSHAPE_CLI) + " " + args; }
 
-const std::string kDescriptor = shared_data_path(
+const std::string kDescriptor = data_file(
     "hid/wacom-hid-descriptors/XP_Pen_Deco01_V2/sysinfo.FIpgWPPUGW/0003:28BD:0905.0033.hid.bin");
 
 TEST(SynthesizeCli, StrokesReplayBack) {
   const std::string out = std::string(PENSHAPE_BINARY_DIR) + "/synthesized_test.hidrec";
-  const auto made = run_command(
-      cli("synthesize-recording --descriptor '" + kDescriptor + "' --vid 28bd --pid 0905 --out " +
-          out + " " + shared_data_path("strokes/dollar1/s02/medium/circle01.xml") + " " +
-          shared_data_path("strokes/dollar1/s03/fast/triangle02.xml")));
+  const auto made = run_command(cli("synthesize-recording --descriptor '" + kDescriptor +
+                                    "' --vid 28bd --pid 0905 --out " + out + " " +
+                                    data_file("strokes/dollar1/s02/medium/circle01.xml") + " " +
+                                    data_file("strokes/dollar1/s03/fast/triangle02.xml")));
   ASSERT_EQ(made.exit_code, 0) << made.out;
   EXPECT_NE(made.out.find("2 strokes"), std::string::npos) << made.out;
   const auto replayed = run_command(cli("replay --local " + out));
@@ -32,7 +33,7 @@ TEST(SynthesizeCli, StrokesReplayBack) {
 TEST(SynthesizeCli, BadInputExitsTwo) {
   EXPECT_EQ(run_command(cli("synthesize-recording --descriptor /nonexistent --vid 1 --pid 2 "
                             "--out /tmp/x.hidrec " +
-                            shared_data_path("strokes/dollar1/s02/medium/circle01.xml")))
+                            data_file("strokes/dollar1/s02/medium/circle01.xml")))
                 .exit_code,
             2);
   EXPECT_EQ(run_command(cli("synthesize-recording --descriptor '" + kDescriptor +

@@ -11,7 +11,7 @@
 #include "penshape/core/deconstruct.hpp"
 #include "penshape/core/polygon_io.hpp"
 #include "support/hausdorff_check.hpp"
-#include "support/shared_data.hpp"
+#include "test_data.hpp"
 
 namespace penshape {
 namespace {
@@ -114,7 +114,7 @@ TEST(ArcOffset, HoleShrinksWithSharpCorners) {
 }
 
 TEST(ArcOffset, DemoSolutionOffset) {
-  const PolygonSet q = read_xy(test::read_shared("polygons/authors_demo_1_01_work2.txt"));
+  const PolygonSet q = read_xy(test::read_data("polygons/authors_demo_1_01_work2.txt"));
   const auto res = deconstruct(q, {1, Rational(1, 10), Rational(1, 80), EngineKind::kReference});
   ASSERT_EQ(res.answer, Answer::kYes);
   const CurvedRegion region = offset_with_arcs(res.solution, 1.0, 1e-4);

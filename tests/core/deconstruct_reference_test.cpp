@@ -7,13 +7,13 @@
 #include "penshape/core/deconstruct.hpp"
 #include "penshape/core/polygon_io.hpp"
 #include "support/hausdorff_check.hpp"
-#include "support/shared_data.hpp"
+#include "test_data.hpp"
 
 namespace penshape {
 namespace {
 
 PolygonSet demo(const std::string& name) {
-  return read_xy(test::read_shared("polygons/authors_demo_1_01_" + name + ".txt"));
+  return read_xy(test::read_data("polygons/authors_demo_1_01_" + name + ".txt"));
 }
 
 DeconstructParams params(const Rational& r, const Rational& eps, const Rational& delta) {

@@ -13,7 +13,7 @@
 #include "penshape/core/offset.hpp"
 #include "penshape/core/polygon_io.hpp"
 #include "support/hausdorff_check.hpp"
-#include "support/shared_data.hpp"
+#include "test_data.hpp"
 
 namespace penshape {
 namespace {
@@ -104,7 +104,7 @@ TEST(EngineProperties, EnginesNeverContradictOnRealPolygons) {
   for (const char* name :
        {"authors_demo_1_01_work1.txt", "authors_demo_1_01_fail2.txt", "authors_S.txt",
         "cgal_wheel1.txt", "cgal_comb_robot.txt", "israel_ne50m.txt", "cgal_knife.txt"}) {
-    const PolygonSet q = read_polygon_text(test::read_shared(std::string("polygons/") + name));
+    const PolygonSet q = read_polygon_text(test::read_data(std::string("polygons/") + name));
     for (int divisor : {10, 30}) {
       SCOPED_TRACE(std::string(name) + " r = w/" + std::to_string(divisor));
       const Rational r = width(q) / divisor;
@@ -125,7 +125,7 @@ TEST(EngineProperties, EnginesNeverContradictOnRealPolygons) {
 // case counts as finished cleanly), and every YES checked independently on the polygons of up
 // to 300 vertices (the check samples a grid of spacing w/150, so it is loose but independent).
 TEST(EngineProperties, EverySharedPolygonRuns) {
-  const std::string dir = test::shared_data_dir() + "/polygons";
+  const std::string dir = test::collection_dir("polygons").string();
   std::vector<std::filesystem::path> files;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     if (entry.path().extension() == ".txt") files.push_back(entry.path());

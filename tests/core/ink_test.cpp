@@ -11,7 +11,7 @@
 #include "penshape/core/deconstruct.hpp"
 #include "support/dollar1.hpp"
 #include "support/hausdorff_check.hpp"
-#include "support/shared_data.hpp"
+#include "test_data.hpp"
 
 namespace penshape {
 namespace {
@@ -98,7 +98,7 @@ TEST(InkPolygon, DoublingBackAndSelfCrossing) {
 }
 
 TEST(InkPolygon, RealStrokesAreValidAndClose) {
-  const std::string dir = test::shared_data_dir() + "/strokes/dollar1/s02/medium/";
+  const std::string dir = test::collection_dir("strokes/dollar1/s02/medium").string() + "/";
   for (const char* name : {"circle01.xml", "rectangle01.xml", "star01.xml", "pigtail01.xml",
                            "x01.xml", "question_mark01.xml"}) {
     SCOPED_TRACE(name);
@@ -193,7 +193,7 @@ TEST(InkPolygon, PressureStrokeIsValidAndWithinItsRadii) {
   // A real stroke with a pressure ramp: Q lies between the ink of the thinnest and of the
   // thickest constant pen (areas), and is a valid region.
   const auto pts =
-      test::read_dollar1(test::shared_data_dir() + "/strokes/dollar1/s02/medium/pigtail01.xml");
+      test::read_dollar1(test::collection_dir("strokes/dollar1/s02/medium/pigtail01.xml").string());
   std::vector<InkSample> samples;
   for (std::size_t i = 0; i < pts.size(); ++i) {
     const double t = static_cast<double>(i) / static_cast<double>(pts.size() - 1);
@@ -226,7 +226,7 @@ namespace {
 TEST(InkPolygon, RealStrokeInkDeconstructs) {
   // The daemon's path: stroke → ink polygon → decision with the pen radius; every YES is
   // checked independently against the ink polygon.
-  const std::string dir = test::shared_data_dir() + "/strokes/dollar1/s03/medium/";
+  const std::string dir = test::collection_dir("strokes/dollar1/s03/medium").string() + "/";
   int yes = 0;
   for (const char* name : {"circle02.xml", "triangle02.xml", "v02.xml"}) {
     SCOPED_TRACE(name);

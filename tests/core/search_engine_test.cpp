@@ -15,13 +15,13 @@
 #include "penshape/core/simplify.hpp"
 #include "support/dollar1.hpp"
 #include "support/hausdorff_check.hpp"
-#include "support/shared_data.hpp"
+#include "test_data.hpp"
 
 namespace penshape {
 namespace {
 
 PolygonSet shared_polygon(const std::string& name) {
-  return read_polygon_text(test::read_shared("polygons/" + name + ".txt"));
+  return read_polygon_text(test::read_data("polygons/" + name + ".txt"));
 }
 
 double bbox_width(const PolygonSet& q) {
@@ -131,7 +131,7 @@ TEST(SearchEngine, ConvexDecideAgreesWithTheGeneralDecider) {
 TEST(SearchEngine, SimplificationKeepsTheCertificateOnSharedPolygons) {
   std::size_t simplified = 0;
   for (const auto& entry :
-       std::filesystem::directory_iterator(test::shared_data_dir() + "/polygons")) {
+       std::filesystem::directory_iterator(test::collection_dir("polygons").string())) {
     if (entry.path().extension() != ".txt") continue;
     const std::string name = entry.path().stem().string();
     const PolygonSet q = shared_polygon(name);
@@ -176,7 +176,8 @@ TEST(SearchEngine, NearlyStraightStrokeBecomesASegment) {
 TEST(SearchEngine, SimplificationKeepsTheCertificateOnRealStrokes) {
   for (const char* file : {"s02/medium/circle01.xml", "s03/fast/triangle05.xml",
                            "s04/slow/pigtail03.xml", "s05/medium/rectangle02.xml"}) {
-    const auto points = test::read_dollar1(test::shared_data_dir() + "/strokes/dollar1/" + file);
+    const auto points =
+        test::read_dollar1(test::collection_dir("strokes/dollar1").string() + "/" + file);
     std::vector<InkSample> samples;
     for (const auto& pt : points) samples.push_back({pt.x, pt.y, 3.0});
     InkOptions opt;

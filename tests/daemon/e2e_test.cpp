@@ -21,6 +21,7 @@
 #include "penshape/v1/config.grpc.pb.h"
 #include "penshape/v1/geometry.grpc.pb.h"
 #include "penshape/v1/live.grpc.pb.h"
+#include "test_data.hpp"
 
 namespace {
 
@@ -848,14 +849,9 @@ TEST_F(DaemonE2E, SubmitStrokeAnswersAndPublishes) {
 
 namespace {
 
-std::string hid_dir() {
-  const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR");
-  return std::string(env != nullptr ? env : PENSHAPE_SHARED_DATA_DIR) + "/hid";
-}
-
 TEST_F(DaemonE2E, AReplayedRecordingReachesSubscribersAsTheDriversStrokes) {
   const auto recording = penshape::drivers::load_recording_file(
-      hid_dir() + "/wacom-hid-descriptors/Wacom_PenPartner/hidrecord.txt");
+      (penshape::test::recordings_dir() / "wacom-penpartner.hidrec").string());
   const auto offline =
       penshape::drivers::replay(recording, penshape::drivers::ReplaySpeed::kAsFastAsPossible);
   ASSERT_GE(offline.strokes.size(), 3U);

@@ -20,16 +20,15 @@
 #include "penshape/daemon/proto_convert.hpp"
 #include "penshape/daemon/server.hpp"
 #include "penshape/v1/geometry.grpc.pb.h"
+#include "test_data.hpp"
 
 namespace {
 
 using namespace std::chrono_literals;
 namespace v1 = penshape::v1;
 
-std::string data_dir() {
-  const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR");
-  return env != nullptr ? env : PENSHAPE_SHARED_DATA_DIR;
-}
+// The data root: the shared corpus when present, else tests/data (which bundles every polygon).
+std::string data_dir() { return penshape::test::collection_dir("").string(); }
 
 // "x y" lines as exact decimals → exact rationals ("123/100"), so nothing is rounded.
 std::string decimal_to_rational(const std::string& text) {

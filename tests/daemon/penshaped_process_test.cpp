@@ -22,6 +22,7 @@
 #include "penshape/drivers/replay.hpp"
 #include "penshape/v1/config.grpc.pb.h"
 #include "penshape/v1/live.grpc.pb.h"
+#include "test_data.hpp"
 
 extern char** environ;
 
@@ -179,8 +180,8 @@ TEST(Penshaped, FindsItsConfigInXdgConfigHome) {
 }
 
 TEST(Penshaped, ReplaysARecordingAsIfLive) {
-  const std::string capture = std::string(PENSHAPE_SHARED_DATA_DIR) +
-                              "/hid/wacom-hid-descriptors/Wacom_PenPartner/hidrecord.txt";
+  const std::string capture =
+      (penshape::test::recordings_dir() / "wacom-penpartner.hidrec").string();
   const auto offline = penshape::drivers::replay(penshape::drivers::load_recording_file(capture),
                                                  penshape::drivers::ReplaySpeed::kAsFastAsPossible);
   ASSERT_GE(offline.strokes.size(), 3U);
@@ -225,15 +226,75 @@ TEST(Penshaped, BadConfigAndCommandLineExitWithTwo) {
   EXPECT_EQ(exit_code(pid), 2);
   EXPECT_NE(box.stderr_text().find("not a loopback address"), std::string::npos);
 
-  // A recording that cannot be replayed: a clear message naming it, exit 1, no socket left.
-  pid = box.spawn({"--replay", box.path("missing.rec")}, {"XDG_RUNTIME_DIR=" + box.dir()});
-  EXPECT_EQ(exit_code(pid), 1);
-  EXPECT_NE(box.stderr_text().find("missing.rec"), std::string::npos) << box.stderr_text();
-  EXPECT_FALSE(std::filesystem::exists(box.path("penshape.sock")));
+  pid = box.spawn({"--replay-loop"}, {"XDG_RUNTIME_DIR=" + box.dir()});
+  EXPECT_EQ(exit_code(pid), 2);
+  EXPECT_NE(box.stderr_text().find("--replay-loop needs --replay"), std::string::npos);
 
   pid = box.spawn({"--frobnicate"}, {"XDG_RUNTIME_DIR=" + box.dir()});
   EXPECT_EQ(exit_code(pid), 2);
   EXPECT_FALSE(std::filesystem::exists(box.path("penshape.sock")));
+}
+
+// Files that are not recordings: each is bad input (exit 2) with a message naming the file and
+// what is wrong, and nothing is left behind (the daemon never serves).
+TEST(Penshaped, AFileThatIsNotARecordingExitsTwoNamingIt) {
+  Sandbox box;
+  const std::string good = (penshape::test::recordings_dir() / "wacom-penpartner.hidrec").string();
+  const std::string text = penshape::test::read_file(good);
+  std::ofstream(box.path("truncated.hidrec")) << text.substr(0, text.find("E: ") + 20);
+  std::ofstream(box.path("no-events.hidrec")) << text.substr(0, text.find("E: "));
+  std::ofstream(box.path("garbage.bin")) << std::string("\x05\x0d\x09\x02\xa1\x01\xff\xff", 8);
+  std::ofstream(box.path("empty.hidrec"));
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {box.path("missing.hidrec"), "cannot open"},
+      {(penshape::test::recordings_dir() / "wacom-penpartner.expected").string(),
+       "not a tablet recording"},
+      {box.path("no-events.hidrec"), "no input reports"},
+      {box.path("truncated.hidrec"), "truncated.hidrec"},
+      {box.path("garbage.bin"), "not a tablet recording"},
+      {box.path("empty.hidrec"), "empty.hidrec"},
+  };
+  for (const auto& [file, message] : cases) {
+    SCOPED_TRACE(file);
+    const pid_t pid = box.spawn({"--replay", file}, {"XDG_RUNTIME_DIR=" + box.dir()});
+    EXPECT_EQ(exit_code(pid), 2) << box.stderr_text();
+    EXPECT_NE(box.stderr_text().find(file), std::string::npos) << box.stderr_text();
+    EXPECT_NE(box.stderr_text().find(message), std::string::npos) << box.stderr_text();
+    EXPECT_EQ(box.stderr_text().find("terminate"), std::string::npos) << box.stderr_text();
+    EXPECT_FALSE(std::filesystem::exists(box.path("penshape.sock")));
+  }
+}
+
+// Several recordings play one after another, and --replay-loop starts over: the strokes of both
+// arrive, then the first recording's again.
+TEST(Penshaped, PlaysSeveralRecordingsAndLoops) {
+  const auto dir = penshape::test::recordings_dir();
+  const std::string a = (dir / "wacom-penpartner.hidrec").string();
+  const std::string b = (dir / "dollar1-shapes.xppen-deco01v2.hidrec").string();
+  const auto strokes_of = [](const std::string& file) {
+    return penshape::drivers::replay(penshape::drivers::load_recording_file(file),
+                                     penshape::drivers::ReplaySpeed::kAsFastAsPossible)
+        .strokes.size();
+  };
+  const std::size_t want = strokes_of(a) + strokes_of(b) + strokes_of(a);
+  Sandbox box;
+  const std::string notify = box.listen_for_notifications();
+  const pid_t pid =
+      box.spawn({"--replay", a, "--replay", b, "--replay-loop", "--replay-delay", "2"},
+                {"XDG_RUNTIME_DIR=" + box.dir(), "NOTIFY_SOCKET=" + notify});
+  ASSERT_EQ(box.next_notification(30'000).rfind("READY=1", 0), 0U) << box.stderr_text();
+  auto live = penshape::v1::Live::NewStub(
+      grpc::CreateChannel("unix:" + box.path("penshape.sock"), grpc::InsecureChannelCredentials()));
+  grpc::ClientContext ctx;
+  ctx.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(120));
+  auto reader = live->Subscribe(&ctx, {});
+  std::size_t finished = 0;
+  penshape::v1::LiveEvent event;
+  while (finished < want && reader->Read(&event)) finished += event.has_stroke_finished() ? 1 : 0;
+  EXPECT_EQ(finished, want) << box.stderr_text();
+  ctx.TryCancel();
+  ::kill(pid, SIGTERM);
+  EXPECT_EQ(exit_code(pid), 0) << box.stderr_text();
 }
 
 } // namespace

@@ -1,4 +1,5 @@
 #include "penshape/daemon/proto_convert.hpp"
+#include "test_data.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,10 +16,8 @@ using penshape::daemon::FieldError;
 using penshape::daemon::Limits;
 namespace v1 = penshape::v1;
 
-std::string data_dir() {
-  const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR");
-  return env != nullptr ? env : PENSHAPE_SHARED_DATA_DIR;
-}
+// The data root: the shared corpus when present, else tests/data (which bundles every polygon).
+std::string data_dir() { return penshape::test::collection_dir("").string(); }
 
 // The shared polygon files: "x y" per line, '#' header lines.
 v1::PolygonSet read_polygon(const std::string& name) {

@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -17,12 +18,18 @@ Result run(const std::string& args) {
   return penshape::test::run_command(std::string(PENSHAPE_CLI) + " " + args);
 }
 
-std::string data(const std::string& rel) {
-  std::string quoted = "'";
-  quoted += (penshape::drivers::testing::hid_dir() / rel).string();
-  quoted += "'";
-  return quoted;
+std::string quoted(const std::filesystem::path& path) {
+  std::string out = "'"; // built by appending: g++ 12 warns falsely (-Wrestrict) on "'" + string
+  out += path.string();
+  out += "'";
+  return out;
 }
+
+std::string data(const std::string& rel) {
+  return quoted(penshape::drivers::testing::hid_dir() / rel);
+}
+
+std::string penpartner() { return quoted(penshape::drivers::testing::penpartner_capture()); }
 
 std::size_t count(const std::string& s, const std::string& what) {
   std::size_t n = 0;
@@ -46,16 +53,14 @@ TEST(CliDevices, DescribeJsonHasTheIssueKeys) {
 }
 
 TEST(CliDevices, DescribeVendorProtocolFromTheIdLine) {
-  const Result r =
-      run("hid describe " + data("wacom-hid-descriptors/Wacom_PenPartner/hidrecord.txt"));
+  const Result r = run("hid describe " + penpartner());
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_NE(r.out.find("pen (wacom-graphire protocol): x_max 3250, y_max 2320"), std::string::npos)
       << r.out;
 }
 
 TEST(CliDevices, ReplayJsonSamplesAndStrokes) {
-  const Result r =
-      run("replay --local --json " + data("wacom-hid-descriptors/Wacom_PenPartner/hidrecord.txt"));
+  const Result r = run("replay --local --json " + penpartner());
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_EQ(count(r.out, "{\"t\":"), 757U);
   EXPECT_EQ(count(r.out, "{\"stroke\":"), 3U);
@@ -67,9 +72,10 @@ TEST(CliDevices, ReplayJsonSamplesAndStrokes) {
 }
 
 TEST(CliDevices, ReplayUsbhidDumpWithVidPidAndDescriptor) {
-  const Result r = run("replay --local --json --vid 28bd --pid 0042 --descriptor " +
-                       data("digimend-tablets/XP-Pen_Deco_01/rd/original1.txt") + " " +
-                       data("digimend-tablets/XP-Pen_Deco_01/dumps/pen_pressure.txt"));
+  PENSHAPE_SHARED_OR_SKIP(deco01, "hid/digimend-tablets/XP-Pen_Deco_01");
+  const Result r =
+      run("replay --local --json --vid 28bd --pid 0042 --descriptor " +
+          quoted(deco01 / "rd/original1.txt") + " " + quoted(deco01 / "dumps/pen_pressure.txt"));
   ASSERT_EQ(r.exit_code, 0) << r.out.substr(0, 400);
   EXPECT_EQ(count(r.out, "{\"t\":"), 1125U);
   EXPECT_EQ(count(r.out, "{\"stroke\":"), 1U);

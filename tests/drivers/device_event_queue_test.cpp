@@ -12,8 +12,7 @@ namespace {
 using namespace std::chrono_literals;
 
 TEST(DeviceEventQueue, ReplayArrivesInOrder) {
-  const Recording rec = read_hid_recorder(
-      read_file(testing::hid_dir() / "wacom-hid-descriptors/Wacom_PenPartner/hidrecord.txt"));
+  const Recording rec = read_hid_recorder(read_file(testing::penpartner_capture()));
   const ReplayResult expected = replay(rec, ReplaySpeed::kAsFastAsPossible);
   DeviceEventQueue queue;
   DeviceManager manager(nullptr, queue.callbacks());

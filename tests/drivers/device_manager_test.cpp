@@ -192,10 +192,7 @@ DeviceManagerOptions rescan_every(std::chrono::milliseconds interval) {
   return o;
 }
 
-Recording penpartner() {
-  return read_hid_recorder(
-      read_file(testing::hid_dir() / "wacom-hid-descriptors/Wacom_PenPartner/hidrecord.txt"));
-}
+Recording penpartner() { return read_hid_recorder(read_file(testing::penpartner_capture())); }
 
 DeviceCandidate penpartner_candidate(const std::string& key) {
   const Recording r = penpartner();

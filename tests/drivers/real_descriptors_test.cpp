@@ -105,6 +105,7 @@ const std::set<std::string> kExplainedOtdDifferences = {
 };
 
 TEST(RealDescriptors, EveryDescriptorParses) {
+  PENSHAPE_SHARED_OR_SKIP(hid, "hid");
   const auto all = testing::all_shared_descriptors();
   ASSERT_GE(all.size(), 200U) << "expected the 169 .hid.bin files and 39 collection entries";
   std::size_t input_reports = 0;
@@ -130,6 +131,7 @@ TEST(RealDescriptors, EveryDescriptorParses) {
 }
 
 TEST(RealDescriptors, PenMaximaAgreeWithOpenTabletDriverAndLibwacom) {
+  PENSHAPE_SHARED_OR_SKIP(hid, "hid");
   const auto otd = load_otd();
   const auto wacom = load_libwacom();
   std::size_t pens = 0, otd_compared = 0, otd_agree = 0, lw_compared = 0, lw_agree = 0;

@@ -48,8 +48,7 @@ Summary summarise(const ReplayResult& r) {
 }
 
 TEST(RealStreams, WacomPenPartnerCapture) {
-  const auto rec = read_hid_recorder(
-      read_file(hid_dir() / "wacom-hid-descriptors/Wacom_PenPartner/hidrecord.txt"));
+  const auto rec = read_hid_recorder(read_file(testing::penpartner_capture()));
   EXPECT_EQ(rec.identity.vendor_id, 0x056a);
   EXPECT_EQ(rec.identity.product_id, 0x0061);
   ASSERT_EQ(rec.events.size(), 874U);
@@ -99,7 +98,7 @@ std::vector<std::uint8_t> original_descriptor(const std::filesystem::path& table
 }
 
 TEST(RealStreams, EveryDigimendDumpDecodes) {
-  const auto base = hid_dir() / "digimend-tablets";
+  PENSHAPE_SHARED_OR_SKIP(base, "hid/digimend-tablets");
   std::size_t files = 0;
   std::printf("%-44s %4s %6s %6s %5s %5s %5s %6s %5s %4s %6s\n", "dump", "mode", "pen", "tip",
               "press", "tilts", "btns", "other", "junk", "oor", "strokes");

@@ -13,9 +13,7 @@
 namespace penshape::drivers {
 namespace {
 
-std::string penpartner_text() {
-  return read_file(testing::hid_dir() / "wacom-hid-descriptors/Wacom_PenPartner/hidrecord.txt");
-}
+std::string penpartner_text() { return read_file(testing::penpartner_capture()); }
 
 TEST(Recording, ReadsTheRealHidRecorderCapture) {
   const Recording r = read_hid_recorder(penpartner_text());
@@ -44,8 +42,8 @@ TEST(Recording, WriteThenReadIsIdentical) {
 }
 
 TEST(Recording, DigimendDumpRoundTripsThroughHidRecorder) {
-  const auto dump = read_usbhid_dump(read_file(
-      testing::hid_dir() / "digimend-tablets/Huion_HS610/dumps/enabled/pen_pressure.txt"));
+  PENSHAPE_SHARED_OR_SKIP(file, "hid/digimend-tablets/Huion_HS610/dumps/enabled/pen_pressure.txt");
+  const auto dump = read_usbhid_dump(read_file(file));
   ASSERT_EQ(dump.streams.size(), 1U);
   const auto& events = dump.streams.at(0);
   ASSERT_EQ(events.size(), 1026U);
@@ -59,16 +57,16 @@ TEST(Recording, DigimendDumpRoundTripsThroughHidRecorder) {
 }
 
 TEST(Recording, DamagedDumpHeadIsSkippedAndCounted) {
+  PENSHAPE_SHARED_OR_SKIP(file, "hid/digimend-tablets/Ugee_M708_v2/dumps/pen_tilt.txt");
   // The Ugee tilt dump starts with 64 KiB of NUL bytes that cut the first header.
-  const auto dump = read_usbhid_dump(
-      read_file(testing::hid_dir() / "digimend-tablets/Ugee_M708_v2/dumps/pen_tilt.txt"));
+  const auto dump = read_usbhid_dump(read_file(file));
   EXPECT_EQ(dump.damaged_blocks, 1U);
   EXPECT_EQ(dump.streams.at(1).size(), 2090U);
 }
 
 TEST(Recording, DescriptorBlocksOfADump) {
-  const auto dump = read_usbhid_dump(
-      read_file(testing::hid_dir() / "digimend-tablets/XP-Pen_G640S/hid_report_descriptors.txt"));
+  PENSHAPE_SHARED_OR_SKIP(file, "hid/digimend-tablets/XP-Pen_G640S/hid_report_descriptors.txt");
+  const auto dump = read_usbhid_dump(read_file(file));
   ASSERT_EQ(dump.descriptors.size(), 3U);
   EXPECT_EQ(dump.descriptors.at(1).front(), 0x05);
   const auto headerless = read_usbhid_dump(" 05 0D 09 02\n A1 01\n");

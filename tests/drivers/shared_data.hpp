@@ -1,21 +1,21 @@
 #pragma once
-// Test helpers: where the shared real data lives, and the descriptor collections in it.
+// Test helpers: the HID data (the shared corpus's hid/ when present, else the descriptors bundled
+// in tests/data/hid), the bundled PenPartner capture, and the descriptor collections.
 #include <cstdint>
-#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "test_data.hpp"
+
 namespace penshape::drivers::testing {
 
-inline std::filesystem::path shared_data_dir() {
-  if (const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR"); env != nullptr && *env) {
-    return env;
-  }
-  return PENSHAPE_SHARED_DATA_DIR;
-}
+inline std::filesystem::path hid_dir() { return test::collection_dir("hid"); }
 
-inline std::filesystem::path hid_dir() { return shared_data_dir() / "hid"; }
+// The real Wacom PenPartner hid-recorder capture, bundled in recordings/ (ODbL).
+inline std::filesystem::path penpartner_capture() {
+  return test::recordings_dir() / "wacom-penpartner.hidrec";
+}
 
 struct NamedDescriptor {
   std::string source; // path relative to hid/ (and the line for multi-descriptor files)
@@ -24,8 +24,8 @@ struct NamedDescriptor {
   std::vector<std::uint8_t> bytes;
 };
 
-// Every descriptor in ../shared/data/hid: the .hid.bin files of wacom-hid-descriptors and each
-// R: line of the hid-tools and udev-hid-bpf collections.
+// Every descriptor under hid_dir(): the .hid.bin files of wacom-hid-descriptors and each R: line
+// of the hid-tools and udev-hid-bpf collections (absent from the bundled subset).
 std::vector<NamedDescriptor> all_shared_descriptors();
 
 } // namespace penshape::drivers::testing

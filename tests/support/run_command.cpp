@@ -1,7 +1,5 @@
 #include "run_command.hpp"
 
-#include "test_data.hpp"
-
 #include <sys/wait.h>
 
 #include <array>
@@ -19,10 +17,6 @@ CommandResult run_command(const std::string& command_line) {
   const int status = ::pclose(pipe);
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
-}
-
-std::string shared_data_path(const std::string& relative) {
-  return shared_data_location() + "/" + relative;
 }
 
 } // namespace penshape::test

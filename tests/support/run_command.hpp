@@ -11,7 +11,4 @@ struct CommandResult {
 
 CommandResult run_command(const std::string& command_line);
 
-// The shared data directory: $PENSHAPE_SHARED_DATA_DIR, else the compile-time default.
-std::string shared_data_path(const std::string& relative);
-
 } // namespace penshape::test

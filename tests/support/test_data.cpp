@@ -36,6 +36,18 @@ std::optional<std::filesystem::path> shared_path(const std::string& relative) {
   return p;
 }
 
+std::optional<std::filesystem::path> data_path(const std::string& relative) {
+  std::filesystem::path bundled = bundled_data_dir() / relative;
+  std::error_code ec;
+  if (std::filesystem::exists(bundled, ec)) return bundled;
+  return shared_path(relative);
+}
+
+std::filesystem::path collection_dir(const std::string& relative) {
+  if (auto shared = shared_path(relative)) return *shared;
+  return bundled_data_dir() / relative;
+}
+
 std::string read_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error("cannot read " + path.string());
@@ -43,5 +55,18 @@ std::string read_file(const std::filesystem::path& path) {
   os << in.rdbuf();
   return os.str();
 }
+
+} // namespace penshape::test
+
+namespace penshape::test {
+
+std::string data_file(const std::string& relative) {
+  const auto path = data_path(relative);
+  if (!path)
+    throw std::runtime_error(relative + " is neither in tests/data nor in the shared corpus");
+  return path->string();
+}
+
+std::string read_data(const std::string& relative) { return read_file(data_file(relative)); }
 
 } // namespace penshape::test

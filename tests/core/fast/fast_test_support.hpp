@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "penshape/core/polygon_set.hpp"
+#include "test_data.hpp"
 
 namespace penshape::fast_test {
 
@@ -57,10 +58,8 @@ inline PolygonSet read_polygon_file(const std::string& path) {
   return set;
 }
 
-inline std::string data_dir() {
-  const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR");
-  return env != nullptr ? env : PENSHAPE_SHARED_DATA_DIR;
-}
+// The data root (the shared corpus when present, else tests/data, which bundles every polygon).
+inline std::string data_dir() { return test::collection_dir("").string(); }
 
 // A star-shaped (hence simple) random polygon around the origin, counterclockwise.
 inline PolygonSet random_star_polygon(std::mt19937& rng, int n, double radius) {

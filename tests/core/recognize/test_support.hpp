@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "penshape/core/recognize.hpp"
+#include "test_data.hpp"
 
 namespace penshape::test {
 
@@ -49,9 +50,11 @@ inline void print_confusion_table(const ConfusionTable& confusion) {
   }
 }
 
-inline std::filesystem::path shared_data_dir() {
-  if (const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR")) return env;
-  return PENSHAPE_SHARED_DATA_DIR;
+// The $1 logs: the shared corpus's subjects s01..s06 when present, else the subset bundled in
+// tests/data (s02 and s03 at medium speed, and the single gestures tests name).
+inline std::filesystem::path dollar_dir() { return collection_dir("strokes/dollar1"); }
+inline std::size_t dollar_gesture_count() {
+  return shared_path("strokes/dollar1") ? 2880U : 334U; // 6 x 3 x 16 x 10, or the bundled files
 }
 
 struct Gesture {
@@ -79,11 +82,10 @@ inline Gesture read_gesture(const std::filesystem::path& path) {
   return g;
 }
 
-// Every $1 gesture of subjects s01..s06 (all speeds), sorted by path.
+// Every $1 gesture under dollar_dir(), sorted by path.
 inline std::vector<Gesture> all_dollar_gestures() {
   std::vector<std::filesystem::path> files;
-  for (const auto& e :
-       std::filesystem::recursive_directory_iterator(shared_data_dir() / "strokes" / "dollar1")) {
+  for (const auto& e : std::filesystem::recursive_directory_iterator(dollar_dir())) {
     if (e.is_regular_file() && e.path().extension() == ".xml") files.push_back(e.path());
   }
   std::sort(files.begin(), files.end());

@@ -3,7 +3,7 @@
 #include <regex>
 #include <stdexcept>
 
-#include "support/shared_data.hpp"
+#include "test_data.hpp"
 
 namespace penshape::test {
 
