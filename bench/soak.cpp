@@ -1,9 +1,9 @@
 // Soak: the real penshaped under steady load for N minutes, watched from outside. The daemon
 // (a child process) replays every bundled recording again and again (--replay ... --replay-loop);
-// 8 gRPC subscribers take every event with the samples, one of them reading slowly through a
-// small queue so that it must lose events; one client calls Deconstruct (with simplification)
-// over and over. After a warm-up the daemon's resident memory, open file descriptors and threads
-// are read from /proc, and again at the end under the same load.
+// 8 gRPC subscribers take every event (samples and raw reports too), one of them reading slowly
+// through a small queue so that it must lose events; one client calls Deconstruct (with
+// simplification) over and over. After a warm-up the daemon's resident memory, open file
+// descriptors and threads are read from /proc, and again at the end under the same load.
 //
 // It fails (exit 1) when RSS grew by more than 10%, when fds or threads grew, when a subscriber
 // saw a gap in the event sequence that its EventsDropped notices do not account for (an event
@@ -164,6 +164,9 @@ class Subscriber {
   void run() {
     v1::SubscribeRequest request;
     request.set_include_samples(true);
+    // Every kind of event the daemon publishes here (raw reports bring the device events with
+    // them), so that a gap in the sequence numbers can only be a drop.
+    request.set_include_raw_reports(true);
     if (slow_) request.set_max_queued_events(16); // reads far slower than events arrive
     auto reader = stub_->Subscribe(&context_, request);
     v1::LiveEvent event;
@@ -276,10 +279,17 @@ int main(int argc, char** argv) {
       daemon.pid(), kSubscribers, o.minutes, o.warmup_seconds);
   std::this_thread::sleep_for(std::chrono::duration<double>(o.warmup_seconds));
   const Footprint start = footprint(daemon.pid());
-  std::this_thread::sleep_for(std::chrono::duration<double>(o.minutes * 60));
+  print_footprint("start", start);
+  // The footprint every 30 s on the way, to tell a plateau from a steady climb.
+  const auto until =
+      std::chrono::steady_clock::now() + std::chrono::duration<double>(o.minutes * 60);
+  while (std::chrono::steady_clock::now() + 30s < until && daemon.alive()) {
+    std::this_thread::sleep_for(30s);
+    if (daemon.alive()) print_footprint("  now", footprint(daemon.pid()));
+  }
+  std::this_thread::sleep_until(until);
   const bool alive = daemon.alive();
   const Footprint end = alive ? footprint(daemon.pid()) : Footprint{};
-  print_footprint("start", start);
   print_footprint("end", end);
 
   bool failed = false;

@@ -1,7 +1,5 @@
 # What `cmake --install` adds beyond the targets (man pages from the programs' own --help, udev
 # rules, bundled recordings), and the Debian package: `cpack -G DEB` in the build folder.
-include(GNUInstallDirs)
-
 # Man pages, written after the programs are built by running them.
 set(man_dir ${PROJECT_BINARY_DIR}/man)
 set(man_pages)
@@ -12,13 +10,14 @@ foreach(spec "penshape|penshape|recognize shapes in pen strokes, offline and liv
   list(GET spec 1 name)
   list(GET spec 2 summary)
   list(GET spec 3 with_subcommands)
-  add_custom_command(OUTPUT ${man_dir}/${name}.1
+  add_custom_command(OUTPUT ${man_dir}/${name}.1.gz
     COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:${target}> -DNAME=${name}
       "-DSUMMARY=${summary}" -DWITH_SUBCOMMANDS=${with_subcommands} -DOUT=${man_dir}/${name}.1
       -P ${PROJECT_SOURCE_DIR}/cmake/WriteManPage.cmake
+    COMMAND gzip -9nf ${man_dir}/${name}.1 # compressed, as Debian installs man pages
     DEPENDS ${target} ${PROJECT_SOURCE_DIR}/cmake/WriteManPage.cmake
     COMMENT "man page ${name}.1 from its --help" VERBATIM)
-  list(APPEND man_pages ${man_dir}/${name}.1)
+  list(APPEND man_pages ${man_dir}/${name}.1.gz)
 endforeach()
 add_custom_target(penshape_man_pages ALL DEPENDS ${man_pages})
 install(FILES ${man_pages} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)

@@ -24,7 +24,7 @@ std::span<const Subcommand> subcommands() {
                  &run_record},
       Subcommand{"hid describe", "print a HID report descriptor's layouts and pen fields",
                  &run_hid_describe},
-      Subcommand{"replay", "decode a recorded tablet stream into samples and strokes (--local)",
+      Subcommand{"replay", "decode a recorded tablet stream into strokes (shapes via penshaped)",
                  &run_replay},
       Subcommand{"deconstruct", "is a polygon file an approximate offset? (offset deconstruction)",
                  &run_deconstruct},

@@ -138,6 +138,9 @@ DeviceId DeviceManager::attach_with_header(Recording header, std::unique_ptr<Rep
 }
 
 DeviceId DeviceManager::attach_replay(const Recording& recording, ReplaySpeed speed) {
+  // Replays that ended are reaped here too: without a backend no hotplug thread does it, and a
+  // daemon replaying in a loop would keep every finished replay (its reports, its thread).
+  reap_finished();
   Recording header; // everything but the reports, which the source gets
   header.identity = recording.identity;
   header.has_identity = recording.has_identity;

@@ -51,7 +51,8 @@ TEST(PenEncoder, RoundTripsThroughTheDecoderOnEverySharedPenLayout) {
       }
     }
   }
-  EXPECT_GT(layouts, 100U);
+  // Over a hundred pen layouts in the shared corpus; the two bundled descriptors have one each.
+  EXPECT_GE(layouts, test::shared_path("hid") ? 100U : 2U);
 }
 
 } // namespace

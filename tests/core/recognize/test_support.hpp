@@ -53,9 +53,12 @@ inline void print_confusion_table(const ConfusionTable& confusion) {
 // The $1 logs: the shared corpus's subjects s01..s06 when present, else the subset bundled in
 // tests/data (s02 and s03 at medium speed, and the single gestures tests name).
 inline std::filesystem::path dollar_dir() { return collection_dir("strokes/dollar1"); }
+inline bool full_dollar_corpus() { return shared_path("strokes/dollar1").has_value(); }
 inline std::size_t dollar_gesture_count() {
-  return shared_path("strokes/dollar1") ? 2880U : 334U; // 6 x 3 x 16 x 10, or the bundled files
+  return full_dollar_corpus() ? 2880U : 334U; // 6 x 3 x 16 x 10, or the bundled files
 }
+// A count that a test expects of the gestures: `full` on s01..s06, `bundled` on the bundled subset.
+inline int dollar_count(int full, int bundled) { return full_dollar_corpus() ? full : bundled; }
 
 struct Gesture {
   std::string file;
