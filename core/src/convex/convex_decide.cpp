@@ -114,8 +114,9 @@ bool disk_misses(const ExactPoint& q, const Rational& r2,
 
 // NO from the double outer candidate: the vertex of Q farthest from it, certified with the
 // half-planes of the nearest edge or vertex.
+// `witness` receives the vertex whose disk misses Π.
 bool certified_no(const Ring& ring, const std::vector<PointD>& qd, const detail::ConvexCut& outer,
-                  const Rational& outer_shift, const Rational& r2) {
+                  const Rational& outer_shift, const Rational& r2, std::size_t& witness) {
   const std::size_t m = outer.vertices.size();
   const double rd = std::sqrt(to_double(r2));
   // Farthest vertex of Q from the outer candidate (doubles choose).
@@ -145,6 +146,7 @@ bool certified_no(const Ring& ring, const std::vector<PointD>& qd, const detail:
                                  outer.edge_plane[best_edge],
                                  outer.edge_plane[(best_edge + 1) % m]};
   const detail::HalfPlane here = widened_half_plane(ring, planes[1], outer_shift);
+  witness = best_i;
   if (disk_misses(ring[best_i], r2, {here})) return true;
   for (const std::size_t other : {planes[0], planes[2]}) {
     if (disk_misses(ring[best_i], r2, {here, widened_half_plane(ring, other, outer_shift)})) {
@@ -154,9 +156,10 @@ bool certified_no(const Ring& ring, const std::vector<PointD>& qd, const detail:
   return false;
 }
 
-// The exact rational path (slow, always certified).
+// The exact rational path (slow, always certified). With NO, `witness` is the vertex of Q whose
+// disk misses Π (any vertex when Π is empty).
 Answer exact_path(const Ring& ring, const DeconstructParams& params, const Rational& reach2,
-                  const CancelHook& cancel, Ring& solution) {
+                  const CancelHook& cancel, Ring& solution, std::size_t& witness) {
   const Rational shift = params.radius - params.tolerance;
   std::vector<PointD> qd;
   for (const auto& p : ring) qd.push_back(to_double(p));
@@ -179,10 +182,10 @@ Answer exact_path(const Ring& ring, const DeconstructParams& params, const Ratio
       sgn(outer_shift) >= 0 ? detail::ShiftBound::kLower : detail::ShiftBound::kUpper;
   const Ring outer = detail::intersect_sorted_half_planes(
       detail::shifted_edge_half_planes(ring, outer_shift, bound, kSqrtBits));
-  if (outer.empty() ||
-      first_vertex_missing(ring, qd, outer, to_d(outer), reach2, 0.0, cancel) < ring.size()) {
-    return Answer::kNo;
-  }
+  witness = 0;
+  if (outer.empty()) return Answer::kNo;
+  witness = first_vertex_missing(ring, qd, outer, to_d(outer), reach2, 0.0, cancel);
+  if (witness < ring.size()) return Answer::kNo;
   return Answer::kUndecided;
 }
 
@@ -276,11 +279,14 @@ DeconstructResult convex_decide(const PolygonSet& q, const DeconstructParams& pa
     const Rational outer_shift = shift - params.precision / 2;
     const detail::ConvexCut outer = detail::intersect_sorted_half_planes(
         detail::shifted_edge_half_planes(qd, to_double(outer_shift)));
-    if (!outer.vertices.empty() && certified_no(ring, qd, outer, outer_shift, reach2)) {
+    std::size_t witness = 0;
+    if (!outer.vertices.empty() && certified_no(ring, qd, outer, outer_shift, reach2, witness)) {
       out.answer = Answer::kNo;
+      out.no_witness = ring[witness];
     } else {
       Ring solution;
-      out.answer = exact_path(ring, params, reach2, cancel, solution);
+      out.answer = exact_path(ring, params, reach2, cancel, solution, witness);
+      if (out.answer == Answer::kNo) out.no_witness = ring[witness];
       if (out.answer == Answer::kYes) {
         out.solution.polygons.push_back({std::move(solution), {}});
         out.hausdorff_bound = params.tolerance;
