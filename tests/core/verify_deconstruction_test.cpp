@@ -187,8 +187,8 @@ TEST(VerifyDeconstruction, BadParametersThrow) {
   EXPECT_THROW((void)verify_deconstruction(q, c), InvalidInput);
 }
 
-// Every shared polygon at r = w/30, ε = r/2, δ = ε/8: the fast engine's simplified answer and the
-// raw one verify.
+// Every shared polygon at r = w/30, ε = r/2, δ = ε/8: the fast engine's raw and simplified answers
+// verify, and the reference engine's on polygons of up to 500 vertices.
 TEST(VerifyDeconstruction, AcceptsAnswersOnSharedPolygons) {
   PENSHAPE_SHARED_OR_SKIP(dir, "polygons");
   int checked = 0;
@@ -216,6 +216,14 @@ TEST(VerifyDeconstruction, AcceptsAnswersOnSharedPolygons) {
       const VerifyReport rs = verify_deconstruction(q, claim_of(s.result));
       EXPECT_EQ(rs.status, VerifyStatus::kVerified)
           << entry.path().filename() << " simplified: " << rs.message;
+    }
+    if (q.vertex_count() <= 500) { // the reference engine too, where it is quick
+      DeconstructParams ref = params;
+      ref.engine = EngineKind::kReference;
+      const DeconstructResult rr = deconstruct(q, ref);
+      const VerifyReport rv = verify_deconstruction(q, claim_of(rr));
+      EXPECT_EQ(rv.status, VerifyStatus::kVerified)
+          << entry.path().filename() << " reference " << to_string(rr.answer) << ": " << rv.message;
     }
     ++checked;
   }
