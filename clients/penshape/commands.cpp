@@ -10,6 +10,7 @@
 #include "replay_command.hpp"
 #include "search_commands.hpp"
 #include "synthesize_recording_command.hpp"
+#include "verify_command.hpp"
 #include "version_command.hpp"
 
 namespace penshape::cli {
@@ -28,6 +29,7 @@ std::span<const Subcommand> subcommands() {
                  &run_replay},
       Subcommand{"deconstruct", "is a polygon file an approximate offset? (offset deconstruction)",
                  &run_deconstruct},
+      Subcommand{"verify", "re-check deconstruct answers independently and exactly", &run_verify},
       Subcommand{"search-tolerance", "the smallest tolerance for a radius (ε̂ search, certified)",
                  &run_search_tolerance},
       Subcommand{"search-radius", "the radii that have a solution for a tolerance ([0, r*])",

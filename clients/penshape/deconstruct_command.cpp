@@ -32,7 +32,10 @@ constexpr const char* kHelp =
     "--json prints one object: answer, engine, seconds (engine time), solution (list of\n"
     "{\"outer\": [[x,y],...], \"holes\": [[[x,y],...],...]}), solution_vertices, raw_vertices\n"
     "(before simplification), simplified, input_vertices,\n"
-    "hausdorff_bound (null unless YES), disk_vertices, params {radius, tolerance, precision}.\n"
+    "hausdorff_bound (null unless YES), disk_vertices, params {radius, tolerance, precision},\n"
+    "no_witness ([x,y] with NO: a point of the input no solution can serve, else null), exact\n"
+    "{radius, tolerance, precision as exact rationals, solution as exact WKT with YES,\n"
+    "no_witness as two exact rationals with NO} (what `penshape verify` checks).\n"
     "--arcs adds offset(P, R) with true arcs (with YES): \"offset\": [{\"outer\": [curve...],\n"
     "\"holes\": [[curve...]...]}], a curve being {\"segment\": [[x,y],[x,y]]} or {\"arc\":\n"
     "{\"center\": [x,y], \"radius\": R, \"start\": [x,y], \"end\": [x,y]}} (counterclockwise),\n"
@@ -101,6 +104,7 @@ void print_json(const ReportedSolution& rep, std::size_t input_vertices, const C
   json.key("disk_vertices").integer(static_cast<std::int64_t>(res.disk_vertices));
   json.key("params");
   write_params(json, res.params);
+  write_certificate_keys(json, res);
   if (arcs != nullptr) offset_json(json, *arcs);
   json.end_object();
   std::puts(json.str().c_str());

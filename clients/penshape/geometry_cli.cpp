@@ -138,6 +138,31 @@ void write_params(JsonWriter& json, const DeconstructParams& params) {
   json.end_object();
 }
 
+void write_certificate_keys(JsonWriter& json, const DeconstructResult& result) {
+  json.key("no_witness");
+  if (result.no_witness) {
+    json.begin_array()
+        .number(to_double(result.no_witness->x))
+        .number(to_double(result.no_witness->y))
+        .end_array();
+  } else {
+    json.null();
+  }
+  json.key("exact").begin_object();
+  json.key("radius").string(result.params.radius.get_str());
+  json.key("tolerance").string(result.params.tolerance.get_str());
+  json.key("precision").string(result.params.precision.get_str());
+  if (result.answer == Answer::kYes) json.key("solution").string(to_wkt(result.solution));
+  if (result.no_witness) {
+    json.key("no_witness")
+        .begin_array()
+        .string(result.no_witness->x.get_str())
+        .string(result.no_witness->y.get_str())
+        .end_array();
+  }
+  json.end_object();
+}
+
 double seconds(std::chrono::nanoseconds d) { return std::chrono::duration<double>(d).count(); }
 
 } // namespace penshape::cli

@@ -49,6 +49,11 @@ void write_solution_keys(JsonWriter& json, const ReportedSolution& s);
 // {"radius": r, "tolerance": e, "precision": d}
 void write_params(JsonWriter& json, const DeconstructParams& params);
 
+// "no_witness": [x, y] or null, and "exact": {"radius", "tolerance", "precision" as exact
+// rationals ("p/q" or integer text), "solution" as exact WKT (YES only), "no_witness" as two
+// exact rationals (NO only)}: what `penshape verify` re-checks without double rounding.
+void write_certificate_keys(JsonWriter& json, const DeconstructResult& result);
+
 double seconds(std::chrono::nanoseconds d);
 
 } // namespace penshape::cli

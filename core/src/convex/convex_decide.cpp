@@ -10,6 +10,7 @@
 
 #include "convex_exact_inset.hpp"
 #include "convex_inset.hpp"
+#include "geometry/distance_kernel.hpp"
 #include "penshape/core/convex_deconstruct.hpp"
 #include "penshape/core/simplify.hpp"
 
@@ -19,39 +20,33 @@ namespace {
 // The exact path brackets |n| to a relative 2^-kSqrtBits, far below any δ a caller can ask for.
 constexpr unsigned kSqrtBits = 64;
 
-// Squared distance from p to segment [s, t] in doubles.
+// Squared distance from p to segment [s, t] in doubles (proposals only).
 double squared_distance(PointD p, PointD s, PointD t) {
-  const double dx = t.x - s.x;
-  const double dy = t.y - s.y;
-  const double len2 = dx * dx + dy * dy;
-  const double u =
-      len2 > 0 ? std::clamp(((p.x - s.x) * dx + (p.y - s.y) * dy) / len2, 0.0, 1.0) : 0.0;
-  const double ex = p.x - (s.x + u * dx);
-  const double ey = p.y - (s.y + u * dy);
-  return ex * ex + ey * ey;
+  return *detail::squared_distance_to_segment<double>({p.x, p.y}, {s.x, s.y}, {t.x, t.y});
 }
 
 // For each vertex q_i of Q (counterclockwise), is some edge of the convex ring `pi` within
 // distance R? Walks the edges from where the previous vertex found one (Lemma 23's linear scan).
-// Doubles decide when they are clear by a margin far above their error (`slack`); exact
-// rationals decide the rest. Returns the index of the first vertex that fails, or q.size().
-std::size_t first_vertex_missing(const Ring& q, const std::vector<PointD>& qd, const Ring& pi,
-                                 const std::vector<PointD>& pid, const Rational& r2, double slack,
+// Each comparison is certified (geometry/distance_kernel.hpp: intervals, then exact rationals).
+// Returns the index of the first vertex that fails, or q.size().
+std::size_t first_vertex_missing(const Ring& q, const Ring& pi, const Rational& r2,
                                  const CancelHook& cancel) {
   const std::size_t m = pi.size();
-  const double r2d = to_double(r2);
+  std::vector<detail::IPoint> qi, pii;
+  qi.reserve(q.size());
+  pii.reserve(m);
+  for (const auto& v : q) qi.push_back(detail::enclose(v));
+  for (const auto& v : pi) pii.push_back(detail::enclose(v));
+  const detail::IntervalNT r2i = detail::enclose(r2);
   std::size_t edge = 0;
   for (std::size_t i = 0; i < q.size(); ++i) {
     if ((i & 63U) == 0 && cancel && cancel()) throw Cancelled();
     bool found = false;
     for (std::size_t k = 0; k < m && !found; ++k) {
       const std::size_t e = (edge + k) % m;
-      const double dd = squared_distance(qd[i], pid[e], pid[(e + 1) % m]);
-      if (dd + slack < r2d) {
-        found = true;
-      } else if (dd - slack <= r2d) {
-        found = detail::squared_distance_to_segment(q[i], pi[e], pi[(e + 1) % m]) <= r2;
-      }
+      const std::size_t f = (e + 1) % m;
+      found =
+          detail::compare_squared_distance(q[i], qi[i], pi[e], pii[e], pi[f], pii[f], r2, r2i) <= 0;
       if (found) edge = e;
     }
     if (!found) return i;
@@ -114,8 +109,9 @@ bool disk_misses(const ExactPoint& q, const Rational& r2,
 
 // NO from the double outer candidate: the vertex of Q farthest from it, certified with the
 // half-planes of the nearest edge or vertex.
+// `witness` receives the vertex whose disk misses Π.
 bool certified_no(const Ring& ring, const std::vector<PointD>& qd, const detail::ConvexCut& outer,
-                  const Rational& outer_shift, const Rational& r2) {
+                  const Rational& outer_shift, const Rational& r2, std::size_t& witness) {
   const std::size_t m = outer.vertices.size();
   const double rd = std::sqrt(to_double(r2));
   // Farthest vertex of Q from the outer candidate (doubles choose).
@@ -145,6 +141,7 @@ bool certified_no(const Ring& ring, const std::vector<PointD>& qd, const detail:
                                  outer.edge_plane[best_edge],
                                  outer.edge_plane[(best_edge + 1) % m]};
   const detail::HalfPlane here = widened_half_plane(ring, planes[1], outer_shift);
+  witness = best_i;
   if (disk_misses(ring[best_i], r2, {here})) return true;
   for (const std::size_t other : {planes[0], planes[2]}) {
     if (disk_misses(ring[best_i], r2, {here, widened_half_plane(ring, other, outer_shift)})) {
@@ -154,21 +151,14 @@ bool certified_no(const Ring& ring, const std::vector<PointD>& qd, const detail:
   return false;
 }
 
-// The exact rational path (slow, always certified).
+// The exact rational path (slow, always certified). With NO, `witness` is the vertex of Q whose
+// disk misses Π (any vertex when Π is empty).
 Answer exact_path(const Ring& ring, const DeconstructParams& params, const Rational& reach2,
-                  const CancelHook& cancel, Ring& solution) {
+                  const CancelHook& cancel, Ring& solution, std::size_t& witness) {
   const Rational shift = params.radius - params.tolerance;
-  std::vector<PointD> qd;
-  for (const auto& p : ring) qd.push_back(to_double(p));
-  auto to_d = [](const Ring& r) {
-    std::vector<PointD> out;
-    for (const auto& p : r) out.push_back(to_double(p));
-    return out;
-  };
   const Ring inner = detail::intersect_sorted_half_planes(
       detail::shifted_edge_half_planes(ring, shift, detail::ShiftBound::kUpper, kSqrtBits));
-  if (!inner.empty() &&
-      first_vertex_missing(ring, qd, inner, to_d(inner), reach2, 0.0, cancel) == ring.size()) {
+  if (!inner.empty() && first_vertex_missing(ring, inner, reach2, cancel) == ring.size()) {
     solution = inner;
     return Answer::kYes;
   }
@@ -179,10 +169,10 @@ Answer exact_path(const Ring& ring, const DeconstructParams& params, const Ratio
       sgn(outer_shift) >= 0 ? detail::ShiftBound::kLower : detail::ShiftBound::kUpper;
   const Ring outer = detail::intersect_sorted_half_planes(
       detail::shifted_edge_half_planes(ring, outer_shift, bound, kSqrtBits));
-  if (outer.empty() ||
-      first_vertex_missing(ring, qd, outer, to_d(outer), reach2, 0.0, cancel) < ring.size()) {
-    return Answer::kNo;
-  }
+  witness = 0;
+  if (outer.empty()) return Answer::kNo;
+  witness = first_vertex_missing(ring, outer, reach2, cancel);
+  if (witness < ring.size()) return Answer::kNo;
   return Answer::kUndecided;
 }
 
@@ -253,8 +243,7 @@ DeconstructResult convex_decide(const PolygonSet& q, const DeconstructParams& pa
     qd.push_back(to_double(p));
     extent = std::max({extent, std::abs(qd.back().x), std::abs(qd.back().y)});
   }
-  // Doubles err by about 1e-16 of the extent; every margin below is far larger.
-  const double slack = 1e-9 * extent * extent;
+  // η only places the double candidate (a proposal); the checks below are certified.
   const double eta = std::max(1e-7 * extent, to_double(params.precision) / 1024);
 
   // YES: an inner candidate pushed in by η, proven inside Π, reached by every vertex disk.
@@ -263,8 +252,7 @@ DeconstructResult convex_decide(const PolygonSet& q, const DeconstructParams& pa
   if (!inner.vertices.empty() && detail::convex_ring_inside_inset(inner.vertices, ring, shift)) {
     Ring inner_exact;
     for (const PointD& p : inner.vertices) inner_exact.push_back(exact(p));
-    if (first_vertex_missing(ring, qd, inner_exact, inner.vertices, reach2, slack, cancel) ==
-        ring.size()) {
+    if (first_vertex_missing(ring, inner_exact, reach2, cancel) == ring.size()) {
       out.answer = Answer::kYes;
       out.solution.polygons.push_back({std::move(inner_exact), {}});
       out.hausdorff_bound = params.tolerance;
@@ -276,11 +264,14 @@ DeconstructResult convex_decide(const PolygonSet& q, const DeconstructParams& pa
     const Rational outer_shift = shift - params.precision / 2;
     const detail::ConvexCut outer = detail::intersect_sorted_half_planes(
         detail::shifted_edge_half_planes(qd, to_double(outer_shift)));
-    if (!outer.vertices.empty() && certified_no(ring, qd, outer, outer_shift, reach2)) {
+    std::size_t witness = 0;
+    if (!outer.vertices.empty() && certified_no(ring, qd, outer, outer_shift, reach2, witness)) {
       out.answer = Answer::kNo;
+      out.no_witness = ring[witness];
     } else {
       Ring solution;
-      out.answer = exact_path(ring, params, reach2, cancel, solution);
+      out.answer = exact_path(ring, params, reach2, cancel, solution, witness);
+      if (out.answer == Answer::kNo) out.no_witness = ring[witness];
       if (out.answer == Answer::kYes) {
         out.solution.polygons.push_back({std::move(solution), {}});
         out.hausdorff_bound = params.tolerance;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "convex_inset.hpp"
+#include "geometry/distance_kernel.hpp"
 #include "penshape/core/convex_deconstruct.hpp"
 
 namespace penshape {
@@ -88,13 +89,11 @@ struct Eyelet {
   PointD q;    // the vertex of Q
 };
 
+// Doubles choose the horizons (geometry/distance_kernel.hpp's double instance); the returned
+// polygon is checked exactly.
 double segment_distance(PointD p, PointD s, PointD t) {
-  const double dx = t.x - s.x;
-  const double dy = t.y - s.y;
-  const double len2 = dx * dx + dy * dy;
-  const double u =
-      len2 > 0 ? std::clamp(((p.x - s.x) * dx + (p.y - s.y) * dy) / len2, 0.0, 1.0) : 0.0;
-  return std::hypot(p.x - (s.x + u * dx), p.y - (s.y + u * dy));
+  return std::sqrt(
+      *detail::squared_distance_to_segment<double>({p.x, p.y}, {s.x, s.y}, {t.x, t.y}));
 }
 
 // Spots unwrapped into (u, u + m], sorted: the eyelets a chord from u can pass, in order.

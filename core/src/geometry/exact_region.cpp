@@ -160,4 +160,11 @@ bool ExactRegion::contains(const ExactRegion& other) const {
   return rest.is_empty();
 }
 
+ExactRegion ExactRegion::minus(const ExactRegion& other) const {
+  ExactRegion r;
+  r.impl_->set = impl_->set;
+  r.impl_->set.difference(other.impl_->set);
+  return r;
+}
+
 } // namespace penshape::detail

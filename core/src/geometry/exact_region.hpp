@@ -34,6 +34,8 @@ class ExactRegion {
   [[nodiscard]] ExactRegion inset(const Ring& convex, const CancelHook& cancel) const;
   // other ⊆ *this, exactly.
   [[nodiscard]] bool contains(const ExactRegion& other) const;
+  // X \ other, exactly (the closure of the difference).
+  [[nodiscard]] ExactRegion minus(const ExactRegion& other) const;
 
  private:
   struct Impl;

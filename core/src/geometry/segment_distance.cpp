@@ -1,22 +1,13 @@
 #include "segment_distance.hpp"
 
+#include "distance_kernel.hpp"
+
 namespace penshape::detail {
 
 Rational squared_distance_to_segment(const ExactPoint& p, const ExactPoint& s,
                                      const ExactPoint& t) {
-  const Rational dx = t.x - s.x;
-  const Rational dy = t.y - s.y;
-  const Rational px = p.x - s.x;
-  const Rational py = p.y - s.y;
-  const Rational len2 = dx * dx + dy * dy;
-  const Rational proj = px * dx + py * dy;
-  if (sgn(len2) == 0 || sgn(proj) <= 0) return px * px + py * py;
-  if (proj >= len2) {
-    const Rational qx = p.x - t.x;
-    const Rational qy = p.y - t.y;
-    return qx * qx + qy * qy;
-  }
-  return px * px + py * py - proj * proj / len2; // |p - s|² - (projection length)²
+  // The rational instance of the one kernel: it always decides (rationals are ordered).
+  return *squared_distance_to_segment<Rational>({p.x, p.y}, {s.x, s.y}, {t.x, t.y});
 }
 
 int orientation(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c) {

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "engine/engines.hpp"
+#include "geometry/distance_kernel.hpp"
 #include "geometry/segment_distance.hpp"
 #include "penshape/core/convex_deconstruct.hpp"
 #include "penshape/core/simplify.hpp"
@@ -10,26 +11,27 @@
 namespace penshape {
 namespace {
 
+// Doubles choose (geometry/distance_kernel.hpp's double instance).
 double segment_distance(PointD p, PointD s, PointD t) {
-  const double dx = t.x - s.x;
-  const double dy = t.y - s.y;
-  const double len2 = dx * dx + dy * dy;
-  const double u =
-      len2 > 0 ? std::clamp(((p.x - s.x) * dx + (p.y - s.y) * dy) / len2, 0.0, 1.0) : 0.0;
-  return std::hypot(p.x - (s.x + u * dx), p.y - (s.y + u * dy));
+  return std::sqrt(
+      *detail::squared_distance_to_segment<double>({p.x, p.y}, {s.x, s.y}, {t.x, t.y}));
 }
 
 // Are all vertices strictly between i and j (cyclically) within τ of chord(i, j), exactly?
-// Returns the index of the farthest offender, or n when all are within.
-// Doubles clear a vertex when its distance is below τ by more than their rounding (`slack`,
-// relative to the coordinates' magnitude); exact rationals decide the rest.
-std::size_t farthest_offender(const Ring& ring, const std::vector<PointD>& d, std::size_t i,
-                              std::size_t j, const Rational& tau2, double tau_d, double slack) {
+// Returns the index of the farthest offender, or n when all are within. Each vertex is cleared
+// by a certified comparison (intervals, then exact rationals); the farthest offender is chosen
+// among the rest by exact distances.
+std::size_t farthest_offender(const Ring& ring, const std::vector<detail::IPoint>& iv,
+                              std::size_t i, std::size_t j, const Rational& tau2,
+                              const detail::IntervalNT& tau2i) {
   const std::size_t n = ring.size();
   std::size_t worst = n;
   Rational worst_d = tau2;
   for (std::size_t k = (i + 1) % n; k != j; k = (k + 1) % n) {
-    if (segment_distance(d[k], d[i], d[j]) < tau_d - slack) continue;
+    if (detail::compare_squared_distance(ring[k], iv[k], ring[i], iv[i], ring[j], iv[j], tau2,
+                                         tau2i) <= 0) {
+      continue;
+    }
     const Rational exact_d2 = detail::squared_distance_to_segment(ring[k], ring[i], ring[j]);
     if (exact_d2 > worst_d) {
       worst_d = exact_d2;
@@ -138,15 +140,16 @@ std::vector<std::size_t> simplify_ring_indices(const Ring& ring, const Rational&
   for (std::size_t k = 0; k < n; ++k) {
     if (kept[k]) keep.push_back(k);
   }
-  // Exact confirmation; split a chord at its farthest offender until all hold.
+  // Certified confirmation; split a chord at its farthest offender until all hold.
   const Rational tau2 = tau * tau;
-  double magnitude = 0;
-  for (const PointD& p : d) magnitude = std::max({magnitude, std::abs(p.x), std::abs(p.y)});
-  const double slack = 1e-12 * magnitude + 1e-300;
+  const detail::IntervalNT tau2i = detail::enclose(tau2);
+  std::vector<detail::IPoint> iv;
+  iv.reserve(n);
+  for (const auto& p : ring) iv.push_back(detail::enclose(p));
   for (std::size_t t = 0; t < keep.size(); ++t) {
     const std::size_t from = keep[t];
     const std::size_t to = keep[(t + 1) % keep.size()];
-    const std::size_t bad = farthest_offender(ring, d, from, to, tau2, to_double(tau), slack);
+    const std::size_t bad = farthest_offender(ring, iv, from, to, tau2, tau2i);
     if (bad != n) {
       keep.insert(keep.begin() + static_cast<std::ptrdiff_t>(t) + 1, bad);
       std::sort(keep.begin(), keep.end());

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -60,6 +61,9 @@ struct DeconstructResult {
   PolygonSet solution;
   // With YES: an upper bound on H(offset(P, r), Q) that the certificate proves (<= eps).
   Rational hausdorff_bound;
+  // With NO: a point q of Q that no solution can serve, D_{r+eps}(q) ∩ Π = ∅ (Corollary 6): every
+  // valid P lies in Π, so offset(P, r + eps) misses q. `penshape verify` re-checks it.
+  std::optional<ExactPoint> no_witness;
   std::size_t disk_vertices = 0;       // vertices of the largest disk approximation used
   std::chrono::nanoseconds elapsed{0}; // whole call, validation included
 };

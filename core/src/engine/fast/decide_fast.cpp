@@ -193,6 +193,7 @@ DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& para
   for (const IPt& w : witness_candidates(diff, q_index, q_prime_index)) {
     if (verify_no_witness(no, w, cancel)) {
       result.answer = Answer::kNo;
+      result.no_witness = frame.exact(w); // a grid point of Q̃ deep enough to be in Q
       return finish();
     }
   }

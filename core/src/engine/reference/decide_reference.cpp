@@ -7,6 +7,7 @@
 
 #include "engine/engines.hpp"
 #include "geometry/exact_region.hpp"
+#include "geometry/interior_point.hpp"
 #include "penshape/core/disk_approximation.hpp"
 
 namespace penshape::detail {
@@ -43,16 +44,17 @@ Disks exterior_disks(const DeconstructParams& p, std::size_t max_vertices) {
 
 struct Pass {
   ExactRegion pi;      // Π̂
+  ExactRegion q_prime; // Q̂'
   bool covers = false; // Q ⊆ Q̂'
 };
 
 Pass run_pass(const ExactRegion& q, const Disks& k, const CancelHook& cancel) {
   const ExactRegion q_eps = q.minkowski_sum(k.offset_eps, cancel); // (1)
   Pass pass;
-  pass.pi = q_eps.inset(k.inset_r, cancel);                                  // (2)
-  const ExactRegion q_prime = pass.pi.minkowski_sum(k.offset_r_eps, cancel); // (3)
+  pass.pi = q_eps.inset(k.inset_r, cancel);                     // (2)
+  pass.q_prime = pass.pi.minkowski_sum(k.offset_r_eps, cancel); // (3)
   if (cancel && cancel()) throw Cancelled();
-  pass.covers = q_prime.contains(q); // (4)
+  pass.covers = pass.q_prime.contains(q); // (4)
   return pass;
 }
 
@@ -80,6 +82,10 @@ DeconstructResult decide_reference(const PolygonSet& q, const DeconstructParams&
   const Pass exterior = run_pass(region, outer, cancel);
   // Lemma 12: Q̂' ⊇ Q' exactly, so Q ⊄ Q̂' rules out every solution.
   result.answer = exterior.covers ? Answer::kUndecided : Answer::kNo;
+  if (result.answer == Answer::kNo) {
+    // A point inside Q \ Q̂' is outside offset(Π, r + ε): the witness `penshape verify` checks.
+    result.no_witness = interior_point(region.minus(exterior.q_prime).to_polygon_set());
+  }
   return result;
 }
 

@@ -1,0 +1,120 @@
+// `penshape verify FILE ANSWER.json [--json]`: re-checks what `deconstruct --json` printed, with
+// the independent exact verifier of penshape/core/verify.hpp.
+#include "verify_command.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "args.hpp"
+#include "command.hpp"
+#include "geometry_cli.hpp"
+#include "json_reader.hpp"
+#include "json_writer.hpp"
+#include "penshape/core/verify.hpp"
+#include "verify_answer.hpp"
+
+namespace penshape::cli {
+namespace {
+
+constexpr const char* kHelp =
+    "usage: penshape verify FILE ANSWER.json [--json]\n\n"
+    "Re-checks the answers `penshape deconstruct FILE ... --json` printed (one object, or JSON\n"
+    "lines, one per answer), independently of the engines and exactly (interval arithmetic with\n"
+    "an exact rational fallback; offsets with true arcs). r, eps and delta are read from each\n"
+    "answer (its \"exact\" object when present).\n"
+    "  YES: P is a valid region and H(offset(P, r), FILE) <= eps.\n"
+    "  NO: the witness is a point of FILE that no valid P can serve.\n"
+    "  UNDECIDED: claims nothing; accepted.\n"
+    "Prints `verified` or what fails and where (refuted: a counterexample point; unproven: the\n"
+    "proof did not close near a point). With several answers each line is `answer N: ...`.\n"
+    "--json prints one object per answer: answer, status (verified|refuted|unproven), verified,\n"
+    "message, cells.\n"
+    "Exit codes: 0 every answer verified, 1 some answer not verified, 2 bad input.";
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("cannot read '" + path + "'");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void print(const VerifyReport& rep, const DeconstructionClaim& claim, std::size_t index,
+           std::size_t count, bool as_json) {
+  if (as_json) {
+    JsonWriter json;
+    json.begin_object();
+    json.key("answer").string(to_string(claim.answer));
+    json.key("status").string(to_string(rep.status));
+    json.key("verified").boolean(rep.status == VerifyStatus::kVerified);
+    json.key("message").string(rep.message);
+    json.key("cells").integer(static_cast<std::int64_t>(rep.cells));
+    json.end_object();
+    std::puts(json.str().c_str());
+    return;
+  }
+  std::string line = count > 1 ? "answer " + std::to_string(index + 1) + ": " : std::string();
+  if (rep.status == VerifyStatus::kVerified) {
+    line += rep.message;
+  } else {
+    line += std::string(to_string(claim.answer)) + " " + to_string(rep.status) + ": " + rep.message;
+  }
+  std::puts(line.c_str());
+}
+
+} // namespace
+
+int run_verify(std::span<const std::string_view> args) {
+  const ParsedArgs parsed(args, {.flags = {"--json", "--help"}, .options = {}});
+  if (parsed.flag("--help")) {
+    std::puts(kHelp);
+    return kExitOk;
+  }
+  if (parsed.positionals().size() != 2) throw UsageError("expected FILE and ANSWER.json");
+  const std::string& path = parsed.positionals()[0];
+  const std::string& answer_path = parsed.positionals()[1];
+  std::vector<DeconstructionClaim> claims;
+  PolygonSet q;
+  try {
+    q = read_polygon_file(path);
+    if (q.empty()) throw InputError(path + ": no polygon");
+    if (auto problem = region_problem(q)) {
+      throw InputError(path + ": not a valid region: " + *problem);
+    }
+    std::vector<JsonValue> values;
+    try {
+      values = parse_json_values(read_text(answer_path));
+    } catch (const JsonError& e) {
+      throw InputError(answer_path + ": " + e.what());
+    }
+    if (values.empty()) throw InputError(answer_path + ": no answer");
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      try {
+        claims.push_back(claim_from_json(values[i]));
+      } catch (const InputError& e) {
+        throw InputError(answer_path + ": answer " + std::to_string(i + 1) + ": " + e.what());
+      }
+    }
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "penshape verify: %s\n", e.what());
+    return kExitBadInput;
+  }
+  bool all = true;
+  for (std::size_t i = 0; i < claims.size(); ++i) {
+    VerifyReport rep;
+    try {
+      rep = verify_deconstruction(q, claims[i]);
+    } catch (const InvalidInput& e) {
+      std::fprintf(stderr, "penshape verify: %s: answer %zu: %s\n", answer_path.c_str(), i + 1,
+                   e.what());
+      return kExitBadInput;
+    }
+    all = all && rep.status == VerifyStatus::kVerified;
+    print(rep, claims[i], i, claims.size(), parsed.flag("--json"));
+  }
+  return all ? kExitOk : kExitInternal;
+}
+
+} // namespace penshape::cli
