@@ -11,6 +11,8 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libsdl2-dev xvfb python3-grpcio python3-protobuf
   libpolyclipping-dev
+  libpugixml-dev zlib1g-dev libpng-dev
+  inkscape xournalpp python3-lxml poppler-utils
 )
 
 missing=()
