@@ -12,7 +12,7 @@ PACKAGES=(
   libsdl2-dev xvfb python3-grpcio python3-protobuf
   libpolyclipping-dev
   libpugixml-dev zlib1g-dev libpng-dev
-  inkscape xournalpp python3-lxml poppler-utils
+  inkscape xournalpp python3-lxml python3-cssselect python3-numpy poppler-utils
 )
 
 missing=()

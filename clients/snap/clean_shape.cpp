@@ -24,7 +24,9 @@ std::vector<PointD> clean_polyline(const Recognition& r) {
   }
   const double a = p.radius_x, b = r.shape == ShapeClass::kEllipse ? p.radius_y : p.radius_x;
   const double eps = r.certificate.epsilon;
-  const double sag = std::max(std::min(eps - r.certificate.bound, eps / 20), eps * 1e-3);
+  // Also at most a tenth of the pen radius, so the facets do not show in the ink.
+  const double sag = std::max(
+      std::min({eps - r.certificate.bound, eps / 20, r.certificate.pen_radius / 10}), eps * 1e-3);
   const double dt = std::sqrt(8 * sag / std::max(a, b));
   const double t0 = r.shape == ShapeClass::kArc ? p.start_angle : 0.0;
   const double sweep = r.shape == ShapeClass::kArc ? p.sweep_angle : 2 * std::numbers::pi;

@@ -9,8 +9,8 @@ namespace penshape::snap {
 
 // The clean path as points (closed shapes repeat their first point at the end). Circles,
 // ellipses and arcs are sampled so finely that the chords stay within
-// min(epsilon - bound, epsilon / 20) of the true curve: the polyline's ink is then within the
-// tolerance of the stroke's ink, as the certificate says of the curve.
+// min(epsilon - bound, epsilon / 20, pen radius / 10) of the true curve: the polyline's ink is then
+// within the tolerance of the stroke's ink, as the certificate says of the curve.
 std::vector<PointD> clean_polyline(const Recognition& r);
 
 // Whether the recognizer's answer is a snap (a certified, non-freeform shape).
