@@ -2,8 +2,14 @@
 // are shapes are replaced by native elements close to the ink, everything else is unchanged, and
 // bad input exits 2 naming the place without writing OUT.
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
 #include <unistd.h>
 #include <zlib.h>
+
+#include <chrono>
+#include <thread>
 
 #include <filesystem>
 #include <fstream>
@@ -208,6 +214,50 @@ TEST_F(SnapCli, NeverOverwritesInWithoutInPlace) {
   std::size_t files = 0;
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir_)) ++files;
   EXPECT_EQ(files, 1u);
+}
+
+// The same drawing through a real penshaped (Geometry.Recognize): the same shapes, and the
+// summary says where they were recognized. A socket where nothing listens falls back.
+TEST_F(SnapCli, ThroughPenshapedWhenItRuns) {
+  const Fixture f = inkscape_fixture();
+  write_bytes(dir_ / "in.svg", f.text);
+  const std::string socket = (dir_ / "p.sock").string();
+  const std::string daemon = PENSHAPED, listen = "unix:" + socket;
+  char* const argv[] = {const_cast<char*>(daemon.c_str()), const_cast<char*>("--config"),
+                        const_cast<char*>("/dev/null"),    const_cast<char*>("--listen"),
+                        const_cast<char*>(listen.c_str()), nullptr};
+  pid_t pid = 0;
+  ASSERT_EQ(::posix_spawn(&pid, daemon.c_str(), nullptr, nullptr, argv, environ), 0);
+  for (int i = 0; i < 100 && !fs::exists(socket); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  const auto remote =
+      run_command(kCli + " snap --socket " + socket + " " + (dir_ / "in.svg").string() + " " +
+                  (dir_ / "remote.svg").string() + " 2>&1");
+  ::kill(pid, SIGTERM);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_EQ(remote.exit_code, 0) << remote.out;
+  EXPECT_NE(remote.out.find("4 of 5 strokes snapped (penshaped at unix:" + socket + ")"),
+            std::string::npos)
+      << remote.out;
+  const auto local = snap((dir_ / "in.svg").string() + " " + (dir_ / "local.svg").string());
+  ASSERT_EQ(local.exit_code, 0) << local.out;
+  pugi::xml_document a, b;
+  ASSERT_TRUE(a.load_file((dir_ / "remote.svg").c_str()));
+  ASSERT_TRUE(b.load_file((dir_ / "local.svg").c_str()));
+  for (const auto& s : f.strokes) {
+    EXPECT_STREQ(by_id(a, s.id).attribute("data-penshape-class").value(),
+                 by_id(b, s.id).attribute("data-penshape-class").value())
+        << s.id;
+  }
+  // Nothing listens there any more: in-process, with a note.
+  const auto fallback =
+      run_command(kCli + " snap --socket " + socket + " " + (dir_ / "in.svg").string() + " " +
+                  (dir_ / "fallback.svg").string() + " 2>&1");
+  EXPECT_EQ(fallback.exit_code, 0) << fallback.out;
+  EXPECT_NE(fallback.out.find("recognizing in-process"), std::string::npos) << fallback.out;
+  EXPECT_NE(fallback.out.find("4 of 5 strokes snapped (in-process)"), std::string::npos);
 }
 
 struct BadCase {
