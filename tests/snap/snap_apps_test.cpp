@@ -142,6 +142,46 @@ TEST(InkscapeExtension, SaysSoWhenNoPenshapeIsFound) {
   EXPECT_NE(r.out.find("penshaped is not running either"), std::string::npos) << r.out;
 }
 
+// The real Inkscape runs the installed extension by its id (the menu entry's action), on a
+// selection and on the current layer, and saves the result.
+TEST(InkscapeApp, RunsTheExtensionFromItsMenuAction) {
+  if (!have("inkscape")) GTEST_SKIP() << "inkscape is not installed (scripts/setup.sh installs it)";
+  if (!have("xvfb-run") && std::getenv("DISPLAY") == nullptr)
+    GTEST_SKIP() << "no display and no xvfb-run";
+  const fs::path dir = out_dir();
+  const fs::path home = dir / "home", ext = home / ".config/inkscape/extensions";
+  fs::create_directories(ext);
+  for (const char* f : {"penshape_snap.inx", "penshape_snap.py"}) {
+    fs::copy_file(kExtension + "/" + f, ext / f, fs::copy_options::overwrite_existing);
+  }
+  write_bytes(dir / "app.svg", inkscape_fixture().text);
+  const auto run = [&](const std::string& select, const std::string& out) {
+    return run_command(
+        "HOME=" + home.string() + " PENSHAPE_CLI=" + kCli + " " +
+        with_display("inkscape --with-gui --batch-process --actions=\"" + select +
+                     "org.penshape.snap.noprefs;export-filename:" + (dir / out).string() +
+                     ";export-do\" " + (dir / "app.svg").string()) +
+        " 2>&1");
+  };
+  const auto listed = run_command("HOME=" + home.string() + " " +
+                                  with_display("inkscape --action-list") + " 2>/dev/null");
+  ASSERT_NE(listed.out.find("org.penshape.snap"), std::string::npos) << "extension not loaded";
+  const auto sel = run("select-by-id:pencil-circle;", "app-selection.svg");
+  ASSERT_EQ(sel.exit_code, 0) << sel.out;
+  pugi::xml_document a;
+  ASSERT_TRUE(a.load_file((dir / "app-selection.svg").c_str())) << sel.out;
+  EXPECT_STREQ(by_id(a, "pencil-circle").name(), "circle");
+  EXPECT_STREQ(by_id(a, "pencil-circle").attribute("data-penshape-class").value(), "circle");
+  EXPECT_STREQ(by_id(a, "pencil-rect").name(), "path");
+  const auto layer = run("", "app-layer.svg");
+  ASSERT_EQ(layer.exit_code, 0) << layer.out;
+  pugi::xml_document b;
+  ASSERT_TRUE(b.load_file((dir / "app-layer.svg").c_str())) << layer.out;
+  EXPECT_STREQ(by_id(b, "pencil-circle").name(), "circle");
+  EXPECT_STREQ(by_id(b, "pencil-rect").attribute("data-penshape-class").value(), "rectangle");
+  EXPECT_STREQ(by_id(b, "notes-circle").name(), "path") << "another layer";
+}
+
 TEST(InkscapeExport, ShowsTheCleanShapeAndNotTheRawStroke) {
   if (!have("inkscape")) GTEST_SKIP() << "inkscape is not installed (scripts/setup.sh installs it)";
   const fs::path dir = out_dir();
