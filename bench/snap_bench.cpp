@@ -1,8 +1,9 @@
 // `penshape snap` on a page of 50 real strokes (the five bundled $1 gestures, ten times each, on
 // a grid): the whole snap in this process (read, recognize with the ink certificate, write), and
 // the `penshape snap --local` process as a user runs it, for an Inkscape SVG and a Xournal++
-// .xopp. Baseline beside it: the core recognizer alone on the same strokes' points (no file, no
-// ink polygon). Target: the page in <= 1 s with --local.
+// .xopp (and the SVG page drawn as Calligraphy outlines). Baseline beside it: the core recognizer
+// alone on the same strokes' points (no file, no ink polygon). Target: the page in <= 1 s with
+// --local.
 //   build/release/bench/snap_bench [--runs N] [--cli PATH]
 #include <chrono>
 #include <cmath>
@@ -71,6 +72,29 @@ std::string svg_page(const std::vector<std::vector<penshape::PointD>>& strokes) 
       << coords(strokes[i], ",") << "\"/>\n";
   }
   s << "</g>\n</svg>\n";
+  return s.str();
+}
+
+// The same strokes as Calligraphy outlines (half-width 3.5): one edge forward, the other back.
+std::string calligraphy_page(const std::vector<std::vector<penshape::PointD>>& strokes) {
+  std::ostringstream s;
+  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"1240\" height=\"640\">\n";
+  for (std::size_t k = 0; k < strokes.size(); ++k) {
+    const auto& p = strokes[k];
+    std::vector<penshape::PointD> left, right;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const auto a = p[i == 0 ? 0 : i - 1], b = p[std::min(i + 1, p.size() - 1)];
+      const double len = std::max(1e-9, std::hypot(b.x - a.x, b.y - a.y));
+      const double nx = -(b.y - a.y) / len * 3.5, ny = (b.x - a.x) / len * 3.5;
+      left.push_back({p[i].x + nx, p[i].y + ny});
+      right.push_back({p[i].x - nx, p[i].y - ny});
+    }
+    std::vector<penshape::PointD> ring(left);
+    ring.insert(ring.end(), right.rbegin(), right.rend());
+    s << "<path id=\"c" << k << "\" style=\"fill:#000;stroke:none\" d=\"M " << coords(ring, ",")
+      << " Z\"/>\n";
+  }
+  s << "</svg>\n";
   return s.str();
 }
 
@@ -172,6 +196,8 @@ int main(int argc, char** argv) {
   std::vector<Row> rows{
       library_row("SVG page, snap in this process (--local)", svg, runs),
       process_row("SVG page, `penshape snap --local` process", cli, dir / "page.svg", runs),
+      library_row("SVG page as Calligraphy outlines, this process", calligraphy_page(strokes),
+                  runs),
       library_row(".xopp page, snap in this process (--local)", xopp, runs),
       process_row(".xopp page, `penshape snap --local` process", cli, dir / "page.xopp", runs),
       baseline_row(strokes, runs),

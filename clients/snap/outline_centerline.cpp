@@ -1,6 +1,7 @@
 // Calligraphy outlines to pen paths (the rule in outline_centerline.hpp).
 #include "outline_centerline.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -28,13 +29,67 @@ std::vector<PointD> resample(const std::vector<PointD>& chain, std::size_t m) {
   return out;
 }
 
-// The two chains from vertex 0 to vertex k (forward, and backward round the ring).
+// The two chains from vertex a to vertex k: forward round the ring, and backward.
 std::pair<std::vector<PointD>, std::vector<PointD>> chains(const std::vector<PointD>& ring,
-                                                           std::size_t k) {
-  std::vector<PointD> a(ring.begin(), ring.begin() + static_cast<std::ptrdiff_t>(k) + 1);
-  std::vector<PointD> b{ring[0]};
-  for (std::size_t i = ring.size() - 1; i >= k; --i) b.push_back(ring[i]);
-  return {a, b};
+                                                           std::size_t a, std::size_t k) {
+  const std::size_t n = ring.size();
+  std::vector<PointD> fwd, back;
+  for (std::size_t i = a;; i = (i + 1) % n) {
+    fwd.push_back(ring[i]);
+    if (i == k) break;
+  }
+  for (std::size_t i = a;; i = (i + n - 1) % n) {
+    back.push_back(ring[i]);
+    if (i == k) break;
+  }
+  return {fwd, back};
+}
+
+constexpr std::size_t kPairs = 32;
+
+// Least-squares misfit of the pairs' distances to the pen's width 2r (the inner pairs only: the
+// ends meet at the cut points).
+double cut_cost(const std::vector<PointD>& ring, std::size_t a, std::size_t k, double r) {
+  const auto [fwd, back] = chains(ring, a, k);
+  if (fwd.size() < 3 || back.size() < 3) return std::numeric_limits<double>::infinity();
+  const auto pa = resample(fwd, kPairs), pb = resample(back, kPairs);
+  double cost = 0;
+  for (std::size_t j = 2; j + 2 < kPairs; ++j) {
+    const double w = std::hypot(pa[j].x - pb[j].x, pa[j].y - pb[j].y) - 2 * r;
+    cost += w * w;
+  }
+  return cost;
+}
+
+// The best second cut for a fixed first one.
+std::size_t best_cut(const std::vector<PointD>& ring, std::size_t fixed, double r) {
+  double best = std::numeric_limits<double>::infinity();
+  std::size_t at = (fixed + ring.size() / 2) % ring.size();
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    if (i == fixed) continue;
+    const double c = cut_cost(ring, fixed, i, r);
+    if (c < best) best = c, at = i;
+  }
+  return at;
+}
+
+// The path without its first and last `len` of arc length (the caps' share: a cut sits on a
+// cap's rim, r beyond the stroke's end).
+std::vector<PointD> trimmed(const std::vector<PointD>& path, double len) {
+  double total = 0;
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    total += std::hypot(path[i].x - path[i - 1].x, path[i].y - path[i - 1].y);
+  }
+  if (total <= 4 * len) return path;
+  const std::size_t m = path.size();
+  std::vector<PointD> out;
+  const auto all = resample(path, 4 * m);
+  double s = 0;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    if (i > 0) s += std::hypot(all[i].x - all[i - 1].x, all[i].y - all[i - 1].y);
+    if (s >= len && s <= total - len) out.push_back(all[i]);
+  }
+  return out.size() >= 2 ? out : path;
 }
 
 } // namespace
@@ -55,28 +110,20 @@ std::optional<Centerline> outline_centerline(const std::vector<PointD>& ring) {
   const double r = (perimeter - std::sqrt(disc)) / (2 * std::numbers::pi);
   if (!(r > 0)) return std::nullopt;
 
-  constexpr std::size_t kPairs = 32;
-  double best = std::numeric_limits<double>::infinity();
-  std::size_t best_k = n / 2;
-  for (std::size_t k = 2; k + 2 < n; ++k) {
-    const auto [a, b] = chains(ring, k);
-    const auto pa = resample(a, kPairs), pb = resample(b, kPairs);
-    double cost = 0;
-    // The ends meet at the cut points: only the inner pairs measure the width.
-    for (std::size_t j = 2; j + 2 < kPairs; ++j) {
-      const double w = std::hypot(pa[j].x - pb[j].x, pa[j].y - pb[j].y) - 2 * r;
-      cost += w * w;
-    }
-    if (cost < best) best = cost, best_k = k;
-  }
-  const auto [a, b] = chains(ring, best_k);
+  // The outline starts near the stroke's start (Inkscape's does): cut there, find the far cut,
+  // then move the first cut to where it fits best against the far one.
+  const std::size_t k = best_cut(ring, 0, r);
+  const std::size_t a = best_cut(ring, k, r);
+  const auto [fwd, back] = chains(ring, a, k);
   const std::size_t m = std::max<std::size_t>(kPairs, n / 2);
-  const auto pa = resample(a, m), pb = resample(b, m);
+  const auto pa = resample(fwd, m), pb = resample(back, m);
+  std::vector<PointD> mid;
+  for (std::size_t j = 0; j < m; ++j) {
+    mid.push_back({(pa[j].x + pb[j].x) / 2, (pa[j].y + pb[j].y) / 2});
+  }
   Centerline out;
   out.radius = r;
-  for (std::size_t j = 0; j < m; ++j) {
-    out.points.push_back({(pa[j].x + pb[j].x) / 2, (pa[j].y + pb[j].y) / 2});
-  }
+  out.points = trimmed(mid, r);
   return out;
 }
 

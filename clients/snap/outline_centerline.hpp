@@ -5,9 +5,10 @@
 //
 // Radius: a stroke of centre-line length L drawn with a disk of radius r has area
 // A = 2 r L + pi r^2 and perimeter P = 2 L + 2 pi r; eliminating L gives pi r^2 - P r + A = 0,
-// whose smaller root is r. Centre line: the outline is cut at its start and at a second vertex k
-// into two chains from the start to vertex k; both are resampled by arc length and paired; the
-// cut whose pairs are closest to 2r apart (least squares) wins, and the midpoints of its pairs are
+// whose smaller root is r. Centre line: the outline is cut at two vertices a and k into two
+// chains from a to k; both are resampled by arc length and paired; the cut whose pairs are
+// closest to 2r apart (least squares) wins (k searched with a at the outline's start, then a
+// with that k), and the midpoints of its pairs, less r of arc length at each end (the caps), are
 // the pen path.
 #include <optional>
 #include <vector>

@@ -260,6 +260,25 @@ TEST_F(SnapCli, ThroughPenshapedWhenItRuns) {
   EXPECT_NE(fallback.out.find("4 of 5 strokes snapped (in-process)"), std::string::npos);
 }
 
+// Pressure widths one per segment (older files) are read too; the stroke snaps.
+TEST_F(SnapCli, PressureWidthsPerSegment) {
+  const Fixture f = xopp_fixture();
+  std::string widths = "5.67";
+  for (std::size_t i = 0; i + 1 < f.strokes[0].points.size(); ++i) widths += " 5";
+  std::string pts;
+  for (const PointD& p : f.strokes[0].points) {
+    pts.append(std::to_string(p.x)).append(" ").append(std::to_string(p.y)).append(" ");
+  }
+  const std::string doc =
+      "<xournal><page width=\"800\" height=\"600\"><layer><stroke tool=\"pen\" "
+      "color=\"#000000ff\" width=\"" +
+      widths + "\">" + pts + "</stroke></layer></page></xournal>";
+  write_bytes(dir_ / "seg.xopp", gzip_bytes(doc));
+  const auto r = snap((dir_ / "seg.xopp").string() + " " + (dir_ / "out.xopp").string());
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("page 1 layer 1 stroke 1 (line 1): circle"), std::string::npos) << r.out;
+}
+
 struct BadCase {
   const char* name;
   std::string bytes;
