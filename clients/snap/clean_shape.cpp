@@ -9,7 +9,22 @@
 namespace penshape::snap {
 
 bool is_snap(const Recognition& r) {
-  return r.shape != ShapeClass::kFreeform && r.certificate.certified;
+  if (r.shape == ShapeClass::kFreeform || !r.certificate.certified) return false;
+  // Only an answer with the geometry of its class is written (a daemon could send less).
+  const std::size_t n = r.params.vertices.size();
+  switch (r.shape) {
+    case ShapeClass::kSegment:
+      return n == 2;
+    case ShapeClass::kPolyline:
+      return n >= 2;
+    case ShapeClass::kCircle:
+    case ShapeClass::kArc:
+      return r.params.radius_x > 0;
+    case ShapeClass::kEllipse:
+      return r.params.radius_x > 0 && r.params.radius_y > 0;
+    default:
+      return n >= 3;
+  }
 }
 
 std::vector<PointD> clean_polyline(const Recognition& r) {

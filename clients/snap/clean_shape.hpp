@@ -13,7 +13,8 @@ namespace penshape::snap {
 // within the tolerance of the stroke's ink, as the certificate says of the curve.
 std::vector<PointD> clean_polyline(const Recognition& r);
 
-// Whether the recognizer's answer is a snap (a certified, non-freeform shape).
+// Whether the recognizer's answer is a snap: a certified, non-freeform shape with the geometry of
+// its class (two segment ends, three or more polygon corners, positive radii).
 bool is_snap(const Recognition& r);
 
 } // namespace penshape::snap

@@ -133,7 +133,7 @@ TEST(InkscapeExtension, SaysSoWhenNoPenshapeIsFound) {
   write_bytes(dir / "drawing.svg", inkscape_fixture().text);
   const auto r = run_command("cd " + kExtension +
                              " && HOME=/nonexistent XDG_RUNTIME_DIR=/nonexistent "
-                             "PATH=/usr/bin:/bin PENSHAPE_CLI=/nonexistent PYTHONPATH=" +
+                             "PATH=/nonexistent PENSHAPE_CLI=/nonexistent PYTHONPATH=" +
                              kInkex + " /usr/bin/python3 penshape_snap.py --output=/dev/null " +
                              (dir / "drawing.svg").string() + " 2>&1");
   EXPECT_NE(r.exit_code, 0);
