@@ -279,6 +279,27 @@ TEST_F(SnapCli, PressureWidthsPerSegment) {
   EXPECT_NE(r.out.find("page 1 layer 1 stroke 1 (line 1): circle"), std::string::npos) << r.out;
 }
 
+TEST_F(SnapCli, HelpStandardOutputAndNoGroup) {
+  const auto help = run_command(kCli + " snap --help 2>&1");
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.out.find("--no-group"), std::string::npos);
+  EXPECT_NE(help.out.find("Today this changes nothing"), std::string::npos) << help.out;
+  EXPECT_NE(run_command(kCli + " --help").out.find("snap "), std::string::npos);
+  // OUT "-": the document on standard output, the summary on stderr.
+  const Fixture f = inkscape_fixture();
+  write_bytes(dir_ / "in.svg", f.text);
+  // (A subshell: run_command sends stderr to the captured output.)
+  const auto out = run_command("(" + kCli + " snap --local --no-group " +
+                               (dir_ / "in.svg").string() + " - 2>/dev/null)");
+  ASSERT_EQ(out.exit_code, 0);
+  pugi::xml_document doc;
+  ASSERT_TRUE(doc.load_string(out.out.c_str(), kParse)) << out.out.substr(0, 200);
+  EXPECT_STREQ(by_id(doc, "pencil-circle").name(), "circle");
+  EXPECT_EQ(snap("--json " + (dir_ / "in.svg").string() + " -").exit_code, 2);
+  EXPECT_EQ(snap((dir_ / "in.svg").string()).exit_code, 2) << "OUT missing";
+  EXPECT_EQ(snap("--pen-radius -1 " + (dir_ / "in.svg").string() + " o.svg").exit_code, 2);
+}
+
 struct BadCase {
   const char* name;
   std::string bytes;
