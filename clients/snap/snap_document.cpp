@@ -78,6 +78,9 @@ void snap_svg(pugi::xml_document& doc, const std::string& text, const SnapOption
 void snap_xopp(pugi::xml_document& doc, const std::string& text, const SnapOptions& options,
                const StrokeRecognizer& recognize_one, SnapResult& result) {
   result.format = Format::kXopp;
+  if (!options.scope.ids.empty() || !options.scope.layer.empty()) {
+    throw SnapInputError("--ids and --layer choose SVG elements; this is a Xournal++ document");
+  }
   for (const XoppLayer& layer : read_xopp_strokes(doc, text)) {
     result.strokes += layer.strokes.size();
     snap_page(layer.strokes, options, recognize_one,

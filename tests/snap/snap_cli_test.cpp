@@ -157,6 +157,9 @@ TEST_F(SnapCli, OneLayerLeavesTheOtherAsItWas) {
 TEST_F(SnapCli, XournalDocument) {
   const Fixture f = xopp_fixture();
   write_bytes(dir_ / "in.xopp", gzip_bytes(f.text));
+  EXPECT_EQ(
+      snap("--layer x " + (dir_ / "in.xopp").string() + " " + (dir_ / "o.xopp").string()).exit_code,
+      2);
   const auto r = snap("--json " + (dir_ / "in.xopp").string() + " " + (dir_ / "out.xopp").string());
   ASSERT_EQ(r.exit_code, 0) << r.out;
   const std::string text = gunzip_file(dir_ / "out.xopp");
