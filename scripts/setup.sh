@@ -12,6 +12,8 @@ PACKAGES=(
   libsdl2-dev xvfb python3-grpcio python3-protobuf
   libpolyclipping-dev
   dpkg-dev file
+  libpugixml-dev zlib1g-dev libpng-dev
+  inkscape xournalpp python3-lxml python3-cssselect python3-numpy poppler-utils
 )
 
 missing=()

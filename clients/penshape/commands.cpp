@@ -9,6 +9,7 @@
 #include "recognize_command.hpp"
 #include "replay_command.hpp"
 #include "search_commands.hpp"
+#include "snap_command.hpp"
 #include "synthesize_recording_command.hpp"
 #include "verify_command.hpp"
 #include "version_command.hpp"
@@ -38,6 +39,8 @@ std::span<const Subcommand> subcommands() {
                  &run_suggest_radius},
       Subcommand{"recognize", "name the shape of pen strokes, snapping only with a certificate",
                  &run_recognize},
+      Subcommand{"snap", "snap the strokes of an SVG or Xournal++ drawing to clean shapes",
+                 &run_snap},
       Subcommand{"synthesize-recording",
                  "write real strokes as a tablet's reports (a hid-recorder file)",
                  &run_synthesize_recording},

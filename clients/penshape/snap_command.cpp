@@ -1,0 +1,251 @@
+// `penshape snap IN OUT`: the snap library (clients/snap) on files, through penshaped when it
+// answers, else in-process.
+#include "snap_command.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "args.hpp"
+#include "command.hpp"
+#include "daemon_channel.hpp"
+#include "json_writer.hpp"
+#include "snap/atomic_file.hpp"
+#include "snap/daemon_recognizer.hpp"
+#include "snap/snap_document.hpp"
+#include "snap/snap_error.hpp"
+
+namespace penshape::cli {
+namespace {
+
+constexpr const char* kHelp =
+    "usage: penshape snap [--json] [--pen-radius R] [--tolerance E] [--no-group]\n"
+    "                     [--ids ID,...] [--layer ID] [--local | --socket S | --address A]\n"
+    "                     IN OUT | --in-place IN\n"
+    "\n"
+    "Replaces each pen stroke of a drawing that the recognizer certifies by its clean shape, as a\n"
+    "native element of the drawing's format, at the same place (layer and z-order). Everything\n"
+    "else (text, images, other layers, pages, backgrounds, metadata, unrecognized strokes) stays.\n"
+    "\n"
+    "Input, by content (not extension):\n"
+    "  SVG (Inkscape or plain): stroked, unfilled path/polyline/line elements (pen radius: half\n"
+    "    the stroke width) and filled, unstroked one-piece paths (Calligraphy outlines: pen path\n"
+    "    and radius estimated from the outline). Each layer is one page.\n"
+    "  Xournal++ .xopp (gzip XML): pen and highlighter strokes, with per-point pressure widths.\n"
+    "    Each layer of each page is one page.\n"
+    "Output: SVG rect, circle, ellipse, line, polyline, polygon or path with true arcs, keeping\n"
+    "  id, style, transform, with data-penshape-class and data-penshape-certificate; .xopp\n"
+    "  strokes with the original's tool and colour, of the clean pen's width (curves as\n"
+    "  polylines within the certificate's tolerance).\n"
+    "\n"
+    "  --pen-radius R  pen radius in document units (default: each stroke's: half its width,\n"
+    "                  the median for pressure strokes)\n"
+    "  --tolerance E   Hausdorff tolerance in document units (default: the recognizer's rule,\n"
+    "                  min(5 R, 12.5% of the stroke's size)); runs in-process\n"
+    "  --no-group      recognize every stroke on its own. Today this changes nothing: strokes are\n"
+    "                  always recognized one by one until the core groups recent strokes\n"
+    "  --ids ID,...    only these elements (a group or layer: what it holds); SVG only\n"
+    "  --layer ID      only this layer; SVG only\n"
+    "  --in-place      write the result over IN (IN is never overwritten otherwise)\n"
+    "  --local         recognize in this process even when penshaped is running\n"
+    "  --json          one object per replacement: elements (SVG ids or \"page P layer L stroke\n"
+    "                  S\"), where, class, params, pen_radius, certificate\n"
+    "  --socket PATH   penshaped's unix socket (default: $XDG_RUNTIME_DIR/penshape.sock)\n"
+    "  --address ADDR  a gRPC address instead (unix:PATH, unix-abstract:NAME, HOST:PORT)\n"
+    "Without --local, penshaped's Geometry.Recognize is used when it answers, else the core\n"
+    "in-process (a note on stderr says which). OUT is written to a temporary file and renamed,\n"
+    "so no partial file is left; OUT \"-\" is standard output.\n"
+    "\n"
+    "Exit codes: 0 ok, 2 bad input (message names the line, element id or stroke; OUT is not\n"
+    "written), 1 internal failure.";
+
+std::vector<std::string> split_ids(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string id; std::getline(in, id, ',');) {
+    if (!id.empty()) out.push_back(id);
+  }
+  return out;
+}
+
+std::string read_input(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw snap::SnapInputError("cannot read " + path);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
+
+void write_point(JsonWriter& json, PointD p) {
+  json.begin_array().number(p.x).number(p.y).end_array();
+}
+
+std::string json_line(const snap::Replacement& rep) {
+  const Recognition& r = rep.recognition;
+  JsonWriter json;
+  json.begin_object();
+  json.key("elements").begin_array();
+  for (const auto& e : rep.elements) json.string(e);
+  json.end_array().key("where").begin_array();
+  for (const auto& w : rep.where) json.string(w);
+  json.end_array();
+  json.key("class").string(to_string(r.shape));
+  json.key("params").begin_object();
+  if (!r.params.vertices.empty()) {
+    json.key("vertices").begin_array();
+    for (const PointD& v : r.params.vertices) write_point(json, v);
+    json.end_array();
+  }
+  json.key("center");
+  write_point(json, r.params.center);
+  if (r.params.radius_x > 0) json.key("radius_x").number(r.params.radius_x);
+  if (r.params.radius_y > 0) json.key("radius_y").number(r.params.radius_y);
+  json.key("rotation").number(r.params.rotation);
+  if (r.shape == ShapeClass::kArc) {
+    json.key("start_angle").number(r.params.start_angle);
+    json.key("sweep_angle").number(r.params.sweep_angle);
+  }
+  json.end_object();
+  json.key("pen_radius").number(rep.pen_radius);
+  const Certificate& c = r.certificate;
+  json.key("certificate").begin_object();
+  json.key("certified").boolean(c.certified).key("bound").number(c.bound);
+  json.key("epsilon").number(c.epsilon).key("pen_radius").number(c.pen_radius);
+  json.key("method").string(c.method).end_object();
+  json.end_object();
+  return json.str();
+}
+
+// penshaped's recognizer when it answers (and nothing asks for in-process), else the core's.
+// Strokes the daemon fails on are recognized in-process, with one note.
+snap::StrokeRecognizer choose_recognizer(const ParsedArgs& parsed, std::string& engine) {
+  const auto local = [](const snap::InkStroke& s, const snap::SnapSettings& settings) {
+    try {
+      return snap::recognize_in_process(s, settings);
+    } catch (const InvalidInput& e) {
+      throw snap::SnapInputError(s.where + ": " + e.what());
+    }
+  };
+  engine = "in-process";
+  if (parsed.flag("--local")) return local;
+  const std::string address = daemon_address(parsed);
+  if (parsed.number("--tolerance")) {
+    std::fprintf(stderr,
+                 "penshape snap: --tolerance: recognizing in-process (penshaped's "
+                 "Recognize takes no tolerance)\n");
+    return local;
+  }
+  std::shared_ptr<grpc::Channel> channel;
+  try {
+    channel = connect_to_daemon(address, std::chrono::milliseconds(1500));
+  } catch (const DaemonUnavailable& e) {
+    std::fprintf(stderr, "penshape snap: %s; recognizing in-process\n", e.what());
+    return local;
+  }
+  engine = "penshaped at " + address;
+  auto remote = snap::daemon_recognizer(channel);
+  auto failed = std::make_shared<bool>(false);
+  return [remote, local, failed](const snap::InkStroke& s, const snap::SnapSettings& settings) {
+    if (!*failed) {
+      try {
+        return remote(s, settings);
+      } catch (const snap::DaemonCallFailed& e) {
+        std::fprintf(stderr, "penshape snap: %s: %s; recognizing in-process\n", s.where.c_str(),
+                     e.what());
+        if (e.unavailable) *failed = true;
+      }
+    }
+    return local(s, settings);
+  };
+}
+
+struct Paths {
+  std::string in, out;
+};
+
+Paths in_and_out(const ParsedArgs& parsed) {
+  const auto& pos = parsed.positionals();
+  if (parsed.flag("--in-place")) {
+    if (pos.size() != 1) throw UsageError("--in-place takes exactly one file, IN");
+    return {pos[0], pos[0]};
+  }
+  if (pos.size() != 2) throw UsageError("give IN and OUT (or --in-place IN)");
+  std::error_code ec;
+  if (pos[1] != "-" && std::filesystem::equivalent(pos[0], pos[1], ec)) {
+    throw UsageError("OUT is IN: give --in-place to overwrite IN");
+  }
+  return {pos[0], pos[1]};
+}
+
+snap::SnapOptions options_from(const ParsedArgs& parsed) {
+  snap::SnapOptions options;
+  if (const auto r = parsed.number("--pen-radius")) {
+    if (!(*r > 0) || *r > snap::kMaxStrokeWidth / 2) {
+      throw UsageError("--pen-radius must be positive and at most 500");
+    }
+    options.settings.pen_radius = *r;
+  }
+  if (const auto e = parsed.number("--tolerance")) {
+    if (!(*e > 0)) throw UsageError("--tolerance must be positive");
+    options.settings.tolerance = *e;
+  }
+  options.settings.group = !parsed.flag("--no-group");
+  if (const auto ids = parsed.value("--ids")) options.scope.ids = split_ids(*ids);
+  if (const auto layer = parsed.value("--layer")) options.scope.layer = *layer;
+  return options;
+}
+
+} // namespace
+
+int run_snap(std::span<const std::string_view> args) {
+  const ParsedArgs parsed(
+      args, live_arg_spec({.flags = {"--json", "--no-group", "--in-place", "--local"},
+                           .options = {"--pen-radius", "--tolerance", "--ids", "--layer"}}));
+  if (parsed.flag("--help")) {
+    std::puts(kHelp);
+    return kExitOk;
+  }
+  const Paths paths = in_and_out(parsed);
+  const snap::SnapOptions options = options_from(parsed);
+  const bool json = parsed.flag("--json");
+  if (json && paths.out == "-") throw UsageError("--json needs OUT to be a file, not -");
+  std::string engine;
+  snap::SnapResult result;
+  try {
+    const std::string bytes = read_input(paths.in);
+    const snap::StrokeRecognizer recognizer = choose_recognizer(parsed, engine);
+    result = snap::snap_document(bytes, options, recognizer);
+  } catch (const snap::SnapInputError& e) {
+    std::fprintf(stderr, "penshape snap: %s: %s\n", paths.in.c_str(), e.what());
+    return kExitBadInput;
+  }
+  try {
+    if (paths.out == "-") {
+      std::cout.write(result.output.data(), static_cast<std::streamsize>(result.output.size()));
+      std::cout.flush();
+    } else {
+      snap::write_file_atomically(paths.out, result.output);
+    }
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "penshape snap: %s\n", e.what());
+    return kExitBadInput;
+  }
+  for (const snap::Replacement& rep : result.replacements) {
+    if (json) {
+      std::puts(json_line(rep).c_str());
+      continue;
+    }
+    const Certificate& c = rep.recognition.certificate;
+    std::fprintf(paths.out == "-" ? stderr : stdout,
+                 "%s: %s (H <= %.3g <= eps %.3g, pen r %.3g, %s)\n", rep.where.front().c_str(),
+                 to_string(rep.recognition.shape), c.bound, c.epsilon, c.pen_radius,
+                 c.method.c_str());
+  }
+  std::fprintf(stderr, "penshape snap: %zu of %zu strokes snapped (%s) -> %s\n",
+               result.replacements.size(), result.strokes, engine.c_str(), paths.out.c_str());
+  return kExitOk;
+}
+
+} // namespace penshape::cli

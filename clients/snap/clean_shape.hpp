@@ -1,0 +1,20 @@
+#pragma once
+// The clean shape of a recognition in the forms the writers need: a polyline fine enough to stay
+// within the certificate (for formats without curves), and the tag-independent numbers.
+#include <vector>
+
+#include "penshape/core/recognize.hpp"
+
+namespace penshape::snap {
+
+// The clean path as points (closed shapes repeat their first point at the end). Circles,
+// ellipses and arcs are sampled so finely that the chords stay within
+// min(epsilon - bound, epsilon / 20, pen radius / 10) of the true curve: the polyline's ink is then
+// within the tolerance of the stroke's ink, as the certificate says of the curve.
+std::vector<PointD> clean_polyline(const Recognition& r);
+
+// Whether the recognizer's answer is a snap: a certified, non-freeform shape with the geometry of
+// its class (two segment ends, three or more polygon corners, positive radii).
+bool is_snap(const Recognition& r);
+
+} // namespace penshape::snap
