@@ -180,12 +180,9 @@ void DeviceManager::scan_once() {
     if (stopping_) return;
     if (attached.count(c.key) != 0) continue;
     try {
-      const TabletSpec* spec = find_tablet(c.identity.vendor_id, c.identity.product_id);
       VendorStrings strings;
-      if (spec != nullptr) {
-        const auto indexes = vendor_string_indexes(spec->protocol);
-        if (!indexes.empty()) strings = backend_->read_vendor_strings(c, indexes);
-      }
+      const auto indexes = vendor_string_indexes(c.identity.vendor_id, c.identity.product_id);
+      if (!indexes.empty()) strings = backend_->read_vendor_strings(c, indexes);
       const DeviceProfile profile = build_profile(c.identity, c.descriptor, strings);
       if (!profile.has_pen()) continue;
       auto source = backend_->open(c, profile.init);

@@ -242,8 +242,9 @@ std::size_t record_hidraw(const std::string& path, std::ostream& out, const std:
     hid_free_enumeration(info);
   }
   std::vector<InitStep> init;
-  if (const TabletSpec* spec = find_tablet(header.identity.vendor_id, header.identity.product_id)) {
-    const auto indexes = vendor_string_indexes(spec->protocol);
+  if (find_tablet(header.identity.vendor_id, header.identity.product_id) != nullptr) {
+    const auto indexes =
+        vendor_string_indexes(header.identity.vendor_id, header.identity.product_id);
     if (!indexes.empty()) {
       header.vendor_strings =
           detail::read_usb_strings(detail::usb_address_of_hidraw(path), indexes);
