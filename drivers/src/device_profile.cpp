@@ -53,7 +53,8 @@ struct VendorChoice {
 // UC-Logic: the parameters of string descriptor 200 (v2: the family's layouts) or 100 (v1),
 // else the table's maxima.
 VendorChoice uclogic_layouts(const ReportFamily& family, const TabletSpec* row,
-                             const VendorStrings& strings, std::vector<std::string>& notes) {
+                             bool descriptor_has_pen, const VendorStrings& strings,
+                             std::vector<std::string>& notes) {
   for (const std::uint8_t index : {std::uint8_t{200}, std::uint8_t{100}}) {
     const auto it = strings.find(index);
     if (it == strings.end()) continue;
@@ -62,7 +63,9 @@ VendorChoice uclogic_layouts(const ReportFamily& family, const TabletSpec* row,
     if (index == 100) return {{uclogic_pen_layout(p)}, true};
     return {probed_layouts(family, row, p), true};
   }
-  if (row != nullptr && row->pressure_max > 0) {
+  // Not probed: the tablet stays in firmware mode, whose reports its descriptor describes; the
+  // table's maxima only serve a descriptor without a pen.
+  if (row != nullptr && row->pressure_max > 0 && !descriptor_has_pen) {
     notes.push_back("UC-Logic vendor layout with the tablet table's maxima");
     return {family_layouts(family, *row), false};
   }
@@ -93,7 +96,7 @@ VendorChoice vendor_layouts(DeviceProfile& out, const ReportFamily& family, cons
       return {table(), false};
     case Protocol::kUcLogic:
       if (row != nullptr) out.init = row->init;
-      return uclogic_layouts(family, row, strings, out.notes);
+      return uclogic_layouts(family, row, descriptor_has_pen, strings, out.notes);
     case Protocol::kXpPen:
       if (descriptor_has_pen) return {};
       out.init = row->init;
