@@ -164,7 +164,8 @@ int main(int argc, char** argv) {
       }
     }
     auto source = std::make_shared<penshape::daemon::DeviceManagerSource>(
-        recording ? nullptr : penshape::drivers::make_hidraw_backend());
+        recording ? nullptr : penshape::drivers::make_hidraw_backend(),
+        options.config.device_sizes);
     penshape::daemon::ServerParts parts;
     parts.source = source;
     parts.geometry = penshape::daemon::make_geometry_backend();
