@@ -103,11 +103,11 @@ VendorChoice vendor_layouts(DeviceProfile& out, const ReportFamily& family, cons
       out.notes.push_back("XP-Pen vendor mode (output report) at open");
       return {table(), false};
     case Protocol::kVendor: {
+      // A descriptor that describes a pen is the device's own word (its firmware mode, or a
+      // capture's synthetic descriptor); the vendor layouts serve a descriptor without one.
+      if (descriptor_has_pen) return {};
       out.init = row->init;
       auto layouts = table();
-      if (descriptor_has_pen) {
-        std::erase_if(layouts, [](const PenLayout& l) { return l.any_report_id; });
-      }
       if (!layouts.empty()) out.notes.push_back(family.name + " vendor reports");
       return {std::move(layouts), false};
     }

@@ -9,11 +9,13 @@
 #include "penshape/drivers/recording.hpp"
 #include "penshape/drivers/vendor_protocols.hpp"
 #include "shared_data.hpp"
+#include "test_data.hpp"
 
 namespace penshape::drivers {
 namespace {
 
 TEST(TabletTable, BuiltinCoversEveryDeviceWithSharedData) {
+  PENSHAPE_SHARED_OR_SKIP(hid, "hid/wacom-hid-descriptors");
   const auto& rows = builtin_tablets();
   EXPECT_GE(rows.size(), 80U);
   for (const auto& d : testing::all_shared_descriptors()) {

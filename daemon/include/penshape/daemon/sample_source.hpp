@@ -39,8 +39,8 @@ struct DeviceDescriptor {
   // Whether tablet's resolution is a real physical size, and where it came from ("table",
   // "descriptor", "probe", "config"; "unknown" when it is not: coordinates are device units).
   bool physical_size_known = true;
-  std::string size_source; // "" when the source does not say (an app's strokes, fakes)
-  std::string family;      // report family of the tablet table ("" for sources without one)
+  std::string size_source{}; // "" when the source does not say (an app's strokes, fakes)
+  std::string family{};      // report family of the tablet table ("" for sources without one)
 };
 
 class SampleSink {

@@ -23,8 +23,8 @@ enum class Protocol : std::uint8_t {
   kWacomIntuos,   // Wacom Intuos 2-5 / Intuos Pro pen report 2, after the mode switch (02 02)
   kUcLogic,       // Huion/Gaomon: vendor mode via USB string descriptor 200 (or 100)
   kXpPen,         // XP-Pen/Ugee: vendor mode via output report 02 B0 02|04 when needed
-  kVendor,        // other vendor formats: init at open, the family's layouts for the reports the
-                  // descriptor does not describe
+  kVendor,        // other vendor formats: init and the family's layouts when the descriptor
+                  // describes no pen
 };
 
 std::string_view protocol_name(Protocol p);
