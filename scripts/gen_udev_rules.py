@@ -7,12 +7,16 @@ penshaped reads them without root. Run from the repository root:
 import os
 
 root = os.path.join(os.path.dirname(__file__), '..')
-rows = []
+names = {}  # (vid, pid) -> model names, in table order (several rows may share a VID:PID)
 for line in open(os.path.join(root, 'drivers/data/tablets.tsv')):
     if line.startswith('#') or not line.strip():
         continue
     c = line.rstrip('\n').split('\t')
-    rows.append((c[0].lower(), c[1].lower(), c[9]))
+    models = names.setdefault((c[0].lower(), c[1].lower()), [])
+    for name in c[12].split(' / '):
+        if name not in models:
+            models.append(name)
+rows = [(vid, pid, ' / '.join(models)) for (vid, pid), models in names.items()]
 
 print('# penshape: give the active local user (uaccess) the hidraw and USB nodes of the tablets')
 print('# penshape supports. Generated from drivers/data/tablets.tsv by scripts/gen_udev_rules.py.')

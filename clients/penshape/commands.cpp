@@ -26,6 +26,8 @@ std::span<const Subcommand> subcommands() {
                  &run_record},
       Subcommand{"hid describe", "print a HID report descriptor's layouts and pen fields",
                  &run_hid_describe},
+      Subcommand{"hid tablets", "list the tablet table: family, physical size, maxima",
+                 &run_hid_tablets},
       Subcommand{"replay", "decode a recorded tablet stream into strokes (shapes via penshaped)",
                  &run_replay},
       Subcommand{"deconstruct", "is a polygon file an approximate offset? (offset deconstruction)",

@@ -24,12 +24,15 @@ constexpr const char* kHelp =
     "FILE is raw report descriptor bytes (a copy of sysfs report_descriptor), a hid-recorder\n"
     "file (its R: line; its I: line picks the vendor protocol), or a usbhid-dump DESCRIPTOR\n"
     "dump. Prints every input report's fields and, for a pen, the decoded fields, maxima and\n"
-    "resolution (units per millimetre; 0 when the descriptor gives no physical size).\n\n"
+    "resolution (units per millimetre), the report family, and the physical size with where it\n"
+    "came from: the tablet table, the descriptor's units, or a vendor probe; or a warning that\n"
+    "it is unknown (coordinates are then device units, never millimetres).\n\n"
     "--json: {\"reports\": [{\"id\", \"fields\": [{\"usage\", \"bit_offset\", \"size\",\n"
     "\"logical_min\", \"logical_max\"}]}], \"pen\": {\"report_id\", \"x_max\", \"y_max\",\n"
-    "\"pressure_max\", \"resolution\"} or null}. Bit offsets count from the first byte of the\n"
-    "report as hidraw delivers it (the report ID byte included). Exit 2 on a malformed file,\n"
-    "naming the byte offset.";
+    "\"pressure_max\", \"resolution\", \"family\", \"physical_size_known\", \"width_mm\",\n"
+    "\"height_mm\", \"size_source\" (table, descriptor, probe or unknown)} or null}. Bit\n"
+    "offsets count from the first byte of the report as hidraw delivers it (the report ID byte\n"
+    "included). Exit 2 on a malformed file, naming the byte offset.";
 
 void print_pen_field(const char* name, const PenField& f) {
   if (!f.present()) return;
@@ -105,6 +108,11 @@ int run_hid_describe(std::span<const std::string_view> args) {
       json.key("y_max").integer(profile.info.y_max);
       json.key("pressure_max").integer(profile.info.pressure_max);
       json.key("resolution").number(profile.info.x_resolution);
+      json.key("family").string(profile.family);
+      json.key("physical_size_known").boolean(profile.size_source != drivers::SizeSource::kUnknown);
+      json.key("width_mm").number(profile.info.width_mm());
+      json.key("height_mm").number(profile.info.height_mm());
+      json.key("size_source").string(drivers::size_source_name(profile.size_source));
       json.end_object();
     }
     json.end_object();
@@ -134,6 +142,14 @@ int run_hid_describe(std::span<const std::string_view> args) {
       std::string(drivers::protocol_name(profile.protocol)).c_str(), profile.info.x_max,
       profile.info.y_max, profile.info.pressure_max, profile.info.x_resolution,
       profile.info.y_resolution, profile.info.has_tilt ? ", tilt" : "");
+  if (profile.size_source == drivers::SizeSource::kUnknown) {
+    std::printf("family %s; physical size unknown: coordinates are device units, not mm\n",
+                profile.family.c_str());
+  } else {
+    std::printf("family %s; size %.1f x %.1f mm from the %s\n", profile.family.c_str(),
+                profile.info.width_mm(), profile.info.height_mm(),
+                std::string(drivers::size_source_name(profile.size_source)).c_str());
+  }
   for (const PenLayout& l : pens) {
     std::printf("  report %u (%s, at least %u bytes)\n", l.report_id, l.origin.c_str(),
                 l.min_report_bytes);

@@ -5,6 +5,7 @@
 #include "replay_command.hpp"
 
 #include <cstdio>
+#include <string>
 
 #include "args.hpp"
 #include "command.hpp"
@@ -34,8 +35,9 @@ constexpr const char* kHelp =
     "device units), and after each stroke's last sample {\"stroke\", \"t_start\", \"t_end\",\n"
     "\"samples\"}, and through penshaped {\"stroke\", \"shape\": {...}} (keys as in penshape "
     "watch).\n"
-    "Report counts go to stderr. Exit 2 on a malformed file, naming the byte\n"
-    "offset.";
+    "Report counts, the report family and the physical size (and whether it came from the\n"
+    "tablet table, the descriptor or a vendor probe) go to stderr. Exit 2 on a malformed file,\n"
+    "naming the byte offset.";
 
 double seconds(std::int64_t us) { return static_cast<double>(us) / 1e6; }
 
@@ -70,6 +72,18 @@ void print_daemon_shape(ReplayDaemon& daemon, const Stroke& stroke, const Tablet
   } else {
     std::printf("  shape: %s\n", shape_summary(shape).c_str());
   }
+}
+
+// "size 254.0 x 158.8 mm from the table", or a warning that there is none.
+std::string size_text(const drivers::ReplayResult& r) {
+  if (r.size_source == drivers::SizeSource::kUnknown) {
+    return "physical size unknown (coordinates are device units, not millimetres)";
+  }
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "size %.1f x %.1f mm from the %s", r.tablet.width_mm(),
+                r.tablet.height_mm(),
+                std::string(drivers::size_source_name(r.size_source)).c_str());
+  return buf;
 }
 
 } // namespace
@@ -112,12 +126,17 @@ int run_replay(std::span<const std::string_view> args) {
   // Samples and strokes interleaved in time: a stroke follows its last sample.
   std::size_t next_stroke = 0;
   const bool json = parsed.flag("--json");
+  const std::string size = size_text(result);
   if (!json) {
-    std::printf("# %s: x_max %d y_max %d pressure_max %u\n# %10s %7s %7s %6s %5s %5s %3s %3s %4s\n",
-                result.tablet.name.c_str(), result.tablet.x_max, result.tablet.y_max,
-                result.tablet.pressure_max, "t", "x", "y", "press", "tiltx", "tilty", "tip", "rng",
-                "btns");
+    std::printf(
+        "# %s: x_max %d y_max %d pressure_max %u\n# family %s (layout %s), %s\n"
+        "# %10s %7s %7s %6s %5s %5s %3s %3s %4s\n",
+        result.tablet.name.c_str(), result.tablet.x_max, result.tablet.y_max,
+        result.tablet.pressure_max, result.family.c_str(), result.layout.c_str(), size.c_str(), "t",
+        "x", "y", "press", "tiltx", "tilty", "tip", "rng", "btns");
   }
+  std::fprintf(stderr, "penshape replay: family %s (layout %s), %s\n", result.family.c_str(),
+               result.layout.c_str(), size.c_str());
   const auto print_stroke = [&](const Stroke& s) {
     if (json) {
       JsonWriter w;

@@ -131,6 +131,8 @@ DaemonConfig parse_config(std::string_view text, const std::string& origin) {
   std::set<std::string> seen; // "section/key"
   std::size_t line_number = 0;
   std::size_t tcp_line = 0;
+  std::map<std::string, std::pair<double, double>> sizes; // device key -> (width, height) mm
+  std::map<std::string, std::size_t> size_lines;          // where each was last set
   while (!text.empty()) {
     ++line_number;
     const std::size_t newline = text.find('\n');
@@ -149,6 +151,9 @@ DaemonConfig parse_config(std::string_view text, const std::string& origin) {
         at.fail("", "unknown section '[" + std::string(inner) + "]' (expected [device vvvv:pppp])");
       }
       section = std::string(trim(inner.substr(7)));
+      if (section.size() >= 2 && section.front() == '"' && section.back() == '"') {
+        section = section.substr(1, section.size() - 2);
+      }
       if (section.empty() || !is_valid_device_key(section)) {
         at.fail("",
                 "device key '" + section + "' is not vvvv:pppp (four lowercase hex digits each)");
@@ -168,11 +173,25 @@ DaemonConfig parse_config(std::string_view text, const std::string& origin) {
     if (section.empty()) {
       apply_global_key(at, key, value, config, defaults);
       if (key == "tcp") tcp_line = line_number;
+    } else if (key == "width_mm" || key == "height_mm") {
+      const double mm = parse_double(at, key, value);
+      if (!(mm > 0 && mm <= 2000)) at.fail(key, "expected millimetres in (0, 2000]");
+      auto& size = sizes[section];
+      (key == "width_mm" ? size.first : size.second) = mm;
+      size_lines[section] = line_number;
     } else if (!apply_settings_key(at, key, value, config.device_settings[section])) {
       at.fail(key,
               "unknown key in a [device] section (pen_radius_mm, tolerance_fraction, "
-              "precision_fraction)");
+              "precision_fraction, width_mm, height_mm)");
     }
+  }
+  for (const auto& [key, size] : sizes) {
+    if (size.first == 0 || size.second == 0) {
+      LineContext(origin, size_lines[key])
+          .fail(size.first == 0 ? "width_mm" : "height_mm",
+                "[device " + key + "] sets one of width_mm and height_mm: set both");
+    }
+    config.device_sizes[key] = size;
   }
   config.settings = apply(config.settings, defaults);
   if (!config.tcp.empty()) {

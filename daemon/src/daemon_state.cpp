@@ -35,6 +35,9 @@ void to_proto(const DeviceDescriptor& device, v1::DeviceInfo* out) {
   to_proto(device.tablet, out->mutable_tablet());
   out->set_source(device.source);
   out->set_replay(device.replay);
+  out->set_physical_size_known(device.physical_size_known);
+  out->set_size_source(device.size_source);
+  out->set_family(device.family);
   const HidDescription& hid = device.hid;
   if (hid.report_descriptor.empty()) return; // nothing to capture a device by
   v1::HidFacts* facts = out->mutable_hid();

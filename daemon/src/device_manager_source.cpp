@@ -1,9 +1,13 @@
 #include "penshape/daemon/device_manager_source.hpp"
 
+#include "log.hpp"
+#include "penshape/daemon/pen_settings.hpp"
+
 namespace penshape::daemon {
 
-DeviceManagerSource::DeviceManagerSource(std::unique_ptr<drivers::DeviceBackend> backend)
-    : backend_(std::move(backend)) {}
+DeviceManagerSource::DeviceManagerSource(std::unique_ptr<drivers::DeviceBackend> backend,
+                                         DeviceSizes sizes)
+    : backend_(std::move(backend)), sizes_(std::move(sizes)) {}
 
 DeviceManagerSource::~DeviceManagerSource() { stop(); }
 
@@ -16,8 +20,13 @@ void DeviceManagerSource::start(SampleSink& sink) {
   callbacks.on_sample = [this](drivers::DeviceId id, const PenSample& s) { on_sample(id, s); };
   callbacks.on_stroke = [this](drivers::DeviceId id, Stroke&& s) { on_stroke(id, std::move(s)); };
   const bool live = backend_ != nullptr;
+  drivers::DeviceManagerOptions options;
+  options.configured_size = [this](std::uint16_t vid, std::uint16_t pid) {
+    const auto it = sizes_.find(device_key(vid, pid));
+    return it == sizes_.end() ? std::nullopt : std::optional<std::pair<double, double>>(it->second);
+  };
   manager_ = std::make_unique<drivers::DeviceManager>(
-      std::move(backend_), std::move(callbacks), drivers::DeviceManagerOptions{},
+      std::move(backend_), std::move(callbacks), std::move(options),
       [this](drivers::DeviceId id, std::span<const std::uint8_t> bytes, std::int64_t t) {
         on_report(id, bytes, t);
       });
@@ -65,6 +74,16 @@ void DeviceManagerSource::on_attach(const drivers::AttachedDevice& device) {
     d.hid.product_id = h.identity.product_id;
   }
   d.hid.vendor_strings = h.vendor_strings;
+  d.family = device.family;
+  d.size_source = drivers::size_source_name(device.size_source);
+  d.physical_size_known = device.size_source != drivers::SizeSource::kUnknown;
+  if (!d.physical_size_known) {
+    log(LogLevel::kWarning,
+        "tablet " + d.id + " (" + device_key(d.tablet.vendor_id, d.tablet.product_id) + ", " +
+            d.tablet.name + ") gives no physical size: its pen radius and tolerance cannot be " +
+            "millimetres; set width_mm and height_mm in [device \"" +
+            device_key(d.tablet.vendor_id, d.tablet.product_id) + "\"] of the config file");
+  }
   {
     std::lock_guard lock(mutex_);
     tracked_[device.id].descriptor = d;

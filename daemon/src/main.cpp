@@ -217,7 +217,8 @@ int main(int argc, char** argv) {
   const sigset_t signals = block_termination_signals();
   try {
     auto source = std::make_shared<penshape::daemon::DeviceManagerSource>(
-        recordings.empty() ? penshape::drivers::make_hidraw_backend() : nullptr);
+        recordings.empty() ? penshape::drivers::make_hidraw_backend() : nullptr,
+        options.config.device_sizes);
     penshape::daemon::ServerParts parts;
     parts.source = source;
     parts.geometry = penshape::daemon::make_geometry_backend();

@@ -30,6 +30,11 @@ const std::vector<DeviceProfile>& profiles() {
       build_profile({Bus::kUsb, 0x256c, 0x0064, "hs610 firmware"}, kHs610),
       build_profile({Bus::kUsb, 0x256c, 0x006d, "hs610 vendor"}, kHs610, {{200, kS200}}),
       build_profile({Bus::kUsb, 0x056a, 0x0061, "penpartner"}, {}),
+      // Vendor report families with no descriptor: any-ID (Veikk), two match bytes, 24-bit
+      // coordinates (Intuos V2), a shifted copy (Wacom driver's Intuos), three-piece pressure.
+      build_profile({Bus::kUsb, 0x2feb, 0x0006, "veikk a15 pro"}, {}),
+      build_profile({Bus::kUsb, 0x056a, 0x0357, "intuos v2"}, {}),
+      build_profile({Bus::kUsb, 0x056a, 0x0317, "intuos pro"}, {}),
   };
   return p;
 }

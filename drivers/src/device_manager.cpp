@@ -125,14 +125,26 @@ DeviceId DeviceManager::attach_source(const DeviceIdentity& identity,
   return attach_with_header(std::move(header), std::move(source), std::move(key));
 }
 
+DeviceProfile DeviceManager::sized(DeviceProfile profile) const {
+  if (profile.size_source == SizeSource::kUnknown && options_.configured_size) {
+    if (const auto size =
+            options_.configured_size(profile.info.vendor_id, profile.info.product_id)) {
+      apply_configured_size(profile, size->first, size->second);
+    }
+  }
+  return profile;
+}
+
 DeviceId DeviceManager::attach_with_header(Recording header, std::unique_ptr<ReportSource> source,
                                            std::string key) {
   const DeviceProfile profile =
-      build_profile(header.identity, header.descriptor, header.vendor_strings);
+      sized(build_profile(header.identity, header.descriptor, header.vendor_strings));
   AttachedDevice info;
   info.key = key.empty() ? "source:" + std::to_string(next_id_.load()) : std::move(key);
   info.tablet = profile.info;
   info.protocol = profile.protocol;
+  info.family = profile.family;
+  info.size_source = profile.size_source;
   info.header = std::move(header);
   return start_reader(std::move(info), profile, std::move(source));
 }
@@ -190,19 +202,18 @@ void DeviceManager::scan_once() {
     if (stopping_) return;
     if (attached.count(c.key) != 0) continue;
     try {
-      const TabletSpec* spec = find_tablet(c.identity.vendor_id, c.identity.product_id);
       VendorStrings strings;
-      if (spec != nullptr) {
-        const auto indexes = vendor_string_indexes(spec->protocol);
-        if (!indexes.empty()) strings = backend_->read_vendor_strings(c, indexes);
-      }
-      const DeviceProfile profile = build_profile(c.identity, c.descriptor, strings);
+      const auto indexes = vendor_string_indexes(c.identity.vendor_id, c.identity.product_id);
+      if (!indexes.empty()) strings = backend_->read_vendor_strings(c, indexes);
+      const DeviceProfile profile = sized(build_profile(c.identity, c.descriptor, strings));
       if (!profile.has_pen()) continue;
       auto source = backend_->open(c, profile.init);
       AttachedDevice info;
       info.key = c.key;
       info.tablet = profile.info;
       info.protocol = profile.protocol;
+      info.family = profile.family;
+      info.size_source = profile.size_source;
       info.header.identity = c.identity;
       if (!c.hid_name.empty()) info.header.identity.name = c.hid_name;
       info.header.has_identity = true;

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -126,7 +127,15 @@ std::unique_ptr<ReportSource> open_hidraw(const std::string& path,
     } else if (step.kind == InitStep::Kind::kOutputReport) {
       rc = hid_write(dev, step.bytes.data(), step.bytes.size());
     }
-    if (rc < 0) throw std::runtime_error("init report to " + path + " failed");
+    if (rc < 0) {
+      // A tablet that refuses its vendor-mode switch still sends its firmware-mode reports,
+      // which the descriptor's pens decode: say so and carry on rather than drop the device.
+      std::fprintf(stderr,
+                   "penshape drivers: %s refused an init report (%zu bytes); staying in firmware "
+                   "mode\n",
+                   path.c_str(), step.bytes.size());
+      break;
+    }
   }
   return source;
 }
@@ -242,8 +251,9 @@ std::size_t record_hidraw(const std::string& path, std::ostream& out, const std:
     hid_free_enumeration(info);
   }
   std::vector<InitStep> init;
-  if (const TabletSpec* spec = find_tablet(header.identity.vendor_id, header.identity.product_id)) {
-    const auto indexes = vendor_string_indexes(spec->protocol);
+  if (find_tablet(header.identity.vendor_id, header.identity.product_id) != nullptr) {
+    const auto indexes =
+        vendor_string_indexes(header.identity.vendor_id, header.identity.product_id);
     if (!indexes.empty()) {
       header.vendor_strings =
           detail::read_usb_strings(detail::usb_address_of_hidraw(path), indexes);

@@ -30,6 +30,14 @@ std::int64_t read_value(std::span<const std::uint8_t> r, const PenField& f) {
   return f.is_signed ? sign_extend(v, bits) : static_cast<std::int64_t>(v);
 }
 
+// The report passes a layout's match condition (mask 0: no condition).
+bool matches(std::span<const std::uint8_t> r, std::uint32_t byte, std::uint8_t mask,
+             std::uint8_t value, bool reject) {
+  if (mask == 0) return true;
+  if (byte >= r.size()) return false;
+  return ((r[byte] & mask) == value) != reject;
+}
+
 bool read_flag(std::span<const std::uint8_t> r, const PenField& f) {
   if (!f.present()) return false;
   const bool set = extract_bits(r, f.bit_offset, f.bit_size) != 0;
@@ -52,8 +60,17 @@ PenDecoder::PenDecoder(std::vector<PenLayout> pens, const ParsedDescriptor* desc
     if (pens_[i].uses_report_id != uses_report_ids_) {
       throw std::invalid_argument("PenDecoder: layouts disagree on report IDs");
     }
+    if (pens_[i].any_report_id) continue;
     auto& slot = pen_index_[pens_[i].report_id];
     if (slot == 0) slot = static_cast<std::uint8_t>(i + 1);
+  }
+  // IDs no layout claims go to the first any-ID layout (the loop in decode skips the others).
+  for (std::size_t i = 0; i < pens_.size(); ++i) {
+    if (!pens_[i].any_report_id) continue;
+    for (auto& slot : pen_index_) {
+      if (slot == 0) slot = static_cast<std::uint8_t>(i + 1);
+    }
+    break;
   }
   // Secondary layouts (e.g. a mouse-mode report beside the digitizer one) are rescaled so
   // every sample is in the primary layout's units, which the TabletInfo describes.
@@ -85,13 +102,12 @@ DecodeStatus PenDecoder::decode(std::span<const std::uint8_t> report, std::int64
   for (std::size_t i = pen_index_[id] == 0 ? pens_.size() : pen_index_[id] - 1U; i < pens_.size();
        ++i) {
     const PenLayout& l = pens_[i];
-    if (l.report_id != id) continue;
+    if (l.report_id != id && !l.any_report_id) continue;
     known = true;
     if (report.size() < l.min_report_bytes) continue;
-    if (l.match_mask != 0) {
-      if (l.match_byte >= report.size()) continue;
-      const bool matched = (report[l.match_byte] & l.match_mask) == l.match_value;
-      if (matched == l.match_reject) continue;
+    if (!matches(report, l.match_byte, l.match_mask, l.match_value, l.match_reject) ||
+        !matches(report, l.match2_byte, l.match2_mask, l.match2_value, l.match2_reject)) {
+      continue;
     }
     out = PenSample{};
     out.time_us = time_us;
@@ -131,7 +147,9 @@ DecodeStatus PenDecoder::decode(std::span<const std::uint8_t> report, std::int64
   // kind sharing the ID (e.g. UC-Logic pad frames); a short report is junk.
   if (known) {
     for (const auto& l : pens_) {
-      if (l.report_id == id && report.size() >= l.min_report_bytes) return DecodeStatus::kOther;
+      if ((l.report_id == id || l.any_report_id) && report.size() >= l.min_report_bytes) {
+        return DecodeStatus::kOther;
+      }
     }
   }
   return DecodeStatus::kJunk;

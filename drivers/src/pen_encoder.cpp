@@ -60,6 +60,10 @@ std::vector<std::uint8_t> encode_pen_report(const PenLayout& layout, const PenSa
     r[layout.match_byte] = static_cast<std::uint8_t>((r[layout.match_byte] & ~layout.match_mask) |
                                                      (layout.match_value & layout.match_mask));
   }
+  if (layout.match2_mask != 0 && !layout.match2_reject && layout.match2_byte < r.size()) {
+    r[layout.match2_byte] = static_cast<std::uint8_t>(
+        (r[layout.match2_byte] & ~layout.match2_mask) | (layout.match2_value & layout.match2_mask));
+  }
   write_value(r, layout.x, std::int64_t{sample.x} + layout.x.logical_minimum);
   write_value(r, layout.y, std::int64_t{sample.y} + layout.y.logical_minimum);
   write_value(r, layout.pressure, std::int64_t{sample.pressure} + layout.pressure.logical_minimum);

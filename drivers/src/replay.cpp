@@ -59,6 +59,9 @@ ReplayResult replay(const Recording& recording, ReplaySpeed speed, SegmenterOpti
       build_profile(recording.identity, recording.descriptor, recording.vendor_strings);
   ReplayResult result;
   result.tablet = profile.info;
+  result.family = profile.family;
+  result.size_source = profile.size_source;
+  if (!profile.decoder.layouts().empty()) result.layout = profile.decoder.layouts()[0].origin;
   PenPipeline pipeline(profile, options,
                        {.on_sample = [&](const PenSample& s) { result.samples.push_back(s); },
                         .on_stroke = [&](Stroke&& s) { result.strokes.push_back(std::move(s)); }});

@@ -1,8 +1,12 @@
 #include "penshape/drivers/tablet_table.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
+#include <regex>
 #include <sstream>
+
+#include "penshape/drivers/report_families.hpp"
 
 namespace penshape::drivers {
 
@@ -10,7 +14,7 @@ std::string_view builtin_tablet_tsv(); // generated from data/tablets.tsv (table
 
 namespace {
 
-constexpr std::array<std::pair<Protocol, std::string_view>, 7> kProtocols{{
+constexpr std::array<std::pair<Protocol, std::string_view>, 8> kProtocols{{
     {Protocol::kHid, "hid"},
     {Protocol::kWacomHid, "wacom-hid"},
     {Protocol::kWacomGraphire, "wacom-graphire"},
@@ -18,6 +22,7 @@ constexpr std::array<std::pair<Protocol, std::string_view>, 7> kProtocols{{
     {Protocol::kWacomIntuos, "wacom-intuos"},
     {Protocol::kUcLogic, "uclogic"},
     {Protocol::kXpPen, "xppen"},
+    {Protocol::kVendor, "vendor"},
 }};
 
 std::vector<std::string_view> split(std::string_view s, char sep) {
@@ -66,6 +71,52 @@ std::vector<std::uint8_t> hex_bytes(std::string_view s, std::size_t line) {
   return out;
 }
 
+std::vector<InitStep> init_steps(std::string_view col, std::size_t line_no) {
+  std::vector<InitStep> out;
+  for (std::string_view step : split(col, ' ')) {
+    if (step.size() < 3 || step[1] != ':') fail(line_no, "bad init step");
+    InitStep s;
+    switch (step[0]) {
+      case 'F':
+        s.kind = InitStep::Kind::kFeatureReport;
+        break;
+      case 'O':
+        s.kind = InitStep::Kind::kOutputReport;
+        break;
+      case 'S':
+        s.kind = InitStep::Kind::kStringDescriptor;
+        break;
+      default:
+        fail(line_no, "bad init step kind");
+    }
+    if (s.kind == InitStep::Kind::kStringDescriptor) {
+      s.string_index = number<std::uint8_t>(step.substr(2), 10, line_no, "string index");
+    } else {
+      s.bytes = hex_bytes(step.substr(2), line_no);
+    }
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+// "index=regex;index=regex": each regex must compile (ECMAScript) so matching never throws.
+std::map<std::uint8_t, std::string> match_patterns(std::string_view col, std::size_t line_no) {
+  std::map<std::uint8_t, std::string> out;
+  for (std::string_view part : split(col, ';')) {
+    const auto eq = part.find('=');
+    if (eq == std::string_view::npos) fail(line_no, "bad device_match '" + std::string(part) + "'");
+    const auto index = number<std::uint8_t>(part.substr(0, eq), 10, line_no, "string index");
+    std::string pattern(part.substr(eq + 1));
+    try {
+      (void)std::regex(pattern);
+    } catch (const std::regex_error&) {
+      fail(line_no, "bad device_match regex '" + pattern + "'");
+    }
+    out[index] = std::move(pattern);
+  }
+  return out;
+}
+
 } // namespace
 
 std::string_view protocol_name(Protocol p) {
@@ -90,44 +141,26 @@ std::vector<TabletSpec> parse_tablet_table(std::string_view tsv) {
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     if (line.empty() || line.front() == '#') continue;
     const auto cols = split(line, '\t');
-    if (cols.size() != 10) fail(line_no, "expected 10 tab-separated columns");
+    if (cols.size() != 13) fail(line_no, "expected 13 tab-separated columns");
     TabletSpec t;
     t.vendor_id = number<std::uint16_t>(cols[0], 16, line_no, "vid");
     t.product_id = number<std::uint16_t>(cols[1], 16, line_no, "pid");
-    const auto proto = protocol_from_name(cols[2]);
-    if (!proto) fail(line_no, "unknown protocol '" + std::string(cols[2]) + "'");
-    t.protocol = *proto;
-    if (cols[3] != "-") {
-      for (std::string_view step : split(cols[3], ' ')) {
-        if (step.size() < 3 || step[1] != ':') fail(line_no, "bad init step");
-        InitStep s;
-        switch (step[0]) {
-          case 'F':
-            s.kind = InitStep::Kind::kFeatureReport;
-            break;
-          case 'O':
-            s.kind = InitStep::Kind::kOutputReport;
-            break;
-          case 'S':
-            s.kind = InitStep::Kind::kStringDescriptor;
-            break;
-          default:
-            fail(line_no, "bad init step kind");
-        }
-        if (s.kind == InitStep::Kind::kStringDescriptor) {
-          s.string_index = number<std::uint8_t>(step.substr(2), 10, line_no, "string index");
-        } else {
-          s.bytes = hex_bytes(step.substr(2), line_no);
-        }
-        t.init.push_back(std::move(s));
-      }
-    }
-    t.x_max = number<std::int32_t>(cols[4], 10, line_no, "x_max");
-    t.y_max = number<std::int32_t>(cols[5], 10, line_no, "y_max");
-    t.pressure_max = number<std::uint32_t>(cols[6], 10, line_no, "pressure_max");
-    t.x_resolution = real(cols[7], line_no, "x resolution");
-    t.y_resolution = real(cols[8], line_no, "y resolution");
-    t.name = std::string(cols[9]);
+    const ReportFamily* family = find_family(cols[2]);
+    if (family == nullptr) fail(line_no, "unknown family '" + std::string(cols[2]) + "'");
+    t.family = family->name;
+    t.protocol = family->protocol;
+    if (cols[3] != "-") t.init = init_steps(cols[3], line_no);
+    t.report_length = number<std::uint32_t>(cols[4], 10, line_no, "report_len");
+    t.x_max = number<std::int32_t>(cols[5], 10, line_no, "x_max");
+    t.y_max = number<std::int32_t>(cols[6], 10, line_no, "y_max");
+    t.pressure_max = number<std::uint32_t>(cols[7], 10, line_no, "pressure_max");
+    t.width_mm = real(cols[8], line_no, "width_mm");
+    t.height_mm = real(cols[9], line_no, "height_mm");
+    if (t.width_mm > 0 && t.x_max > 0) t.x_resolution = t.x_max / t.width_mm;
+    if (t.height_mm > 0 && t.y_max > 0) t.y_resolution = t.y_max / t.height_mm;
+    t.pen_buttons = number<std::uint32_t>(cols[10], 10, line_no, "pen_buttons");
+    if (cols[11] != "-") t.device_match = match_patterns(cols[11], line_no);
+    t.name = std::string(cols[12]);
     if (t.name.empty()) fail(line_no, "empty name");
     out.push_back(std::move(t));
   }
@@ -144,6 +177,73 @@ const TabletSpec* find_tablet(std::uint16_t vendor_id, std::uint16_t product_id)
     if (t.vendor_id == vendor_id && t.product_id == product_id) return &t;
   }
   return nullptr;
+}
+
+std::vector<const TabletSpec*> find_tablets(std::uint16_t vendor_id, std::uint16_t product_id) {
+  std::vector<const TabletSpec*> out;
+  for (const auto& t : builtin_tablets()) {
+    if (t.vendor_id == vendor_id && t.product_id == product_id) out.push_back(&t);
+  }
+  return out;
+}
+
+std::string string_descriptor_text(std::span<const std::uint8_t> raw) {
+  if (raw.size() < 2 || raw[1] != 0x03) return {};
+  const std::size_t end = std::min<std::size_t>(raw[0], raw.size());
+  std::string out;
+  for (std::size_t i = 2; i + 1 < end; i += 2) {
+    const unsigned unit = raw[i] | (static_cast<unsigned>(raw[i + 1]) << 8);
+    out.push_back(unit < 0x80 ? static_cast<char>(unit) : '?');
+  }
+  return out;
+}
+
+bool device_strings_match(const TabletSpec& row, const DeviceStrings& strings) {
+  for (const auto& [index, pattern] : row.device_match) {
+    const auto it = strings.find(index);
+    if (it == strings.end() || !std::regex_search(it->second, std::regex(pattern))) return false;
+  }
+  return true;
+}
+
+const TabletSpec* match_tablet(std::uint16_t vendor_id, std::uint16_t product_id,
+                               const DeviceStrings* strings,
+                               std::span<const std::uint32_t> input_report_lengths) {
+  std::vector<const TabletSpec*> rows = find_tablets(vendor_id, product_id);
+  if (rows.empty()) return nullptr;
+  if (strings != nullptr) {
+    std::vector<const TabletSpec*> matched;
+    for (const TabletSpec* r : rows) {
+      if (!r->device_match.empty() && device_strings_match(*r, *strings)) matched.push_back(r);
+    }
+    for (const TabletSpec* r : rows) {
+      if (r->device_match.empty()) matched.push_back(r);
+    }
+    if (!matched.empty()) rows = std::move(matched);
+  }
+  // Still several models and nothing told them apart: the family most of them share first.
+  std::map<std::string, int> share;
+  for (const TabletSpec* r : rows) ++share[r->family];
+  std::stable_sort(rows.begin(), rows.end(), [&](const TabletSpec* a, const TabletSpec* b) {
+    return share[a->family] > share[b->family];
+  });
+  for (const TabletSpec* r : rows) {
+    if (std::find(input_report_lengths.begin(), input_report_lengths.end(), r->report_length) !=
+        input_report_lengths.end()) {
+      return r;
+    }
+  }
+  return rows.front();
+}
+
+std::vector<std::uint8_t> device_match_indexes(std::uint16_t vendor_id, std::uint16_t product_id) {
+  std::vector<std::uint8_t> out;
+  for (const TabletSpec* r : find_tablets(vendor_id, product_id)) {
+    for (const auto& [index, pattern] : r->device_match) {
+      if (std::find(out.begin(), out.end(), index) == out.end()) out.push_back(index);
+    }
+  }
+  return out;
 }
 
 } // namespace penshape::drivers

@@ -76,7 +76,7 @@ TEST(Config, ErrorsNameTheLineAndTheKey) {
             "test.conf:1: unknown section '[printer]' (expected [device vvvv:pppp])");
   EXPECT_EQ(error_of("[device 056a:0010]\nmax_subscribers = 3"),
             "test.conf:2: max_subscribers: unknown key in a [device] section (pen_radius_mm, "
-            "tolerance_fraction, precision_fraction)");
+            "tolerance_fraction, precision_fraction, width_mm, height_mm)");
   EXPECT_EQ(error_of("tcp_allow_non_loopback = yes"),
             "test.conf:1: tcp_allow_non_loopback: expected true or false, got 'yes'");
 }
@@ -96,6 +96,35 @@ TEST(Config, TcpIsLoopbackOnlyUnlessAllowed) {
 
 TEST(Config, MissingFileIsAnError) {
   EXPECT_THROW(penshape::daemon::load_config_file("/nonexistent/penshaped.conf"), ConfigError);
+}
+
+} // namespace
+
+namespace {
+
+TEST(Config, DeviceSectionsGiveAPhysicalSize) {
+  const auto config = parse_config(
+      "[device \"28bd:0905\"]\n"
+      "width_mm = 152.4\n"
+      "height_mm = 95.25\n"
+      "[device 256c:0064]\n"
+      "pen_radius_mm = 0.8\n",
+      "test.conf");
+  ASSERT_EQ(config.device_sizes.size(), 1U);
+  EXPECT_EQ(config.device_sizes.at("28bd:0905"), (std::pair<double, double>{152.4, 95.25}));
+  EXPECT_EQ(config.device_settings.count("28bd:0905"), 1U); // quoted key, same section
+  EXPECT_EQ(config.device_sizes.count("256c:0064"), 0U);
+}
+
+TEST(Config, PhysicalSizeErrorsNameLineAndKey) {
+  EXPECT_EQ(error_of("[device 28bd:0905]\nwidth_mm = 152\n"),
+            "test.conf:2: height_mm: [device 28bd:0905] sets one of width_mm and height_mm: set "
+            "both");
+  EXPECT_EQ(error_of("[device 28bd:0905]\nwidth_mm = -1\nheight_mm = 3\n"),
+            "test.conf:2: width_mm: expected millimetres in (0, 2000]");
+  EXPECT_EQ(error_of("[device 28bd:0905]\nheight_mm = tall\n"),
+            "test.conf:2: height_mm: expected a number, got 'tall'");
+  EXPECT_EQ(error_of("width_mm = 100\n"), "test.conf:1: width_mm: unknown key");
 }
 
 } // namespace

@@ -100,3 +100,45 @@ TEST(CliDevices, MalformedInputExitsTwoNamingTheByteOffset) {
 }
 
 } // namespace
+
+namespace {
+
+TEST(CliTablets, ListsTheTableWithFamilyAndSize) {
+  const Result all = run("hid tablets");
+  ASSERT_EQ(all.exit_code, 0) << all.out;
+  // One line per row plus the header; the PenPartner (Linux wacom driver facts: 3250 units at
+  // 50 per mm = 65 mm) and the XP-Pen Deco 01 V2 (OTD: 254 x 158.75 mm, firmware 2020-10-23).
+  EXPECT_GE(count(all.out, "\n"), 500U);
+  EXPECT_NE(all.out.find("056a 0061 wacom-graphire"), std::string::npos) << all.out;
+  const Result json = run("hid tablets --json --vid 28BD");
+  ASSERT_EQ(json.exit_code, 0) << json.out;
+  EXPECT_EQ(count(json.out, "\"vid\":\"28bd\""), count(json.out, "\n"));
+  EXPECT_NE(
+      json.out.find("{\"vid\":\"28bd\",\"pid\":\"0905\",\"name\":\"XP-Pen Deco 01 V2 (Variant 2)\","
+                    "\"family\":\"xppen\",\"width_mm\":254,\"height_mm\":158.75,"
+                    "\"max_x\":50800,\"max_y\":31750,\"max_pressure\":8191}"),
+      std::string::npos)
+      << json.out;
+  EXPECT_EQ(run("hid tablets --vid nothex").exit_code, 2);
+  EXPECT_EQ(run("hid tablets some-file").exit_code, 2);
+}
+
+TEST(CliTablets, DescribeAndReplayNameFamilyAndSizeSource) {
+  // The bundled recording (an XP-Pen Deco 01 V2 descriptor with physical units): every clone.
+  const std::string rec =
+      "'" + std::string(PENSHAPE_SOURCE_DIR) + "/recordings/dollar1-shapes.xppen-deco01v2.hidrec'";
+  const Result d = run("hid describe --json " + rec);
+  ASSERT_EQ(d.exit_code, 0) << d.out;
+  for (const char* key :
+       {"\"family\":\"xppen\"", "\"physical_size_known\":true", "\"width_mm\":254",
+        "\"height_mm\":158.75", "\"size_source\":\"descriptor\""}) {
+    EXPECT_NE(d.out.find(key), std::string::npos) << key << " in " << d.out;
+  }
+  const Result r = run("replay --local " + rec);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("# family xppen (layout hid), size 254.0 x 158.8 mm from the descriptor"),
+            std::string::npos)
+      << r.out.substr(0, 400);
+}
+
+} // namespace

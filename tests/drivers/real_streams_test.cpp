@@ -56,6 +56,10 @@ TEST(RealStreams, WacomPenPartnerCapture) {
   EXPECT_EQ(r.tablet.x_max, 3250);
   EXPECT_EQ(r.tablet.y_max, 2320);
   EXPECT_EQ(r.tablet.pressure_max, 255U);
+  // The Graphire report family, sized by the table (the Linux wacom driver's 50 units/mm).
+  EXPECT_EQ(r.layout, "wacom-graphire");
+  EXPECT_EQ(r.size_source, SizeSource::kTable);
+  EXPECT_NEAR(r.tablet.width_mm(), 65.0, 1e-9);
   const Summary s = summarise(r);
   // Report 0x02 (pen) vs 0x63 (a status report the descriptor declares): counted apart.
   std::size_t pen_reports = 0;
@@ -140,6 +144,18 @@ TEST(RealStreams, EveryDigimendDumpDecodes) {
       const auto r = replay(rec, ReplaySpeed::kAsFastAsPossible);
       const Summary s = summarise(r);
       const std::string rel = std::filesystem::relative(f.path(), base).string();
+      // Vendor mode decodes through the UC-Logic report family, sized by the probe; firmware
+      // mode through the descriptor. Either way the size is known (never device units as mm).
+      if (vendor) {
+        EXPECT_EQ(r.layout.rfind("uclogic", 0), 0U) << rel << ": " << r.layout;
+        EXPECT_EQ(r.size_source, SizeSource::kProbe) << rel;
+      } else if (r.counters.pen_samples > 0) {
+        EXPECT_EQ(r.layout, "hid") << rel;
+      }
+      EXPECT_NE(r.size_source, SizeSource::kUnknown) << rel;
+      std::printf("  family %s, layout %s, size %.1f x %.1f mm from %s\n", r.family.c_str(),
+                  r.layout.c_str(), r.tablet.width_mm(), r.tablet.height_mm(),
+                  std::string(size_source_name(r.size_source)).c_str());
       std::printf("%-44s %4s %6zu %6zu %5zu %5zu %5x %6llu %5llu %4llu %6zu\n", rel.c_str(),
                   vendor ? "vend" : "firm", s.samples, s.tip_samples, s.pressures.size(),
                   s.tilts.size(), s.buttons_seen,

@@ -9,11 +9,13 @@
 #include "penshape/drivers/recording.hpp"
 #include "penshape/drivers/vendor_protocols.hpp"
 #include "shared_data.hpp"
+#include "test_data.hpp"
 
 namespace penshape::drivers {
 namespace {
 
 TEST(TabletTable, BuiltinCoversEveryDeviceWithSharedData) {
+  PENSHAPE_SHARED_OR_SKIP(hid, "hid/wacom-hid-descriptors");
   const auto& rows = builtin_tablets();
   EXPECT_GE(rows.size(), 80U);
   for (const auto& d : testing::all_shared_descriptors()) {
@@ -53,20 +55,32 @@ TEST(TabletTable, UdevRulesGrantEveryTabletsNodes) {
 
 TEST(TabletTable, BadRowsNameTheirLine) {
   EXPECT_THROW((void)parse_tablet_table("# c\n056a\t0061\thid\n"), TabletTableError);
+  const std::string tail = "\t-\t0\t1\t1\t1\t1\t1\t2\t-\tX\n";
   try {
-    (void)parse_tablet_table("\n056a\t0061\tfoo\t-\t1\t1\t1\t1\t1\tX\n");
+    (void)parse_tablet_table("\n056a\t0061\tfoo" + tail);
     FAIL();
   } catch (const TabletTableError& e) {
     EXPECT_NE(std::string(e.what()).find("line 2"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("foo"), std::string::npos);
   }
-  EXPECT_THROW((void)parse_tablet_table("056a\t0061\thid\tF:0\t1\t1\t1\t1\t1\tX\n"),
+  EXPECT_THROW((void)parse_tablet_table("056a\t0061\thid\tF:0\t0\t1\t1\t1\t1\t1\t2\t-\tX\n"),
                TabletTableError);
-  const auto ok = parse_tablet_table("056a\t0061\thid\tO:02b004 S:200\t10\t20\t30\t1.5\t2\tName\n");
+  // A device_match regex that does not compile is a bad row, not a crash at match time.
+  EXPECT_THROW((void)parse_tablet_table("056a\t0061\thid\t-\t0\t1\t1\t1\t1\t1\t2\t201=(\tX\n"),
+               TabletTableError);
+  const auto ok = parse_tablet_table(
+      "256c\t0061\tuclogic\tO:02b004 S:200\t12\t10\t20\t30\t5\t4\t2\t201=^AB;4=C\tName\n");
   ASSERT_EQ(ok.size(), 1U);
   EXPECT_EQ(ok[0].init.size(), 2U);
   EXPECT_EQ(ok[0].init[1].string_index, 200);
-  EXPECT_DOUBLE_EQ(ok[0].x_resolution, 1.5);
+  EXPECT_EQ(ok[0].protocol, Protocol::kUcLogic);
+  EXPECT_EQ(ok[0].report_length, 12U);
+  EXPECT_DOUBLE_EQ(ok[0].x_resolution, 2.0); // 10 units over 5 mm
+  EXPECT_DOUBLE_EQ(ok[0].y_resolution, 5.0);
+  EXPECT_EQ(ok[0].device_match.size(), 2U);
+  EXPECT_TRUE(device_strings_match(ok[0], {{201, "ABC"}, {4, "xCx"}}));
+  EXPECT_FALSE(device_strings_match(ok[0], {{201, "XABC"}, {4, "C"}}));
+  EXPECT_FALSE(device_strings_match(ok[0], {{201, "ABC"}})); // string 4 missing
 }
 
 TEST(UcLogicParams, ParsesTheProbedStringDescriptors) {

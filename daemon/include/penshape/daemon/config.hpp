@@ -10,8 +10,10 @@
 //   tolerance_fraction = 0.5
 //   precision_fraction = 0.125
 //
-//   [device 056a:0010]               # settings for one tablet model (vendor:product, hex)
-//   pen_radius_mm = 0.8
+//   [device 056a:0010]               # settings for one tablet model (vendor:product, hex;
+//   pen_radius_mm = 0.8              #  [device "056a:0010"] with quotes is the same)
+//   width_mm = 152.0                 # its active area, for a tablet that does not tell its
+//   height_mm = 95.0                 #  size (both or neither; used only then)
 //
 // Every error names the file, the line and the key; unknown keys are errors (typos must not pass
 // silently). With no file the defaults apply.
@@ -20,6 +22,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "penshape/daemon/limits.hpp"
 #include "penshape/daemon/pen_settings.hpp"
@@ -33,6 +36,9 @@ struct DaemonConfig {
   Limits limits;
   PenSettings settings;
   std::map<std::string, PenSettingsUpdate> device_settings; // by device key "vvvv:pppp"
+  // Physical sizes (width, height in mm) by device key, for tablets whose table row, descriptor
+  // and probe give none: without one such a tablet's size is unknown (never device units as mm).
+  std::map<std::string, std::pair<double, double>> device_sizes;
 };
 
 struct ConfigError : std::runtime_error {

@@ -11,6 +11,8 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <string>
+#include <utility>
 
 #include "penshape/daemon/sample_source.hpp"
 #include "penshape/drivers/device_manager.hpp"
@@ -19,8 +21,13 @@ namespace penshape::daemon {
 
 class DeviceManagerSource final : public SampleSource {
  public:
+  // Physical sizes (width, height mm) by device key "vvvv:pppp" (the config's [device] sizes).
+  using DeviceSizes = std::map<std::string, std::pair<double, double>>;
+
   // backend: the live devices (drivers::make_hidraw_backend()), or null for replays only.
-  explicit DeviceManagerSource(std::unique_ptr<drivers::DeviceBackend> backend);
+  // sizes: used for a tablet that gives no physical size of its own.
+  explicit DeviceManagerSource(std::unique_ptr<drivers::DeviceBackend> backend,
+                               DeviceSizes sizes = {});
   ~DeviceManagerSource() override;
 
   void start(SampleSink& sink) override;
@@ -48,6 +55,7 @@ class DeviceManagerSource final : public SampleSource {
   void on_report(drivers::DeviceId id, std::span<const std::uint8_t> bytes, std::int64_t time_us);
 
   std::unique_ptr<drivers::DeviceBackend> backend_;
+  DeviceSizes sizes_;
   std::unique_ptr<drivers::DeviceManager> manager_;
   SampleSink* sink_ = nullptr;
   mutable std::mutex mutex_;

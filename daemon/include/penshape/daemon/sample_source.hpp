@@ -36,6 +36,11 @@ struct DeviceDescriptor {
   std::string source; // device path or recording file name
   bool replay = false;
   HidDescription hid{};
+  // Whether tablet's resolution is a real physical size, and where it came from ("table",
+  // "descriptor", "probe", "config"; "unknown" when it is not: coordinates are device units).
+  bool physical_size_known = true;
+  std::string size_source{}; // "" when the source does not say (an app's strokes, fakes)
+  std::string family{};      // report family of the tablet table ("" for sources without one)
 };
 
 class SampleSink {

@@ -19,9 +19,11 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <span>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "penshape/drivers/device_profile.hpp"
@@ -45,6 +47,9 @@ struct AttachedDevice {
   std::string key; // backend key, e.g. /dev/hidraw3, or "replay:N"
   TabletInfo tablet;
   Protocol protocol = Protocol::kHid;
+  std::string family = "hid"; // report family (tablets.tsv / families.tsv)
+  // Where tablet's resolution came from; kUnknown: its coordinates are device units only.
+  SizeSource size_source = SizeSource::kUnknown;
   // What a capture's header needs: identity (kernel HID name when known), phys, the report
   // descriptor and the vendor strings read at open, as the device gave them (no events).
   Recording header{};
@@ -100,6 +105,10 @@ struct DeviceManagerOptions {
   // A device that just vanished is not reopened sooner than this (a node that keeps failing
   // right after open must not turn the rescan into a loop).
   std::chrono::milliseconds reattach_backoff{1000};
+  // The user's physical size (width, height in mm) for a VID/PID, used only for a device whose
+  // table row, descriptor and probe give none. May be empty.
+  std::function<std::optional<std::pair<double, double>>(std::uint16_t, std::uint16_t)>
+      configured_size;
 };
 
 class DeviceManager {
@@ -136,6 +145,8 @@ class DeviceManager {
   void hotplug_loop();
   void scan_once();
   void reap_finished();
+  // The profile with the configured physical size when it has none of its own.
+  [[nodiscard]] DeviceProfile sized(DeviceProfile profile) const;
   DeviceId start_reader(AttachedDevice info, const DeviceProfile& profile,
                         std::unique_ptr<ReportSource> source);
   DeviceId attach_with_header(Recording header, std::unique_ptr<ReportSource> source,

@@ -26,9 +26,22 @@ struct DeviceIdentity {
 // Raw USB string descriptors a vendor protocol read (index -> bLength, 0x03, payload).
 using VendorStrings = std::map<std::uint8_t, std::vector<std::uint8_t>>;
 
+// Where a profile's physical size (resolution) came from.
+enum class SizeSource : std::uint8_t {
+  kUnknown,    // nothing said: x_resolution is 0, coordinates are NOT millimetres
+  kTable,      // the tablet table's width_mm / height_mm
+  kDescriptor, // the report descriptor's physical extents and unit
+  kProbe,      // a vendor probe (UC-Logic string descriptor 200/100)
+  kConfig,     // the user's configuration ([device "VID:PID"] width_mm, height_mm)
+};
+std::string_view size_source_name(SizeSource s);
+
 struct DeviceProfile {
   TabletInfo info; // identity, maxima and resolution of the primary pen layout
   Protocol protocol = Protocol::kHid;
+  std::string family = "hid";       // report family of the chosen table row (or probe)
+  const TabletSpec* spec = nullptr; // the table row chosen, if any
+  SizeSource size_source = SizeSource::kUnknown;
   std::optional<ParsedDescriptor> descriptor; // absent when none was given
   PenDecoder decoder{{}};
   std::vector<InitStep> init;     // reports to send when opening the device
@@ -46,5 +59,14 @@ DeviceProfile build_profile(const DeviceIdentity& id, std::span<const std::uint8
 
 // String descriptor indexes a protocol reads at open (UC-Logic: 200, then 100 as fallback).
 std::vector<std::uint8_t> vendor_string_indexes(Protocol p);
+
+// Every string descriptor index to read at open for a device: its rows' protocols' indexes and
+// the indexes their device_match needs; for a VID/PID in no row, the probing of a vendor known
+// by VID (Huion/Gaomon 256c and UC-Logic 5543: string 200, then 100).
+std::vector<std::uint8_t> vendor_string_indexes(std::uint16_t vendor_id, std::uint16_t product_id);
+
+// Takes a physical size from the configuration when the profile has none (never overrides the
+// table, the descriptor or a probe). Returns whether it was used.
+bool apply_configured_size(DeviceProfile& profile, double width_mm, double height_mm);
 
 } // namespace penshape::drivers

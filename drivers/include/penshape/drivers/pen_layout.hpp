@@ -36,6 +36,9 @@ struct PenField {
 struct PenLayout {
   std::uint8_t report_id = 0; // 0: the device sends no report ID byte
   bool uses_report_id = false;
+  // Vendor formats whose report ID differs between models (Veikk, Acepen): any ID that no other
+  // layout claims; told apart by the match bytes. Only used when no descriptor pen exists.
+  bool any_report_id = false;
   std::uint32_t min_report_bytes = 0; // shorter reports are junk (including the ID byte)
   // Vendor reports that share one report ID with non-pen reports: a report is the pen's only if
   // (report[match_byte] & match_mask) == match_value, or, with match_reject, only if it is not.
@@ -44,6 +47,11 @@ struct PenLayout {
   std::uint8_t match_mask = 0;
   std::uint8_t match_value = 0;
   bool match_reject = false;
+  // A second condition of the same form, which must hold too (mask 0: none).
+  std::uint32_t match2_byte = 0;
+  std::uint8_t match2_mask = 0;
+  std::uint8_t match2_value = 0;
+  bool match2_reject = false;
 
   PenField tip, in_range, barrel1, barrel2, barrel3, eraser, invert;
   PenField x, y, pressure, tilt_x, tilt_y;

@@ -6,6 +6,7 @@
 #include <condition_variable>
 #include <memory>
 #include <mutex>
+#include <string>
 #include <vector>
 
 #include "penshape/drivers/pen_pipeline.hpp"
@@ -43,6 +44,9 @@ class RecordingSource final : public ReportSource {
 
 struct ReplayResult {
   TabletInfo tablet;
+  std::string family;                            // report family of the table row (or "hid")
+  std::string layout;                            // origin of the primary pen layout
+  SizeSource size_source = SizeSource::kUnknown; // where tablet's resolution came from
   std::vector<PenSample> samples;
   std::vector<Stroke> strokes;
   PipelineCounters counters;

@@ -1,7 +1,8 @@
 #pragma once
-// Vendor report formats the descriptor does not describe, expressed as PenLayouts so the one
-// PenDecoder reads them. Facts from the public Linux drivers (hid-uclogic, wacom_wac) and
-// OpenTabletDriver; the code is ours.
+// The UC-Logic vendor probe: the pen parameters a Huion/Gaomon tablet returns in USB string
+// descriptor 200 (or 100), and the v1 layout that goes with string 100. Every other vendor
+// format is data (report_families.hpp, data/families.tsv). Facts from the public Linux driver
+// hid-uclogic and OpenTabletDriver; the code is ours.
 #include <cstdint>
 #include <span>
 #include <stdexcept>
@@ -31,33 +32,5 @@ UcLogicParams parse_uclogic_params(std::span<const std::uint8_t> string_descript
 // 8 / 4-5 and 9, tilt in bytes 10-11) or ID 0x07 (v1, 8 bytes, in-range bit inverted).
 // Pad frames share the ID and are told apart by byte 1 (0xE0/0xF0: not the pen).
 PenLayout uclogic_pen_layout(const UcLogicParams& params);
-
-// Wacom Graphire-family pen report (ID 2, 8 bytes; PenPartner/PenStation2, Graphire, Volito):
-// byte 1 bit 7 in range, bits 5-6 tool (0 pen, 1 eraser, 2 mouse: not the pen), bit 0 tip,
-// bits 1-2 side switches; X, Y little-endian 16-bit at bytes 2 and 4; 10-bit pressure in byte 6
-// plus the low two bits of byte 7. Maxima and resolution from the tablet table row.
-PenLayout wacom_graphire_pen_layout(const TabletSpec& spec);
-
-// Wacom Bamboo-family pen report (ID 2, 9 or 10 bytes; Bamboo, Intuos PT, One by Wacom CTL-472)
-// after the mode-switch feature report 02 02: byte 1 bit 7 in range, bit 6 position valid
-// (proximity), bit 5 pressure and buttons valid, bit 3 eraser, bit 0 tip, bits 1-2 side
-// switches; X, Y, pressure little-endian 16-bit at bytes 2, 4, 6.
-PenLayout wacom_bamboo_pen_layout(const TabletSpec& spec);
-
-// Wacom Intuos-family pen reports (ID 2, 10 bytes; Intuos 2-5, Intuos Pro PTH-x51, Intuos
-// CTH-490) after the mode switch. Two layouts share the ID, told apart by byte 1:
-//  - the general pen packet, (byte1 & 0xB8) == 0xA0: X = big-endian 16 bits at byte 2 shifted
-//    left once plus bit 1 of byte 9; Y likewise at byte 4 plus bit 0 of byte 9; pressure
-//    11 bits = byte 6 (bits 3-10), bits 6-7 of byte 7 (bits 1-2), bit 0 of byte 1 (bit 0);
-//    tilt X = bits 0-5 of byte 7 and bit 7 of byte 8, tilt Y = bits 0-6 of byte 8, each 0..127
-//    centred on 64 (degrees); side switches bits 1 and 2 of byte 1; tip when pressure > 10.
-//  - the leaving-proximity packet, (byte1 & 0xFE) == 0x80: in range false.
-// Tool-announcement packets (0xC2…) carry no position and count as other reports.
-std::vector<PenLayout> wacom_intuos_pen_layouts(const TabletSpec& spec);
-
-// XP-Pen/Ugee vendor-mode pen report after output report 02 B0 02|04 (ID 2, 10 bytes): byte 1
-// 0xA0 in range (bit 6 set: out of range), bit 0 tip, bits 1-2 side switches, 0xF0 pad frames;
-// X, Y, pressure little-endian 16-bit at bytes 2, 4, 6; signed tilt at bytes 8 and 9.
-PenLayout xppen_pen_layout(const TabletSpec& spec);
 
 } // namespace penshape::drivers
