@@ -96,7 +96,7 @@ TEST(CliDevices, MalformedInputExitsTwoNamingTheByteOffset) {
   EXPECT_NE(r.out.find("byte 2"), std::string::npos) << r.out;
   EXPECT_EQ(run("replay --local /nonexistent/file").exit_code, 2);
   EXPECT_EQ(run("replay --local --vid 28bd " + bad).exit_code, 2); // --pid missing
-  EXPECT_EQ(run("replay " + bad).exit_code, 2);                    // --local missing
+  EXPECT_EQ(run("replay " + bad).exit_code, 2);                    // through penshaped or not
 }
 
 } // namespace
@@ -126,7 +126,7 @@ TEST(CliTablets, ListsTheTableWithFamilyAndSize) {
 TEST(CliTablets, DescribeAndReplayNameFamilyAndSizeSource) {
   // The bundled recording (an XP-Pen Deco 01 V2 descriptor with physical units): every clone.
   const std::string rec =
-      "'" + std::string(PENSHAPE_SOURCE_DIR) + "/recordings/dollar1-shapes.xppen-deco01v2.hidrec'";
+      quoted(penshape::test::recordings_dir() / "dollar1-shapes.xppen-deco01v2.hidrec");
   const Result d = run("hid describe --json " + rec);
   ASSERT_EQ(d.exit_code, 0) << d.out;
   for (const char* key :
