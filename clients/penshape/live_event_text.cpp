@@ -80,6 +80,10 @@ std::string shape_kind_name(v1::ShapeKind kind) {
       return "ellipse";
     case v1::SHAPE_KIND_ARC:
       return "arc";
+    case v1::SHAPE_KIND_ARROW:
+      return "arrow";
+    case v1::SHAPE_KIND_DOUBLE_ARROW:
+      return "double_arrow";
     default:
       return "unspecified";
   }

@@ -9,6 +9,8 @@
 #include <optional>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 namespace penshape::cli {
 namespace {
 
@@ -104,153 +106,81 @@ std::vector<FileStroke> read_dollar_xml(const std::string& path, const std::stri
   return {stroke};
 }
 
-// A minimal strict JSON reader for the JSON-lines format.
-class JsonLine {
- public:
-  JsonLine(const std::string& file, std::size_t line, std::string_view text)
-      : file_(file), line_(line), s_(text) {}
+// One point [x, y], [x, y, t] or [x, y, t, pressure] of the stroke on `line`.
+StrokePoint json_point(const nlohmann::json& v, std::size_t index, FileStroke& out) {
+  const std::string where = "\"points\"[" + std::to_string(index) + "]";
+  if (!v.is_array() || v.size() < 2 || v.size() > 4) {
+    fail(out.file, out.line, where + " must be an array of 2 to 4 numbers [x, y, t, pressure]");
+  }
+  double n[4] = {0, 0, 0, 0};
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    if (!v[k].is_number()) fail(out.file, out.line, where + " holds something other than a number");
+    n[k] = v[k].get<double>();
+    if (!std::isfinite(n[k]))
+      fail(out.file, out.line, where + " holds a number that is not finite");
+  }
+  const bool timed = v.size() >= 3;
+  if (index == 0) out.timed = timed;
+  if (timed != out.timed) {
+    fail(out.file, out.line, "t must be given for every point or for none (" + where + ")");
+  }
+  if (v.size() == 4) {
+    if (n[3] < 0 || n[3] > 1)
+      fail(out.file, out.line, where + ": a pressure value is outside [0, 1]");
+    out.pressure.push_back(n[3]);
+  }
+  if (!out.pressure.empty() && out.pressure.size() != index + 1) {
+    fail(out.file, out.line, "pressure must be given for every point or for none (" + where + ")");
+  }
+  return {n[0], n[1], n[2]};
+}
 
-  FileStroke parse_stroke() {
-    FileStroke out;
-    out.file = file_;
-    out.line = line_;
-    bool have_points = false;
-    expect('{');
-    if (!peek('}')) {
-      do {
-        const std::string key = string();
-        expect(':');
-        if (key == "points") {
-          out.pressure.clear();
-          out.points = points(out.pressure);
-          have_points = true;
-        } else if (key == "name") {
-          out.name = string();
-        } else if (key == "label") {
-          out.label = string();
-        } else {
-          skip_value();
-        }
-      } while (accept(','));
+// Times, when given, must increase strictly along a stroke.
+void check_times(const FileStroke& s) {
+  if (!s.timed) return;
+  for (std::size_t i = 1; i < s.points.size(); ++i) {
+    const double a = s.points[i - 1].t, b = s.points[i].t;
+    if (b == a) {
+      fail(s.file, s.line,
+           "\"points\"[" + std::to_string(i) + "] has the same time t as the point before it");
     }
-    expect('}');
-    ws();
-    if (i_ != s_.size()) error("unexpected text after the stroke object");
-    if (!have_points) error("the stroke object has no \"points\"");
-    return out;
+    if (b < a) {
+      fail(s.file, s.line, "\"points\"[" + std::to_string(i) + "]: the time t goes backwards");
+    }
   }
+}
 
- private:
-  [[noreturn]] void error(const std::string& what) const {
-    fail(file_, line_, what + " (column " + std::to_string(i_ + 1) + ")");
+FileStroke json_stroke(const std::string& path, std::size_t line, const std::string& row) {
+  FileStroke out;
+  out.file = path;
+  out.line = line;
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(row);
+  } catch (const nlohmann::json::exception& e) { // syntax, number overflow, bad UTF-8
+    fail(path, line, std::string("not valid JSON: ") + e.what());
   }
-  void ws() {
-    while (i_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[i_]))) ++i_;
+  if (!j.is_object()) fail(path, line, "a stroke must be a JSON object {\"points\": [...]}");
+  const auto points = j.find("points");
+  if (points == j.end()) fail(path, line, "the stroke object has no \"points\"");
+  if (!points->is_array()) fail(path, line, "\"points\" must be an array");
+  for (const char* key : {"name", "label"}) {
+    const auto it = j.find(key);
+    if (it == j.end()) continue;
+    if (!it->is_string()) fail(path, line, std::string("\"") + key + "\" must be a string");
+    (key[0] == 'n' ? out.name : out.label) = it->get<std::string>();
   }
-  bool peek(char c) {
-    ws();
-    if (i_ < s_.size() && s_[i_] == c) {
-      ++i_;
-      return true;
-    }
-    return false;
+  for (std::size_t i = 0; i < points->size(); ++i) {
+    out.points.push_back(json_point((*points)[i], i, out));
   }
-  bool accept(char c) { return peek(c); }
-  void expect(char c) {
-    if (!peek(c)) error(std::string("expected '") + c + "'");
+  if (out.points.size() < 2) {
+    fail(path, line,
+         "the stroke has " + std::to_string(out.points.size()) +
+             " point(s); it needs at least two distinct positions");
   }
-  std::string string() {
-    ws();
-    if (i_ >= s_.size() || s_[i_] != '"') error("expected a string");
-    ++i_;
-    std::string out;
-    while (i_ < s_.size() && s_[i_] != '"') {
-      if (s_[i_] == '\\') {
-        if (++i_ >= s_.size()) break;
-        const char e = s_[i_];
-        out += e == 'n' ? '\n' : e == 't' ? '\t' : e; // \uXXXX kept verbatim-ish; names only
-      } else {
-        out += s_[i_];
-      }
-      ++i_;
-    }
-    if (i_ >= s_.size()) error("unterminated string");
-    ++i_;
-    return out;
-  }
-  double number() {
-    ws();
-    std::size_t j = i_;
-    while (j < s_.size() && (std::isdigit(static_cast<unsigned char>(s_[j])) || s_[j] == '-' ||
-                             s_[j] == '+' || s_[j] == '.' || s_[j] == 'e' || s_[j] == 'E')) {
-      ++j;
-    }
-    const std::optional<double> v = parse_double(s_.substr(i_, j - i_));
-    if (j == i_ || !v) error("expected a finite number");
-    i_ = j;
-    return *v;
-  }
-  std::vector<StrokePoint> points(std::vector<double>& pressure) {
-    std::vector<StrokePoint> out;
-    expect('[');
-    if (peek(']')) return out;
-    do {
-      expect('[');
-      StrokePoint p;
-      p.x = number();
-      expect(',');
-      p.y = number();
-      bool pressed = false;
-      if (accept(',')) {
-        p.t = number();
-        if (accept(',')) {
-          const double v = number();
-          if (v < 0 || v > 1) error("a pressure value is outside [0, 1]");
-          pressure.push_back(v);
-          pressed = true;
-        }
-      }
-      if (pressed != (pressure.size() == out.size() + 1) || (!pressed && !pressure.empty())) {
-        error("pressure must be given for every point or for none");
-      }
-      expect(']');
-      out.push_back(p);
-    } while (accept(','));
-    expect(']');
-    return out;
-  }
-  void skip_value() {
-    ws();
-    if (i_ >= s_.size()) error("expected a value");
-    const char c = s_[i_];
-    if (c == '"') {
-      string();
-    } else if (c == '{' || c == '[') {
-      const char close = c == '{' ? '}' : ']';
-      ++i_;
-      if (peek(close)) return;
-      do {
-        if (c == '{') {
-          string();
-          expect(':');
-        }
-        skip_value();
-      } while (accept(','));
-      expect(close);
-    } else if (s_.substr(i_, 4) == "true" || s_.substr(i_, 4) == "null") {
-      i_ += 4;
-    } else if (s_.substr(i_, 5) == "false") {
-      i_ += 5;
-    } else {
-      number();
-    }
-  }
-
-  const std::string& file_;
-  std::size_t line_;
-  std::string_view s_;
-  std::size_t i_ = 0;
-};
+  check_times(out);
+  return out;
+}
 
 std::vector<FileStroke> read_json_lines(const std::string& path, const std::string& text) {
   std::vector<FileStroke> out;
@@ -262,7 +192,15 @@ std::vector<FileStroke> read_json_lines(const std::string& path, const std::stri
     if (std::all_of(row.begin(), row.end(), [](unsigned char c) { return std::isspace(c); })) {
       continue;
     }
-    out.push_back(JsonLine(path, line, row).parse_stroke());
+    out.push_back(json_stroke(path, line, row));
+    // Strokes are in drawing order: with times, one cannot start before the previous ended.
+    if (out.size() >= 2) {
+      const FileStroke& a = out[out.size() - 2];
+      const FileStroke& b = out.back();
+      if (a.timed && b.timed && b.points.front().t < a.points.back().t) {
+        fail(path, line, "the stroke starts (t) before the previous stroke ended");
+      }
+    }
   }
   return out;
 }

@@ -10,7 +10,11 @@
 //    `points` is required: arrays of 2, 3 or 4 finite numbers (x, y, optionally t in seconds,
 //    optionally the pen pressure in [0, 1] after t); pressure is given for every point or none.
 //    `name` (any string) and `label` (the expected class or a gesture name) are optional; other
-//    keys are ignored. The stroke's line number names it in messages.
+//    keys are ignored. The stroke's line number names it in messages. Parsed with nlohmann-json
+//    (string escapes decoded as JSON says). Refused, naming file and line: a stroke with fewer
+//    than two points, t given for some points only, times that repeat or go backwards along a
+//    stroke, a stroke starting before the previous one ended (lines are strokes in drawing
+//    order), numbers that are not finite.
 // Malformed input throws StrokeFileError with "file:line: problem".
 #include <stdexcept>
 #include <string>
@@ -31,6 +35,7 @@ struct FileStroke {
   std::string label;    // "label" key (JSON lines), else empty
   std::vector<StrokePoint> points;
   std::vector<double> pressure; // one per point in [0, 1] (JSON lines), or empty: none
+  bool timed = false;           // t given (JSON lines with 3 or 4 numbers per point; $1 XML)
 };
 
 std::vector<FileStroke> read_stroke_file(const std::string& path);

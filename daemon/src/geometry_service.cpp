@@ -1,6 +1,7 @@
 #include "geometry_service.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <optional>
 
 #include "call_runner.hpp"
@@ -339,9 +340,90 @@ grpc::Status analyze_stroke(DaemonState& state, grpc::ServerContext* context, co
   return status;
 }
 
+namespace {
+
+constexpr int kMaxGroupStrokes = 64;
+
+GroupingConfig grouping_from_proto(const v1::GroupingSettings& g) {
+  GroupingConfig out;
+  if (g.has_disabled()) out.enabled = !g.disabled();
+  if (g.has_max_strokes()) {
+    if (g.max_strokes() < 1 || g.max_strokes() > 8) {
+      throw InvalidInput("grouping.max_strokes must be within [1, 8]");
+    }
+    out.max_strokes = g.max_strokes();
+  }
+  if (g.has_max_pause_s()) {
+    if (!(g.max_pause_s() >= 0) || !std::isfinite(g.max_pause_s())) {
+      throw InvalidInput("grouping.max_pause_s must be a finite number >= 0");
+    }
+    out.max_pause_seconds = g.max_pause_s();
+  }
+  if (g.has_tidy_circle()) out.tidy.circle = g.tidy_circle();
+  if (g.has_tidy_right_angles()) out.tidy.right_angles = g.tidy_right_angles();
+  if (g.has_tidy_equal_sides()) out.tidy.equal_sides = g.tidy_equal_sides();
+  if (g.has_tidy_axis()) out.tidy.axis = g.tidy_axis();
+  if (g.has_tidy_parallel()) out.tidy.parallel = g.tidy_parallel();
+  if (g.has_tidy_connection()) out.tidy.connection = g.tidy_connection();
+  return out;
+}
+
+// Recognize with `strokes`: grouped on a stroke worker.
+grpc::Status recognize_strokes_call(DaemonState& state, grpc::ServerContext* context,
+                                    const v1::RecognizeRequest& request,
+                                    v1::RecognizeResponse* response) {
+  std::vector<Stroke> strokes;
+  PenSettings settings;
+  GroupingConfig grouping;
+  grpc::Status status = validated([&] {
+    if (request.has_stroke()) throw InvalidInput("give either `stroke` or `strokes`, not both");
+    if (request.strokes_size() > kMaxGroupStrokes) {
+      throw InvalidInput("strokes: at most " + std::to_string(kMaxGroupStrokes) + " strokes");
+    }
+    for (int i = 0; i < request.strokes_size(); ++i) {
+      strokes.push_back(stroke_from_proto(request.strokes(i), "strokes[" + std::to_string(i) + "]",
+                                          state.limits, true));
+    }
+    settings = apply(settings_for(state, strokes.front().tablet),
+                     settings_update_from_proto(request.settings(), "settings"));
+    grouping = grouping_from_proto(request.grouping());
+  });
+  if (!status.ok()) return status;
+  if (!state.analyzer) {
+    return not_in_this_build("recognize: this server was built without the recognizer");
+  }
+  const auto arrived = Clock::now();
+  std::uint64_t queued_us = 0;
+  std::uint64_t compute_us = 0;
+  std::vector<v1::RecognizedGroup> groups;
+  status = run_on_pool(
+      state.stroke_pool, context, state.limits,
+      [&](const StopCondition&) {
+        const auto started = Clock::now();
+        groups = state.analyzer->recognize_group(strokes, settings, grouping);
+        compute_us = micros_since(started);
+        return grpc::Status::OK;
+      },
+      &queued_us);
+  if (!status.ok()) return status;
+  if (groups.empty()) {
+    return not_in_this_build("recognize: this server's analyzer does not recognize shapes");
+  }
+  for (auto& g : groups) *response->add_groups() = std::move(g);
+  response->mutable_timings()->set_queued_us(queued_us);
+  response->mutable_timings()->set_compute_us(compute_us);
+  response->mutable_timings()->set_total_us(micros_since(arrived));
+  return grpc::Status::OK;
+}
+
+} // namespace
+
 grpc::Status GeometryServiceImpl::Recognize(grpc::ServerContext* context,
                                             const v1::RecognizeRequest* request,
                                             v1::RecognizeResponse* response) {
+  if (request->strokes_size() > 0) {
+    return recognize_strokes_call(state_, context, *request, response);
+  }
   Stroke stroke;
   PenSettings settings;
   grpc::Status status = validated([&] {

@@ -38,6 +38,10 @@ v1::ShapeKind kind_of(ShapeClass c) {
       return v1::SHAPE_KIND_ELLIPSE;
     case ShapeClass::kArc:
       return v1::SHAPE_KIND_ARC;
+    case ShapeClass::kArrow:
+      return v1::SHAPE_KIND_ARROW;
+    case ShapeClass::kDoubleArrow:
+      return v1::SHAPE_KIND_DOUBLE_ARROW;
   }
   return v1::SHAPE_KIND_UNSPECIFIED;
 }
@@ -108,6 +112,39 @@ class RecognizingAnalyzer final : public StrokeAnalyzer {
           c.certificate.epsilon > 0 ? 1 - c.certificate.bound / (2 * c.certificate.epsilon) : 0));
     }
     return analysis;
+  }
+
+  std::vector<v1::RecognizedGroup> recognize_group(const std::vector<Stroke>& strokes,
+                                                   const PenSettings& settings,
+                                                   const GroupingConfig& grouping) override {
+    std::vector<StrokeInput> inputs;
+    for (std::size_t i = 0; i < strokes.size(); ++i) {
+      StrokeInput in;
+      in.samples = path_mm(strokes[i]);
+      if (in.samples.size() < 2 || !has_distinct_points(in.samples)) {
+        throw InvalidInput("strokes[" + std::to_string(i) +
+                           "]: a stroke needs at least two distinct tip-down positions");
+      }
+      in.pen_radius = settings.pen_radius_mm;
+      inputs.push_back(std::move(in));
+    }
+    std::vector<v1::RecognizedGroup> out;
+    for (const GroupedShape& g : recognize_strokes(inputs, grouping, config_for(settings))) {
+      v1::RecognizedGroup group;
+      const Recognition& r = g.recognition;
+      *group.mutable_shape() =
+          to_proto_shape(r.shape, r.params, r.clean, r.certificate, r.confidence);
+      for (const std::size_t i : g.strokes) group.add_strokes(static_cast<std::uint32_t>(i));
+      for (const std::string& t : g.tidy) group.add_tidy(t);
+      for (const Candidate& c : r.alternatives) {
+        if (!c.certificate.certified || !c.rejected.empty()) continue;
+        *group.add_alternatives() = to_proto_shape(
+            c.shape, c.params, c.clean, c.certificate,
+            c.certificate.epsilon > 0 ? 1 - c.certificate.bound / (2 * c.certificate.epsilon) : 0);
+      }
+      out.push_back(std::move(group));
+    }
+    return out;
   }
 
   std::vector<v1::Shape> preview(const Stroke& partial, const PenSettings& settings,
@@ -187,6 +224,18 @@ v1::Shape to_proto_shape(ShapeClass shape, const ShapeParams& params,
       a->set_radius(params.radius_x);
       a->set_start_rad(params.start_angle);
       a->set_sweep_rad(params.sweep_angle);
+      break;
+    }
+    case ShapeClass::kArrow:
+    case ShapeClass::kDoubleArrow: {
+      auto* a = out.mutable_arrow();
+      const std::vector<PointD>& v = params.vertices;
+      set_point(v.at(0), a->mutable_tail());
+      set_point(v.at(1), a->mutable_tip());
+      for (std::size_t i = 2; i < 4; ++i) set_point(v.at(i), a->add_barbs());
+      for (std::size_t i = 4; i < v.size(); ++i) set_point(v[i], a->add_tail_barbs());
+      a->set_head_angle_rad(params.head_angle);
+      a->set_shaft_bulge(params.shaft_bulge);
       break;
     }
     default: {

@@ -158,3 +158,78 @@ TEST(RecognizeCli, InkCertificateAndPressure) {
 }
 
 } // namespace
+
+namespace {
+
+// A straight stroke as a JSON-lines row from (x0, y0) to (x1, y1), times from t0.
+std::string side(double x0, double y0, double x1, double y1, double t0) {
+  std::ostringstream row;
+  row << "{\"points\":[";
+  for (int k = 0; k <= 20; ++k) {
+    row << (k ? "," : "") << "[" << x0 + (x1 - x0) * k / 20.0 << "," << y0 + (y1 - y0) * k / 20.0
+        << "," << t0 + 0.01 * k << "]";
+  }
+  row << "],\"label\":\"rectangle\"}\n";
+  return row.str();
+}
+
+TEST(RecognizeCli, JsonLinesAreGroupedInDrawingOrder) {
+  const auto file =
+      write_temp("sides.jsonl", side(0, 0, 200, 0, 0) + side(200, 0, 200, 120, 0.5) +
+                                    side(200, 120, 0, 120, 1.0) + side(0, 120, 0, 0, 1.5));
+  Result r = run("--json --labels " + quoted(file));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("\"lines\":[1,2,3,4]"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"class\":\"rectangle\""), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"tidy\":["), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"correct\":1"), std::string::npos) << r.out;
+  r = run("--json --no-group " + quoted(file));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_EQ(r.out.find("\"lines\":[1,2"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"lines\":[4]"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"class\":\"segment\""), std::string::npos) << r.out;
+
+  const auto svg = std::filesystem::temp_directory_path() /
+                   ("penshape_recognize_cli_svg_" + std::to_string(::getpid()));
+  r = run("--svg-dir " + quoted(svg) + " " + quoted(file));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_TRUE(std::filesystem::exists(svg / (file.stem().string() + "-1.svg"))) << r.out;
+  std::filesystem::remove_all(svg);
+  std::filesystem::remove(file);
+}
+
+TEST(RecognizeCli, JsonLinesDecodeEscapesAndRefuseBadTimes) {
+  const auto escaped =
+      write_temp("escaped.jsonl",
+                 "{\"name\":\"caf\\u00e9\\r\\b\",\"points\":[[0,0,0],[100,0,0.1],[200,0,0.2]]}\n");
+  Result r = run("--json " + quoted(escaped));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("caf\xC3\xA9\\r\\u0008"), std::string::npos) << r.out;
+
+  struct Bad {
+    const char* name;
+    const char* text;
+    const char* says;
+  };
+  for (const Bad& b :
+       {Bad{"same_t.jsonl", "{\"points\":[[0,0,0],[1,1,0.1],[2,2,0.1]]}\n", "same time"},
+        Bad{"back_t.jsonl", "{\"points\":[[0,0,0.2],[1,1,0.1]]}\n", "backwards"},
+        Bad{"one.jsonl", "{\"points\":[[0,0,0]]}\n", "two distinct"},
+        Bad{"nan.jsonl", "{\"points\":[[0,0,0],[NaN,1,0.1]]}\n", "not valid JSON"},
+        Bad{"huge.jsonl", "{\"points\":[[0,0,0],[1e999,1,0.1]]}\n", "JSON"},
+        Bad{"text.jsonl", "{\"points\":[[0,0,0],[\"1\",1,0.1]]}\n", "number"},
+        Bad{"some_t.jsonl", "{\"points\":[[0,0,0],[1,1]]}\n", "every point"},
+        Bad{"order.jsonl", "{\"points\":[[0,0,1],[1,1,2]]}\n\n{\"points\":[[0,0,0],[1,1,0.5]]}\n",
+            "before the previous stroke"}}) {
+    const auto f = write_temp(b.name, b.text);
+    r = run(quoted(f));
+    EXPECT_EQ(r.exit_code, 2) << b.name << ": " << r.out;
+    const std::string line = std::string(b.name) == "order.jsonl" ? ":3:" : ":1:";
+    EXPECT_NE(r.out.find(f.string() + line), std::string::npos) << b.name << ": " << r.out;
+    EXPECT_NE(r.out.find(b.says), std::string::npos) << b.name << ": " << r.out;
+    std::filesystem::remove(f);
+  }
+  std::filesystem::remove(escaped);
+}
+
+} // namespace

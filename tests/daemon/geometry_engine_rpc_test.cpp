@@ -289,6 +289,7 @@ TEST_F(GeometryEngineRpc, ACancelledSuggestRadiusStopsPromptly) {
 } // namespace
 
 #include "penshape/daemon/ink_analyzer.hpp"
+#include "penshape/daemon/recognizing_analyzer.hpp"
 #include "penshape/v1/live.grpc.pb.h"
 
 namespace {
@@ -333,6 +334,70 @@ TEST(InkAnalyzerRpc, SubmitStrokeReturnsTheInkPolygon) {
   EXPECT_NEAR(x1, 21.0, error);
   EXPECT_NEAR(y0, 9.0, error);
   EXPECT_NEAR(y1, 11.0, error);
+}
+
+// A straight stroke from (x0, y0) to (x1, y1) in mm (100 units per mm), starting at t0_us.
+void add_line(v1::Stroke* stroke, double x0, double y0, double x1, double y1, std::int64_t t0_us) {
+  auto* tablet = stroke->mutable_tablet();
+  tablet->set_x_max(30000);
+  tablet->set_y_max(30000);
+  tablet->set_x_resolution(100);
+  tablet->set_y_resolution(100);
+  for (int i = 0; i <= 20; ++i) {
+    auto* s = stroke->add_samples();
+    s->set_time_us(t0_us + i * 5000);
+    s->set_x(static_cast<std::int32_t>(std::lround(100 * (x0 + (x1 - x0) * i / 20.0))));
+    s->set_y(static_cast<std::int32_t>(std::lround(100 * (y0 + (y1 - y0) * i / 20.0))));
+    s->set_tip(true);
+  }
+}
+
+TEST(RecognizeRpc, SeveralStrokesAreGroupedIntoOneArrow) {
+  penshape::daemon::ServerOptions options;
+  options.address = "unix-abstract:penshape-group-test-" + std::to_string(::getpid());
+  penshape::daemon::PenshapeServer server(
+      options, {nullptr, nullptr, penshape::daemon::make_recognizing_analyzer()});
+  auto geometry = v1::Geometry::NewStub(
+      grpc::CreateChannel(options.address, grpc::InsecureChannelCredentials()));
+  v1::RecognizeRequest request;
+  add_line(request.add_strokes(), 20, 80, 90, 80, 0); // the shaft
+  v1::Stroke* head = request.add_strokes();           // a "V" head, half a second later
+  add_line(head, 76, 86, 90, 80, 600'000);
+  add_line(head, 90, 80, 76, 74, 800'000);
+  request.mutable_settings()->set_pen_radius_mm(0.5);
+  {
+    grpc::ClientContext ctx;
+    v1::RecognizeResponse response;
+    const grpc::Status status = geometry->Recognize(&ctx, request, &response);
+    ASSERT_TRUE(status.ok()) << status.error_message();
+    ASSERT_EQ(response.groups_size(), 1);
+    EXPECT_EQ(response.groups(0).shape().kind(), v1::SHAPE_KIND_ARROW);
+    ASSERT_EQ(response.groups(0).strokes_size(), 2);
+    EXPECT_EQ(response.groups(0).strokes(1), 1u);
+  }
+  request.mutable_grouping()->set_disabled(true);
+  {
+    grpc::ClientContext ctx;
+    v1::RecognizeResponse response;
+    ASSERT_TRUE(geometry->Recognize(&ctx, request, &response).ok());
+    EXPECT_EQ(response.groups_size(), 2) << "grouping off: each stroke alone";
+  }
+  request.mutable_grouping()->set_max_strokes(9);
+  {
+    grpc::ClientContext ctx;
+    v1::RecognizeResponse response;
+    const grpc::Status status = geometry->Recognize(&ctx, request, &response);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+    EXPECT_NE(status.error_message().find("max_strokes"), std::string::npos);
+  }
+  request.clear_grouping();
+  add_line(request.mutable_stroke(), 0, 0, 10, 0, 0);
+  {
+    grpc::ClientContext ctx;
+    v1::RecognizeResponse response;
+    EXPECT_EQ(geometry->Recognize(&ctx, request, &response).error_code(),
+              grpc::StatusCode::INVALID_ARGUMENT);
+  }
 }
 
 } // namespace

@@ -98,5 +98,43 @@ TEST(RecognizingAnalyzer, PreviewsAGrowingCircleAndStopsWhenCancelled) {
   EXPECT_THROW((void)analyzer->preview(next, settings, [] { return true; }), Cancelled);
 }
 
+// Several strokes at once (Geometry.Recognize with `strokes`): a shaft and a "V" head are one
+// arrow covering both strokes; a far-away segment stays its own group.
+TEST(RecognizingAnalyzer, GroupsAShaftAndItsHeadIntoOneArrow) {
+  auto line = [](PointD a, PointD b) {
+    std::vector<PointD> out;
+    for (int k = 0; k <= 40; ++k)
+      out.push_back({a.x + (b.x - a.x) * k / 40.0, a.y + (b.y - a.y) * k / 40.0});
+    return out;
+  };
+  std::vector<PointD> head = line({76, 86}, {90, 80});
+  const std::vector<PointD> second = line({90, 80}, {76, 74});
+  head.insert(head.end(), second.begin() + 1, second.end());
+  std::vector<Stroke> strokes{stroke_from(line({20, 80}, {90, 80})), stroke_from(head),
+                              stroke_from(line({20, 150}, {90, 150}))};
+  for (std::size_t i = 0; i < strokes.size(); ++i) { // drawn one after the other
+    for (PenSample& s : strokes[i].samples) s.time_us += static_cast<std::int64_t>(i) * 1'000'000;
+  }
+  const auto analyzer = make_recognizing_analyzer();
+  PenSettings settings;
+  settings.pen_radius_mm = 0.5;
+  const std::vector<v1::RecognizedGroup> groups =
+      analyzer->recognize_group(strokes, settings, GroupingConfig{});
+  ASSERT_EQ(groups.size(), 2u);
+  EXPECT_EQ(groups[0].shape().kind(), v1::SHAPE_KIND_ARROW);
+  ASSERT_EQ(groups[0].strokes_size(), 2);
+  EXPECT_EQ(groups[0].strokes(0), 0u);
+  EXPECT_EQ(groups[0].strokes(1), 1u);
+  EXPECT_NEAR(groups[0].shape().arrow().tip().x(), 90, 1.0);
+  EXPECT_NEAR(groups[0].shape().arrow().tail().x(), 20, 1.0);
+  EXPECT_EQ(groups[0].shape().arrow().barbs_size(), 2);
+  EXPECT_LE(groups[0].shape().certificate().hausdorff_bound().approx(),
+            groups[0].shape().certificate().tolerance().approx());
+  ASSERT_EQ(groups[1].strokes_size(), 1);
+  EXPECT_EQ(groups[1].shape().kind(), v1::SHAPE_KIND_SEGMENT);
+  EXPECT_THROW(analyzer->recognize_group({stroke_from({{1, 1}, {1, 1}})}, settings, {}),
+               InvalidInput);
+}
+
 } // namespace
 } // namespace penshape::daemon

@@ -427,7 +427,10 @@ std::string stroke_svg(const StrokeFigure& f) {
     Skeleton sk;
     for (std::size_t i = 0; i < f.samples.size(); ++i) {
       const PointD a = view.map(f.samples[i]);
-      const PointD b = view.map(f.samples[i + 1 < f.samples.size() ? i + 1 : i]);
+      const bool last =
+          i + 1 >= f.samples.size() ||
+          std::find(f.stroke_starts.begin(), f.stroke_starts.end(), i + 1) != f.stroke_starts.end();
+      const PointD b = view.map(f.samples[last ? i : i + 1]);
       sk.segments.push_back({a, b});
     }
     union_group(svg, "ink", swept_pieces(sk, r, false), "#7b4fa0", "#7b4fa0", lw, 0.3);

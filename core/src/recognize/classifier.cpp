@@ -164,6 +164,10 @@ double degrees_of_freedom(const Fit& fit) {
       return 5;
     case ShapeClass::kArc:
       return 5;
+    case ShapeClass::kArrow:
+      return fit.params.shaft_bulge == 0.0 ? 8 : 9; // a curved shaft: one more
+    case ShapeClass::kDoubleArrow:
+      return 12;
     case ShapeClass::kFreeform:
       break;
   }

@@ -39,6 +39,46 @@ std::vector<PointD> CleanShape::sample(double h) const {
   return out;
 }
 
+std::vector<PointD> shaft_path(PointD tail, PointD tip, double bulge) {
+  const double c = distance(tail, tip);
+  if (bulge == 0.0 || c <= 0.0) return {tail, tip};
+  // The arc through tail, tip and the point `bulge` to the left of the chord's midpoint.
+  const PointD u = (1.0 / c) * (tip - tail);
+  const PointD n{-u.y, u.x};
+  const PointD mid = 0.5 * (tail + tip) + bulge * n;
+  const double r = (c * c / 4.0 + bulge * bulge) / (2.0 * std::abs(bulge));
+  const PointD centre = mid - (bulge > 0 ? r : -r) * n;
+  const double a0 = std::atan2(tail.y - centre.y, tail.x - centre.x);
+  const double half = std::asin(std::min(1.0, c / (2.0 * r)));
+  const double minor = 2.0 * half;
+  const double sweep =
+      (bulge > 0 ? -1.0 : 1.0) * (std::abs(bulge) <= r ? minor : 2.0 * std::numbers::pi - minor);
+  std::vector<PointD> out;
+  for (std::size_t k = 0; k <= kShaftChords; ++k) {
+    const double a = a0 + sweep * static_cast<double>(k) / static_cast<double>(kShaftChords);
+    out.push_back({centre.x + r * std::cos(a), centre.y + r * std::sin(a)});
+  }
+  out.front() = tail;
+  out.back() = tip;
+  return out;
+}
+
+std::vector<PointD> arrow_path(ShapeClass shape, const std::vector<PointD>& v, double bulge) {
+  const std::size_t need = shape == ShapeClass::kDoubleArrow ? 6 : 4;
+  if (v.size() != need) throw InvalidInput("clean shape: an arrow needs its tail, tip and barbs");
+  // One path through every piece; the retraces do not change the set (group_recognize.hpp).
+  std::vector<PointD> path;
+  if (shape == ShapeClass::kDoubleArrow) path = {v[4], v[0], v[5], v[0]};
+  const std::vector<PointD> shaft = shaft_path(v[0], v[1], bulge);
+  if (path.empty()) {
+    path = shaft;
+  } else {
+    path.insert(path.end(), shaft.begin() + 1, shaft.end());
+  }
+  path.insert(path.end(), {v[2], v[1], v[3]});
+  return path;
+}
+
 CleanShape clean_shape_of(ShapeClass shape, const ShapeParams& params) {
   CleanShape c;
   const auto finite = [](PointD p) { return std::isfinite(p.x) && std::isfinite(p.y); };
@@ -73,6 +113,10 @@ CleanShape clean_shape_of(ShapeClass shape, const ShapeParams& params) {
   if (c.path.empty()) throw InvalidInput("clean shape: no vertices");
   for (const PointD& v : c.path) {
     if (!finite(v)) throw InvalidInput("clean shape: a vertex is not finite");
+  }
+  if (shape == ShapeClass::kArrow || shape == ShapeClass::kDoubleArrow) {
+    c.path = arrow_path(shape, params.vertices, params.shaft_bulge);
+    return c;
   }
   if (shape != ShapeClass::kSegment && shape != ShapeClass::kPolyline) {
     c.path.push_back(c.path.front()); // polygons are closed

@@ -38,6 +38,16 @@ struct CleanShape {
 // Throws InvalidInput for freeform and degenerate parameters.
 CleanShape clean_shape_of(ShapeClass shape, const ShapeParams& params);
 
+// An arrow's shaft: the straight segment (bulge 0) or the circular arc through tail and tip
+// whose midpoint is `bulge` to the left of the chord, as kShaftChords chords. The certificate is
+// of these chords (the clean path); with |bulge| <= chord / 4 (what the fitter allows) each chord
+// strays from the exact arc by under 0.2% of the chord.
+inline constexpr std::size_t kShaftChords = 12;
+std::vector<PointD> shaft_path(PointD tail, PointD tip, double bulge);
+// An arrow's clean path from its vertices (group_recognize.hpp, "Arrows"); throws InvalidInput
+// for the wrong vertex count.
+std::vector<PointD> arrow_path(ShapeClass shape, const std::vector<PointD>& vertices, double bulge);
+
 // Distance from p to a circular arc (exact formula).
 double arc_distance(PointD p, const CleanShape& circle);
 // Distance from p to a point of the full ellipse near its foot point (an upper bound).

@@ -6,7 +6,7 @@
 
 namespace penshape {
 namespace {
-constexpr std::array<std::pair<ShapeClass, const char*>, 12> kNames{{
+constexpr std::array<std::pair<ShapeClass, const char*>, 14> kNames{{
     {ShapeClass::kFreeform, "freeform"},
     {ShapeClass::kSegment, "segment"},
     {ShapeClass::kPolyline, "polyline"},
@@ -19,6 +19,8 @@ constexpr std::array<std::pair<ShapeClass, const char*>, 12> kNames{{
     {ShapeClass::kCircle, "circle"},
     {ShapeClass::kEllipse, "ellipse"},
     {ShapeClass::kArc, "arc"},
+    {ShapeClass::kArrow, "arrow"},
+    {ShapeClass::kDoubleArrow, "double_arrow"},
 }};
 } // namespace
 

@@ -134,7 +134,9 @@ enum class ShapeClass {
   kRegularPolygon, // 5, 6 or 8 equal sides and angles
   kCircle,
   kEllipse,
-  kArc, // an open circular arc
+  kArc,        // an open circular arc
+  kArrow,      // a shaft and a head of two barbs (group_recognize.hpp, "Arrows")
+  kDoubleArrow // a shaft with a head at both ends
 };
 
 const char* to_string(ShapeClass c); // "freeform", "segment", ..., "regular_polygon", ...
@@ -204,6 +206,10 @@ struct ShapeParams {
   double rotation = 0.0;        // radians: ellipse/rectangle/square/diamond orientation
   double start_angle = 0.0;     // arc: start and signed sweep, radians
   double sweep_angle = 0.0;
+  double head_angle = 0.0; // arrows: mean angle between a barb and the shaft, radians
+  // Arrows: the shaft is the circular arc from tail to tip whose midpoint lies this far to the
+  // left of the chord tail -> tip (negative: to the right); 0 is a straight shaft.
+  double shaft_bulge = 0.0;
 };
 
 struct Candidate {

@@ -7,8 +7,10 @@
 #include <vector>
 
 #include "penshape/core/deconstruct.hpp"
+#include "penshape/core/group_recognize.hpp"
 #include "penshape/daemon/pen_settings.hpp"
 #include "penshape/types/stroke.hpp"
+#include "penshape/v1/geometry.pb.h"
 #include "penshape/v1/shape.pb.h"
 #include "penshape/v1/types.pb.h"
 
@@ -33,6 +35,15 @@ class StrokeAnalyzer {
   // on-line decision while points arrive). `partial` holds the samples so far. Called on a worker
   // at most once per Pipeline::kPreviewInterval per device, never twice at once for one device;
   // the default offers none.
+  // Several strokes in drawing order grouped into drawings (core's recognize_strokes, on the
+  // strokes' paths in mm with the settings' pen radius): every stroke in exactly one group.
+  // Throws InvalidInput naming `strokes[i]` for a stroke it refuses; analyzers that do not
+  // recognize shapes return nothing (the caller reports UNIMPLEMENTED).
+  virtual std::vector<v1::RecognizedGroup> recognize_group(const std::vector<Stroke>& /*strokes*/,
+                                                           const PenSettings& /*settings*/,
+                                                           const GroupingConfig& /*grouping*/) {
+    return {};
+  }
   virtual std::vector<v1::Shape> preview(const Stroke& /*partial*/, const PenSettings& /*settings*/,
                                          const CancelHook& /*cancel*/) {
     return {};

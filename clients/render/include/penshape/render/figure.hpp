@@ -53,8 +53,11 @@ struct DeconstructionFigure {
 
 struct StrokeFigure {
   std::vector<PointD> samples; // the stroke's positions in mm, in time order
-  double pen_radius = 0.0;     // r, mm: the ink is samples ⊕ D_r when `ink` is empty
-  PolygonSet ink;              // the ink region Q as the daemon computed it (may be empty)
+  // Several strokes in one figure (a group): indices into `samples` where a new stroke begins;
+  // no ink joins the sample before a break to it.
+  std::vector<std::size_t> stroke_starts;
+  double pen_radius = 0.0; // r, mm: the ink is samples ⊕ D_r when `ink` is empty
+  PolygonSet ink;          // the ink region Q as the daemon computed it (may be empty)
   std::optional<ShapeOutline> shape;
   double tolerance = 0.0; // eps, mm: band around the shape's ink (0 = no band)
   std::string caption;

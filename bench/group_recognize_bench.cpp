@@ -1,0 +1,225 @@
+// Shapes drawn in several strokes, arrows and separate shapes, on real strokes: the shared $1
+// gesture logs cut and combined by tests/support/multi_stroke_cases.hpp (the same cases the
+// grouping tests use). Prints the figures:
+//   polygons in 2-4 strokes   rectangles and triangles cut at 1-3 corners (gaps, overshoots,
+//                             reversed/reordered pieces, pauses): one group, right class;
+//   arrows                    $1 arrows whole (1 stroke) and cut at the tip (2 strokes);
+//   separate never merged     two shape strokes one after the other, 2 px apart;
+//   non-shape pairs snapped   two non-shape gestures touching: snapped to a shape together;
+//   single strokes            recognize() (today) beside StrokeGrouper on one stroke;
+//   time per stroke           StrokeGrouper::add (grouping, arrows, tidy-up included) beside
+//                             recognize() on the same strokes, thread CPU time p50/p99/max.
+// Usage: group_recognize_bench [--json]   (data dir: $PENSHAPE_SHARED_DATA_DIR)
+#include <time.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "multi_stroke_cases.hpp"
+#include "penshape/core/group_recognize.hpp"
+
+namespace {
+
+using penshape::GroupedShape;
+using penshape::ShapeClass;
+using penshape::StrokeInput;
+using penshape::cases::Gesture;
+using penshape::cases::Points;
+
+const std::map<std::string, std::set<std::string>> kTargets{
+    {"rectangle", {"rectangle", "square", "quadrilateral"}},
+    {"triangle", {"triangle"}},
+    {"circle", {"circle", "ellipse"}},
+    {"arrow", {"arrow"}}};
+const std::set<std::string> kNonShapes{"pigtail", "question_mark", "left_curly_brace",
+                                       "right_curly_brace", "delete_mark"};
+
+struct Rate {
+  int right = 0;
+  int total = 0;
+  void add(bool ok) { right += ok ? 1 : 0, ++total; }
+  [[nodiscard]] double percent() const { return total ? 100.0 * right / total : 0.0; }
+};
+
+std::vector<StrokeInput> inputs_of(const std::vector<Points>& strokes) {
+  std::vector<StrokeInput> in;
+  for (const Points& p : strokes) in.push_back({p, nullptr, nullptr, 0.0});
+  return in;
+}
+
+// One group covering every stroke, of one of the target classes.
+bool one_group_of(const std::vector<GroupedShape>& out, std::size_t strokes,
+                  const std::set<std::string>& targets) {
+  return out.size() == 1 && out[0].strokes.size() == strokes &&
+         targets.count(penshape::to_string(out[0].recognition.shape)) > 0;
+}
+
+double now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+double quantile(std::vector<double> v, double q) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  return v[static_cast<std::size_t>(q * static_cast<double>(v.size() - 1))];
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  const bool json = argc > 1 && std::strcmp(argv[1], "--json") == 0;
+  const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR");
+  const std::filesystem::path root =
+      std::filesystem::path(env ? env : PENSHAPE_SHARED_DATA_DIR) / "strokes" / "dollar1";
+  if (!std::filesystem::exists(root)) {
+    std::fprintf(stderr, "group_recognize_bench: no $1 logs under %s\n", root.c_str());
+    return 2;
+  }
+  const std::vector<Gesture> gestures = penshape::cases::dollar_gestures(root);
+
+  std::map<std::string, Rate> polygons; // by "rectangle/3" etc.
+  Rate polygons_all, arrows_whole, arrows_cut, separate, pairs_merged, pairs_any;
+  Rate single_shapes_today, single_shapes_group, single_non_today, single_non_group;
+  std::vector<double> t_group, t_today;
+  std::map<std::string, int> polygon_misses;
+
+  std::size_t v = 0;
+  for (const Gesture& g : gestures) {
+    ++v;
+    // Single strokes, today and through the grouper.
+    const std::vector<StrokeInput> one = inputs_of({g.points});
+    const double t0 = now();
+    const penshape::Recognition today = penshape::recognize(g.points);
+    t_today.push_back(now() - t0);
+    const std::vector<GroupedShape> grouped = penshape::recognize_strokes(one);
+    const std::string a = penshape::to_string(today.shape);
+    const std::string b = penshape::to_string(grouped.front().recognition.shape);
+    if (kTargets.count(g.kind) && g.kind != "arrow") {
+      single_shapes_today.add(kTargets.at(g.kind).count(a) > 0);
+      single_shapes_group.add(kTargets.at(g.kind).count(b) > 0);
+    }
+    if (kNonShapes.count(g.kind)) {
+      single_non_today.add(a != "freeform");
+      single_non_group.add(b != "freeform");
+    }
+    if (g.kind == "arrow") {
+      const bool whole_ok = one_group_of(grouped, 1, kTargets.at("arrow"));
+      arrows_whole.add(whole_ok);
+      if (!whole_ok) {
+        std::string why = "arrow whole -> " + b;
+        for (const auto& c : grouped.front().recognition.alternatives) {
+          if (c.shape == ShapeClass::kArrow) {
+            why += c.rejected.empty() ? (c.certificate.certified ? " (arrow ranked lower)"
+                                                                 : " (arrow not certified)")
+                                      : " (" + c.rejected + ")";
+            break;
+          }
+        }
+        ++polygon_misses[why];
+      }
+      const std::vector<Points> cut = penshape::cases::cut_arrow(g, v);
+      if (!cut.empty()) {
+        arrows_cut.add(one_group_of(penshape::recognize_strokes(inputs_of(cut)), cut.size(),
+                                    kTargets.at("arrow")));
+      }
+    }
+    if (g.kind == "rectangle" || g.kind == "triangle") {
+      const std::size_t max_pieces = g.kind == "rectangle" ? 4 : 3;
+      for (std::size_t pieces = 2; pieces <= max_pieces; ++pieces) {
+        const std::vector<Points> cut = penshape::cases::cut_shape(g, pieces, v);
+        if (cut.empty()) continue;
+        penshape::StrokeGrouper grouper;
+        for (const Points& p : cut) {
+          const double s0 = now();
+          grouper.add({p, nullptr, nullptr, 0.0});
+          t_group.push_back(now() - s0);
+        }
+        const bool ok = one_group_of(grouper.shapes(), cut.size(), kTargets.at(g.kind));
+        polygons[g.kind + " in " + std::to_string(pieces)].add(ok);
+        polygons_all.add(ok);
+        if (!ok) {
+          const auto shapes = grouper.shapes();
+          std::string key = std::to_string(shapes.size()) + " groups:";
+          for (const auto& s : shapes) key += std::string(" ") + to_string(s.recognition.shape);
+          ++polygon_misses[g.kind + " -> " + key];
+        }
+      }
+    }
+  }
+  // Pairs: consecutive gestures of the same list.
+  std::vector<const Gesture*> shapes, non_shapes;
+  for (const Gesture& g : gestures) {
+    if (g.kind == "rectangle" || g.kind == "triangle" || g.kind == "circle") shapes.push_back(&g);
+    if (kNonShapes.count(g.kind)) non_shapes.push_back(&g);
+  }
+  for (std::size_t i = 0; i + 1 < shapes.size(); i += 2) {
+    const auto pair =
+        penshape::cases::side_by_side(shapes[i]->points, shapes[i + 1]->points, 2.0, 0.4);
+    const auto out = penshape::recognize_strokes(inputs_of(pair));
+    bool merged = false;
+    for (const auto& s : out) merged = merged || s.strokes.size() > 1;
+    separate.add(!merged);
+  }
+  for (std::size_t i = 0; i + 1 < non_shapes.size(); i += 2) {
+    const auto pair =
+        penshape::cases::side_by_side(non_shapes[i]->points, non_shapes[i + 1]->points, 0.0, 0.4);
+    const auto out = penshape::recognize_strokes(inputs_of(pair));
+    bool merged = false, any = false;
+    for (const auto& s : out) {
+      const bool snap = s.recognition.shape != ShapeClass::kFreeform;
+      merged = merged || (snap && s.strokes.size() > 1);
+      any = any || snap;
+    }
+    pairs_merged.add(merged);
+    pairs_any.add(any);
+  }
+
+  auto row = [&](const char* what, const Rate& r, const char* target) {
+    if (json) {
+      std::printf("{\"row\":\"%s\",\"right\":%d,\"total\":%d,\"percent\":%.2f}\n", what, r.right,
+                  r.total, r.percent());
+    } else {
+      std::printf("%-44s %6.1f%%  (%d / %d)   target %s\n", what, r.percent(), r.right, r.total,
+                  target);
+    }
+  };
+  if (!json)
+    std::printf("group_recognize_bench: %zu $1 gestures from %s\n\n", gestures.size(),
+                root.c_str());
+  row("polygons in 2-4 strokes: class + grouping", polygons_all, ">= 95%");
+  for (const auto& [k, r] : polygons) row(("  " + k).c_str(), r, "");
+  row("arrows, whole (1 stroke)", arrows_whole, ">= 95%");
+  row("arrows, cut at the tip (2 strokes)", arrows_cut, ">= 95%");
+  row("separate shapes never merged", separate, ">= 99%");
+  row("non-shape pairs snapped together", pairs_merged, "<= 2%");
+  row("non-shape pairs with any snap", pairs_any, "(context)");
+  row("single shapes right: recognize() today", single_shapes_today, ">= 96%");
+  row("single shapes right: StrokeGrouper", single_shapes_group, ">= 96%");
+  row("single non-shapes snapped: today", single_non_today, "<= 2%");
+  row("single non-shapes snapped: StrokeGrouper", single_non_group, "<= 2%");
+  auto times = [&](const char* what, const std::vector<double>& t) {
+    if (json) {
+      std::printf("{\"row\":\"%s\",\"p50_ms\":%.3f,\"p99_ms\":%.3f,\"max_ms\":%.3f,\"n\":%zu}\n",
+                  what, 1e3 * quantile(t, 0.5), 1e3 * quantile(t, 0.99), 1e3 * quantile(t, 1.0),
+                  t.size());
+    } else {
+      std::printf("%-44s p50 %6.3f ms  p99 %6.3f ms  max %7.3f ms  (n = %zu)\n", what,
+                  1e3 * quantile(t, 0.5), 1e3 * quantile(t, 0.99), 1e3 * quantile(t, 1.0),
+                  t.size());
+    }
+  };
+  if (!json) std::printf("\ntime per stroke (thread CPU time; target p99 <= 5 ms)\n");
+  times("recognize(), one stroke (today)", t_today);
+  times("StrokeGrouper::add, multi-stroke polygons", t_group);
+  if (!json && !polygon_misses.empty()) {
+    std::printf("\nmisses:\n");
+    for (const auto& [k, n] : polygon_misses) std::printf("  %4d  %s\n", n, k.c_str());
+  }
+  return 0;
+}

@@ -1,0 +1,293 @@
+// Arrow fitting: the shaft from the two farthest points of the drawing, a barb on each side of
+// the shaft at the head, then a minimax polish of every vertex.
+#include "fit_arrow.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+namespace penshape::recognize_detail {
+namespace {
+
+constexpr std::size_t kCloudPoints = 64;
+constexpr double kDegree = std::numbers::pi / 180.0;
+constexpr double kMinHeadAngle = 10.0 * kDegree;
+constexpr double kMaxHeadAngle = 80.0 * kDegree;
+constexpr double kMaxBarbFraction = 0.8; // of the shaft
+constexpr double kMaxTracingArrow = 1.6;
+// An arrow is made of straight pieces: like segments and polylines it must fit more tightly than
+// round shapes (recognize.hpp, straight_fraction), a little looser since the head is small.
+constexpr double kStraightFraction = 0.6;
+// A curved shaft bows by at most this fraction of its chord.
+constexpr double kMaxBulge = 0.25;
+
+} // namespace
+
+std::vector<PointD> cloud_of(const UnionStroke& u) {
+  double total = 0.0;
+  for (const auto& p : u.pieces) total += path_length(p);
+  std::vector<PointD> out;
+  for (const auto& p : u.pieces) {
+    const double share = total > 0 ? path_length(p) / total : 1.0;
+    const auto n = static_cast<std::size_t>(
+        std::max(4.0, std::round(share * static_cast<double>(kCloudPoints))));
+    const std::vector<PointD> r = resample(p, n);
+    out.insert(out.end(), r.begin(), r.end());
+  }
+  return out;
+}
+
+namespace {
+
+double angle_between(PointD a, PointD b) { return std::abs(std::atan2(cross(a, b), dot(a, b))); }
+
+// The direction back along the shaft from the tip (the tangent of a curved shaft, nearly).
+PointD shaft_back(PointD tail, PointD tip, double bulge) {
+  const std::vector<PointD> shaft = shaft_path(tail, tip, bulge);
+  return shaft[shaft.size() - 2] - tip;
+}
+
+// The barb ends at `head` for a shaft from `other` to `head`: on each side, the point farthest
+// from the head among those that leave the shaft at 10..90 degrees and by more than epsilon / 2.
+std::optional<std::pair<PointD, PointD>> find_barbs(const std::vector<PointD>& cloud, PointD head,
+                                                    PointD other, double epsilon) {
+  const PointD back = other - head;
+  const double shaft = norm(back);
+  std::optional<PointD> side[2];
+  double far[2] = {0.0, 0.0};
+  for (const PointD& x : cloud) {
+    const PointD d = x - head;
+    const double r = norm(d);
+    if (r > kMaxBarbFraction * shaft || r <= 0.0) continue;
+    const double off = cross(back, d) / shaft;
+    if (std::abs(off) < epsilon / 2.0) continue;
+    const double a = angle_between(back, d);
+    if (a < kMinHeadAngle || a > std::numbers::pi / 2) continue;
+    const int k = off > 0 ? 0 : 1;
+    if (r > far[k]) {
+      far[k] = r;
+      side[k] = x;
+    }
+  }
+  if (!side[0] || !side[1]) return std::nullopt;
+  return std::pair{*side[0], *side[1]};
+}
+
+// The polished unknowns: the vertices and the shaft's bulge.
+struct ArrowState {
+  std::vector<PointD> v;
+  double bulge = 0.0;
+};
+
+struct Objective {
+  const std::vector<PointD>& cloud;
+  const UnionStroke& u;
+  ShapeClass shape;
+
+  double operator()(const ArrowState& a) const {
+    if (std::abs(a.bulge) > kMaxBulge * distance(a.v[0], a.v[1])) return INFINITY;
+    CleanShape c;
+    c.path = arrow_path(shape, a.v, a.bulge);
+    double worst = max_distance(cloud, c);
+    for (const PointD& p : a.v) worst = std::max(worst, union_distance(u, p));
+    return worst;
+  }
+};
+
+// Compass search on every coordinate of the vertices and on the bulge (as refine_minimax does
+// for one stroke).
+double polish(ArrowState& a, const Objective& objective, double step, bool curved) {
+  double best = objective(a);
+  const double min_step = step / 32.0;
+  std::size_t budget = 60 * (a.v.size() + 1);
+  const std::size_t unknowns = a.v.size() + (curved ? 1 : 0);
+  while (step >= min_step && budget > 0) {
+    bool improved = false;
+    for (std::size_t i = 0; i < unknowns && budget > 0 && !improved; ++i) {
+      for (const PointD dir : {PointD{1, 0}, PointD{-1, 0}, PointD{0, 1}, PointD{0, -1}}) {
+        if (i == a.v.size() && dir.y != 0) continue; // the bulge is one number
+        ArrowState trial = a;
+        if (i == a.v.size()) {
+          trial.bulge += step * dir.x;
+        } else {
+          trial.v[i] = trial.v[i] + step * dir;
+        }
+        const double value = objective(trial);
+        --budget;
+        if (value < best) {
+          best = value;
+          a = std::move(trial);
+          improved = true;
+          break;
+        }
+      }
+    }
+    if (!improved) step /= 2.0;
+  }
+  return best;
+}
+
+// Least-squares refinement of a single arrow's start (a few rounds of k-lines): every point
+// goes to its nearest piece (shaft, barb 1, barb 2), each piece's line is refitted, the tip
+// becomes the point nearest the three lines, and the ends the farthest projections. Also
+// estimates the shaft's bulge (a parabola's mean offset is 2/3 of its sagitta).
+void settle(const std::vector<PointD>& cloud, ArrowState& a) {
+  for (int round = 0; round < 3; ++round) {
+    std::vector<PointD> group[3];
+    for (const PointD& p : cloud) {
+      const double d[3] = {segment_distance(p, a.v[0], a.v[1]), segment_distance(p, a.v[1], a.v[2]),
+                           segment_distance(p, a.v[1], a.v[3])};
+      group[std::min_element(d, d + 3) - d].push_back(p);
+    }
+    if (group[0].size() < 3 || group[1].size() < 2 || group[2].size() < 2) return;
+    Line line[3];
+    for (int k = 0; k < 3; ++k) line[k] = fit_line(group[k]);
+    // The point nearest the three lines: sum over k of (I - d d^T) (x - p_k) = 0.
+    double m00 = 0, m01 = 0, m11 = 0, r0 = 0, r1 = 0;
+    for (const Line& l : line) {
+      const PointD d = l.direction;
+      const double a00 = 1 - d.x * d.x, a01 = -d.x * d.y, a11 = 1 - d.y * d.y;
+      m00 += a00, m01 += a01, m11 += a11;
+      r0 += a00 * l.point.x + a01 * l.point.y;
+      r1 += a01 * l.point.x + a11 * l.point.y;
+    }
+    const double det = m00 * m11 - m01 * m01;
+    if (std::abs(det) < 1e-12) return;
+    const PointD tip{(r0 * m11 - r1 * m01) / det, (m00 * r1 - m01 * r0) / det};
+    auto far_end = [&](int k) {
+      PointD best = a.v[k == 0 ? 0 : k + 1];
+      double far = -1;
+      for (const PointD& p : group[k]) {
+        if (distance(p, tip) > far) far = distance(p, tip), best = p;
+      }
+      const PointD d = line[k].direction;
+      return line[k].point + dot(best - line[k].point, d) * d;
+    };
+    a.v = {far_end(0), tip, far_end(1), far_end(2)};
+  }
+  const double c = distance(a.v[0], a.v[1]);
+  if (c <= 0) return;
+  const PointD u = (1.0 / c) * (a.v[1] - a.v[0]);
+  double sum = 0;
+  std::size_t n = 0;
+  for (const PointD& p : cloud) {
+    const double t = dot(p - a.v[0], u);
+    if (t < 0.1 * c || t > 0.9 * c || segment_distance(p, a.v[0], a.v[1]) > 0.25 * c) continue;
+    sum += cross(u, p - a.v[0]);
+    ++n;
+  }
+  if (n > 0)
+    a.bulge = std::clamp(1.5 * sum / static_cast<double>(n), -kMaxBulge * c, kMaxBulge * c);
+}
+
+Fit make_fit(ShapeClass shape, ArrowState a, double error) {
+  Fit f;
+  f.shape = shape;
+  f.clean.kind = CleanShape::Kind::kPolyline;
+  f.clean.path = arrow_path(shape, a.v, a.bulge);
+  const std::vector<PointD>& v = a.v;
+  const PointD shaft = v[1] - v[0];
+  f.params.center = 0.5 * (v[0] + v[1]);
+  f.params.rotation = std::atan2(shaft.y, shaft.x);
+  const PointD back = shaft_back(v[0], v[1], a.bulge);
+  f.params.head_angle = 0.5 * (angle_between(back, v[2] - v[1]) + angle_between(back, v[3] - v[1]));
+  f.params.shaft_bulge = a.bulge;
+  f.params.vertices = std::move(a.v);
+  f.fit_error = error;
+  return f;
+}
+
+} // namespace
+
+std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon) {
+  const std::vector<PointD> cloud = cloud_of(u);
+  if (cloud.size() < 8) return {};
+  // The two farthest points: the tail and the tip (barbs lean back, so the tip is the farthest
+  // point from the tail).
+  std::size_t a = 0, b = 0;
+  double diameter = 0.0;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    for (std::size_t j = i + 1; j < cloud.size(); ++j) {
+      const double d = distance(cloud[i], cloud[j]);
+      if (d > diameter) {
+        diameter = d;
+        a = i;
+        b = j;
+      }
+    }
+  }
+  if (diameter <= 2.0 * epsilon) return {};
+  std::vector<Fit> out;
+  const auto at_a = find_barbs(cloud, cloud[a], cloud[b], epsilon);
+  const auto at_b = find_barbs(cloud, cloud[b], cloud[a], epsilon);
+  const double step = epsilon / 2.0;
+  for (const bool tip_is_b : {true, false}) {
+    const auto& head = tip_is_b ? at_b : at_a;
+    if (!head) continue;
+    const ArrowState start{
+        {tip_is_b ? cloud[a] : cloud[b], tip_is_b ? cloud[b] : cloud[a], head->first, head->second},
+        0.0};
+    const Objective objective{cloud, u, ShapeClass::kArrow};
+    // Straight: polished from the raw start and from the least-squares start; the better one.
+    ArrowState raw = start;
+    const double e_raw = polish(raw, objective, step, false);
+    ArrowState settled = start;
+    settle(cloud, settled);
+    ArrowState curved = settled;
+    settled.bulge = 0.0;
+    const double e_settled = polish(settled, objective, step, false);
+    const double e_straight = std::min(e_settled, e_raw);
+    if (e_settled < e_raw) {
+      out.push_back(make_fit(ShapeClass::kArrow, std::move(settled), e_settled));
+    } else {
+      out.push_back(make_fit(ShapeClass::kArrow, std::move(raw), e_raw));
+    }
+    // Curved, when the shaft bows visibly and the straight arrow fits too loosely to pass.
+    if (std::abs(curved.bulge) >= epsilon / 4.0 && e_straight > kStraightFraction * epsilon) {
+      const double e = polish(curved, objective, step, true);
+      out.push_back(make_fit(ShapeClass::kArrow, std::move(curved), e));
+    }
+  }
+  if (at_a && at_b) {
+    ArrowState st{{cloud[a], cloud[b], at_b->first, at_b->second, at_a->first, at_a->second}, 0.0};
+    const double e = polish(st, Objective{cloud, u, ShapeClass::kDoubleArrow}, step, false);
+    out.push_back(make_fit(ShapeClass::kDoubleArrow, std::move(st), e));
+  }
+  return out;
+}
+
+std::string arrow_implausibility(const Fit& f, const Certificate& c, double drawn_length) {
+  const std::vector<PointD>& v = f.params.vertices;
+  const double eps = c.epsilon;
+  if (c.bound > kStraightFraction * eps) {
+    return "an arrow is straight pieces: it must fit within 0.6 epsilon";
+  }
+  if (drawn_length > kMaxTracingArrow * path_length(f.clean.path)) {
+    return "the strokes are much longer than the arrow (traced over, a scribble or writing)";
+  }
+  const double shaft = distance(v[0], v[1]);
+  const double bulge = f.params.shaft_bulge;
+  auto head_ok = [&](PointD head, PointD back, PointD b1, PointD b2) -> std::string {
+    for (const PointD& b : {b1, b2}) {
+      const double len = distance(b, head);
+      if (len < eps) return "a barb is shorter than epsilon";
+      if (len > kMaxBarbFraction * shaft) return "a barb is longer than 0.8 shafts";
+      const double angle = angle_between(back, b - head);
+      if (angle < kMinHeadAngle || angle > kMaxHeadAngle) {
+        return "a barb leaves the shaft at less than 10 or more than 80 degrees";
+      }
+    }
+    if (cross(back, b1 - head) * cross(back, b2 - head) >= 0) {
+      return "both barbs lie on the same side of the shaft";
+    }
+    return {};
+  };
+  std::string why = head_ok(v[1], shaft_back(v[0], v[1], bulge), v[2], v[3]);
+  if (why.empty() && f.shape == ShapeClass::kDoubleArrow) {
+    why = head_ok(v[0], shaft_back(v[1], v[0], -bulge), v[4], v[5]);
+  }
+  return why;
+}
+
+} // namespace penshape::recognize_detail

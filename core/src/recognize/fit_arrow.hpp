@@ -1,0 +1,23 @@
+#pragma once
+// Arrow and double-arrow proposals for one or several strokes (group_recognize.hpp, "Arrows").
+#include <string>
+#include <vector>
+
+#include "fit.hpp"
+#include "union_certificate.hpp"
+
+namespace penshape::recognize_detail {
+
+// About 64 points spread along every piece in proportion to its length (no jumps between
+// pieces): what the fits and the RMS of a union are measured on.
+std::vector<PointD> cloud_of(const UnionStroke& u);
+
+// Candidates (arrow in either direction, double arrow) fitted to the union of the strokes, best
+// fit first; empty when no head stands out. Estimates only: the certificate decides.
+std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon);
+
+// Why a certified arrow is not a plausible snap (empty when it is); `drawn_length` is the summed
+// length of the strokes.
+std::string arrow_implausibility(const Fit& f, const Certificate& c, double drawn_length);
+
+} // namespace penshape::recognize_detail

@@ -1,0 +1,157 @@
+// Recognition of several strokes as one drawing (group_recognize.hpp, "Recognizing a union"),
+// and arrows for any number of strokes.
+#include "group_classifier.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "classifier.hpp"
+#include "fit_arrow.hpp"
+#include "stroke_chain.hpp"
+
+namespace penshape::recognize_detail {
+namespace {
+
+// Fits above this many epsilons are not certified (as evaluate() does).
+constexpr double kCertifyIfBelow = 1.25;
+
+std::vector<PointD> distinct_path(const std::vector<StrokePoint>& samples) {
+  std::vector<PointD> out;
+  out.reserve(samples.size());
+  for (const StrokePoint& s : samples) {
+    const PointD q{s.x, s.y};
+    if (out.empty() || !(out.back() == q)) out.push_back(q);
+  }
+  return out;
+}
+
+double rank_of(const Candidate& c, const Fit& f, double epsilon) {
+  return (c.certificate.bound + kRmsWeight * c.rms) / epsilon +
+         kPricePerParameter * degrees_of_freedom(f);
+}
+
+void sort_scored(std::vector<Scored>& scored) {
+  std::stable_sort(scored.begin(), scored.end(), [](const Scored& a, const Scored& b) {
+    if (a.snap != b.snap) return a.snap;
+    return a.rank < b.rank;
+  });
+}
+
+std::vector<Scored> score_arrows(const UnionStroke& u, const std::vector<PointD>& cloud,
+                                 double drawn_length, double epsilon, double pen_radius) {
+  std::vector<Scored> out;
+  for (Fit& f : fit_arrows(u, epsilon)) {
+    Scored sc;
+    Candidate& c = sc.candidate;
+    c.shape = f.shape;
+    c.params = f.params;
+    c.clean = f.clean.path;
+    if (f.fit_error <= kCertifyIfBelow * epsilon) {
+      c.certificate = certify_union(u, f.clean, epsilon, pen_radius);
+    } else {
+      c.certificate.epsilon = epsilon;
+      c.certificate.pen_radius = pen_radius;
+      c.certificate.bound = f.fit_error;
+    }
+    if (c.certificate.certified) c.rejected = arrow_implausibility(f, c.certificate, drawn_length);
+    c.rms = rms_distance(cloud, f.clean);
+    sc.rank = rank_of(c, f, epsilon);
+    sc.snap = c.certificate.certified && c.rejected.empty();
+    sc.fit = std::move(f);
+    out.push_back(std::move(sc));
+  }
+  return out;
+}
+
+// Several strokes: fitted on their chain, then the snaps certified on the union, best rank
+// first, until one passes (the others after it keep their chain-screening certificate).
+std::vector<Scored> score_chain(const UnionStroke& u, const PreparedStroke& s,
+                                const RecognizerConfig& config, double epsilon, double pen_radius) {
+  std::vector<Scored> scored =
+      evaluate(s, fit_all(s, config, epsilon), epsilon, pen_radius, config);
+  for (Scored& sc : scored) {
+    if (!sc.snap) break;
+    sc.candidate.certificate = certify_union(u, sc.fit.clean, epsilon, pen_radius);
+    sc.snap = sc.candidate.certificate.certified;
+    if (sc.snap) break;
+  }
+  return scored;
+}
+
+// The winner of one stroke's own recognition as a Scored entry, to compete with the arrows.
+double recognition_rank(const Recognition& r) {
+  if (r.shape == ShapeClass::kFreeform) return INFINITY;
+  Fit f;
+  f.shape = r.shape;
+  f.params = r.params;
+  return (r.certificate.bound + kRmsWeight * r.rms) / r.epsilon +
+         kPricePerParameter * degrees_of_freedom(f);
+}
+
+} // namespace
+
+UnionRecognition recognize_union_detail(std::span<const StrokeInput> strokes,
+                                        const RecognizerConfig& config_in) {
+  if (strokes.empty()) throw InvalidInput("recognize: no strokes");
+  RecognizerConfig config = config_in;
+  if (strokes.front().pen_radius > 0) config.pen_radius = strokes.front().pen_radius;
+  std::vector<StrokePoint> all;
+  std::vector<std::vector<PointD>> paths;
+  double drawn_length = 0.0;
+  for (const StrokeInput& st : strokes) {
+    validate_samples(st.samples, config);
+    all.insert(all.end(), st.samples.begin(), st.samples.end());
+    paths.push_back(distinct_path(st.samples));
+    drawn_length += path_length(paths.back());
+  }
+  const ToleranceChoice tol = choose_tolerance(all, config);
+  const double tau = thinning_tolerance(config, tol.epsilon);
+  UnionRecognition out;
+  out.strokes = prepare_union(paths, tau);
+  const std::vector<PointD> cloud = cloud_of(out.strokes);
+  // The strokes read as one path (the single-stroke fitters see the union through it).
+  const PreparedStroke chain = prepare_points(chain_pieces(paths), tau);
+  std::vector<Scored> arrows =
+      score_arrows(out.strokes, cloud, drawn_length, tol.epsilon, tol.pen_radius);
+  sort_scored(arrows);
+  if (strokes.size() == 1) {
+    out.recognition = recognize(strokes.front(), config);
+    out.rank = recognition_rank(out.recognition);
+    if (!arrows.empty() && arrows.front().snap && arrows.front().rank < out.rank) {
+      Recognition r = out.recognition;
+      std::vector<Candidate> others = std::move(r.alternatives);
+      if (r.shape != ShapeClass::kFreeform) {
+        Candidate previous;
+        previous.shape = r.shape;
+        previous.params = r.params;
+        previous.clean = r.clean;
+        previous.certificate = r.certificate;
+        previous.rms = r.rms;
+        others.insert(others.begin(), std::move(previous));
+      }
+      out.rank = arrows.front().rank;
+      out.recognition = choose(std::move(arrows), tol.epsilon, tol.pen_radius);
+      out.recognition.alternatives.insert(out.recognition.alternatives.end(), others.begin(),
+                                          others.end());
+    } else {
+      for (Scored& a : arrows) out.recognition.alternatives.push_back(std::move(a.candidate));
+    }
+    return out;
+  }
+  std::vector<Scored> scored = score_chain(out.strokes, chain, config, tol.epsilon, tol.pen_radius);
+  for (Scored& a : arrows) scored.push_back(std::move(a));
+  sort_scored(scored);
+  out.rank = !scored.empty() && scored.front().snap ? scored.front().rank : INFINITY;
+  out.recognition = choose(std::move(scored), tol.epsilon, tol.pen_radius);
+  return out;
+}
+
+} // namespace penshape::recognize_detail
+
+namespace penshape {
+
+Recognition recognize_union(std::span<const StrokeInput> strokes, const RecognizerConfig& config) {
+  return recognize_detail::recognize_union_detail(strokes, config).recognition;
+}
+
+} // namespace penshape

@@ -1,0 +1,206 @@
+// StrokeGrouper and recognize_strokes(): which recent strokes a new stroke is recognized with
+// (group_recognize.hpp, "Grouping"), then tidy-up.
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+
+#include "group_classifier.hpp"
+#include "penshape/core/group_recognize.hpp"
+#include "prepared_stroke.hpp"
+#include "stroke_chain.hpp"
+#include "thin_path.hpp"
+#include "tidy.hpp"
+
+namespace penshape {
+namespace {
+
+using recognize_detail::UnionRecognition;
+
+constexpr std::size_t kMaxGroupStrokes = 8;
+constexpr std::size_t kMaxRecentGroups = 6; // unions tried: at most 2^6 - 1
+// Touch tests run on each stroke's path thinned within this fraction of its size; the
+// tolerance is added to the join distance so that thinning never separates touching strokes.
+constexpr double kTouchThinning = 0.005;
+
+struct Touch {
+  std::vector<PointD> path;
+  double slack = 0.0;
+};
+
+Touch touch_path(const std::vector<StrokePoint>& samples) {
+  std::vector<PointD> p;
+  PointD lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
+  for (const StrokePoint& s : samples) {
+    const PointD q{s.x, s.y};
+    if (p.empty() || !(p.back() == q)) p.push_back(q);
+    lo = {std::min(lo.x, q.x), std::min(lo.y, q.y)};
+    hi = {std::max(hi.x, q.x), std::max(hi.y, q.y)};
+  }
+  const double tau = kTouchThinning * recognize_detail::distance(lo, hi);
+  return {recognize_detail::thin_path(p, tau), tau};
+}
+
+// Whether the strokes form one connected graph when strokes within `join` are linked.
+bool connected(const std::vector<const Touch*>& t, double join) {
+  std::vector<bool> seen(t.size(), false);
+  std::vector<std::size_t> stack{0};
+  seen[0] = true;
+  std::size_t count = 1;
+  while (!stack.empty()) {
+    const std::size_t i = stack.back();
+    stack.pop_back();
+    for (std::size_t j = 0; j < t.size(); ++j) {
+      if (seen[j]) continue;
+      const double gap = recognize_detail::polyline_gap(t[i]->path, t[j]->path);
+      if (gap <= join + t[i]->slack + t[j]->slack) {
+        seen[j] = true;
+        ++count;
+        stack.push_back(j);
+      }
+    }
+  }
+  return count == t.size();
+}
+
+bool snaps(const Recognition& r) { return r.shape != ShapeClass::kFreeform; }
+
+} // namespace
+
+StrokeGrouper::StrokeGrouper(GroupingConfig grouping, RecognizerConfig recognizer)
+    : grouping_(grouping), recognizer_(recognizer) {
+  if (grouping_.max_strokes < 1 || grouping_.max_strokes > kMaxGroupStrokes ||
+      !(grouping_.max_pause_seconds >= 0.0) || !std::isfinite(grouping_.max_pause_seconds)) {
+    throw InvalidInput(
+        "grouping: max_strokes must be within [1, 8] and max_pause_seconds a "
+        "finite number >= 0");
+  }
+}
+
+void StrokeGrouper::clear() {
+  strokes_.clear();
+  groups_.clear();
+}
+
+std::vector<GroupedShape> StrokeGrouper::shapes() const {
+  std::vector<GroupedShape> out;
+  for (const Entry& e : groups_) out.push_back(e.shape);
+  std::sort(out.begin(), out.end(), [](const GroupedShape& a, const GroupedShape& b) {
+    return a.strokes.front() < b.strokes.front();
+  });
+  return out;
+}
+
+GroupUpdate StrokeGrouper::add(const StrokeInput& stroke) {
+  RecognizerConfig config = recognizer_;
+  if (stroke.pen_radius > 0) config.pen_radius = stroke.pen_radius;
+  recognize_detail::validate_samples(stroke.samples, config);
+  const std::size_t index = strokes_.size();
+  const double start = stroke.samples.front().t;
+
+  // The best union with recent groups that snaps; else (below) the new stroke alone.
+  std::optional<UnionRecognition> best;
+  std::vector<std::size_t> best_groups; // indices into groups_ absorbed
+
+  // Recent groups that may still grow.
+  std::vector<std::size_t> recent;
+  if (grouping_.enabled) {
+    for (std::size_t g = groups_.size(); g-- > 0 && recent.size() < kMaxRecentGroups;) {
+      const Entry& e = groups_[g];
+      if (!e.joinable || start - e.end_time > grouping_.max_pause_seconds) continue;
+      if (e.shape.strokes.size() + 1 > grouping_.max_strokes) continue;
+      recent.push_back(g);
+    }
+  }
+  const Touch own = touch_path(stroke.samples);
+  std::map<std::size_t, Touch> cache;
+  auto touch_of = [&](std::size_t s) -> const Touch& {
+    auto it = cache.find(s);
+    if (it == cache.end()) it = cache.emplace(s, touch_path(strokes_[s].samples)).first;
+    return it->second;
+  };
+  std::size_t best_count = 2;
+  for (std::size_t mask = 1; mask < (std::size_t{1} << recent.size()); ++mask) {
+    std::vector<std::size_t> members;
+    std::vector<std::size_t> groups;
+    for (std::size_t k = 0; k < recent.size(); ++k) {
+      if (!(mask & (std::size_t{1} << k))) continue;
+      groups.push_back(recent[k]);
+      const auto& s = groups_[recent[k]].shape.strokes;
+      members.insert(members.end(), s.begin(), s.end());
+    }
+    if (members.size() + 1 > grouping_.max_strokes || members.size() + 1 < best_count) continue;
+    std::sort(members.begin(), members.end());
+    std::vector<StrokeInput> inputs;
+    std::vector<StrokePoint> all;
+    std::vector<const Touch*> t;
+    for (const std::size_t s : members) {
+      inputs.push_back(strokes_[s]);
+      all.insert(all.end(), strokes_[s].samples.begin(), strokes_[s].samples.end());
+      t.push_back(&touch_of(s));
+    }
+    inputs.push_back({stroke.samples, nullptr, nullptr, stroke.pen_radius});
+    all.insert(all.end(), stroke.samples.begin(), stroke.samples.end());
+    t.push_back(&own);
+    const ToleranceChoice tol = choose_tolerance(all, config);
+    if (!connected(t, 2.0 * tol.pen_radius + tol.epsilon)) continue;
+    UnionRecognition u = recognize_detail::recognize_union_detail(inputs, recognizer_);
+    if (!snaps(u.recognition)) continue;
+    const std::size_t count = members.size() + 1;
+    if (!best || count > best_count || (count == best_count && u.rank < best->rank)) {
+      best = std::move(u);
+      best_count = count;
+      best_groups = std::move(groups);
+    }
+  }
+
+  GroupUpdate update;
+  GroupedShape& shape = update.shape;
+  shape.id = next_id_++;
+  for (const std::size_t g : best_groups) {
+    update.superseded.push_back(groups_[g].shape.id);
+    shape.strokes.insert(shape.strokes.end(), groups_[g].shape.strokes.begin(),
+                         groups_[g].shape.strokes.end());
+  }
+  shape.strokes.push_back(index);
+  std::sort(shape.strokes.begin(), shape.strokes.end());
+  std::sort(best_groups.begin(), best_groups.end());
+  for (std::size_t k = best_groups.size(); k-- > 0;) {
+    groups_.erase(groups_.begin() + static_cast<std::ptrdiff_t>(best_groups[k]));
+  }
+  // Recent shapes other than this one: what connection and parallelism refer to.
+  std::vector<const Recognition*> neighbours;
+  for (std::size_t g = groups_.size(); g-- > 0 && neighbours.size() < grouping_.max_strokes;) {
+    if (snaps(groups_[g].shape.recognition)) neighbours.push_back(&groups_[g].shape.recognition);
+  }
+  // The new stroke alone (ink certificate when its ink is given), arrows included.
+  if (!best) best = recognize_detail::recognize_union_detail({&stroke, 1}, recognizer_);
+  shape.recognition = std::move(best->recognition);
+  // A lone stroke recognized on its ink keeps being certified on it.
+  const InkPolygon* ink = shape.strokes.size() == 1 && shape.recognition.certificate.method == "ink"
+                              ? stroke.ink
+                              : nullptr;
+  shape.tidy =
+      recognize_detail::tidy_up(shape.recognition, best->strokes, grouping_.tidy, neighbours, ink);
+  update.replaced_strokes = shape.strokes;
+
+  // Groups too old for any later stroke (drawn later, so starting no earlier) drop their samples.
+  for (Entry& e : groups_) {
+    if (!e.joinable || start - e.end_time <= grouping_.max_pause_seconds) continue;
+    e.joinable = false;
+    for (const std::size_t i : e.shape.strokes) strokes_[i].samples = {};
+  }
+  strokes_.push_back({stroke.samples, nullptr, nullptr, stroke.pen_radius});
+  groups_.push_back({shape, stroke.samples.back().t, true});
+  return update;
+}
+
+std::vector<GroupedShape> recognize_strokes(std::span<const StrokeInput> strokes,
+                                            const GroupingConfig& grouping,
+                                            const RecognizerConfig& recognizer) {
+  StrokeGrouper grouper(grouping, recognizer);
+  for (const StrokeInput& s : strokes) grouper.add(s);
+  return grouper.shapes();
+}
+
+} // namespace penshape

@@ -1,0 +1,84 @@
+// Certified Hausdorff bound between a clean shape and the union of several strokes' paths.
+#include "union_certificate.hpp"
+
+#include <cmath>
+
+#include "segment_index.hpp"
+#include "thin_path.hpp"
+
+namespace penshape::recognize_detail {
+namespace {
+constexpr double kMaxSamples = 50'000.0;
+}
+
+UnionStroke prepare_union(const std::vector<std::vector<PointD>>& paths, double tau) {
+  UnionStroke u;
+  u.thinning = tau > 0.0 ? tau : 0.0;
+  PointD lo{INFINITY, INFINITY};
+  PointD hi{-INFINITY, -INFINITY};
+  for (const std::vector<PointD>& path : paths) {
+    for (const PointD& p : path) {
+      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+    }
+    u.pieces.push_back(tau > 0.0 ? thin_path(path, tau) : path);
+  }
+  u.size = paths.empty() ? 0.0 : distance(lo, hi);
+  return u;
+}
+
+double union_distance(const UnionStroke& u, PointD p) {
+  double best = INFINITY;
+  for (const std::vector<PointD>& piece : u.pieces) {
+    best = std::min(best, polyline_distance(p, piece));
+  }
+  return best;
+}
+
+Certificate certify_union(const UnionStroke& u, const CleanShape& shape, double epsilon,
+                          double pen_radius) {
+  Certificate cert;
+  cert.epsilon = epsilon;
+  cert.pen_radius = pen_radius;
+  double stroke_len = 0.0;
+  for (const std::vector<PointD>& piece : u.pieces) stroke_len += path_length(piece);
+  const double shape_len = path_length(shape.sample(u.size));
+  const double h =
+      std::max({epsilon / 6.0, stroke_len / kMaxSamples, shape_len / kMaxSamples, 1e-12 * u.size});
+  cert.sample_spacing = h;
+
+  // sup over every piece of the distance to the shape (each segment sampled, ends included).
+  double worst = 0.0;
+  std::vector<Segment> segments;
+  for (const std::vector<PointD>& piece : u.pieces) {
+    if (piece.size() == 1) worst = std::max(worst, shape.distance_to(piece[0]));
+    for (std::size_t i = 0; i + 1 < piece.size(); ++i) {
+      segments.push_back({piece[i], piece[i + 1]});
+      const double len = distance(piece[i], piece[i + 1]);
+      const auto steps = static_cast<std::size_t>(std::max(1.0, std::ceil(len / h)));
+      for (std::size_t k = 0; k <= steps; ++k) {
+        const double f = static_cast<double>(k) / static_cast<double>(steps);
+        worst = std::max(worst, shape.distance_to(piece[i] + f * (piece[i + 1] - piece[i])));
+      }
+    }
+  }
+  // sup over the shape of the distance to the nearest piece (segments only: no jumps).
+  if (!segments.empty()) {
+    const SegmentIndex index(std::move(segments), epsilon / 2.0, 4096);
+    for (const PointD& s : shape.sample(h)) worst = std::max(worst, index.nearest_above(s, worst));
+  } else {
+    for (const PointD& s : shape.sample(h)) worst = std::max(worst, union_distance(u, s));
+  }
+  // Rounding margin as in certify() (twice: the thinning's own tests).
+  double magnitude = u.size;
+  for (const std::vector<PointD>& piece : u.pieces) {
+    for (const PointD& p : piece) magnitude = std::max({magnitude, std::abs(p.x), std::abs(p.y)});
+  }
+  const double margin = 2.0 * (1e-13 * magnitude + 1e-9 * u.size);
+  cert.bound = worst + h / 2.0 + u.thinning + margin;
+  cert.certified = std::isfinite(cert.bound) && cert.bound <= epsilon;
+  cert.method = "path";
+  return cert;
+}
+
+} // namespace penshape::recognize_detail

@@ -1,0 +1,274 @@
+// Grouping, arrows and tidy-up on synthetic strokes (always run): every snap is checked against
+// an independent brute-force Hausdorff distance to the union of the strokes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "group_test_support.hpp"
+#include "penshape/core/group_recognize.hpp"
+
+namespace penshape {
+namespace {
+
+using test::Path;
+
+// A straight stroke from a to b with a gentle deterministic wobble of `wobble` px, starting at
+// time t0 (one sample per 4 px, 10 ms apart).
+std::vector<StrokePoint> line(PointD a, PointD b, double t0, double wobble = 1.0) {
+  const double len = std::hypot(b.x - a.x, b.y - a.y);
+  const int n = std::max(3, static_cast<int>(len / 4));
+  const PointD nrm{-(b.y - a.y) / len, (b.x - a.x) / len};
+  std::vector<StrokePoint> out;
+  for (int k = 0; k <= n; ++k) {
+    const double f = static_cast<double>(k) / n;
+    const double w = wobble * std::sin(7.0 * f);
+    out.push_back(
+        {a.x + f * (b.x - a.x) + w * nrm.x, a.y + f * (b.y - a.y) + w * nrm.y, t0 + 0.01 * k});
+  }
+  return out;
+}
+
+// Several straight pieces drawn as one stroke.
+std::vector<StrokePoint> polyline(const std::vector<PointD>& v, double t0) {
+  std::vector<StrokePoint> out;
+  for (std::size_t i = 0; i + 1 < v.size(); ++i) {
+    auto piece = line(v[i], v[i + 1], out.empty() ? t0 : out.back().t + 0.01);
+    if (!out.empty()) piece.erase(piece.begin());
+    out.insert(out.end(), piece.begin(), piece.end());
+  }
+  return out;
+}
+
+StrokeInput input(std::vector<StrokePoint> s) { return {std::move(s), nullptr, nullptr, 0.0}; }
+
+double end_time(const std::vector<StrokeInput>& s) { return s.back().samples.back().t; }
+
+// The four sides of the rectangle (x0, y0)-(x1, y1), drawn one after the other with pauses.
+std::vector<StrokeInput> four_sides(double pause = 0.3) {
+  const std::vector<PointD> c{{0, 0}, {200, 0}, {200, 120}, {0, 120}};
+  std::vector<StrokeInput> out;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const double t0 = out.empty() ? 0.0 : end_time(out) + pause;
+    // Side 2 drawn backwards; small overshoot and gap at the corners.
+    if (i == 2) {
+      out.push_back(input(line({c[3].x - 2, c[3].y}, {c[2].x + 1, c[2].y}, t0)));
+    } else {
+      out.push_back(input(line(c[i], c[(i + 1) % 4], t0)));
+    }
+  }
+  return out;
+}
+
+void expect_independently_certified(const GroupedShape& g, const std::vector<StrokeInput>& s) {
+  const Recognition& r = g.recognition;
+  ASSERT_TRUE(r.certificate.certified);
+  const double h =
+      test::union_hausdorff(test::paths_of(s, g.strokes), test::clean_paths(r), r.epsilon / 50);
+  // The brute force samples with step eps/50: it may miss up to half a step.
+  EXPECT_LE(h, r.epsilon + r.epsilon / 100) << to_string(r.shape);
+  EXPECT_LE(h, r.certificate.bound + r.epsilon / 100)
+      << "the certified bound is not an upper bound";
+}
+
+TEST(GroupRecognize, RectangleFromFourSidesIsOneCertifiedRectangle) {
+  const std::vector<StrokeInput> s = four_sides();
+  const std::vector<GroupedShape> out = recognize_strokes(s);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].strokes, (std::vector<std::size_t>{0, 1, 2, 3}));
+  EXPECT_EQ(out[0].recognition.shape, ShapeClass::kRectangle);
+  expect_independently_certified(out[0], s);
+}
+
+TEST(GroupRecognize, FourthSideSupersedesTheThreeSideShape) {
+  const std::vector<StrokeInput> s = four_sides();
+  StrokeGrouper g;
+  GroupUpdate u;
+  for (std::size_t i = 0; i < 3; ++i) u = g.add(s[i]);
+  EXPECT_EQ(u.shape.strokes, (std::vector<std::size_t>{0, 1, 2}));
+  EXPECT_EQ(u.shape.recognition.shape, ShapeClass::kPolyline);
+  const std::size_t three = u.shape.id;
+  const GroupUpdate last = g.add(s[3]);
+  EXPECT_EQ(last.shape.recognition.shape, ShapeClass::kRectangle);
+  EXPECT_EQ(last.superseded, (std::vector<std::size_t>{three}));
+  EXPECT_EQ(last.replaced_strokes, (std::vector<std::size_t>{0, 1, 2, 3}));
+  EXPECT_EQ(g.shapes().size(), 1u);
+}
+
+TEST(GroupRecognize, ReorderedPiecesStillGroup) {
+  std::vector<StrokeInput> s = four_sides();
+  std::swap(s[0], s[2]);
+  std::swap(s[1], s[3]);
+  double t = 0;
+  for (StrokeInput& st : s) { // re-time in the new order
+    const double shift = t - st.samples.front().t;
+    for (StrokePoint& p : st.samples) p.t += shift;
+    t = st.samples.back().t + 0.4;
+  }
+  const std::vector<GroupedShape> out = recognize_strokes(s);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].recognition.shape, ShapeClass::kRectangle);
+  expect_independently_certified(out[0], s);
+}
+
+TEST(GroupRecognize, LongPauseStartsANewDrawing) {
+  const std::vector<GroupedShape> out = recognize_strokes(four_sides(5.0));
+  for (const GroupedShape& g : out) EXPECT_LT(g.strokes.size(), 4u);
+}
+
+TEST(GroupRecognize, GroupingOffRecognizesEachStrokeAlone) {
+  GroupingConfig config;
+  config.enabled = false;
+  const std::vector<GroupedShape> out = recognize_strokes(four_sides(), config);
+  ASSERT_EQ(out.size(), 4u);
+  for (const GroupedShape& g : out) EXPECT_EQ(g.recognition.shape, ShapeClass::kSegment);
+}
+
+TEST(GroupRecognize, TwoSeparateTrianglesStayTwo) {
+  std::vector<StrokeInput> s;
+  s.push_back(input(polyline({{0, 0}, {100, 0}, {50, 80}, {0, 0}}, 0)));
+  s.push_back(input(polyline({{104, 0}, {204, 0}, {154, 80}, {104, 0}}, 2.0)));
+  const std::vector<GroupedShape> out = recognize_strokes(s);
+  ASSERT_EQ(out.size(), 2u);
+  for (const GroupedShape& g : out) {
+    EXPECT_EQ(g.strokes.size(), 1u);
+    EXPECT_EQ(g.recognition.shape, ShapeClass::kTriangle);
+    expect_independently_certified(g, s);
+  }
+}
+
+void expect_arrow(const GroupedShape& g, const std::vector<StrokeInput>& s, PointD tail, PointD tip,
+                  std::size_t strokes) {
+  const Recognition& r = g.recognition;
+  ASSERT_EQ(r.shape, ShapeClass::kArrow) << to_string(r.shape);
+  EXPECT_EQ(g.strokes.size(), strokes);
+  ASSERT_EQ(r.params.vertices.size(), 4u);
+  EXPECT_LT(std::hypot(r.params.vertices[0].x - tail.x, r.params.vertices[0].y - tail.y), 6.0);
+  EXPECT_LT(std::hypot(r.params.vertices[1].x - tip.x, r.params.vertices[1].y - tip.y), 6.0);
+  // Barbs 50 long at atan(30 / 40) from the shaft.
+  EXPECT_NEAR(r.params.head_angle, std::atan2(30.0, 40.0), 0.12);
+  expect_independently_certified(g, s);
+}
+
+TEST(GroupRecognize, ArrowInOneStroke) {
+  const std::vector<StrokeInput> s{
+      input(polyline({{0, 0}, {200, 0}, {160, 30}, {200, 0}, {160, -30}}, 0))};
+  const std::vector<GroupedShape> out = recognize_strokes(s);
+  ASSERT_EQ(out.size(), 1u);
+  expect_arrow(out[0], s, {0, 0}, {200, 0}, 1);
+}
+
+TEST(GroupRecognize, ArrowAsShaftThenV) {
+  std::vector<StrokeInput> s{input(line({0, 0}, {200, 0}, 0))};
+  s.push_back(input(polyline({{160, 30}, {200, 0}, {160, -30}}, end_time(s) + 0.3)));
+  const std::vector<GroupedShape> out = recognize_strokes(s);
+  ASSERT_EQ(out.size(), 1u);
+  expect_arrow(out[0], s, {0, 0}, {200, 0}, 2);
+}
+
+TEST(GroupRecognize, ArrowAsShaftThenTwoBarbs) {
+  std::vector<StrokeInput> s{input(line({0, 0}, {200, 0}, 0))};
+  s.push_back(input(line({200, 0}, {160, 30}, end_time(s) + 0.3)));
+  s.push_back(input(line({160, -30}, {201, 1}, end_time(s) + 0.3)));
+  const std::vector<GroupedShape> out = recognize_strokes(s);
+  ASSERT_EQ(out.size(), 1u);
+  expect_arrow(out[0], s, {0, 0}, {200, 0}, 3);
+}
+
+TEST(GroupRecognize, DoubleArrow) {
+  const std::vector<StrokeInput> s{input(polyline(
+      {{40, 30}, {0, 0}, {40, -30}, {0, 0}, {200, 0}, {160, 30}, {200, 0}, {160, -30}}, 0))};
+  const std::vector<GroupedShape> out = recognize_strokes(s);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].recognition.shape, ShapeClass::kDoubleArrow);
+  EXPECT_EQ(out[0].recognition.params.vertices.size(), 6u);
+  expect_independently_certified(out[0], s);
+}
+
+TEST(GroupRecognize, TidyTurnsANearlyAxisParallelRectangleOntoTheAxes) {
+  const double a = 3.0 * std::numbers::pi / 180;
+  std::vector<PointD> c;
+  for (const PointD p : {PointD{0, 0}, PointD{200, 0}, PointD{200, 120}, PointD{0, 120}}) {
+    c.push_back({std::cos(a) * p.x - std::sin(a) * p.y, std::sin(a) * p.x + std::cos(a) * p.y});
+  }
+  c.push_back(c.front());
+  const std::vector<StrokeInput> s{input(polyline(c, 0))};
+  const std::vector<GroupedShape> out = recognize_strokes(s);
+  ASSERT_EQ(out.size(), 1u);
+  const Recognition& r = out[0].recognition;
+  ASSERT_EQ(r.shape, ShapeClass::kRectangle);
+  EXPECT_NE(std::find(out[0].tidy.begin(), out[0].tidy.end(), "axis"), out[0].tidy.end());
+  const std::vector<PointD>& v = r.params.vertices;
+  for (std::size_t i = 0; i < 4; ++i) { // every side horizontal or vertical
+    const PointD d{v[(i + 1) % 4].x - v[i].x, v[(i + 1) % 4].y - v[i].y};
+    EXPECT_LT(std::min(std::abs(d.x), std::abs(d.y)), 1e-6 * std::hypot(d.x, d.y));
+  }
+  expect_independently_certified(out[0], s);
+}
+
+TEST(GroupRecognize, TidyIsSkippedWhenItWouldNotCertify) {
+  // 9 degrees off the axis with a tight tolerance: turning it would leave the ink.
+  const double a = 9.0 * std::numbers::pi / 180;
+  std::vector<PointD> c;
+  for (const PointD p : {PointD{0, 0}, PointD{200, 0}, PointD{200, 120}, PointD{0, 120}}) {
+    c.push_back({std::cos(a) * p.x - std::sin(a) * p.y, std::sin(a) * p.x + std::cos(a) * p.y});
+  }
+  c.push_back(c.front());
+  RecognizerConfig rc;
+  rc.tolerance = 6.0;
+  const std::vector<StrokeInput> s{input(polyline(c, 0))};
+  const std::vector<GroupedShape> out = recognize_strokes(s, {}, rc);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(std::find(out[0].tidy.begin(), out[0].tidy.end(), "axis"), out[0].tidy.end());
+  expect_independently_certified(out[0], s);
+}
+
+TEST(GroupRecognize, TidyPrefersACircleToANearCircularEllipse) {
+  std::vector<StrokePoint> e;
+  for (int k = 0; k <= 200; ++k) {
+    const double t = 2 * std::numbers::pi * k / 200.0;
+    e.push_back({100 * std::cos(t), 92 * std::sin(t), 0.01 * k});
+  }
+  RecognizerConfig rc;
+  rc.tolerance = 8.0; // the ellipse fits far better, the circle still certifies
+  const std::vector<StrokeInput> s{input(e)};
+  const std::vector<GroupedShape> out = recognize_strokes(s, {}, rc);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].recognition.shape, ShapeClass::kCircle);
+  EXPECT_NE(std::find(out[0].tidy.begin(), out[0].tidy.end(), "circle"), out[0].tidy.end());
+  expect_independently_certified(out[0], s);
+}
+
+TEST(GroupRecognize, TidyConnectsALineToARecentShapesCorner) {
+  std::vector<StrokeInput> s{input(polyline({{0, 0}, {100, 0}, {100, 100}, {0, 100}, {0, 0}}, 0))};
+  // A line from 3 px off the square's corner (100, 100) going away from it, 5 s later (its own
+  // drawing: grouping cannot merge it, tidy-up may still connect it).
+  s.push_back(input(line({103, 102}, {250, 190}, 5.0)));
+  const std::vector<GroupedShape> out = recognize_strokes(s);
+  ASSERT_EQ(out.size(), 2u);
+  const GroupedShape& seg = out[1];
+  ASSERT_EQ(seg.recognition.shape, ShapeClass::kSegment);
+  EXPECT_NE(std::find(seg.tidy.begin(), seg.tidy.end(), "connection"), seg.tidy.end());
+  const PointD end = seg.recognition.params.vertices.front();
+  PointD corner = out[0].recognition.params.vertices.at(0);
+  for (const PointD& v : out[0].recognition.params.vertices) {
+    if (std::hypot(v.x - 100, v.y - 100) < std::hypot(corner.x - 100, corner.y - 100)) corner = v;
+  }
+  EXPECT_EQ(end.x, corner.x);
+  EXPECT_EQ(end.y, corner.y);
+  expect_independently_certified(seg, s);
+}
+
+TEST(GroupRecognize, BadStrokesAreRefusedAndNotAdded) {
+  StrokeGrouper g;
+  EXPECT_THROW(g.add(input({{1, 1, 0}})), InvalidInput);
+  EXPECT_THROW(g.add(input({{1, 1, 0}, {NAN, 2, 0.1}})), InvalidInput);
+  EXPECT_EQ(g.stroke_count(), 0u);
+  EXPECT_THROW(recognize_union({}), InvalidInput);
+  GroupingConfig bad;
+  bad.max_strokes = 0;
+  EXPECT_THROW(StrokeGrouper{bad}, InvalidInput);
+}
+
+} // namespace
+} // namespace penshape
