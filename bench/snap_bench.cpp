@@ -125,7 +125,7 @@ Row library_row(const std::string& what, const std::string& bytes, int runs) {
   for (int i = 0; i < runs; ++i) {
     const auto start = Clock::now();
     const auto result =
-        penshape::snap::snap_document(bytes, {}, penshape::snap::recognize_in_process);
+        penshape::snap::snap_document(bytes, {}, penshape::snap::recognize_page_in_process);
     t.push_back(std::chrono::duration<double>(Clock::now() - start).count());
     row.snapped = result.replacements.size();
   }

@@ -22,7 +22,8 @@ fail() { echo "check-package: $*" >&2; exit 1; }
 for f in /usr/lib/udev/rules.d/70-penshape-tablets.rules /usr/lib/systemd/user/penshaped.service \
          /usr/share/man/man1/penshape.1.gz /usr/share/man/man1/penshaped.1.gz \
          /usr/share/penshape/python/penshape_watch.py /usr/lib/cmake/penshape/penshapeConfig.cmake \
-         /usr/include/penshape/core/deconstruct.hpp; do
+         /usr/include/penshape/core/deconstruct.hpp /usr/share/inkscape/extensions/penshape_snap.inx \
+         /usr/share/inkscape/extensions/penshape_snap.py; do
   [ -e "$f" ] || [ -e "${f/\/usr\/lib\/cmake//usr/lib/$(gcc -print-multiarch)/cmake}" ] ||
     fail "missing $f"
 done

@@ -44,18 +44,23 @@ constexpr const char* kHelp =
     "                  the median for pressure strokes)\n"
     "  --tolerance E   Hausdorff tolerance in document units (default: the recognizer's rule,\n"
     "                  min(5 R, 12.5% of the stroke's size)); runs in-process\n"
-    "  --no-group      recognize every stroke on its own. Today this changes nothing: strokes are\n"
-    "                  always recognized one by one until the core groups recent strokes\n"
+    "  --no-group      recognize every stroke on its own (default: strokes drawn one after the\n"
+    "                  other that together make one shape, such as a rectangle's four sides or\n"
+    "                  an arrow's shaft and head, become that shape, certified on their union;\n"
+    "                  document order is drawing order; all of the group's strokes are replaced)\n"
     "  --ids ID,...    only these elements (a group or layer: what it holds); SVG only\n"
     "  --layer ID      only this layer; SVG only\n"
     "  --in-place      write the result over IN (IN is never overwritten otherwise)\n"
     "  --local         recognize in this process even when penshaped is running\n"
     "  --json          one object per replacement: elements (SVG ids or \"page P layer L stroke\n"
-    "                  S\"), where, class, params, pen_radius, certificate\n"
+    "                  S\"; several for a group), where, class, params, tidy (the tidy-up\n"
+    "                  constraints applied), pen_radius, certificate\n"
     "  --socket PATH   penshaped's unix socket (default: $XDG_RUNTIME_DIR/penshape.sock)\n"
     "  --address ADDR  a gRPC address instead (unix:PATH, unix-abstract:NAME, HOST:PORT)\n"
-    "Without --local, penshaped's Geometry.Recognize is used when it answers, else the core\n"
-    "in-process (a note on stderr says which). OUT is written to a temporary file and renamed,\n"
+    "Without --local, penshaped's Geometry.Recognize is used when it answers (up to 64 strokes "
+    "per\n"
+    "call, grouped by the daemon), else the core in-process (a note on stderr says which). OUT is "
+    "written to a temporary file and renamed,\n"
     "so no partial file is left; OUT \"-\" is standard output.\n"
     "\n"
     "Exit codes: 0 ok, 2 bad input (message names the line, element id or stroke; OUT is not\n"
@@ -107,7 +112,11 @@ std::string json_line(const snap::Replacement& rep) {
     json.key("start_angle").number(r.params.start_angle);
     json.key("sweep_angle").number(r.params.sweep_angle);
   }
+  if (r.params.head_angle > 0) json.key("head_angle").number(r.params.head_angle);
   json.end_object();
+  json.key("tidy").begin_array();
+  for (const auto& t : rep.tidy) json.string(t);
+  json.end_array();
   json.key("pen_radius").number(rep.pen_radius);
   const Certificate& c = r.certificate;
   json.key("certificate").begin_object();
@@ -119,15 +128,10 @@ std::string json_line(const snap::Replacement& rep) {
 }
 
 // penshaped's recognizer when it answers (and nothing asks for in-process), else the core's.
-// Strokes the daemon fails on are recognized in-process, with one note.
-snap::StrokeRecognizer choose_recognizer(const ParsedArgs& parsed, std::string& engine) {
-  const auto local = [](const snap::InkStroke& s, const snap::SnapSettings& settings) {
-    try {
-      return snap::recognize_in_process(s, settings);
-    } catch (const InvalidInput& e) {
-      throw snap::SnapInputError(s.where + ": " + e.what());
-    }
-  };
+// A page the daemon fails on is recognized in-process, with a note; once the daemon is gone, every
+// later page too.
+snap::PageRecognizer choose_recognizer(const ParsedArgs& parsed, std::string& engine) {
+  const snap::PageRecognizer local = snap::recognize_page_in_process;
   engine = "in-process";
   if (parsed.flag("--local")) return local;
   const std::string address = daemon_address(parsed);
@@ -147,17 +151,17 @@ snap::StrokeRecognizer choose_recognizer(const ParsedArgs& parsed, std::string& 
   engine = "penshaped at " + address;
   auto remote = snap::daemon_recognizer(channel);
   auto failed = std::make_shared<bool>(false);
-  return [remote, local, failed](const snap::InkStroke& s, const snap::SnapSettings& settings) {
+  return [remote, local, failed](const std::vector<snap::InkStroke>& page,
+                                 const snap::SnapSettings& settings) {
     if (!*failed) {
       try {
-        return remote(s, settings);
+        return remote(page, settings);
       } catch (const snap::DaemonCallFailed& e) {
-        std::fprintf(stderr, "penshape snap: %s: %s; recognizing in-process\n", s.where.c_str(),
-                     e.what());
+        std::fprintf(stderr, "penshape snap: %s; recognizing in-process\n", e.what());
         if (e.unavailable) *failed = true;
       }
     }
-    return local(s, settings);
+    return local(page, settings);
   };
 }
 
@@ -215,7 +219,7 @@ int run_snap(std::span<const std::string_view> args) {
   snap::SnapResult result;
   try {
     const std::string bytes = read_input(paths.in);
-    const snap::StrokeRecognizer recognizer = choose_recognizer(parsed, engine);
+    const snap::PageRecognizer recognizer = choose_recognizer(parsed, engine);
     result = snap::snap_document(bytes, options, recognizer);
   } catch (const snap::SnapInputError& e) {
     std::fprintf(stderr, "penshape snap: %s: %s\n", paths.in.c_str(), e.what());

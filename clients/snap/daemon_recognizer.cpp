@@ -1,10 +1,12 @@
-// Geometry.Recognize as a StrokeRecognizer (see daemon_recognizer.hpp).
+// Geometry.Recognize as a PageRecognizer (see daemon_recognizer.hpp).
 #include "daemon_recognizer.hpp"
 
 #include <grpcpp/client_context.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <string>
 
 #include "penshape/v1/geometry.grpc.pb.h"
 
@@ -38,6 +40,10 @@ ShapeClass class_of(v1::ShapeKind k) {
       return ShapeClass::kArc;
     case v1::SHAPE_KIND_QUADRILATERAL:
       return ShapeClass::kQuadrilateral;
+    case v1::SHAPE_KIND_ARROW:
+      return ShapeClass::kArrow;
+    case v1::SHAPE_KIND_DOUBLE_ARROW:
+      return ShapeClass::kDoubleArrow;
     default:
       return ShapeClass::kFreeform;
   }
@@ -64,11 +70,20 @@ Recognition from_proto(const v1::Shape& shape, double s) {
     p.radius_x = p.radius_y = shape.arc().radius() * s;
     p.start_angle = shape.arc().start_rad();
     p.sweep_angle = shape.arc().sweep_rad();
+  } else if (shape.has_arrow()) {
+    const v1::ArrowParams& a = shape.arrow();
+    p.vertices = {scaled(a.tail(), s), scaled(a.tip(), s)};
+    for (const v1::Point& v : a.barbs()) p.vertices.push_back(scaled(v, s));
+    for (const v1::Point& v : a.tail_barbs()) p.vertices.push_back(scaled(v, s));
+    p.head_angle = a.head_angle_rad();
+    p.shaft_bulge = a.shaft_bulge() * s;
   } else {
     for (const v1::Point& v : shape.vertices().vertices()) p.vertices.push_back(scaled(v, s));
   }
   const v1::ShapeCertificate& c = shape.certificate();
-  r.certificate.certified = shape.has_certificate();
+  // A curved shaft comes without its path (Recognition::clean), which snap would draw straight:
+  // not what was certified, so it is not written.
+  r.certificate.certified = shape.has_certificate() && p.shaft_bulge == 0;
   r.certificate.bound = c.hausdorff_bound().approx() * s;
   r.certificate.epsilon = c.tolerance().approx() * s;
   r.certificate.pen_radius = c.pen_radius().approx() * s;
@@ -81,41 +96,90 @@ Recognition from_proto(const v1::Shape& shape, double s) {
 
 } // namespace
 
-StrokeRecognizer daemon_recognizer(std::shared_ptr<grpc::Channel> channel) {
+namespace {
+
+constexpr std::size_t kStrokesPerCall = 64; // RecognizeRequest.strokes' limit
+
+void add_stroke(const InkStroke& stroke, double start, double s, v1::Stroke* out) {
+  v1::TabletInfo* tablet = out->mutable_tablet();
+  tablet->set_name("penshape snap");
+  tablet->set_x_resolution(kUnitsPerMm);
+  tablet->set_y_resolution(kUnitsPerMm);
+  tablet->set_pressure_max(1);
+  for (const StrokePoint& q : timed_samples(stroke, start)) {
+    const double x = q.x / s * kUnitsPerMm, y = q.y / s * kUnitsPerMm;
+    if (!(std::abs(x) < 2e9 && std::abs(y) < 2e9)) {
+      throw DaemonCallFailed(
+          stroke.where + ": the stroke does not fit the daemon's integer samples", true);
+    }
+    v1::PenSample* sample = out->add_samples();
+    sample->set_time_us(std::llround(q.t * 1e6));
+    sample->set_x(static_cast<std::int32_t>(std::lround(x)));
+    sample->set_y(static_cast<std::int32_t>(std::lround(y)));
+    sample->set_pressure(1);
+    sample->set_in_range(true);
+    sample->set_tip(true);
+  }
+}
+
+// One call for page[first, first + count): their answers, stroke indices into the page.
+std::vector<StrokeSnap> recognize_batch(v1::Geometry::Stub& stub,
+                                        const std::vector<InkStroke>& page, std::size_t first,
+                                        std::size_t count, const SnapSettings& settings) {
+  std::vector<double> radii;
+  for (std::size_t i = first; i < first + count; ++i) {
+    radii.push_back(clean_pen_radius(page[i], settings));
+  }
+  std::nth_element(radii.begin(), radii.begin() + static_cast<std::ptrdiff_t>(radii.size() / 2),
+                   radii.end());
+  const double s = radii[radii.size() / 2]; // page units per mm
+  v1::RecognizeRequest request;
+  double start = 0;
+  for (std::size_t i = first; i < first + count; ++i) {
+    add_stroke(page[i], start, s, request.add_strokes());
+    start += 0.01 * static_cast<double>(page[i].points.size()) + 0.1; // as timed_samples
+  }
+  request.mutable_settings()->set_pen_radius_mm(1.0);
+  request.mutable_grouping()->set_disabled(!settings.group);
+  grpc::ClientContext context;
+  context.set_deadline(std::chrono::system_clock::now() + kCallTimeout);
+  v1::RecognizeResponse response;
+  const grpc::Status status = stub.Recognize(&context, request, &response);
+  if (!status.ok()) {
+    throw DaemonCallFailed("Recognize: " + status.error_message(),
+                           status.error_code() == grpc::StatusCode::UNAVAILABLE);
+  }
+  std::vector<StrokeSnap> out;
+  for (const v1::RecognizedGroup& g : response.groups()) {
+    StrokeSnap snap;
+    for (const std::uint32_t k : g.strokes()) {
+      if (k >= count)
+        throw DaemonCallFailed(
+            "Recognize: a group names stroke " + std::to_string(k) + " of " + std::to_string(count),
+            false);
+      snap.strokes.push_back(first + k);
+    }
+    if (snap.strokes.empty()) continue;
+    snap.recognition = from_proto(g.shape(), s);
+    snap.tidy.assign(g.tidy().begin(), g.tidy().end());
+    out.push_back(std::move(snap));
+  }
+  return out;
+}
+
+} // namespace
+
+PageRecognizer daemon_recognizer(std::shared_ptr<grpc::Channel> channel) {
   auto stub = std::shared_ptr<v1::Geometry::Stub>(v1::Geometry::NewStub(channel));
-  return [stub](const InkStroke& stroke, const SnapSettings& settings) {
-    const double s = clean_pen_radius(stroke, settings); // page units per mm
-    v1::RecognizeRequest request;
-    v1::Stroke* out = request.mutable_stroke();
-    v1::TabletInfo* tablet = out->mutable_tablet();
-    tablet->set_name("penshape snap");
-    tablet->set_x_resolution(kUnitsPerMm);
-    tablet->set_y_resolution(kUnitsPerMm);
-    tablet->set_pressure_max(1);
-    for (std::size_t i = 0; i < stroke.points.size(); ++i) {
-      const double x = stroke.points[i].x / s * kUnitsPerMm,
-                   y = stroke.points[i].y / s * kUnitsPerMm;
-      if (!(std::abs(x) < 2e9 && std::abs(y) < 2e9)) {
-        throw DaemonCallFailed("the stroke does not fit the daemon's integer samples", true);
+  return [stub](const std::vector<InkStroke>& page, const SnapSettings& settings) {
+    std::vector<StrokeSnap> out;
+    for (std::size_t first = 0; first < page.size(); first += kStrokesPerCall) {
+      const std::size_t count = std::min(kStrokesPerCall, page.size() - first);
+      for (StrokeSnap& snap : recognize_batch(*stub, page, first, count, settings)) {
+        out.push_back(std::move(snap));
       }
-      v1::PenSample* sample = out->add_samples();
-      sample->set_time_us(static_cast<std::int64_t>(i) * 1000);
-      sample->set_x(static_cast<std::int32_t>(std::lround(x)));
-      sample->set_y(static_cast<std::int32_t>(std::lround(y)));
-      sample->set_pressure(1);
-      sample->set_in_range(true);
-      sample->set_tip(true);
     }
-    request.mutable_settings()->set_pen_radius_mm(1.0);
-    grpc::ClientContext context;
-    context.set_deadline(std::chrono::system_clock::now() + kCallTimeout);
-    v1::RecognizeResponse response;
-    const grpc::Status status = stub->Recognize(&context, request, &response);
-    if (!status.ok()) {
-      throw DaemonCallFailed("Recognize: " + status.error_message(),
-                             status.error_code() == grpc::StatusCode::UNAVAILABLE);
-    }
-    return from_proto(response.shape(), s);
+    return out;
   };
 }
 

@@ -1,9 +1,12 @@
 #pragma once
-// Recognizing a page's strokes through penshaped's Geometry.Recognize RPC, in the daemon's units:
-// the stroke is scaled so that its clean pen radius is 1 mm and sent as samples of a tablet of
-// 1000 units per mm, with that radius in the settings; the answer is scaled back. The daemon
-// certifies on the ink of one constant radius (pressure widths are not sent) with its own
-// tolerance rule, so `snap` sends nothing here when a tolerance is given (it runs in-process).
+// Recognizing a page's strokes through penshaped's Geometry.Recognize RPC (several strokes per
+// call, grouped by the daemon as the core's StrokeGrouper does, or not), in the daemon's units:
+// the strokes are scaled so that the median of their clean pen radii is 1 mm and sent as samples
+// of a tablet of 1000 units per mm, with that radius in the settings; the answers are scaled back.
+// A page of more strokes than one call takes (64) goes in consecutive batches, each grouped on
+// its own. The daemon certifies on the ink of one constant radius (pressure widths are not sent)
+// with its own tolerance rule, so `snap` sends nothing here when a tolerance is given (it runs
+// in-process).
 #include <grpcpp/channel.h>
 
 #include <memory>
@@ -21,6 +24,7 @@ struct DaemonCallFailed : std::runtime_error {
   bool unavailable;
 };
 
-StrokeRecognizer daemon_recognizer(std::shared_ptr<grpc::Channel> channel);
+// Throws DaemonCallFailed when a call fails.
+PageRecognizer daemon_recognizer(std::shared_ptr<grpc::Channel> channel);
 
 } // namespace penshape::snap

@@ -28,10 +28,10 @@ bool has_distinct_points(const InkStroke& s) {
   return false;
 }
 
-// Recognizes one page; calls replace(first, count, recognition, pen_radius) for each snap.
+// Recognizes one page; calls replace(strokes, snap, pen_radius) for each snap.
 template <typename Stroke, typename Replace>
 void snap_page(const std::vector<Stroke>& strokes, const SnapOptions& options,
-               const StrokeRecognizer& recognize_one, Replace&& replace) {
+               const PageRecognizer& recognize_page, Replace&& replace) {
   std::vector<const Stroke*> kept;
   std::vector<InkStroke> inks;
   for (const Stroke& s : strokes) {
@@ -39,12 +39,12 @@ void snap_page(const std::vector<Stroke>& strokes, const SnapOptions& options,
     kept.push_back(&s);
     inks.push_back(s.ink);
   }
-  for (const StrokeSnap& snap : recognize_page(inks, options.settings, recognize_one)) {
+  if (inks.empty()) return;
+  for (const StrokeSnap& snap : recognize_page(inks, options.settings)) {
     if (!is_snap(snap.recognition)) continue;
-    std::vector<const Stroke*> group(
-        kept.begin() + static_cast<std::ptrdiff_t>(snap.first),
-        kept.begin() + static_cast<std::ptrdiff_t>(snap.first + snap.count));
-    replace(group, snap.recognition, clean_pen_radius(inks[snap.first], options.settings));
+    std::vector<const Stroke*> group;
+    for (const std::size_t i : snap.strokes) group.push_back(kept.at(i));
+    replace(group, snap, clean_pen_radius(inks[snap.strokes.front()], options.settings));
   }
 }
 
@@ -55,13 +55,14 @@ std::string saved(const pugi::xml_document& doc) {
 }
 
 void snap_svg(pugi::xml_document& doc, const std::string& text, const SnapOptions& options,
-              const StrokeRecognizer& recognize_one, SnapResult& result) {
+              const PageRecognizer& recognize_page, SnapResult& result) {
   result.format = Format::kSvg;
   for (const SvgPage& page : read_svg_strokes(doc, text, options.scope)) {
     result.strokes += page.strokes.size();
-    snap_page(page.strokes, options, recognize_one,
-              [&](const std::vector<const SvgStroke*>& group, const Recognition& r, double pen) {
-                Replacement rep{{}, {}, r, pen};
+    snap_page(page.strokes, options, recognize_page,
+              [&](const std::vector<const SvgStroke*>& group, const StrokeSnap& snap, double pen) {
+                const Recognition& r = snap.recognition;
+                Replacement rep{{}, {}, r, pen, snap.tidy};
                 for (const SvgStroke* s : group) {
                   rep.elements.push_back(s->element.attribute("id").value());
                   rep.where.push_back(s->ink.where);
@@ -76,16 +77,17 @@ void snap_svg(pugi::xml_document& doc, const std::string& text, const SnapOption
 }
 
 void snap_xopp(pugi::xml_document& doc, const std::string& text, const SnapOptions& options,
-               const StrokeRecognizer& recognize_one, SnapResult& result) {
+               const PageRecognizer& recognize_page, SnapResult& result) {
   result.format = Format::kXopp;
   if (!options.scope.ids.empty() || !options.scope.layer.empty()) {
     throw SnapInputError("--ids and --layer choose SVG elements; this is a Xournal++ document");
   }
   for (const XoppLayer& layer : read_xopp_strokes(doc, text)) {
     result.strokes += layer.strokes.size();
-    snap_page(layer.strokes, options, recognize_one,
-              [&](const std::vector<const XoppStroke*>& group, const Recognition& r, double pen) {
-                Replacement rep{{}, {}, r, pen};
+    snap_page(layer.strokes, options, recognize_page,
+              [&](const std::vector<const XoppStroke*>& group, const StrokeSnap& snap, double pen) {
+                const Recognition& r = snap.recognition;
+                Replacement rep{{}, {}, r, pen, snap.tidy};
                 for (const XoppStroke* s : group) {
                   rep.elements.push_back("page " + std::to_string(s->page) + " layer " +
                                          std::to_string(s->layer) + " stroke " +
@@ -112,7 +114,7 @@ std::size_t line_of(std::string_view text, std::ptrdiff_t offset) {
 }
 
 SnapResult snap_document(const std::string& bytes, const SnapOptions& options,
-                         const StrokeRecognizer& recognize_one) {
+                         const PageRecognizer& recognize_page) {
   const bool gzipped = looks_gzipped(bytes);
   const std::string text = gzipped ? gunzip(bytes) : bytes;
   const char* what = gzipped ? "the gzip's content" : "the file";
@@ -126,9 +128,9 @@ SnapResult snap_document(const std::string& bytes, const SnapOptions& options,
   SnapResult result;
   const std::string root = root_name(doc);
   if (root == "svg") {
-    snap_svg(doc, text, options, recognize_one, result);
+    snap_svg(doc, text, options, recognize_page, result);
   } else if (root == "xournal") {
-    snap_xopp(doc, text, options, recognize_one, result);
+    snap_xopp(doc, text, options, recognize_page, result);
   } else {
     throw SnapInputError(std::string(what) + " is XML of neither format: its root is <" +
                          doc.document_element().name() +

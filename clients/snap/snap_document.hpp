@@ -18,7 +18,8 @@ struct Replacement {
   std::vector<std::string> elements; // SVG element ids ("" when none) or "page P layer L stroke S"
   std::vector<std::string> where;    // as in messages, with line numbers
   Recognition recognition;
-  double pen_radius = 0.0; // the clean shape's
+  double pen_radius = 0.0;       // the clean shape's
+  std::vector<std::string> tidy; // tidy-up constraints applied ("axis", "right_angles", ...)
 };
 
 struct SnapResult {
@@ -35,6 +36,6 @@ struct SnapOptions {
 
 // Throws SnapInputError for bad input (the message names the place).
 SnapResult snap_document(const std::string& bytes, const SnapOptions& options,
-                         const StrokeRecognizer& recognize_one);
+                         const PageRecognizer& recognize_page);
 
 } // namespace penshape::snap

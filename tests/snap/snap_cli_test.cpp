@@ -9,6 +9,7 @@
 #include <zlib.h>
 
 #include <chrono>
+#include <cmath>
 #include <thread>
 
 #include <filesystem>
@@ -286,7 +287,7 @@ TEST_F(SnapCli, HelpStandardOutputAndNoGroup) {
   const auto help = run_command(kCli + " snap --help 2>&1");
   EXPECT_EQ(help.exit_code, 0);
   EXPECT_NE(help.out.find("--no-group"), std::string::npos);
-  EXPECT_NE(help.out.find("Today this changes nothing"), std::string::npos) << help.out;
+  EXPECT_NE(help.out.find("recognize every stroke on its own"), std::string::npos) << help.out;
   EXPECT_NE(run_command(kCli + " --help").out.find("snap "), std::string::npos);
   // OUT "-": the document on standard output, the summary on stderr.
   const Fixture f = inkscape_fixture();
@@ -301,6 +302,60 @@ TEST_F(SnapCli, HelpStandardOutputAndNoGroup) {
   EXPECT_EQ(snap("--json " + (dir_ / "in.svg").string() + " -").exit_code, 2);
   EXPECT_EQ(snap((dir_ / "in.svg").string()).exit_code, 2) << "OUT missing";
   EXPECT_EQ(snap("--pen-radius -1 " + (dir_ / "in.svg").string() + " o.svg").exit_code, 2);
+}
+
+// A square drawn as four sides, one path each, with small gaps and overshoots at the corners and
+// a wobble along each side: grouped (the default) the four paths become one square element in
+// the first path's place, the other three removed; with --no-group each side is its own line.
+// An unrelated stroke far away stays what it is.
+TEST_F(SnapCli, StrokesDrawnAsOneShapeBecomeOneElement) {
+  const auto side = [](double x0, double y0, double x1, double y1) {
+    std::string d = "M " + std::to_string(x0) + "," + std::to_string(y0);
+    for (int k = 1; k <= 20; ++k) {
+      const double t = k / 20.0, wobble = 0.6 * std::sin(7.0 * t);
+      const double nx = -(y1 - y0), ny = x1 - x0, len = std::hypot(nx, ny);
+      d += " L " + std::to_string(x0 + t * (x1 - x0) + wobble * nx / len) + "," +
+           std::to_string(y0 + t * (y1 - y0) + wobble * ny / len);
+    }
+    return d;
+  };
+  const std::string style = "fill:none;stroke:#000000;stroke-width:4";
+  std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"400\" height=\"400\">\n";
+  const std::vector<std::string> sides = {side(101, 100, 199, 102), side(201, 99, 200, 198),
+                                          side(199, 201, 102, 199), side(99, 198, 101, 103)};
+  for (std::size_t i = 0; i < sides.size(); ++i) {
+    svg += "<path id=\"side" + std::to_string(i + 1) + "\" style=\"" + style + "\" d=\"" +
+           sides[i] + "\"/>\n";
+  }
+  svg += "<path id=\"far\" style=\"" + style + "\" d=\"" + side(300, 300, 380, 340) + "\"/>\n";
+  svg += "</svg>\n";
+  write_bytes(dir_ / "square.svg", svg);
+
+  const auto grouped =
+      snap("--json " + (dir_ / "square.svg").string() + " " + (dir_ / "grouped.svg").string());
+  ASSERT_EQ(grouped.exit_code, 0) << grouped.out;
+  pugi::xml_document doc;
+  ASSERT_TRUE(doc.load_file((dir_ / "grouped.svg").c_str(), kParse));
+  const pugi::xml_node shape = by_id(doc, "side1");
+  ASSERT_TRUE(shape);
+  const std::string cls = shape.attribute("data-penshape-class").value();
+  EXPECT_TRUE(cls == "square" || cls == "rectangle") << cls << "\n" << grouped.out;
+  for (const char* gone : {"side2", "side3", "side4"}) {
+    EXPECT_FALSE(by_id(doc, gone)) << gone << " should have been replaced by the group";
+  }
+  EXPECT_STREQ(by_id(doc, "far").name(), "line");
+  EXPECT_NE(grouped.out.find("\"elements\":[\"side1\",\"side2\",\"side3\",\"side4\"]"),
+            std::string::npos)
+      << grouped.out;
+
+  const auto alone =
+      snap("--no-group " + (dir_ / "square.svg").string() + " " + (dir_ / "alone.svg").string());
+  ASSERT_EQ(alone.exit_code, 0) << alone.out;
+  pugi::xml_document doc2;
+  ASSERT_TRUE(doc2.load_file((dir_ / "alone.svg").c_str(), kParse));
+  for (const char* id : {"side1", "side2", "side3", "side4"}) {
+    EXPECT_STREQ(by_id(doc2, id).name(), "line") << id;
+  }
 }
 
 struct BadCase {

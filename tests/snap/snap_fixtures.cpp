@@ -125,7 +125,7 @@ Fixture inkscape_fixture() {
                {"pencil-rect", rect, 8, "rectangle"},
                {"pencil-pigtail", pig, 8, ""},
                {"callig-triangle", tri, 8, "triangle"},
-               {"notes-circle", notes_page, 6, "ellipse"}};
+               {"notes-circle", notes_page, 6, "circle"}};
   const std::string pencil =
       "fill:none;stroke:#000000;stroke-width:8;stroke-linecap:round;"
       "stroke-linejoin:round;stroke-opacity:1";
