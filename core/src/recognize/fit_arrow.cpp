@@ -80,17 +80,55 @@ struct ArrowState {
   double bulge = 0.0;
 };
 
+// Whether p lies farther than `floor` from every piece, and if so how far (else `floor`): a
+// vertex nearer the union than the cloud's worst point cannot raise the objective.
+double union_distance_above(const UnionStroke& u, PointD p, double floor) {
+  const double floor2 = floor * floor;
+  double best2 = INFINITY;
+  for (const std::vector<PointD>& piece : u.pieces) {
+    if (piece.size() == 1) best2 = std::min(best2, dot(p - piece[0], p - piece[0]));
+    for (std::size_t i = 0; i + 1 < piece.size(); ++i) {
+      best2 = std::min(best2, segment_distance2(p, piece[i], piece[i + 1]));
+      if (best2 <= floor2) return floor;
+    }
+  }
+  return std::sqrt(best2);
+}
+
+// The fit error of a state: the farthest cloud point from the arrow, or a vertex's distance
+// to the union when larger. Evaluation stops once the value reaches `limit` (the compass
+// search only asks whether a trial beats its best), starting from the point that was worst
+// last time, so that losing trials are rejected after a few points.
 struct Objective {
   const std::vector<PointD>& cloud;
   const UnionStroke& u;
   ShapeClass shape;
+  mutable std::size_t worst_at = 0;
 
-  double operator()(const ArrowState& a) const {
+  double operator()(const ArrowState& a, double limit = INFINITY) const {
     if (std::abs(a.bulge) > kMaxBulge * distance(a.v[0], a.v[1])) return INFINITY;
-    CleanShape c;
-    c.path = arrow_path(shape, a.v, a.bulge);
-    double worst = max_distance(cloud, c);
-    for (const PointD& p : a.v) worst = std::max(worst, union_distance(u, p));
+    const std::vector<PointD> path = arrow_path(shape, a.v, a.bulge);
+    const double limit2 = limit * limit;
+    double worst2 = 0.0;
+    for (std::size_t k = 0; k < cloud.size(); ++k) {
+      const std::size_t i = (worst_at + k) % cloud.size();
+      double d2 = INFINITY;
+      for (std::size_t j = 0; j + 1 < path.size(); ++j) {
+        d2 = std::min(d2, segment_distance2(cloud[i], path[j], path[j + 1]));
+      }
+      if (d2 > worst2) {
+        worst2 = d2;
+        if (worst2 >= limit2) {
+          worst_at = i;
+          return std::max(std::sqrt(worst2), limit);
+        }
+      }
+    }
+    double worst = std::sqrt(worst2);
+    for (const PointD& p : a.v) {
+      worst = std::max(worst, union_distance_above(u, p, worst));
+      if (worst >= limit) return worst;
+    }
     return worst;
   }
 };
@@ -113,7 +151,7 @@ double polish(ArrowState& a, const Objective& objective, double step, bool curve
         } else {
           trial.v[i] = trial.v[i] + step * dir;
         }
-        const double value = objective(trial);
+        const double value = objective(trial, best);
         --budget;
         if (value < best) {
           best = value;
