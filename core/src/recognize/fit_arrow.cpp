@@ -49,7 +49,9 @@ PointD shaft_back(PointD tail, PointD tip, double bulge) {
 }
 
 // The barb ends at `head` for a shaft from `other` to `head`: on each side, the point farthest
-// from the head among those that leave the shaft at 10..90 degrees and by more than epsilon / 2.
+// from the shaft's line among those that leave the shaft at 10..90 degrees and by more than
+// epsilon / 2. Farthest from the line rather than from the head: a bowed shaft's middle can lie
+// farther from the head than a short barb's end, but a barb always leaves the line farther.
 std::optional<std::pair<PointD, PointD>> find_barbs(const std::vector<PointD>& cloud, PointD head,
                                                     PointD other, double epsilon) {
   const PointD back = other - head;
@@ -65,8 +67,8 @@ std::optional<std::pair<PointD, PointD>> find_barbs(const std::vector<PointD>& c
     const double a = angle_between(back, d);
     if (a < kMinHeadAngle || a > std::numbers::pi / 2) continue;
     const int k = off > 0 ? 0 : 1;
-    if (r > far[k]) {
-      far[k] = r;
+    if (std::abs(off) > far[k]) {
+      far[k] = std::abs(off);
       side[k] = x;
     }
   }
