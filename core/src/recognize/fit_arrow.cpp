@@ -19,6 +19,9 @@ constexpr double kMaxTracingArrow = 1.6;
 // An arrow is made of straight pieces: like segments and polylines it must fit more tightly than
 // round shapes (recognize.hpp, straight_fraction), a little looser since the head is small.
 constexpr double kStraightFraction = 0.6;
+// The second start is polished too when the first ends above this many epsilons: well below
+// the straight fraction, since the certificate adds its sampling and thinning margins.
+constexpr double kSecondStartAbove = 0.4;
 // A curved shaft bows by at most this fraction of its chord.
 constexpr double kMaxBulge = 0.25;
 
@@ -269,20 +272,23 @@ std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon) {
         {tip_is_b ? cloud[a] : cloud[b], tip_is_b ? cloud[b] : cloud[a], head->first, head->second},
         0.0};
     const Objective objective{cloud, u, ShapeClass::kArrow};
-    // Straight: polished from the raw start and from the least-squares start; the better one.
-    ArrowState raw = start;
-    const double e_raw = polish(raw, objective, step, false);
+    // Straight: polished from the raw start or the least-squares start, the one fitting better
+    // first; the other only when the first does not fit tightly enough to pass surely.
     ArrowState settled = start;
     settle(cloud, settled);
     ArrowState curved = settled;
     settled.bulge = 0.0;
-    const double e_settled = polish(settled, objective, step, false);
-    const double e_straight = std::min(e_settled, e_raw);
-    if (e_settled < e_raw) {
-      out.push_back(make_fit(ShapeClass::kArrow, std::move(settled), e_settled));
-    } else {
-      out.push_back(make_fit(ShapeClass::kArrow, std::move(raw), e_raw));
+    ArrowState first = start, second = std::move(settled);
+    if (objective(second) < objective(first)) std::swap(first, second);
+    double e_straight = polish(first, objective, step, false);
+    if (e_straight > kSecondStartAbove * epsilon) {
+      const double e_second = polish(second, objective, step, false);
+      if (e_second < e_straight) {
+        e_straight = e_second;
+        first = std::move(second);
+      }
     }
+    out.push_back(make_fit(ShapeClass::kArrow, std::move(first), e_straight));
     // Curved, when the shaft bows visibly and the straight arrow fits too loosely to pass.
     if (std::abs(curved.bulge) >= epsilon / 4.0 && e_straight > kStraightFraction * epsilon) {
       const double e = polish(curved, objective, step, true);
