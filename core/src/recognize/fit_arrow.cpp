@@ -19,6 +19,9 @@ constexpr double kMaxTracingArrow = 1.6;
 // An arrow is made of straight pieces: like segments and polylines it must fit more tightly than
 // round shapes (recognize.hpp, straight_fraction), a little looser since the head is small.
 constexpr double kStraightFraction = 0.6;
+// The second start is polished too when the first ends above this many epsilons: well below
+// the straight fraction, since the certificate adds its sampling and thinning margins.
+constexpr double kSecondStartAbove = 0.4;
 // A curved shaft bows by at most this fraction of its chord.
 constexpr double kMaxBulge = 0.25;
 
@@ -49,7 +52,9 @@ PointD shaft_back(PointD tail, PointD tip, double bulge) {
 }
 
 // The barb ends at `head` for a shaft from `other` to `head`: on each side, the point farthest
-// from the head among those that leave the shaft at 10..90 degrees and by more than epsilon / 2.
+// from the shaft's line among those that leave the shaft at 10..90 degrees and by more than
+// epsilon / 2. Farthest from the line rather than from the head: a bowed shaft's middle can lie
+// farther from the head than a short barb's end, but a barb always leaves the line farther.
 std::optional<std::pair<PointD, PointD>> find_barbs(const std::vector<PointD>& cloud, PointD head,
                                                     PointD other, double epsilon) {
   const PointD back = other - head;
@@ -65,8 +70,8 @@ std::optional<std::pair<PointD, PointD>> find_barbs(const std::vector<PointD>& c
     const double a = angle_between(back, d);
     if (a < kMinHeadAngle || a > std::numbers::pi / 2) continue;
     const int k = off > 0 ? 0 : 1;
-    if (r > far[k]) {
-      far[k] = r;
+    if (std::abs(off) > far[k]) {
+      far[k] = std::abs(off);
       side[k] = x;
     }
   }
@@ -80,17 +85,55 @@ struct ArrowState {
   double bulge = 0.0;
 };
 
+// Whether p lies farther than `floor` from every piece, and if so how far (else `floor`): a
+// vertex nearer the union than the cloud's worst point cannot raise the objective.
+double union_distance_above(const UnionStroke& u, PointD p, double floor) {
+  const double floor2 = floor * floor;
+  double best2 = INFINITY;
+  for (const std::vector<PointD>& piece : u.pieces) {
+    if (piece.size() == 1) best2 = std::min(best2, dot(p - piece[0], p - piece[0]));
+    for (std::size_t i = 0; i + 1 < piece.size(); ++i) {
+      best2 = std::min(best2, segment_distance2(p, piece[i], piece[i + 1]));
+      if (best2 <= floor2) return floor;
+    }
+  }
+  return std::sqrt(best2);
+}
+
+// The fit error of a state: the farthest cloud point from the arrow, or a vertex's distance
+// to the union when larger. Evaluation stops once the value reaches `limit` (the compass
+// search only asks whether a trial beats its best), starting from the point that was worst
+// last time, so that losing trials are rejected after a few points.
 struct Objective {
   const std::vector<PointD>& cloud;
   const UnionStroke& u;
   ShapeClass shape;
+  mutable std::size_t worst_at = 0;
 
-  double operator()(const ArrowState& a) const {
+  double operator()(const ArrowState& a, double limit = INFINITY) const {
     if (std::abs(a.bulge) > kMaxBulge * distance(a.v[0], a.v[1])) return INFINITY;
-    CleanShape c;
-    c.path = arrow_path(shape, a.v, a.bulge);
-    double worst = max_distance(cloud, c);
-    for (const PointD& p : a.v) worst = std::max(worst, union_distance(u, p));
+    const std::vector<PointD> path = arrow_path(shape, a.v, a.bulge);
+    const double limit2 = limit * limit;
+    double worst2 = 0.0;
+    for (std::size_t k = 0; k < cloud.size(); ++k) {
+      const std::size_t i = (worst_at + k) % cloud.size();
+      double d2 = INFINITY;
+      for (std::size_t j = 0; j + 1 < path.size(); ++j) {
+        d2 = std::min(d2, segment_distance2(cloud[i], path[j], path[j + 1]));
+      }
+      if (d2 > worst2) {
+        worst2 = d2;
+        if (worst2 >= limit2) {
+          worst_at = i;
+          return std::max(std::sqrt(worst2), limit);
+        }
+      }
+    }
+    double worst = std::sqrt(worst2);
+    for (const PointD& p : a.v) {
+      worst = std::max(worst, union_distance_above(u, p, worst));
+      if (worst >= limit) return worst;
+    }
     return worst;
   }
 };
@@ -113,7 +156,7 @@ double polish(ArrowState& a, const Objective& objective, double step, bool curve
         } else {
           trial.v[i] = trial.v[i] + step * dir;
         }
-        const double value = objective(trial);
+        const double value = objective(trial, best);
         --budget;
         if (value < best) {
           best = value;
@@ -229,20 +272,23 @@ std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon) {
         {tip_is_b ? cloud[a] : cloud[b], tip_is_b ? cloud[b] : cloud[a], head->first, head->second},
         0.0};
     const Objective objective{cloud, u, ShapeClass::kArrow};
-    // Straight: polished from the raw start and from the least-squares start; the better one.
-    ArrowState raw = start;
-    const double e_raw = polish(raw, objective, step, false);
+    // Straight: polished from the raw start or the least-squares start, the one fitting better
+    // first; the other only when the first does not fit tightly enough to pass surely.
     ArrowState settled = start;
     settle(cloud, settled);
     ArrowState curved = settled;
     settled.bulge = 0.0;
-    const double e_settled = polish(settled, objective, step, false);
-    const double e_straight = std::min(e_settled, e_raw);
-    if (e_settled < e_raw) {
-      out.push_back(make_fit(ShapeClass::kArrow, std::move(settled), e_settled));
-    } else {
-      out.push_back(make_fit(ShapeClass::kArrow, std::move(raw), e_raw));
+    ArrowState first = start, second = std::move(settled);
+    if (objective(second) < objective(first)) std::swap(first, second);
+    double e_straight = polish(first, objective, step, false);
+    if (e_straight > kSecondStartAbove * epsilon) {
+      const double e_second = polish(second, objective, step, false);
+      if (e_second < e_straight) {
+        e_straight = e_second;
+        first = std::move(second);
+      }
     }
+    out.push_back(make_fit(ShapeClass::kArrow, std::move(first), e_straight));
     // Curved, when the shaft bows visibly and the straight arrow fits too loosely to pass.
     if (std::abs(curved.bulge) >= epsilon / 4.0 && e_straight > kStraightFraction * epsilon) {
       const double e = polish(curved, objective, step, true);

@@ -63,6 +63,42 @@ std::vector<Scored> score_arrows(const UnionStroke& u, const std::vector<PointD>
   return out;
 }
 
+// A closed shape narrower than this many epsilons has all its inside within epsilon of its
+// outline: any strokes side by side (two braces, a letter pair) certify as it. Several strokes
+// may only close such a shape when it is wider.
+constexpr double kMinClosedWidth = 2.0;
+
+// The width of a closed shape (polygons: the least over the sides of the farthest vertex from
+// the side's line, exact for convex ones); infinite for open shapes.
+double closed_width(const Fit& f) {
+  switch (f.shape) {
+    case ShapeClass::kCircle:
+      return 2.0 * f.params.radius_x;
+    case ShapeClass::kEllipse:
+      return 2.0 * std::min(f.params.radius_x, f.params.radius_y);
+    case ShapeClass::kTriangle:
+    case ShapeClass::kQuadrilateral:
+    case ShapeClass::kRectangle:
+    case ShapeClass::kSquare:
+    case ShapeClass::kDiamond:
+    case ShapeClass::kRegularPolygon:
+      break;
+    default:
+      return INFINITY;
+  }
+  const std::vector<PointD>& v = f.params.vertices;
+  double width = INFINITY;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const PointD a = v[i], b = v[(i + 1) % v.size()];
+    const double side = distance(a, b);
+    if (side <= 0.0) continue;
+    double far = 0.0;
+    for (const PointD& p : v) far = std::max(far, std::abs(cross(b - a, p - a)) / side);
+    width = std::min(width, far);
+  }
+  return width;
+}
+
 // Several strokes: fitted on their chain, then the snaps certified on the union, best rank
 // first, until one passes (the others after it keep their chain-screening certificate).
 std::vector<Scored> score_chain(const UnionStroke& u, const PreparedStroke& s,
@@ -71,6 +107,12 @@ std::vector<Scored> score_chain(const UnionStroke& u, const PreparedStroke& s,
       evaluate(s, fit_all(s, config, epsilon), epsilon, pen_radius, config);
   for (Scored& sc : scored) {
     if (!sc.snap) break;
+    if (closed_width(sc.fit) < kMinClosedWidth * epsilon) {
+      sc.snap = false;
+      sc.candidate.rejected =
+          "a closed shape of several strokes narrower than 2 epsilon (strokes side by side)";
+      continue;
+    }
     sc.candidate.certificate = certify_union(u, sc.fit.clean, epsilon, pen_radius);
     sc.snap = sc.candidate.certificate.certified;
     if (sc.snap) break;

@@ -65,6 +65,26 @@ bool connected(const std::vector<const Touch*>& t, double join) {
 
 bool snaps(const Recognition& r) { return r.shape != ShapeClass::kFreeform; }
 
+// Every non-empty subset of the recent groups (bit k: recent[k]), most strokes first: once a
+// union of n strokes snaps, smaller unions cannot win and are not recognized at all.
+template <typename Entries>
+std::vector<std::size_t> masks_by_size(const std::vector<std::size_t>& recent,
+                                       const Entries& groups) {
+  std::vector<std::pair<std::size_t, std::size_t>> sized; // (strokes, mask)
+  for (std::size_t mask = 1; mask < (std::size_t{1} << recent.size()); ++mask) {
+    std::size_t n = 0;
+    for (std::size_t k = 0; k < recent.size(); ++k) {
+      if (mask & (std::size_t{1} << k)) n += groups[recent[k]].shape.strokes.size();
+    }
+    sized.emplace_back(n, mask);
+  }
+  std::stable_sort(sized.begin(), sized.end(),
+                   [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::vector<std::size_t> out;
+  for (const auto& [n, mask] : sized) out.push_back(mask);
+  return out;
+}
+
 } // namespace
 
 StrokeGrouper::StrokeGrouper(GroupingConfig grouping, RecognizerConfig recognizer)
@@ -120,7 +140,7 @@ GroupUpdate StrokeGrouper::add(const StrokeInput& stroke) {
     return it->second;
   };
   std::size_t best_count = 2;
-  for (std::size_t mask = 1; mask < (std::size_t{1} << recent.size()); ++mask) {
+  for (const std::size_t mask : masks_by_size(recent, groups_)) {
     std::vector<std::size_t> members;
     std::vector<std::size_t> groups;
     for (std::size_t k = 0; k < recent.size(); ++k) {

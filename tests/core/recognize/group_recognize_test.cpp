@@ -137,6 +137,55 @@ TEST(GroupRecognize, TwoSeparateTrianglesStayTwo) {
   }
 }
 
+// The width of a polygon from its vertices: the least over the sides of the farthest vertex
+// from the side's line.
+double polygon_width(const std::vector<PointD>& v) {
+  double width = INFINITY;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const PointD a = v[i], b = v[(i + 1) % v.size()];
+    const double side = std::hypot(b.x - a.x, b.y - a.y);
+    double far = 0.0;
+    for (const PointD& p : v) {
+      far = std::max(far, std::abs((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)) / side);
+    }
+    width = std::min(width, far);
+  }
+  return width;
+}
+
+// Two open halves of a 200 x h rectangle ("[" then "]"): wide, one rectangle of two strokes;
+// narrower than 2 epsilon the whole inside lies within epsilon of the outline (any two strokes
+// side by side would pass), so two strokes never make such a closed polygon. (Without the rule,
+// h = 22..40 came out as two-stroke triangles and rectangles about 1 epsilon wide.)
+TEST(GroupRecognize, SeveralStrokesCloseAPolygonOnlyWhenWiderThanTwoEpsilon) {
+  int narrow_checked = 0;
+  for (const double h : {22.0, 30.0, 40.0, 60.0}) {
+    std::vector<StrokeInput> s;
+    s.push_back(input(polyline({{100, 0}, {0, 0}, {0, h}, {100, h}}, 0)));
+    s.push_back(input(polyline({{100, 0}, {200, 0}, {200, h}, {100, h}}, 1.0)));
+    const std::vector<GroupedShape> out = recognize_strokes(s);
+    for (const GroupedShape& g : out) {
+      const Recognition& r = g.recognition;
+      const bool polygon = r.shape == ShapeClass::kRectangle ||
+                           r.shape == ShapeClass::kQuadrilateral ||
+                           r.shape == ShapeClass::kSquare || r.shape == ShapeClass::kDiamond ||
+                           r.shape == ShapeClass::kTriangle;
+      if (h == 60.0) {
+        ASSERT_EQ(out.size(), 1u);
+        EXPECT_EQ(r.shape, ShapeClass::kRectangle) << to_string(r.shape);
+        EXPECT_EQ(g.strokes.size(), 2u);
+        expect_independently_certified(g, s);
+      } else if (g.strokes.size() > 1 && polygon) {
+        ASSERT_GE(r.params.vertices.size(), 3u);
+        EXPECT_GE(polygon_width(r.params.vertices), 2.0 * r.epsilon)
+            << "h = " << h << ": " << to_string(r.shape);
+      }
+      if (h < 60.0 && 2.0 * r.epsilon > h) ++narrow_checked;
+    }
+  }
+  EXPECT_GT(narrow_checked, 0); // some drawings are narrower than 2 epsilon
+}
+
 void expect_arrow(const GroupedShape& g, const std::vector<StrokeInput>& s, PointD tail, PointD tip,
                   std::size_t strokes) {
   const Recognition& r = g.recognition;

@@ -29,7 +29,9 @@
 // every piece of A (the jumps between pieces are NOT part of A) and d(b, A) is the distance to the
 // nearest piece. The certificate's method is "path" (union of paths, one pen radius). A lone
 // stroke is recognized by recognize(StrokeInput) unchanged (its ink certificate included when
-// the ink is given), and arrows are tried besides.
+// the ink is given), and arrows are tried besides. Several strokes make a closed shape (polygon,
+// circle, ellipse) only when it is at least 2 epsilon wide: narrower, its whole inside lies
+// within epsilon of its outline, so any strokes side by side would pass for it.
 //
 // Arrows (ShapeClass::kArrow, kDoubleArrow). A shaft segment from tail to tip and a head of two
 // barbs from the tip, drawn in any strokes: one stroke (tail, tip, barb, back to the tip, other
