@@ -21,9 +21,10 @@ struct Found {
   Contact pair;
 };
 
-// Lexicographic order of points, doubles first (rounding to nearest is monotone, so distinct
-// doubles decide) and the exact values on a tie.
+// Lexicographic order of points: the same vertex first, then doubles (rounding to nearest is
+// monotone, so distinct doubles decide) and the exact values on a tie.
 int compare_points(const FilteredPoint& p, const FilteredPoint& q) {
+  if (p.exact == q.exact) return 0; // one vertex seen from its two edges: the common case
   if (p.x != q.x) return p.x < q.x ? -1 : 1;
   if (p.exact->x != q.exact->x) return p.exact->x < q.exact->x ? -1 : 1;
   if (p.y != q.y) return p.y < q.y ? -1 : 1;
