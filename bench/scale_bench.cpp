@@ -2,12 +2,17 @@
 // 50,000 and 200,000 vertices (generated here, deterministic), r = w/30, eps = r/2,
 // delta = eps/8. Prints input validation alone, the whole deconstruct() call (validation + fast
 // engine, no simplification) against the 1 s target at 200k, and `penshape verify`'s checker.
+// First, validation's touching/crossing test on the star and on a comb (every edge spans every
+// vertical line: the former x-range sweep's O(n²) case): the Shamos–Hoey sweep inside
+// validate_region against the former test (bench/former_validation.hpp), in the same run.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 #include <random>
 
+#include "former_validation.hpp"
+#include "geometry/segment_sweep.hpp"
 #include "penshape/core/deconstruct.hpp"
 #include "penshape/core/verify.hpp"
 
@@ -28,13 +33,74 @@ penshape::PolygonSet wavy_star(int n) {
   return {{{ring, {}}}};
 }
 
+// A comb of n vertices: horizontal teeth 1000 long, 2 apart, joined by a spine.
+penshape::PolygonSet comb(int n) {
+  const int teeth = (n - 2) / 4; // 4 per tooth, the last one short of one, and 2 for the spine
+  penshape::Ring ring;
+  ring.push_back({-1, 0});
+  for (int i = 0; i < teeth; ++i) {
+    ring.push_back({1000, 2 * i});
+    ring.push_back({1000, 2 * i + 1});
+    ring.push_back({0, 2 * i + 1});
+    if (i + 1 < teeth) ring.push_back({0, 2 * i + 2});
+  }
+  ring.push_back({-1, 2 * teeth - 1});
+  return {{{ring, {}}}};
+}
+
+// The new touching/crossing test alone on one ring (what the former test did).
+bool sweep_ring_has_contact(const penshape::Ring& ring) {
+  std::vector<penshape::detail::FilteredPoint> pts;
+  for (const auto& v : ring) pts.push_back(penshape::detail::filtered(v));
+  std::vector<penshape::detail::SweepSegment> segs;
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; i < n; ++i) segs.push_back({pts[i], pts[(i + 1) % n]});
+  return penshape::detail::find_forbidden_contact(
+             segs,
+             [n](std::size_t i, std::size_t j) { return (i + 1) % n == j || (j + 1) % n == i; })
+      .has_value();
+}
+
 double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
 } // namespace
 
+void validation_table() {
+  std::printf(
+      "validation: validate_region (all checks) and its touching/crossing test alone\n"
+      "(Shamos-Hoey sweep) vs the former x-range sweep (crossings only), same run\n");
+  std::printf("%6s %8s | %13s | %8s | %10s | %7s\n", "shape", "vertices", "validation ms",
+              "sweep ms", "former ms", "speedup");
+  for (const bool is_comb : {false, true}) {
+    for (const int n : {10'000, 50'000, 200'000}) {
+      const penshape::PolygonSet q = is_comb ? comb(n) : wavy_star(n);
+      auto t0 = std::chrono::steady_clock::now();
+      penshape::validate_region(q);
+      const double whole = ms_since(t0);
+      t0 = std::chrono::steady_clock::now();
+      const bool found = sweep_ring_has_contact(q.polygons[0].outer);
+      const double sweep = ms_since(t0);
+      // The former test is quadratic on the comb: 200k would take minutes.
+      if (is_comb && n > 50'000) {
+        std::printf("%6s %8zu | %13.1f | %8.1f | %10s | %7s\n", "comb", q.vertex_count(), whole,
+                    sweep, "skipped", "O(n^2)");
+        continue;
+      }
+      t0 = std::chrono::steady_clock::now();
+      const bool contact = penshape::bench::former_ring_has_contact(q.polygons[0].outer);
+      const double former = ms_since(t0);
+      std::printf("%6s %8zu | %13.1f | %8.1f | %10.1f | %6.1fx%s\n", is_comb ? "comb" : "star",
+                  q.vertex_count(), whole, sweep, former, former / sweep,
+                  contact || found ? " (a contact found in valid input!)" : "");
+    }
+  }
+  std::printf("\n");
+}
+
 int main() {
+  validation_table();
   std::printf("wavy star, r = w/30, eps = r/2, delta = eps/8 (fast engine, no simplification)\n");
   std::printf("%8s | %13s | %9s %15s %7s | %10s %9s\n", "vertices", "validation ms", "answer",
               "deconstruct ms", "target", "verify ms", "verdict");

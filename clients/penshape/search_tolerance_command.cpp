@@ -21,10 +21,15 @@ int run_search_tolerance(std::span<const std::string_view> args) {
         "Finds an interval [eps_low, eps_high] of width <= D (default R/100) holding the\n"
         "smallest tolerance for which FILE is within that Hausdorff distance of an R-offset\n"
         "(APPROXSEARCHEPS), and a certified solution at eps_solution <= that tolerance + D.\n"
+        "The fast engine can stay UNDECIDED far from that tolerance (features narrower than\n"
+        "the working precision); the search then redoes itself with the reference engine. If a\n"
+        "search still cannot converge it prints the interval its YES and NO answers prove\n"
+        "(wider than D) and says so: 'not converged' on stderr, converged false in --json.\n"
         "--json keys: radius, eps_low, eps_high, eps_solution, answer, solution, "
         "solution_vertices,\n"
-        "raw_vertices, simplified, decider_calls, seconds, engine.\n"
-        "Exit codes: 0 ok, 2 bad input, 1 internal failure.");
+        "raw_vertices, simplified, decider_calls, fallback_calls, converged, note, seconds,\n"
+        "engine.\n"
+        "Exit codes: 0 ok (converged or not), 2 bad input, 1 internal failure.");
     return kExitOk;
   }
   if (parsed.positionals().size() != 1) throw UsageError("expected exactly one FILE");
@@ -33,7 +38,11 @@ int run_search_tolerance(std::span<const std::string_view> args) {
   const EngineKind engine = engine_option(parsed);
   try {
     const PolygonSet q = read_polygon_file(parsed.positionals().front());
-    const ToleranceSearchResult res = search_tolerance(make_decider(q, engine), radius, precision);
+    // The reference engine settles what the fast engine leaves UNDECIDED against its promise.
+    const Decider fallback =
+        engine == EngineKind::kFast ? make_decider(q, EngineKind::kReference) : Decider{};
+    const ToleranceSearchResult res =
+        search_tolerance(make_decider(q, engine), radius, precision, fallback);
     const ReportedSolution rep = report_solution(q, res.solution, !parsed.flag("--no-simplify"));
     if (parsed.flag("--json")) {
       JsonWriter json;
@@ -45,6 +54,9 @@ int run_search_tolerance(std::span<const std::string_view> args) {
       json.key("answer").string(to_string(res.solution.answer));
       write_solution_keys(json, rep);
       json.key("decider_calls").integer(static_cast<std::int64_t>(res.decider_calls));
+      json.key("fallback_calls").integer(static_cast<std::int64_t>(res.fallback_calls));
+      json.key("converged").boolean(res.converged);
+      json.key("note").string(res.note);
       json.key("seconds").number(seconds(res.elapsed));
       json.key("engine").string(to_string(engine));
       json.end_object();
@@ -55,7 +67,12 @@ int run_search_tolerance(std::span<const std::string_view> args) {
       std::printf("certified solution at eps %.9g: %zu vertices (raw %zu)\n",
                   to_double(res.solution.params.tolerance), rep.solution_vertices,
                   rep.raw_vertices);
-      std::printf("%zu decider calls, %.3f s\n", res.decider_calls, seconds(res.elapsed));
+      std::printf("%zu decider calls (%zu by the reference fallback), %.3f s\n", res.decider_calls,
+                  res.fallback_calls, seconds(res.elapsed));
+    }
+    if (!res.note.empty()) {
+      std::fprintf(stderr, "penshape search-tolerance: %s%s\n",
+                   res.converged ? "note: " : "not converged: ", res.note.c_str());
     }
   } catch (const InputError& e) {
     std::fprintf(stderr, "penshape search-tolerance: %s\n", e.what());

@@ -55,6 +55,8 @@ int run_suggest_radius(std::span<const std::string_view> args) {
       }
       return true;
     };
+    // The reference engine settles what the fast engine leaves UNDECIDED against its promise.
+    if (engine == EngineKind::kFast) opt.fallback = make_decider(q, EngineKind::kReference);
     const SuggestResult res = suggest_radius(make_decider(q, engine), opt);
     if (bar) bar->finish();
     const bool simplify = !parsed.flag("--no-simplify");

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "geometry/exact_predicates.hpp"
+#include "geometry/segment_sweep.hpp"
 #include "penshape/core/deconstruct.hpp"
 #include "penshape/core/disk_approximation.hpp"
 
@@ -83,12 +84,6 @@ void check_ring_basics(const RingRef& r) {
   }
 }
 
-struct Edge {
-  std::size_t ring = 0;
-  std::size_t index = 0;
-  double xmin = 0, xmax = 0, ymin = 0, ymax = 0;
-};
-
 // Two edges of one ring that share a vertex only touch there unless they fold back on each
 // other (a spike), which makes the ring non-simple.
 bool adjacent_edges_overlap(const RingRef& r, std::size_t first, std::size_t second) {
@@ -102,60 +97,52 @@ bool adjacent_edges_overlap(const RingRef& r, std::size_t first, std::size_t sec
          detail::on_collinear_segment(*b.exact, *c.exact, *a.exact);
 }
 
+// O(n): every pair of consecutive edges, so the sweep below only meets contacts of other kinds.
+void check_no_fold_backs(const std::vector<RingRef>& rings) {
+  for (const RingRef& r : rings) {
+    const std::size_t n = r.ring->size();
+    for (std::size_t i = 0; i < n; ++i) {
+      if (adjacent_edges_overlap(r, i, (i + 1) % n)) {
+        throw InvalidInput(ring_name(r) + " is self-intersecting: edges " + edge_name(r, i) +
+                           " and " + std::to_string((i + 1) % n) + " fold back on each other");
+      }
+    }
+  }
+}
+
+struct EdgeRef {
+  std::size_t ring = 0;
+  std::size_t index = 0;
+};
+
+// Shamos–Hoey over every edge of every ring: O(n log n) exact predicates.
 void check_no_crossings(const std::vector<RingRef>& rings, const CancelHook& cancel) {
-  std::vector<Edge> edges;
+  std::vector<detail::SweepSegment> segments;
+  std::vector<EdgeRef> edges;
   for (std::size_t k = 0; k < rings.size(); ++k) {
     const auto& pts = rings[k].points;
     for (std::size_t i = 0; i < pts.size(); ++i) {
-      const auto& p = pts[i];
-      const auto& q = pts[(i + 1) % pts.size()];
-      edges.push_back({k, i, widen_down(std::min(p.x, q.x)), widen_up(std::max(p.x, q.x)),
-                       widen_down(std::min(p.y, q.y)), widen_up(std::max(p.y, q.y))});
+      segments.push_back({pts[i], pts[(i + 1) % pts.size()]});
+      edges.push_back({k, i});
     }
   }
-  std::sort(edges.begin(), edges.end(),
-            [](const Edge& a, const Edge& b) { return a.xmin < b.xmin; });
-  // Sweep in x: only edges whose x-ranges overlap are compared exactly.
-  std::vector<const Edge*> active;
-  std::size_t visited = 0;
-  for (const Edge& e : edges) {
-    if (cancel && ++visited % 256 == 0 && cancel()) throw Cancelled();
-    std::erase_if(active, [&](const Edge* a) { return a->xmax < e.xmin; });
-    for (const Edge* a : active) {
-      if (a->ymax < e.ymin || e.ymax < a->ymin) continue;
-      const RingRef& ra = rings[a->ring];
-      const RingRef& re = rings[e.ring];
-      if (a->ring == e.ring) {
-        const std::size_t n = ra.ring->size();
-        if ((a->index + 1) % n == e.index) {
-          if (adjacent_edges_overlap(ra, a->index, e.index)) {
-            throw InvalidInput(ring_name(ra) + " is self-intersecting: edges " +
-                               edge_name(ra, a->index) + " and " + std::to_string(e.index) +
-                               " fold back on each other");
-          }
-          continue;
-        }
-        if ((e.index + 1) % n == a->index) {
-          if (adjacent_edges_overlap(ra, e.index, a->index)) {
-            throw InvalidInput(ring_name(ra) + " is self-intersecting: edges " +
-                               edge_name(ra, e.index) + " and " + std::to_string(a->index) +
-                               " fold back on each other");
-          }
-          continue;
-        }
-      }
-      const auto& pa = ra.points;
-      const auto& pe = re.points;
-      if (detail::segments_intersect(pa[a->index], pa[(a->index + 1) % pa.size()], pe[e.index],
-                                     pe[(e.index + 1) % pe.size()])) {
-        const std::string what = a->ring == e.ring ? ring_name(ra) + " is self-intersecting: "
-                                                   : std::string("rings intersect: ");
-        throw InvalidInput(what + edge_name(ra, a->index) + " touches or crosses " +
-                           edge_name(re, e.index));
-      }
-    }
-    active.push_back(&e);
-  }
+  const auto adjacent = [&](std::size_t s, std::size_t t) {
+    const EdgeRef& a = edges[s];
+    const EdgeRef& b = edges[t];
+    if (a.ring != b.ring) return false;
+    const std::size_t n = rings[a.ring].ring->size();
+    return (a.index + 1) % n == b.index || (b.index + 1) % n == a.index;
+  };
+  const auto contact = detail::find_forbidden_contact(segments, adjacent, cancel);
+  if (!contact) return;
+  const EdgeRef& a = edges[contact->first];
+  const EdgeRef& e = edges[contact->second];
+  const RingRef& ra = rings[a.ring];
+  const RingRef& re = rings[e.ring];
+  const std::string what = a.ring == e.ring ? ring_name(ra) + " is self-intersecting: "
+                                            : std::string("rings intersect: ");
+  throw InvalidInput(what + edge_name(ra, a.index) + " touches or crosses " +
+                     edge_name(re, e.index));
 }
 
 // Strictly inside (the rings are known not to touch, so "on the boundary" cannot happen for a
@@ -245,6 +232,7 @@ void validate_region(const PolygonSet& q, std::size_t max_vertices, const Cancel
       r.ymax = std::max(r.ymax, widen_up(v.y));
     }
   }
+  check_no_fold_backs(rings);
   check_no_crossings(rings, cancel);
   check_nesting(rings, q);
 }

@@ -59,7 +59,7 @@ class CoreGeometryBackend final : public GeometryBackend {
                                          const CancelHook& cancel, const DeconstructLimits& limits,
                                          const DecisionObserver& observe) override {
     return penshape::search_tolerance(observed(make_decider(q, engine, cancel, limits), observe),
-                                      radius, width);
+                                      radius, width, fallback(q, engine, cancel, limits, observe));
   }
 
   RadiusSearchResult search_radius(const PolygonSet& q, const Rational& tolerance,
@@ -77,7 +77,9 @@ class CoreGeometryBackend final : public GeometryBackend {
   SuggestResult suggest_radius(const PolygonSet& q, const SuggestOptions& options,
                                EngineKind engine, const CancelHook& cancel,
                                const DeconstructLimits& limits) override {
-    return penshape::suggest_radius(make_decider(q, engine, cancel, limits), options);
+    SuggestOptions with_fallback = options;
+    with_fallback.fallback = fallback(q, engine, cancel, limits, {});
+    return penshape::suggest_radius(make_decider(q, engine, cancel, limits), with_fallback);
   }
 
  private:
@@ -89,6 +91,13 @@ class CoreGeometryBackend final : public GeometryBackend {
       observe(result);
       return result;
     };
+  }
+
+  // The reference engine settles what the fast engine leaves UNDECIDED against its promise.
+  static Decider fallback(const PolygonSet& q, EngineKind engine, const CancelHook& cancel,
+                          const DeconstructLimits& limits, const DecisionObserver& observe) {
+    if (engine != EngineKind::kFast) return {};
+    return observed(make_decider(q, EngineKind::kReference, cancel, limits), observe);
   }
 };
 

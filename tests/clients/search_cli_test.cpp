@@ -76,6 +76,29 @@ TEST(SearchCli, DeconstructSimplifiesByDefault) {
             json_number(raw.out, "solution_vertices") / 2);
 }
 
+// tests/data/adversarial/slit.txt: the fast engine stays UNDECIDED far above ε̂ there (a slit
+// narrower than δ), breaking the search's assumption. The CLI must still exit 0 with a
+// converged interval (settled by the reference engine) that overlaps the reference engine's
+// own search's interval: both hold ε̂, so they must meet.
+TEST(SearchCli, SlitIsSettledByTheReferenceFallback) {
+  const std::string file = data_file("adversarial/slit.txt");
+  const auto fast =
+      run_command(cli("search-tolerance " + file + " --radius 1 --precision 1/256 --json"));
+  ASSERT_EQ(fast.exit_code, 0) << fast.out;
+  const auto ref = run_command(
+      cli("search-tolerance " + file + " --radius 1 --precision 1/256 --engine reference --json"));
+  ASSERT_EQ(ref.exit_code, 0) << ref.out;
+  EXPECT_NE(fast.out.find("\"converged\":true"), std::string::npos) << fast.out;
+  EXPECT_NE(fast.out.find("\"answer\":\"YES\""), std::string::npos) << fast.out;
+  EXPECT_GT(json_number(fast.out, "fallback_calls"), 0) << fast.out;
+  EXPECT_EQ(json_number(ref.out, "fallback_calls"), 0) << ref.out;
+  const double lo = json_number(fast.out, "eps_low");
+  const double hi = json_number(fast.out, "eps_high");
+  EXPECT_LE(hi - lo, 1.0 / 256 + 1e-12);
+  EXPECT_LE(lo, json_number(ref.out, "eps_high"));
+  EXPECT_GE(hi, json_number(ref.out, "eps_low"));
+}
+
 TEST(SearchCli, BadInputExitsTwo) {
   EXPECT_EQ(run_command(cli("search-tolerance /nonexistent --radius 1")).exit_code, 2);
   EXPECT_EQ(

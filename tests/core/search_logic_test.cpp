@@ -72,6 +72,9 @@ TEST(SearchTolerance, ZeroEpsHat) {
   EXPECT_LE(res.solution.params.tolerance, Rational(1, 100));
 }
 
+// A decider whose UNDECIDED breaks the promise (it stays UNDECIDED wherever r > ε) and gives
+// no fallback: the search must not throw but return what its answers prove, [0, r], with the
+// YES at r (P = Q), and say it did not converge.
 TEST(SearchTolerance, BrokenDeciderIsReportedNotTrusted) {
   const Decider never_yes = [](const Rational& r, const Rational& e, const Rational& d) {
     DeconstructResult res;
@@ -79,10 +82,92 @@ TEST(SearchTolerance, BrokenDeciderIsReportedNotTrusted) {
     res.answer = r <= e ? Answer::kYes : Answer::kUndecided;
     return res;
   };
-  // Always UNDECIDED collapses onto ε = r ... the final calls cannot produce a YES below r.
-  EXPECT_THROW((void)search_tolerance(never_yes, Rational(1), Rational(1, 1000)), InvalidInput);
+  const auto res = search_tolerance(never_yes, Rational(1), Rational(1, 1000));
+  EXPECT_FALSE(res.converged);
+  EXPECT_NE(res.note.find("broke"), std::string::npos) << res.note;
+  EXPECT_EQ(res.eps_low, 0);
+  EXPECT_EQ(res.eps_high, 1);
+  EXPECT_EQ(res.solution.answer, Answer::kYes);
+  EXPECT_EQ(res.solution.params.tolerance, 1);
+  EXPECT_EQ(res.fallback_calls, 0U);
   EXPECT_THROW((void)search_tolerance(never_yes, Rational(0), Rational(1, 10)), InvalidInput);
   EXPECT_THROW((void)search_tolerance(never_yes, Rational(1), Rational(0)), InvalidInput);
+}
+
+// The slit case: the first decider is honest except that it stays UNDECIDED on a band far above
+// ε̂ (a completeness gap: its YES and NO stay true). The search notices at its final call and
+// redoes itself with the fallback inside the proven bounds: converged, ε̂ inside, width <= Δ.
+TEST(SearchTolerance, FallbackSettlesABrokenPromise) {
+  for (int seed = 0; seed < 20; ++seed) {
+    const Rational target(17, 100);
+    Adversary honest;
+    honest.rng.seed(static_cast<unsigned>(seed));
+    honest.eps_hat = [target](const Rational&) { return target; };
+    const Decider gappy = [&honest](const Rational& r, const Rational& e, const Rational& d) {
+      DeconstructResult res = honest(r, e, d);
+      if (e > Rational(1, 4) && e < Rational(3, 5)) res.answer = Answer::kUndecided;
+      return res;
+    };
+    Adversary reference;
+    reference.rng.seed(static_cast<unsigned>(seed + 100));
+    reference.eps_hat = honest.eps_hat;
+    const Rational delta(1, 256);
+    const auto res = search_tolerance(gappy, Rational(1), delta, as_decider(reference));
+    EXPECT_TRUE(res.converged) << seed << ": " << res.note;
+    EXPECT_FALSE(res.note.empty());
+    EXPECT_LE(res.eps_low, target) << seed;
+    EXPECT_GE(res.eps_high, target) << seed;
+    EXPECT_LE(res.eps_high - res.eps_low, delta) << seed;
+    ASSERT_EQ(res.solution.answer, Answer::kYes);
+    EXPECT_LE(res.solution.params.tolerance, target + delta);
+    EXPECT_GT(res.fallback_calls, 0U);
+    EXPECT_EQ(res.fallback_calls, reference.calls);
+    EXPECT_EQ(res.decider_calls, honest.calls + reference.calls);
+  }
+}
+
+// Without a fallback the same gap leaves the interval the YES and NO answers prove: it holds ε̂
+// (no UNDECIDED-derived bound survives) and the solution is the smallest YES seen.
+TEST(SearchTolerance, WithoutFallbackTheProvenIntervalHoldsEpsHat) {
+  for (int seed = 0; seed < 20; ++seed) {
+    const Rational target(17, 100);
+    Adversary honest;
+    honest.rng.seed(static_cast<unsigned>(seed));
+    honest.eps_hat = [target](const Rational&) { return target; };
+    const Decider gappy = [&honest](const Rational& r, const Rational& e, const Rational& d) {
+      DeconstructResult res = honest(r, e, d);
+      if (e > Rational(1, 4) && e < Rational(3, 5)) res.answer = Answer::kUndecided;
+      return res;
+    };
+    const auto res = search_tolerance(gappy, Rational(1), Rational(1, 256));
+    EXPECT_FALSE(res.converged) << seed;
+    EXPECT_LE(res.eps_low, target) << seed;
+    EXPECT_GE(res.eps_high, target) << seed;
+    ASSERT_EQ(res.solution.answer, Answer::kYes);
+    EXPECT_EQ(res.solution.params.tolerance, res.eps_high);
+  }
+}
+
+TEST(SearchTolerance, SelfContradictingDeciderIsAnInternalError) {
+  // NO everywhere below r and YES at r is consistent (ε̂ = r).
+  const Decider no_below = [](const Rational& r, const Rational& e, const Rational& d) {
+    DeconstructResult res;
+    res.params = {r, e, d, EngineKind::kFast};
+    res.answer = r <= e ? Answer::kYes : Answer::kNo;
+    return res;
+  };
+  const auto fine = search_tolerance(no_below, Rational(1), Rational(1, 64));
+  EXPECT_TRUE(fine.converged);
+  EXPECT_EQ(fine.eps_high, 1);
+  // A YES at the first midpoint 1/2, NO ever after: the certified call at ε_yes = 1/2 answers
+  // NO where a YES was given, which no sound decider can do.
+  std::size_t calls = 0;
+  const Decider liar = [&](const Rational& r, const Rational& e, const Rational& d) {
+    DeconstructResult res = no_below(r, e, d);
+    if (calls++ == 0) res.answer = Answer::kYes;
+    return res;
+  };
+  EXPECT_THROW((void)search_tolerance(liar, Rational(1), Rational(1, 64)), std::logic_error);
 }
 
 TEST(SearchRadius, BoundsHoldRStar) {

@@ -9,6 +9,7 @@
 #include <numbers>
 #include <optional>
 
+#include "geometry/distance_kernel.hpp"
 #include "point_set.hpp"
 #include "prepared_annulus.hpp"
 #include "translation_internal.hpp"
@@ -28,10 +29,12 @@ struct CurveEdge {
   double H;
 };
 
+// Distance from p to the segment [a, a + v]: the shared kernel's double path
+// (geometry/distance_kernel.hpp); these are bounds the sweeps prune with, not certificates.
 double point_segment_distance(PointD p, PointD a, PointD v) {
-  const double len2 = dot(v, v);
-  const double t = len2 > 0.0 ? std::clamp(dot(sub(p, a), v) / len2, 0.0, 1.0) : 0.0;
-  return norm(sub(p, add(a, mul(v, t))));
+  using P = ::penshape::detail::Point2<double>;
+  const P end{a.x + v.x, a.y + v.y};
+  return std::sqrt(*::penshape::detail::squared_distance_to_segment(P{p.x, p.y}, P{a.x, a.y}, end));
 }
 
 struct RotationGeometry {

@@ -22,7 +22,8 @@ SuggestResult suggest_radius(const Decider& decide, const SuggestOptions& option
       (options.to - options.from) / Rational(static_cast<unsigned long>(options.samples - 1));
   for (std::size_t i = 0; i < options.samples; ++i) {
     const Rational r = options.from + step * Rational(static_cast<unsigned long>(i));
-    ToleranceSearchResult t = search_tolerance(decide, r, r * options.relative_precision);
+    ToleranceSearchResult t =
+        search_tolerance(decide, r, r * options.relative_precision, options.fallback);
     out.decider_calls += t.decider_calls;
     RadiusSample s{r, t.eps_low, t.eps_high, 0.0};
     s.j = sgn(t.eps_high) > 0 ? to_double(r / t.eps_high) : 0.0;

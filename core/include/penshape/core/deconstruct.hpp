@@ -73,9 +73,10 @@ struct DeconstructResult {
 // crossing (within a ring or between rings), every hole inside its outer ring and outside the
 // other holes, polygons pairwise disjoint (one may sit inside another's hole). Orientation is not
 // checked (normalize_orientation fixes it). Throws InvalidInput naming polygon, ring and vertex.
-// Cost: O(n log n) plus, for the crossing test, O(n·k) with k the number of edges whose x-ranges
-// overlap a vertical line (small for real outlines, up to n for adversarial combs); cancel is
-// checked every 256 edges of that sweep (throws Cancelled).
+// Cost: the touching/crossing test is a Shamos–Hoey sweep, O(n log n) exact predicates whatever
+// the shape (combs included); the nesting test places one vertex of each ring against the rings
+// it may lie in, O(n·(h + p)) for h holes and p polygons (a bounding box rejects most). cancel is
+// checked every 256 event points of the sweep (throws Cancelled).
 void validate_region(const PolygonSet& q, std::size_t max_vertices = 200'000,
                      const CancelHook& cancel = {});
 

@@ -7,10 +7,14 @@
 //     example), each with its solution.
 // Every function calls a Decider; the default one is penshape::deconstruct(). The searches rely
 // on the decider's guarantee (Theorems 11, 13): UNDECIDED at (ε, δ) implies |ε - ε̂| <= 2δ.
+// A decider's YES and NO are proofs; its UNDECIDED is only a promise. search_tolerance notices
+// a broken promise (the fast engine can stay UNDECIDED far from ε̂ on features narrower than δ)
+// and then re-searches with a fallback decider, or reports the interval its proofs give.
 #include <chrono>
 #include <cstddef>
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "penshape/core/deconstruct.hpp"
@@ -28,17 +32,28 @@ Decider make_decider(const PolygonSet& q, EngineKind engine, const CancelHook& c
 struct ToleranceSearchResult {
   Rational radius;
   Rational eps_low;  // ε̂ >= eps_low
-  Rational eps_high; // ε̂ <= eps_high, eps_high - eps_low <= Δ
-  // The certified solution: YES at tolerance ε̃ = solution.params.tolerance <= ε̂ + Δ.
+  Rational eps_high; // ε̂ <= eps_high; eps_high - eps_low <= Δ when converged
+  // The certified solution: YES at tolerance ε̃ = solution.params.tolerance, <= ε̂ + Δ when
+  // converged, <= eps_high always.
   DeconstructResult solution;
-  std::size_t decider_calls = 0;
+  // false when the decider broke its UNDECIDED promise and the fallback (if any) did too: then
+  // [eps_low, eps_high] is only what the YES and NO answers prove (ε̂ >= the largest ε with a
+  // NO, ε̂ <= the smallest with a YES, r at worst: P = Q) and may be wider than Δ.
+  bool converged = true;
+  // Non-empty when the first decider broke its promise: what it did and what followed.
+  std::string note;
+  std::size_t decider_calls = 0;  // all calls, the fallback's included
+  std::size_t fallback_calls = 0; // of which by the fallback decider
   std::chrono::nanoseconds elapsed{0};
 };
 
-// Throws InvalidInput when r or Δ is not positive, or when the decider breaks its guarantee
-// (the final certified call did not answer YES): the message says which.
+// Throws InvalidInput when r or Δ is not positive. When `decide` breaks its guarantee (the final
+// certified call did not answer YES), the search is redone with `fallback` (if given) inside
+// the bounds the YES and NO answers so far prove; if that breaks too, the result says
+// converged = false (see above). Throws std::logic_error only for a decider that contradicts
+// itself (a NO above a YES) or gives no YES even at ε = r.
 ToleranceSearchResult search_tolerance(const Decider& decide, const Rational& radius,
-                                       const Rational& precision);
+                                       const Rational& precision, const Decider& fallback = {});
 
 struct RadiusSearchOptions {
   Rational precision;                  // stop when hi - lo <= precision (> 0)
@@ -74,6 +89,7 @@ struct SuggestOptions {
   Rational relative_precision = Rational(1, 50); // Δ = r · this, per sample
   // Called after each sample with (done, total); return false to stop early.
   std::function<bool(std::size_t, std::size_t)> progress;
+  Decider fallback; // passed to search_tolerance for each sample (may be empty)
 };
 
 struct RadiusSample {
