@@ -199,7 +199,7 @@ void settle(const std::vector<PointD>& cloud, ArrowState& a) {
     if (std::abs(det) < 1e-12) return;
     const PointD tip{(r0 * m11 - r1 * m01) / det, (m00 * r1 - m01 * r0) / det};
     auto far_end = [&](int k) {
-      PointD best = a.v[k == 0 ? 0 : k + 1];
+      PointD best = a.v[static_cast<std::size_t>(k == 0 ? 0 : k + 1)];
       double far = -1;
       for (const PointD& p : group[k]) {
         if (distance(p, tip) > far) far = distance(p, tip), best = p;
