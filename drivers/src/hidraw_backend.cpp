@@ -17,6 +17,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "init_reports.hpp"
 #include "penshape/drivers/device_manager.hpp"
 #include "penshape/drivers/live_recorder.hpp"
 #include "usb_strings.hpp"
@@ -120,23 +121,11 @@ std::unique_ptr<ReportSource> open_hidraw(const std::string& path,
   hid_device* dev = hid_open_path(path.c_str());
   if (dev == nullptr) throw std::runtime_error("cannot open " + path + " (permissions?)");
   auto source = std::make_unique<HidapiSource>(dev);
-  for (const InitStep& step : init) {
-    int rc = 0;
-    if (step.kind == InitStep::Kind::kFeatureReport) {
-      rc = hid_send_feature_report(dev, step.bytes.data(), step.bytes.size());
-    } else if (step.kind == InitStep::Kind::kOutputReport) {
-      rc = hid_write(dev, step.bytes.data(), step.bytes.size());
-    }
-    if (rc < 0) {
-      // A tablet that refuses its vendor-mode switch still sends its firmware-mode reports,
-      // which the descriptor's pens decode: say so and carry on rather than drop the device.
-      std::fprintf(stderr,
-                   "penshape drivers: %s refused an init report (%zu bytes); staying in firmware "
-                   "mode\n",
-                   path.c_str(), step.bytes.size());
-      break;
-    }
-  }
+  send_init_reports(path, init, [dev](const InitStep& step) {
+    return step.kind == InitStep::Kind::kFeatureReport
+               ? hid_send_feature_report(dev, step.bytes.data(), step.bytes.size())
+               : hid_write(dev, step.bytes.data(), step.bytes.size());
+  });
   return source;
 }
 
