@@ -35,10 +35,13 @@ grep -q '^ExecStart=/usr/bin/penshaped$' /usr/lib/systemd/user/penshaped.service
 dir=$(mktemp -d)
 trap 'kill %1 2>/dev/null; wait 2>/dev/null; rm -rf "$dir"' EXIT
 recording=/usr/share/penshape/recordings/dollar1-shapes.xppen-deco01v2.hidrec
-/usr/bin/penshaped --listen "unix:$dir/s.sock" --replay "$recording" --replay-delay 1 \
+# Watch from before the replay starts until it has played (its last report's time) and its last
+# stroke has been recognized.
+last=$(grep '^E:' "$recording" | tail -n 1 | awk '{print int($2)}')
+/usr/bin/penshaped --listen "unix:$dir/s.sock" --replay "$recording" --replay-delay 2 \
   >"$dir/daemon.log" 2>&1 &
 for _ in $(seq 50); do [ -S "$dir/s.sock" ] && break; sleep 0.1; done
-/usr/bin/penshape watch --json --socket "$dir/s.sock" --duration 12 >"$dir/watch.jsonl"
+/usr/bin/penshape watch --json --socket "$dir/s.sock" --duration $((last + 8)) >"$dir/watch.jsonl"
 shapes=$(grep -c '"type":"shape"' "$dir/watch.jsonl" || true)
 [ "$shapes" -ge 8 ] || fail "the installed daemon's replay gave $shapes shapes (want 8)"
 /usr/bin/penshape replay --socket "$dir/s.sock" "$recording" >"$dir/replay.txt" 2>"$dir/replay.err"
