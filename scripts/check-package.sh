@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Builds the Debian package from the release build, installs it with apt (as a user would), and
 # checks that the installed files work on their own: both programs answer --version, the udev
-# rules, systemd user unit, man pages, Python stubs and CMake package are where Debian looks, and
-# the installed penshaped replays an installed recording to the installed penshape.
+# rules, systemd user unit, man pages, Python stubs, CMake package and Inkscape extension are where
+# Debian looks, and the installed penshaped replays an installed recording to the installed
+# penshape. Removes the package when done.
 #   scripts/check-package.sh            (root, or passwordless sudo; after a release build)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -31,9 +32,12 @@ grep -q '^ExecStart=/usr/bin/penshaped$' /usr/lib/systemd/user/penshaped.service
   fail "the unit does not start /usr/bin/penshaped"
 /usr/bin/python3 -c 'import penshape.v1.live_pb2_grpc' || fail "the Python stubs do not import"
 
-# The installed daemon replays an installed recording; the installed client sees its shapes.
+# The installed daemon replays an installed recording; the installed client sees its shapes. The
+# package is removed again at the end: a system-wide copy of the Inkscape extension beside the
+# one the app tests install in their own HOME would make Inkscape see the extension twice.
 dir=$(mktemp -d)
-trap 'kill %1 2>/dev/null; wait 2>/dev/null; rm -rf "$dir"' EXIT
+trap 'kill %1 2>/dev/null; wait 2>/dev/null; rm -rf "$dir";
+      DEBIAN_FRONTEND=noninteractive "${SUDO[@]}" apt-get remove -y -qq penshape >/dev/null' EXIT
 recording=/usr/share/penshape/recordings/dollar1-shapes.xppen-deco01v2.hidrec
 # Watch from before the replay starts until it has played (its last report's time) and its last
 # stroke has been recognized.
