@@ -10,10 +10,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <cstring>
 #include <string>
 #include <vector>
 
+#include "bench_support.hpp"
 #include "penshape/drivers/pen_pipeline.hpp"
 #include "penshape/drivers/recording.hpp"
 
@@ -91,18 +91,10 @@ std::uint32_t le16(const std::vector<std::uint8_t>& r, std::size_t at) {
 } // namespace
 
 int main(int argc, char** argv) {
-  bool json = false;
-  double seconds = 0.5;
-  for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--json") == 0) {
-      json = true;
-    } else if (std::strcmp(argv[i], "--seconds") == 0 && i + 1 < argc) {
-      seconds = std::stod(argv[++i]);
-    } else {
-      std::fprintf(stderr, "usage: drivers_decode_bench [--json] [--seconds S]\n");
-      return 2;
-    }
-  }
+  const auto args = penshape::bench::parse_seconds_args(argc, argv, "drivers_decode_bench", 0.5);
+  if (!args) return 2;
+  const bool json = args->json;
+  const double seconds = args->seconds;
   const auto firmware = reports_of("digimend-tablets/Huion_HS610/dumps/default/pen_tilt.txt");
   const auto vendor = reports_of("digimend-tablets/Huion_HS610/dumps/enabled/pen_tilt.txt");
   const auto desc =

@@ -9,10 +9,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <string>
 #include <vector>
 
+#include "bench_support.hpp"
 #include "penshape/drivers/pen_decoder.hpp"
 #include "penshape/drivers/pen_encoder.hpp"
 #include "penshape/drivers/report_families.hpp"
@@ -78,18 +78,10 @@ std::uint32_t word(const std::vector<std::uint8_t>& r, std::uint32_t bit_offset)
 } // namespace
 
 int main(int argc, char** argv) {
-  bool json = false;
-  double seconds = 0.2;
-  for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--json") == 0) {
-      json = true;
-    } else if (std::strcmp(argv[i], "--seconds") == 0 && i + 1 < argc) {
-      seconds = std::stod(argv[++i]);
-    } else {
-      std::fprintf(stderr, "usage: family_decode_bench [--json] [--seconds S]\n");
-      return 2;
-    }
-  }
+  const auto args = penshape::bench::parse_seconds_args(argc, argv, "family_decode_bench", 0.2);
+  if (!args) return 2;
+  const bool json = args->json;
+  const double seconds = args->seconds;
   TabletSpec spec;
   spec.x_max = 50800;
   spec.y_max = 31750;

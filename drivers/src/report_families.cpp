@@ -4,23 +4,13 @@
 
 #include <charconv>
 
+#include "tsv_rows.hpp"
+
 namespace penshape::drivers {
 
 std::string_view builtin_family_tsv(); // generated from data/families.tsv (families_tsv.cpp.in)
 
 namespace {
-
-std::vector<std::string_view> split(std::string_view s, char sep) {
-  std::vector<std::string_view> out;
-  std::size_t start = 0;
-  for (std::size_t i = 0; i <= s.size(); ++i) {
-    if (i == s.size() || s[i] == sep) {
-      if (i > start) out.push_back(s.substr(start, i - start));
-      start = i + 1;
-    }
-  }
-  return out;
-}
 
 // One line's context for error messages.
 struct Where {
@@ -57,7 +47,7 @@ PenField value_field(std::string_view spec, const Where& w) {
     f.is_signed = true;
     spec.remove_suffix(1);
   }
-  const auto pieces = split(spec, ',');
+  const auto pieces = tsv::split(spec, ',', tsv::Empty::kSkip);
   if (pieces.empty() || pieces.size() > 3) w.fail("a value needs one to three pieces");
   std::uint32_t* offsets[] = {&f.bit_offset, &f.high_bit_offset, &f.top_bit_offset};
   std::uint32_t* sizes[] = {&f.bit_size, &f.high_bit_size, &f.top_bit_size};
@@ -181,7 +171,7 @@ PenLayout parse_layout(std::string_view family, std::string_view spec, std::size
   PenLayout l;
   l.origin = std::string(family);
   Tilt tilt;
-  for (std::string_view token : split(spec, ' ')) {
+  for (std::string_view token : tsv::split(spec, ' ', tsv::Empty::kSkip)) {
     const Where w{line, token};
     const auto eq = token.find('=');
     if (eq == std::string_view::npos) w.fail("expected key=value");
@@ -233,7 +223,7 @@ void shift_layout(PenLayout& l, std::uint32_t bytes, const Where& w) {
 // "@base [shift=N]": the layouts of an earlier family.
 std::vector<PenLayout> alias_layouts(std::string_view spec, std::string_view name,
                                      const std::vector<ReportFamily>& known, std::size_t line) {
-  const auto tokens = split(spec, ' ');
+  const auto tokens = tsv::split(spec, ' ', tsv::Empty::kSkip);
   const Where w{line, spec};
   const ReportFamily* base = nullptr;
   for (const auto& f : known) {
@@ -257,35 +247,32 @@ std::vector<PenLayout> alias_layouts(std::string_view spec, std::string_view nam
 
 std::vector<ReportFamily> parse_report_families(std::string_view tsv) {
   std::vector<ReportFamily> out;
-  std::size_t line_no = 0;
-  for (std::string_view line : split(tsv, '\n')) {
-    ++line_no;
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    if (line.empty() || line.front() == '#') continue;
-    const auto cols = split(line, '\t');
-    const Where w{line_no, line};
-    if (cols.size() != 3) w.fail("expected 3 tab-separated columns");
-    const auto protocol = protocol_from_name(cols[1]);
-    if (!protocol) w.fail("unknown protocol");
-    ReportFamily* family = nullptr;
-    for (auto& f : out) {
-      if (f.name == cols[0]) family = &f;
-    }
-    if (family == nullptr) {
-      out.push_back(ReportFamily{std::string(cols[0]), *protocol, {}});
-      family = &out.back();
-    } else if (family->protocol != *protocol) {
-      w.fail("a family has one protocol");
-    }
-    if (cols[2] == "-") continue;
-    if (cols[2].front() == '@') {
-      for (auto& l : alias_layouts(cols[2], cols[0], out, line_no)) {
-        family->layouts.push_back(std::move(l));
-      }
-    } else {
-      family->layouts.push_back(parse_layout(cols[0], cols[2], line_no));
-    }
-  }
+  tsv::for_each_row(
+      tsv, tsv::Empty::kSkip,
+      [&](std::size_t line_no, std::string_view line, const std::vector<std::string_view>& cols) {
+        const Where w{line_no, line};
+        if (cols.size() != 3) w.fail("expected 3 tab-separated columns");
+        const auto protocol = protocol_from_name(cols[1]);
+        if (!protocol) w.fail("unknown protocol");
+        ReportFamily* family = nullptr;
+        for (auto& f : out) {
+          if (f.name == cols[0]) family = &f;
+        }
+        if (family == nullptr) {
+          out.push_back(ReportFamily{std::string(cols[0]), *protocol, {}});
+          family = &out.back();
+        } else if (family->protocol != *protocol) {
+          w.fail("a family has one protocol");
+        }
+        if (cols[2] == "-") return;
+        if (cols[2].front() == '@') {
+          for (auto& l : alias_layouts(cols[2], cols[0], out, line_no)) {
+            family->layouts.push_back(std::move(l));
+          }
+        } else {
+          family->layouts.push_back(parse_layout(cols[0], cols[2], line_no));
+        }
+      });
   return out;
 }
 

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "penshape/drivers/report_families.hpp"
+#include "tsv_rows.hpp"
 
 namespace penshape::drivers {
 
@@ -24,18 +25,6 @@ constexpr std::array<std::pair<Protocol, std::string_view>, 8> kProtocols{{
     {Protocol::kXpPen, "xppen"},
     {Protocol::kVendor, "vendor"},
 }};
-
-std::vector<std::string_view> split(std::string_view s, char sep) {
-  std::vector<std::string_view> out;
-  std::size_t start = 0;
-  for (std::size_t i = 0; i <= s.size(); ++i) {
-    if (i == s.size() || s[i] == sep) {
-      out.push_back(s.substr(start, i - start));
-      start = i + 1;
-    }
-  }
-  return out;
-}
 
 [[noreturn]] void fail(std::size_t line, const std::string& what) {
   throw TabletTableError("tablet table line " + std::to_string(line) + ": " + what);
@@ -73,7 +62,7 @@ std::vector<std::uint8_t> hex_bytes(std::string_view s, std::size_t line) {
 
 std::vector<InitStep> init_steps(std::string_view col, std::size_t line_no) {
   std::vector<InitStep> out;
-  for (std::string_view step : split(col, ' ')) {
+  for (std::string_view step : tsv::split(col, ' ', tsv::Empty::kKeep)) {
     if (step.size() < 3 || step[1] != ':') fail(line_no, "bad init step");
     InitStep s;
     switch (step[0]) {
@@ -102,7 +91,7 @@ std::vector<InitStep> init_steps(std::string_view col, std::size_t line_no) {
 // "index=regex;index=regex": each regex must compile (ECMAScript) so matching never throws.
 std::map<std::uint8_t, std::string> match_patterns(std::string_view col, std::size_t line_no) {
   std::map<std::uint8_t, std::string> out;
-  for (std::string_view part : split(col, ';')) {
+  for (std::string_view part : tsv::split(col, ';', tsv::Empty::kKeep)) {
     const auto eq = part.find('=');
     if (eq == std::string_view::npos) fail(line_no, "bad device_match '" + std::string(part) + "'");
     const auto index = number<std::uint8_t>(part.substr(0, eq), 10, line_no, "string index");
@@ -135,35 +124,32 @@ std::optional<Protocol> protocol_from_name(std::string_view name) {
 
 std::vector<TabletSpec> parse_tablet_table(std::string_view tsv) {
   std::vector<TabletSpec> out;
-  std::size_t line_no = 0;
-  for (std::string_view line : split(tsv, '\n')) {
-    ++line_no;
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    if (line.empty() || line.front() == '#') continue;
-    const auto cols = split(line, '\t');
-    if (cols.size() != 13) fail(line_no, "expected 13 tab-separated columns");
-    TabletSpec t;
-    t.vendor_id = number<std::uint16_t>(cols[0], 16, line_no, "vid");
-    t.product_id = number<std::uint16_t>(cols[1], 16, line_no, "pid");
-    const ReportFamily* family = find_family(cols[2]);
-    if (family == nullptr) fail(line_no, "unknown family '" + std::string(cols[2]) + "'");
-    t.family = family->name;
-    t.protocol = family->protocol;
-    if (cols[3] != "-") t.init = init_steps(cols[3], line_no);
-    t.report_length = number<std::uint32_t>(cols[4], 10, line_no, "report_len");
-    t.x_max = number<std::int32_t>(cols[5], 10, line_no, "x_max");
-    t.y_max = number<std::int32_t>(cols[6], 10, line_no, "y_max");
-    t.pressure_max = number<std::uint32_t>(cols[7], 10, line_no, "pressure_max");
-    t.width_mm = real(cols[8], line_no, "width_mm");
-    t.height_mm = real(cols[9], line_no, "height_mm");
-    if (t.width_mm > 0 && t.x_max > 0) t.x_resolution = t.x_max / t.width_mm;
-    if (t.height_mm > 0 && t.y_max > 0) t.y_resolution = t.y_max / t.height_mm;
-    t.pen_buttons = number<std::uint32_t>(cols[10], 10, line_no, "pen_buttons");
-    if (cols[11] != "-") t.device_match = match_patterns(cols[11], line_no);
-    t.name = std::string(cols[12]);
-    if (t.name.empty()) fail(line_no, "empty name");
-    out.push_back(std::move(t));
-  }
+  tsv::for_each_row(
+      tsv, tsv::Empty::kKeep,
+      [&](std::size_t line_no, std::string_view, const std::vector<std::string_view>& cols) {
+        if (cols.size() != 13) fail(line_no, "expected 13 tab-separated columns");
+        TabletSpec t;
+        t.vendor_id = number<std::uint16_t>(cols[0], 16, line_no, "vid");
+        t.product_id = number<std::uint16_t>(cols[1], 16, line_no, "pid");
+        const ReportFamily* family = find_family(cols[2]);
+        if (family == nullptr) fail(line_no, "unknown family '" + std::string(cols[2]) + "'");
+        t.family = family->name;
+        t.protocol = family->protocol;
+        if (cols[3] != "-") t.init = init_steps(cols[3], line_no);
+        t.report_length = number<std::uint32_t>(cols[4], 10, line_no, "report_len");
+        t.x_max = number<std::int32_t>(cols[5], 10, line_no, "x_max");
+        t.y_max = number<std::int32_t>(cols[6], 10, line_no, "y_max");
+        t.pressure_max = number<std::uint32_t>(cols[7], 10, line_no, "pressure_max");
+        t.width_mm = real(cols[8], line_no, "width_mm");
+        t.height_mm = real(cols[9], line_no, "height_mm");
+        if (t.width_mm > 0 && t.x_max > 0) t.x_resolution = t.x_max / t.width_mm;
+        if (t.height_mm > 0 && t.y_max > 0) t.y_resolution = t.y_max / t.height_mm;
+        t.pen_buttons = number<std::uint32_t>(cols[10], 10, line_no, "pen_buttons");
+        if (cols[11] != "-") t.device_match = match_patterns(cols[11], line_no);
+        t.name = std::string(cols[12]);
+        if (t.name.empty()) fail(line_no, "empty name");
+        out.push_back(std::move(t));
+      });
   return out;
 }
 
