@@ -489,33 +489,10 @@ DecisionResult decide_rotation_diagram(const TemplatePolygon& p, double delta,
 MinWidthResult min_width_rotation_diagram(const TemplatePolygon& p,
                                           const std::vector<PointD>& points,
                                           const MinWidthOptions& options) {
-  const OuterOffset lin = OuterOffset::kLinearized;
-  MinWidthResult res;
-  res.placement = centred_placement(p, points);
-  const double w0 = width_at(p, lin, res.placement, points);
-  double hi = certify_width(p, lin, res.placement, w0, annulus_margin(p, w0, points), points);
-  const double scale = problem_scale(p, points);
-  const double tol = std::max({options.absolute_tolerance, options.relative_tolerance * scale,
-                               4.0 * annulus_margin(p, hi, points)});
-  double lo = 0.0;
-  double search_lo = 0.0;
-  while (hi - search_lo > tol && res.decisions < options.max_decisions) {
-    const double mid = 0.5 * (search_lo + hi);
-    const DecisionResult r = decide_rotation_iterative(p, mid, points, &res.placement);
-    ++res.decisions;
-    if (r.answer == Answer::kYes) {
-      const double w = width_at(p, lin, r.placement, points);
-      hi = std::min(mid, certify_width(p, lin, r.placement, w, r.margin, points));
-      res.placement = r.placement;
-    } else if (r.answer == Answer::kNo) {
-      lo = search_lo = mid;
-    } else {
-      search_lo = mid;
-    }
-  }
-  res.delta_upper = hi;
-  res.delta_lower = lo;
-  return res;
+  return bisect_min_width(p, OuterOffset::kLinearized, points, options,
+                          [&](double width, Placement& hint) {
+                            return decide_rotation_iterative(p, width, points, &hint);
+                          });
 }
 
 } // namespace detail

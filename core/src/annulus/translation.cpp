@@ -9,37 +9,32 @@
 namespace penshape::annulus {
 namespace detail {
 
+namespace {
+
+Box bounding_box(const std::vector<PointD>& v) {
+  Box b{v[0].x, v[0].y, v[0].x, v[0].y};
+  for (const PointD& q : v) {
+    b.x0 = std::min(b.x0, q.x);
+    b.x1 = std::max(b.x1, q.x);
+    b.y0 = std::min(b.y0, q.y);
+    b.y1 = std::max(b.y1, q.y);
+  }
+  return b;
+}
+
+} // namespace
+
 Placement centred_placement(const TemplatePolygon& p, const std::vector<PointD>& points) {
-  auto centre = [](const std::vector<PointD>& v) {
-    double x0 = v[0].x, x1 = v[0].x, y0 = v[0].y, y1 = v[0].y;
-    for (const PointD& q : v) {
-      x0 = std::min(x0, q.x);
-      x1 = std::max(x1, q.x);
-      y0 = std::min(y0, q.y);
-      y1 = std::max(y1, q.y);
-    }
-    return PointD{0.5 * (x0 + x1), 0.5 * (y0 + y1)};
-  };
-  const PointD a = centre(points);
-  const PointD b = centre(p.vertices());
+  const Box a = bounding_box(points), b = bounding_box(p.vertices());
   Placement pl;
-  pl.tx = a.x - b.x;
-  pl.ty = a.y - b.y;
+  pl.tx = 0.5 * (a.x0 + a.x1) - 0.5 * (b.x0 + b.x1);
+  pl.ty = 0.5 * (a.y0 + a.y1) - 0.5 * (b.y0 + b.y1);
   return pl;
 }
 
 double problem_scale(const TemplatePolygon& p, const std::vector<PointD>& points) {
-  auto diag = [](const std::vector<PointD>& v) {
-    double x0 = v[0].x, x1 = v[0].x, y0 = v[0].y, y1 = v[0].y;
-    for (const PointD& q : v) {
-      x0 = std::min(x0, q.x);
-      x1 = std::max(x1, q.x);
-      y0 = std::min(y0, q.y);
-      y1 = std::max(y1, q.y);
-    }
-    return std::hypot(x1 - x0, y1 - y0);
-  };
-  return diag(p.vertices()) + diag(points);
+  const Box a = bounding_box(p.vertices()), b = bounding_box(points);
+  return std::hypot(a.x1 - a.x0, a.y1 - a.y0) + std::hypot(b.x1 - b.x0, b.y1 - b.y0);
 }
 
 bool longest_interval_midpoint(const std::vector<IntervalSet>& sets, const Curve& curve,
@@ -201,34 +196,9 @@ MinWidthResult min_width_translation(const TemplatePolygon& p, OuterOffset outer
                                      const MinWidthOptions& options, const Limits& limits) {
   validate_all(p, outer, points, limits);
   Problem pr = make_problem(p, outer, points);
-  MinWidthResult res;
-  res.placement = centred_placement(p, points);
-  const double w0 = width_at(p, outer, res.placement, points);
-  double hi = certify_width(p, outer, res.placement, w0, annulus_margin(p, w0, points), points);
-  const double scale = problem_scale(p, points);
-  const double tol = std::max({options.absolute_tolerance, options.relative_tolerance * scale,
-                               4.0 * annulus_margin(p, hi, points)});
-  double lo = 0.0;
-  double search_lo = 0.0;
-  while (hi - search_lo > tol && res.decisions < options.max_decisions) {
-    const double mid = 0.5 * (search_lo + hi);
-    const DecisionResult r = decide_core(pr, mid);
-    ++res.decisions;
-    if (r.answer == Answer::kYes) {
-      // The witness is usually better than mid: take its own (certified) width.
-      const double w = width_at(p, outer, r.placement, points);
-      const double cw = certify_width(p, outer, r.placement, w, r.margin, points);
-      hi = std::min(mid, cw);
-      res.placement = r.placement;
-    } else if (r.answer == Answer::kNo) {
-      lo = search_lo = mid;
-    } else {
-      search_lo = mid; // the optimum is within the margin of mid: not a certified bound
-    }
-  }
-  res.delta_upper = hi;
-  res.delta_lower = lo;
-  return res;
+  return detail::bisect_min_width(p, outer, points, options, [&pr](double width, const Placement&) {
+    return decide_core(pr, width);
+  });
 }
 
 namespace detail {
