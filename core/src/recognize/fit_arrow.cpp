@@ -7,6 +7,8 @@
 #include <numbers>
 #include <optional>
 
+#include "classifier.hpp"
+
 namespace penshape::recognize_detail {
 namespace {
 
@@ -24,6 +26,8 @@ constexpr double kStraightFraction = 0.6;
 constexpr double kSecondStartAbove = 0.4;
 // A curved shaft bows by at most this fraction of its chord.
 constexpr double kMaxBulge = 0.25;
+// Free parameters (as degrees_of_freedom() counts them): straight, curved and double arrows.
+constexpr double kStraightParameters = 8, kCurvedParameters = 9, kDoubleParameters = 12;
 
 } // namespace
 
@@ -243,7 +247,9 @@ Fit make_fit(ShapeClass shape, ArrowState a, double error) {
 
 } // namespace
 
-std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon) {
+std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon, double rank_to_beat) {
+  auto may_win = [&](double parameters) { return kPricePerParameter * parameters < rank_to_beat; };
+  if (!may_win(kStraightParameters)) return {};
   const std::vector<PointD> cloud = cloud_of(u);
   if (cloud.size() < 8) return {};
   // The two farthest points: the tail and the tip (barbs lean back, so the tip is the farthest
@@ -290,12 +296,13 @@ std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon) {
     }
     out.push_back(make_fit(ShapeClass::kArrow, std::move(first), e_straight));
     // Curved, when the shaft bows visibly and the straight arrow fits too loosely to pass.
-    if (std::abs(curved.bulge) >= epsilon / 4.0 && e_straight > kStraightFraction * epsilon) {
+    if (std::abs(curved.bulge) >= epsilon / 4.0 && e_straight > kStraightFraction * epsilon &&
+        may_win(kCurvedParameters)) {
       const double e = polish(curved, objective, step, true);
       out.push_back(make_fit(ShapeClass::kArrow, std::move(curved), e));
     }
   }
-  if (at_a && at_b) {
+  if (at_a && at_b && may_win(kDoubleParameters)) {
     ArrowState st{{cloud[a], cloud[b], at_b->first, at_b->second, at_a->first, at_a->second}, 0.0};
     const double e = polish(st, Objective{cloud, u, ShapeClass::kDoubleArrow}, step, false);
     out.push_back(make_fit(ShapeClass::kDoubleArrow, std::move(st), e));

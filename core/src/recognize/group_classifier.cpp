@@ -37,10 +37,12 @@ void sort_scored(std::vector<Scored>& scored) {
   });
 }
 
+// Arrows that might beat a snap of rank `rank_to_beat` (infinite: none).
 std::vector<Scored> score_arrows(const UnionStroke& u, const std::vector<PointD>& cloud,
-                                 double drawn_length, double epsilon, double pen_radius) {
+                                 double drawn_length, double epsilon, double pen_radius,
+                                 double rank_to_beat) {
   std::vector<Scored> out;
-  for (Fit& f : fit_arrows(u, epsilon)) {
+  for (Fit& f : fit_arrows(u, epsilon, rank_to_beat)) {
     Scored sc;
     Candidate& c = sc.candidate;
     c.shape = f.shape;
@@ -151,14 +153,12 @@ UnionRecognition recognize_union_detail(std::span<const StrokeInput> strokes,
   UnionRecognition out;
   out.strokes = prepare_union(paths, tau);
   const std::vector<PointD> cloud = cloud_of(out.strokes);
-  // The strokes read as one path (the single-stroke fitters see the union through it).
-  const PreparedStroke chain = prepare_points(chain_pieces(paths), tau);
-  std::vector<Scored> arrows =
-      score_arrows(out.strokes, cloud, drawn_length, tol.epsilon, tol.pen_radius);
-  sort_scored(arrows);
   if (strokes.size() == 1) {
     out.recognition = recognize(strokes.front(), config);
     out.rank = recognition_rank(out.recognition);
+    std::vector<Scored> arrows = score_arrows(out.strokes, cloud, drawn_length, tol.epsilon,
+                                              tol.pen_radius, out.rank);
+    sort_scored(arrows);
     if (!arrows.empty() && arrows.front().snap && arrows.front().rank < out.rank) {
       Recognition r = out.recognition;
       std::vector<Candidate> others = std::move(r.alternatives);
@@ -180,8 +180,17 @@ UnionRecognition recognize_union_detail(std::span<const StrokeInput> strokes,
     }
     return out;
   }
+  // The strokes read as one path (the single-stroke fitters see the union through it).
+  const PreparedStroke chain = prepare_points(chain_pieces(paths), tau);
   std::vector<Scored> scored = score_chain(out.strokes, chain, config, tol.epsilon, tol.pen_radius);
-  for (Scored& a : arrows) scored.push_back(std::move(a));
+  double chain_rank = INFINITY; // the best snap's (score_chain leaves refused ones before it)
+  for (const Scored& sc : scored) {
+    if (sc.snap) chain_rank = std::min(chain_rank, sc.rank);
+  }
+  for (Scored& a : score_arrows(out.strokes, cloud, drawn_length, tol.epsilon, tol.pen_radius,
+                                chain_rank)) {
+    scored.push_back(std::move(a));
+  }
   sort_scored(scored);
   out.rank = !scored.empty() && scored.front().snap ? scored.front().rank : INFINITY;
   out.recognition = choose(std::move(scored), tol.epsilon, tol.pen_radius);
