@@ -89,16 +89,33 @@ struct ArrowState {
   double bulge = 0.0;
 };
 
+// Where along the union a vertex was last found near it: the next search starts there, since
+// the polish moves vertices by small steps.
+struct PieceHint {
+  std::size_t piece = 0;
+  std::size_t segment = 0;
+};
+
 // Whether p lies farther than `floor` from every piece, and if so how far (else `floor`): a
-// vertex nearer the union than the cloud's worst point cannot raise the objective.
-double union_distance_above(const UnionStroke& u, PointD p, double floor) {
+// vertex nearer the union than the cloud's worst point cannot raise the objective. The segments
+// are scanned from `hint` on (the answer does not depend on the order).
+double union_distance_above(const UnionStroke& u, PointD p, double floor, PieceHint& hint) {
   const double floor2 = floor * floor;
   double best2 = INFINITY;
-  for (const std::vector<PointD>& piece : u.pieces) {
+  const std::size_t n = u.pieces.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t pi = (hint.piece + k) % n;
+    const std::vector<PointD>& piece = u.pieces[pi];
     if (piece.size() == 1) best2 = std::min(best2, dot(p - piece[0], p - piece[0]));
-    for (std::size_t i = 0; i + 1 < piece.size(); ++i) {
+    const std::size_t segments = piece.size() > 0 ? piece.size() - 1 : 0;
+    const std::size_t from = k == 0 && hint.segment < segments ? hint.segment : 0;
+    for (std::size_t j = 0; j < segments; ++j) {
+      const std::size_t i = (from + j) % segments;
       best2 = std::min(best2, segment_distance2(p, piece[i], piece[i + 1]));
-      if (best2 <= floor2) return floor;
+      if (best2 <= floor2) {
+        hint = {pi, i};
+        return floor;
+      }
     }
   }
   return std::sqrt(best2);
@@ -113,6 +130,7 @@ struct Objective {
   const UnionStroke& u;
   ShapeClass shape;
   mutable std::size_t worst_at = 0;
+  mutable PieceHint hints[6] = {};
 
   double operator()(const ArrowState& a, double limit = INFINITY) const {
     if (std::abs(a.bulge) > kMaxBulge * distance(a.v[0], a.v[1])) return INFINITY;
@@ -123,6 +141,8 @@ struct Objective {
       const std::size_t i = (worst_at + k) % cloud.size();
       double d2 = INFINITY;
       for (std::size_t j = 0; j + 1 < path.size(); ++j) {
+        // The path retraces each barb (tip, barb, tip): the way back is the same segment.
+        if (j > 0 && path[j + 1] == path[j - 1]) continue;
         d2 = std::min(d2, segment_distance2(cloud[i], path[j], path[j + 1]));
       }
       if (d2 > worst2) {
@@ -134,8 +154,8 @@ struct Objective {
       }
     }
     double worst = std::sqrt(worst2);
-    for (const PointD& p : a.v) {
-      worst = std::max(worst, union_distance_above(u, p, worst));
+    for (std::size_t k = 0; k < a.v.size(); ++k) {
+      worst = std::max(worst, union_distance_above(u, a.v[k], worst, hints[k % 6]));
       if (worst >= limit) return worst;
     }
     return worst;

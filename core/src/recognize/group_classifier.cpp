@@ -122,6 +122,20 @@ std::vector<Scored> score_chain(const UnionStroke& u, const PreparedStroke& s,
   return scored;
 }
 
+// The rank an arrow must beat to win over a snap: the snap's rank, or none at all (0) for a
+// closed shape at least 2 epsilon wide. An arrow is three straight pieces from one point (its
+// tip); drawn ink within 0.6 epsilon of them lies in three strips 1.2 epsilon wide meeting
+// there, and a closed outline in such strips either hugs one strip (narrower than 2 epsilon) or
+// crosses between strips where no ink is drawn. So such an outline never certifies as an arrow.
+double rank_for_arrows_to_beat(ShapeClass shape, const ShapeParams& params, double rank,
+                               double epsilon) {
+  Fit f;
+  f.shape = shape;
+  f.params = params;
+  const double width = closed_width(f);
+  return std::isfinite(width) && width >= kMinClosedWidth * epsilon ? 0.0 : rank;
+}
+
 // The winner of one stroke's own recognition as a Scored entry, to compete with the arrows.
 double recognition_rank(const Recognition& r) {
   if (r.shape == ShapeClass::kFreeform) return INFINITY;
@@ -156,8 +170,10 @@ UnionRecognition recognize_union_detail(std::span<const StrokeInput> strokes,
   if (strokes.size() == 1) {
     out.recognition = recognize(strokes.front(), config);
     out.rank = recognition_rank(out.recognition);
-    std::vector<Scored> arrows = score_arrows(out.strokes, cloud, drawn_length, tol.epsilon,
-                                              tol.pen_radius, out.rank);
+    const double to_beat = rank_for_arrows_to_beat(out.recognition.shape, out.recognition.params,
+                                                   out.rank, tol.epsilon);
+    std::vector<Scored> arrows =
+        score_arrows(out.strokes, cloud, drawn_length, tol.epsilon, tol.pen_radius, to_beat);
     sort_scored(arrows);
     if (!arrows.empty() && arrows.front().snap && arrows.front().rank < out.rank) {
       Recognition r = out.recognition;
@@ -183,12 +199,15 @@ UnionRecognition recognize_union_detail(std::span<const StrokeInput> strokes,
   // The strokes read as one path (the single-stroke fitters see the union through it).
   const PreparedStroke chain = prepare_points(chain_pieces(paths), tau);
   std::vector<Scored> scored = score_chain(out.strokes, chain, config, tol.epsilon, tol.pen_radius);
-  double chain_rank = INFINITY; // the best snap's (score_chain leaves refused ones before it)
-  for (const Scored& sc : scored) {
-    if (sc.snap) chain_rank = std::min(chain_rank, sc.rank);
-  }
-  for (Scored& a : score_arrows(out.strokes, cloud, drawn_length, tol.epsilon, tol.pen_radius,
-                                chain_rank)) {
+  // The best snap (score_chain may leave refused candidates before it).
+  const auto best =
+      std::find_if(scored.begin(), scored.end(), [](const Scored& sc) { return sc.snap; });
+  const double to_beat =
+      best == scored.end()
+          ? INFINITY
+          : rank_for_arrows_to_beat(best->fit.shape, best->fit.params, best->rank, tol.epsilon);
+  for (Scored& a :
+       score_arrows(out.strokes, cloud, drawn_length, tol.epsilon, tol.pen_radius, to_beat)) {
     scored.push_back(std::move(a));
   }
   sort_scored(scored);
