@@ -105,6 +105,15 @@ void draw_miss(const std::filesystem::path& file, const std::vector<Points>& str
         << arrow->certificate.certified << ": " << arrow->rejected;
   }
   out << "</text>\n";
+  // Every arrow candidate tried, one line each.
+  double y = yl - 15;
+  for (const auto& c : r.alternatives) {
+    if (c.shape != ShapeClass::kArrow && c.shape != ShapeClass::kDoubleArrow) continue;
+    out << "<text x='" << xl - 15 << "' y='" << y << "' font-size='6'>"
+        << penshape::to_string(c.shape) << " bulge " << c.params.shaft_bulge << " bound "
+        << c.certificate.bound << ": " << c.rejected << "</text>\n";
+    y += 7;
+  }
   for (const Points& p : strokes) {
     out << "<polyline fill='none' stroke='black' stroke-width='" << 2 * r.pen_radius + 0.01
         << "' stroke-opacity='0.3' points='";
@@ -203,7 +212,7 @@ int main(int argc, char** argv) {
         arrows_cut.add(cut_ok);
         arrows_by_subject[subject_of(g.file)].add(cut_ok);
         if (!cut_ok && !svg_dir.empty()) {
-          draw_miss(svg_dir / (stem + "_cut.svg"), cut, out.back().recognition);
+          draw_miss(svg_dir / (stem + "_cut.svg"), cut, penshape::recognize_union(inputs_of(cut)));
         }
       }
     }

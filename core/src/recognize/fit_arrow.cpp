@@ -195,6 +195,29 @@ double polish(ArrowState& a, const Objective& objective, double step, bool curve
   return best;
 }
 
+// The bulge of the arc through the shaft's ends that follows the points drawn along the shaft
+// (those nearer the shaft than either barb, away from its ends): a parabola's mean offset from
+// its chord is 2/3 of its sagitta.
+double estimate_bulge(const std::vector<PointD>& cloud, const ArrowState& a) {
+  const double c = distance(a.v[0], a.v[1]);
+  if (c <= 0) return 0.0;
+  const PointD u = (1.0 / c) * (a.v[1] - a.v[0]);
+  double sum = 0;
+  std::size_t n = 0;
+  for (const PointD& p : cloud) {
+    const double t = dot(p - a.v[0], u);
+    const double d = segment_distance(p, a.v[0], a.v[1]);
+    if (t < 0.1 * c || t > 0.9 * c || d > 0.25 * c) continue;
+    if (d > segment_distance(p, a.v[1], a.v[2]) || d > segment_distance(p, a.v[1], a.v[3])) {
+      continue;
+    }
+    sum += cross(u, p - a.v[0]);
+    ++n;
+  }
+  if (n == 0) return 0.0;
+  return std::clamp(1.5 * sum / static_cast<double>(n), -kMaxBulge * c, kMaxBulge * c);
+}
+
 // Least-squares refinement of a single arrow's start (a few rounds of k-lines): every point
 // goes to its nearest piece (shaft, barb 1, barb 2), each piece's line is refitted, the tip
 // becomes the point nearest the three lines, and the ends the farthest projections. Also
@@ -233,19 +256,7 @@ void settle(const std::vector<PointD>& cloud, ArrowState& a) {
     };
     a.v = {far_end(0), tip, far_end(1), far_end(2)};
   }
-  const double c = distance(a.v[0], a.v[1]);
-  if (c <= 0) return;
-  const PointD u = (1.0 / c) * (a.v[1] - a.v[0]);
-  double sum = 0;
-  std::size_t n = 0;
-  for (const PointD& p : cloud) {
-    const double t = dot(p - a.v[0], u);
-    if (t < 0.1 * c || t > 0.9 * c || segment_distance(p, a.v[0], a.v[1]) > 0.25 * c) continue;
-    sum += cross(u, p - a.v[0]);
-    ++n;
-  }
-  if (n > 0)
-    a.bulge = std::clamp(1.5 * sum / static_cast<double>(n), -kMaxBulge * c, kMaxBulge * c);
+  a.bulge = estimate_bulge(cloud, a);
 }
 
 Fit make_fit(ShapeClass shape, ArrowState a, double error) {
@@ -263,6 +274,64 @@ Fit make_fit(ShapeClass shape, ArrowState a, double error) {
   f.params.vertices = std::move(a.v);
   f.fit_error = error;
   return f;
+}
+
+// The single arrows from `tail` to `tip` with the barbs found at the tip (none when no barb
+// stands out on both sides): straight, and curved when the straight one fits too loosely.
+// Returns the straight arrow's fit error (infinite when none).
+double fit_single(const std::vector<PointD>& cloud, const UnionStroke& u, PointD tail, PointD tip,
+                  double epsilon, bool try_curved, std::vector<Fit>& out) {
+  const auto head = find_barbs(cloud, tip, tail, epsilon);
+  if (!head) return INFINITY;
+  const double step = epsilon / 2.0;
+  const ArrowState start{{tail, tip, head->first, head->second}, 0.0};
+  const Objective objective{cloud, u, ShapeClass::kArrow};
+  // Straight: polished from the raw start or the least-squares start, the one fitting better
+  // first; the other only when the first does not fit tightly enough to pass surely.
+  ArrowState settled = start;
+  settle(cloud, settled);
+  ArrowState curved = settled;
+  settled.bulge = 0.0;
+  ArrowState first = start, second = std::move(settled);
+  if (objective(second) < objective(first)) std::swap(first, second);
+  double e_straight = polish(first, objective, step, false);
+  if (e_straight > kSecondStartAbove * epsilon) {
+    const double e_second = polish(second, objective, step, false);
+    if (e_second < e_straight) {
+      e_straight = e_second;
+      first = std::move(second);
+    }
+  }
+  out.push_back(make_fit(ShapeClass::kArrow, first, e_straight));
+  // Curved, when the shaft bows visibly and the straight arrow fits too loosely to pass:
+  // polished from the straight arrow bent to follow its shaft's points, and from the
+  // least-squares start.
+  if (e_straight > kStraightFraction * epsilon && try_curved) {
+    ArrowState bent = first;
+    bent.bulge = estimate_bulge(cloud, bent);
+    for (ArrowState* c : {&bent, &curved}) {
+      if (std::abs(c->bulge) < epsilon / 4.0) continue;
+      const double e = polish(*c, objective, step, true);
+      out.push_back(make_fit(ShapeClass::kArrow, std::move(*c), e));
+    }
+  }
+  return e_straight;
+}
+
+// Another tip for a shaft from `tail`: the point farthest from the tail that lies more than
+// 2 epsilon from `tip` (the first guess). A barb that leans forward can end farther from the
+// tail than the tip does; the tip is then the farthest point away from that barb's end.
+std::optional<PointD> other_tip(const std::vector<PointD>& cloud, PointD tail, PointD tip,
+                                double epsilon) {
+  std::optional<PointD> best;
+  double far = 0.0;
+  for (const PointD& p : cloud) {
+    if (distance(p, tip) <= 2.0 * epsilon) continue;
+    if (distance(p, tail) > far) far = distance(p, tail), best = p;
+  }
+  // A tip much nearer the tail than the first guess would make barbs longer than the shaft.
+  if (!best || far < 0.5 * distance(tail, tip)) return std::nullopt;
+  return best;
 }
 
 } // namespace
@@ -288,43 +357,29 @@ std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon, double rank_to
   }
   if (diameter <= 2.0 * epsilon) return {};
   std::vector<Fit> out;
-  const auto at_a = find_barbs(cloud, cloud[a], cloud[b], epsilon);
-  const auto at_b = find_barbs(cloud, cloud[b], cloud[a], epsilon);
-  const double step = epsilon / 2.0;
+  const bool curved = may_win(kCurvedParameters);
+  double best = INFINITY;
   for (const bool tip_is_b : {true, false}) {
-    const auto& head = tip_is_b ? at_b : at_a;
-    if (!head) continue;
-    const ArrowState start{
-        {tip_is_b ? cloud[a] : cloud[b], tip_is_b ? cloud[b] : cloud[a], head->first, head->second},
-        0.0};
-    const Objective objective{cloud, u, ShapeClass::kArrow};
-    // Straight: polished from the raw start or the least-squares start, the one fitting better
-    // first; the other only when the first does not fit tightly enough to pass surely.
-    ArrowState settled = start;
-    settle(cloud, settled);
-    ArrowState curved = settled;
-    settled.bulge = 0.0;
-    ArrowState first = start, second = std::move(settled);
-    if (objective(second) < objective(first)) std::swap(first, second);
-    double e_straight = polish(first, objective, step, false);
-    if (e_straight > kSecondStartAbove * epsilon) {
-      const double e_second = polish(second, objective, step, false);
-      if (e_second < e_straight) {
-        e_straight = e_second;
-        first = std::move(second);
+    const PointD tail = tip_is_b ? cloud[a] : cloud[b], tip = tip_is_b ? cloud[b] : cloud[a];
+    best = std::min(best, fit_single(cloud, u, tail, tip, epsilon, curved, out));
+  }
+  // Neither end of the diameter is the tip when a barb reaches farther from the tail than the
+  // tip: then no head stands out at either end, and each end is tried as the tail with the
+  // other tip.
+  if (!std::isfinite(best)) {
+    for (const bool tail_is_a : {true, false}) {
+      const PointD tail = tail_is_a ? cloud[a] : cloud[b], tip = tail_is_a ? cloud[b] : cloud[a];
+      if (const auto t = other_tip(cloud, tail, tip, epsilon)) {
+        fit_single(cloud, u, tail, *t, epsilon, curved, out);
       }
     }
-    out.push_back(make_fit(ShapeClass::kArrow, std::move(first), e_straight));
-    // Curved, when the shaft bows visibly and the straight arrow fits too loosely to pass.
-    if (std::abs(curved.bulge) >= epsilon / 4.0 && e_straight > kStraightFraction * epsilon &&
-        may_win(kCurvedParameters)) {
-      const double e = polish(curved, objective, step, true);
-      out.push_back(make_fit(ShapeClass::kArrow, std::move(curved), e));
-    }
   }
+  const auto at_a = find_barbs(cloud, cloud[a], cloud[b], epsilon);
+  const auto at_b = find_barbs(cloud, cloud[b], cloud[a], epsilon);
   if (at_a && at_b && may_win(kDoubleParameters)) {
     ArrowState st{{cloud[a], cloud[b], at_b->first, at_b->second, at_a->first, at_a->second}, 0.0};
-    const double e = polish(st, Objective{cloud, u, ShapeClass::kDoubleArrow}, step, false);
+    const double e =
+        polish(st, Objective{cloud, u, ShapeClass::kDoubleArrow}, epsilon / 2.0, false);
     out.push_back(make_fit(ShapeClass::kDoubleArrow, std::move(st), e));
   }
   return out;
