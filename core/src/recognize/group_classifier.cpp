@@ -7,6 +7,7 @@
 
 #include "classifier.hpp"
 #include "fit_arrow.hpp"
+#include "live_candidate.hpp"
 #include "stroke_chain.hpp"
 
 namespace penshape::recognize_detail {
@@ -73,21 +74,9 @@ constexpr double kMinClosedWidth = 2.0;
 // The width of a closed shape (polygons: the least over the sides of the farthest vertex from
 // the side's line, exact for convex ones); infinite for open shapes.
 double closed_width(const Fit& f) {
-  switch (f.shape) {
-    case ShapeClass::kCircle:
-      return 2.0 * f.params.radius_x;
-    case ShapeClass::kEllipse:
-      return 2.0 * std::min(f.params.radius_x, f.params.radius_y);
-    case ShapeClass::kTriangle:
-    case ShapeClass::kQuadrilateral:
-    case ShapeClass::kRectangle:
-    case ShapeClass::kSquare:
-    case ShapeClass::kDiamond:
-    case ShapeClass::kRegularPolygon:
-      break;
-    default:
-      return INFINITY;
-  }
+  if (f.shape == ShapeClass::kCircle) return 2.0 * f.params.radius_x;
+  if (f.shape == ShapeClass::kEllipse) return 2.0 * std::min(f.params.radius_x, f.params.radius_y);
+  if (!convex_polygon(f.shape)) return INFINITY;
   const std::vector<PointD>& v = f.params.vertices;
   double width = INFINITY;
   for (std::size_t i = 0; i < v.size(); ++i) {
