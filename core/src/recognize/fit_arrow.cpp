@@ -131,6 +131,7 @@ struct Objective {
   ShapeClass shape;
   mutable std::size_t worst_at = 0;
   mutable PieceHint hints[6] = {};
+  mutable PieceHint shaft_hints[kShaftChords + 1] = {};
 
   double operator()(const ArrowState& a, double limit = INFINITY) const {
     if (std::abs(a.bulge) > kMaxBulge * distance(a.v[0], a.v[1])) return INFINITY;
@@ -157,6 +158,16 @@ struct Objective {
     for (std::size_t k = 0; k < a.v.size(); ++k) {
       worst = std::max(worst, union_distance_above(u, a.v[k], worst, hints[k % 6]));
       if (worst >= limit) return worst;
+    }
+    // A curved shaft may bow away from the ink between its ends, which the cloud alone does not
+    // see (the certificate does): its chord points must lie near the union too.
+    if (a.bulge != 0.0) {
+      const std::vector<PointD> shaft = shaft_path(a.v[0], a.v[1], a.bulge);
+      for (std::size_t k = 1; k + 1 < shaft.size(); ++k) {
+        worst = std::max(
+            worst, union_distance_above(u, shaft[k], worst, shaft_hints[k % (kShaftChords + 1)]));
+        if (worst >= limit) return worst;
+      }
     }
     return worst;
   }
