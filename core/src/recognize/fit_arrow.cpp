@@ -131,7 +131,7 @@ struct Objective {
   ShapeClass shape;
   mutable std::size_t worst_at = 0;
   mutable PieceHint hints[6] = {};
-  mutable PieceHint shaft_hints[kShaftChords + 1] = {};
+  mutable PieceHint shaft_hints[3] = {};
 
   double operator()(const ArrowState& a, double limit = INFINITY) const {
     if (std::abs(a.bulge) > kMaxBulge * distance(a.v[0], a.v[1])) return INFINITY;
@@ -160,12 +160,13 @@ struct Objective {
       if (worst >= limit) return worst;
     }
     // A curved shaft may bow away from the ink between its ends, which the cloud alone does not
-    // see (the certificate does): its chord points must lie near the union too.
+    // see (the certificate does): its quarter points must lie near the union too (a few points:
+    // the polish only needs to be steered, the certificate checks the whole shaft).
     if (a.bulge != 0.0) {
       const std::vector<PointD> shaft = shaft_path(a.v[0], a.v[1], a.bulge);
-      for (std::size_t k = 1; k + 1 < shaft.size(); ++k) {
-        worst = std::max(
-            worst, union_distance_above(u, shaft[k], worst, shaft_hints[k % (kShaftChords + 1)]));
+      for (std::size_t k = 0; k < 3; ++k) {
+        const PointD q = shaft[(k + 1) * (shaft.size() - 1) / 4];
+        worst = std::max(worst, union_distance_above(u, q, worst, shaft_hints[k]));
         if (worst >= limit) return worst;
       }
     }
@@ -185,20 +186,23 @@ double polish(ArrowState& a, const Objective& objective, double step, bool curve
     for (std::size_t i = 0; i < unknowns && budget > 0 && !improved; ++i) {
       for (const PointD dir : {PointD{1, 0}, PointD{-1, 0}, PointD{0, 1}, PointD{0, -1}}) {
         if (i == a.v.size() && dir.y != 0) continue; // the bulge is one number
-        ArrowState trial = a;
+        // The trial is made in place and undone from saved values (no copy per trial).
+        const double old_bulge = a.bulge;
+        const PointD old_vertex = i < a.v.size() ? a.v[i] : PointD{};
         if (i == a.v.size()) {
-          trial.bulge += step * dir.x;
+          a.bulge += step * dir.x;
         } else {
-          trial.v[i] = trial.v[i] + step * dir;
+          a.v[i] = a.v[i] + step * dir;
         }
-        const double value = objective(trial, best);
+        const double value = objective(a, best);
         --budget;
         if (value < best) {
           best = value;
-          a = std::move(trial);
           improved = true;
           break;
         }
+        a.bulge = old_bulge;
+        if (i < a.v.size()) a.v[i] = old_vertex;
       }
     }
     if (!improved) step /= 2.0;
