@@ -1,5 +1,7 @@
-// Arrow fitting: the shaft from the two farthest points of the drawing, a barb on each side of
-// the shaft at the head, then a minimax polish of every vertex.
+// Arrow fitting: the shaft from the two farthest points of the drawing (or, when a barb reaches
+// farther from the tail than the tip, to the farthest point away from that barb), a barb on each
+// side of the shaft at the head, then a minimax polish of every vertex (and of a curved shaft's
+// bulge).
 #include "fit_arrow.hpp"
 
 #include <algorithm>
