@@ -9,13 +9,16 @@
 //   single strokes            recognize() (today) beside StrokeGrouper on one stroke;
 //   time per stroke           StrokeGrouper::add (grouping, arrows, tidy-up included) beside
 //                             recognize() on the same strokes, thread CPU time p50/p99/max.
-// Usage: group_recognize_bench [--json]   (data dir: $PENSHAPE_SHARED_DATA_DIR)
+// Usage: group_recognize_bench [--json] [--svg-dir DIR]   (data dir: $PENSHAPE_SHARED_DATA_DIR)
+//   --svg-dir: every arrow missed is drawn to DIR (strokes, and the best arrow candidate with why
+//              it was refused), to look at the failures.
 #include <time.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <map>
 #include <set>
 #include <string>
@@ -60,8 +63,69 @@ bool one_group_of(const std::vector<GroupedShape>& out, std::size_t strokes,
          targets.count(penshape::to_string(out[0].recognition.shape)) > 0;
 }
 
+// Thread CPU time (seconds): other processes sharing the cores do not count.
 double now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+// The subject ("s01".."s06") of a $1 file path, for per-subject figures.
+std::string subject_of(const std::string& file) {
+  const std::size_t at = file.find("/s0");
+  return at == std::string::npos ? "?" : file.substr(at + 1, 3);
+}
+
+// The strokes (black) and the best arrow candidate (red) of a missed arrow, with its verdict.
+void draw_miss(const std::filesystem::path& file, const std::vector<Points>& strokes,
+               const penshape::Recognition& r) {
+  const penshape::Candidate* arrow = nullptr;
+  if (r.shape == ShapeClass::kArrow || r.shape == ShapeClass::kDoubleArrow) {
+    static penshape::Candidate winner;
+    winner = {r.shape, r.params, r.clean, r.certificate, {}, r.rms};
+    arrow = &winner;
+  }
+  for (const auto& c : r.alternatives) {
+    if (arrow == nullptr && (c.shape == ShapeClass::kArrow || c.shape == ShapeClass::kDoubleArrow))
+      arrow = &c;
+  }
+  double xl = INFINITY, yl = INFINITY, xh = -INFINITY, yh = -INFINITY;
+  for (const Points& p : strokes) {
+    for (const auto& q : p) {
+      xl = std::min(xl, q.x), yl = std::min(yl, q.y), xh = std::max(xh, q.x),
+      yh = std::max(yh, q.y);
+    }
+  }
+  std::ofstream out(file);
+  out << "<svg xmlns='http://www.w3.org/2000/svg' viewBox='" << xl - 20 << ' ' << yl - 40 << ' '
+      << xh - xl + 40 << ' ' << yh - yl + 60 << "'>\n<text x='" << xl - 15 << "' y='" << yl - 25
+      << "' font-size='8'>class " << penshape::to_string(r.shape) << ", eps " << r.epsilon;
+  if (arrow != nullptr) {
+    out << "; arrow bound " << arrow->certificate.bound << " certified "
+        << arrow->certificate.certified << ": " << arrow->rejected;
+  }
+  out << "</text>\n";
+  // Every arrow candidate tried, one line each.
+  double y = yl - 15;
+  for (const auto& c : r.alternatives) {
+    if (c.shape != ShapeClass::kArrow && c.shape != ShapeClass::kDoubleArrow) continue;
+    out << "<text x='" << xl - 15 << "' y='" << y << "' font-size='6'>"
+        << penshape::to_string(c.shape) << " bulge " << c.params.shaft_bulge << " bound "
+        << c.certificate.bound << ": " << c.rejected << "</text>\n";
+    y += 7;
+  }
+  for (const Points& p : strokes) {
+    out << "<polyline fill='none' stroke='black' stroke-width='" << 2 * r.pen_radius + 0.01
+        << "' stroke-opacity='0.3' points='";
+    for (const auto& q : p) out << q.x << ',' << q.y << ' ';
+    out << "'/>\n";
+  }
+  if (arrow != nullptr) {
+    out << "<polyline fill='none' stroke='red' stroke-width='0.7' points='";
+    for (const auto& q : arrow->clean) out << q.x << ',' << q.y << ' ';
+    out << "'/>\n";
+  }
+  out << "</svg>\n";
 }
 
 double quantile(std::vector<double> v, double q) {
@@ -73,7 +137,19 @@ double quantile(std::vector<double> v, double q) {
 } // namespace
 
 int main(int argc, char** argv) {
-  const bool json = argc > 1 && std::strcmp(argv[1], "--json") == 0;
+  bool json = false;
+  std::filesystem::path svg_dir;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--json") == 0) {
+      json = true;
+    } else if (std::strcmp(argv[i], "--svg-dir") == 0 && i + 1 < argc) {
+      svg_dir = argv[++i];
+      std::filesystem::create_directories(svg_dir);
+    } else {
+      std::fprintf(stderr, "usage: group_recognize_bench [--json] [--svg-dir DIR]\n");
+      return 2;
+    }
+  }
   const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR");
   const std::filesystem::path root =
       std::filesystem::path(env ? env : PENSHAPE_SHARED_DATA_DIR) / "strokes" / "dollar1";
@@ -88,6 +164,7 @@ int main(int argc, char** argv) {
   Rate single_shapes_today, single_shapes_group, single_non_today, single_non_group;
   std::vector<double> t_group, t_today;
   std::map<std::string, int> polygon_misses;
+  std::map<std::string, Rate> arrows_by_subject; // whole and cut, per subject
 
   std::size_t v = 0;
   for (const Gesture& g : gestures) {
@@ -111,6 +188,11 @@ int main(int argc, char** argv) {
     if (g.kind == "arrow") {
       const bool whole_ok = one_group_of(grouped, 1, kTargets.at("arrow"));
       arrows_whole.add(whole_ok);
+      const std::string stem = subject_of(g.file) + "_" + std::to_string(v);
+      arrows_by_subject[subject_of(g.file)].add(whole_ok);
+      if (!whole_ok && !svg_dir.empty()) {
+        draw_miss(svg_dir / (stem + "_whole.svg"), {g.points}, grouped.front().recognition);
+      }
       if (!whole_ok) {
         std::string why = "arrow whole -> " + b;
         for (const auto& c : grouped.front().recognition.alternatives) {
@@ -125,8 +207,13 @@ int main(int argc, char** argv) {
       }
       const std::vector<Points> cut = penshape::cases::cut_arrow(g, v);
       if (!cut.empty()) {
-        arrows_cut.add(one_group_of(penshape::recognize_strokes(inputs_of(cut)), cut.size(),
-                                    kTargets.at("arrow")));
+        const auto out = penshape::recognize_strokes(inputs_of(cut));
+        const bool cut_ok = one_group_of(out, cut.size(), kTargets.at("arrow"));
+        arrows_cut.add(cut_ok);
+        arrows_by_subject[subject_of(g.file)].add(cut_ok);
+        if (!cut_ok && !svg_dir.empty()) {
+          draw_miss(svg_dir / (stem + "_cut.svg"), cut, penshape::recognize_union(inputs_of(cut)));
+        }
       }
     }
     if (g.kind == "rectangle" || g.kind == "triangle") {
@@ -196,6 +283,9 @@ int main(int argc, char** argv) {
   for (const auto& [k, r] : polygons) row(("  " + k).c_str(), r, "");
   row("arrows, whole (1 stroke)", arrows_whole, ">= 95%");
   row("arrows, cut at the tip (2 strokes)", arrows_cut, ">= 95%");
+  for (const auto& [subject, r] : arrows_by_subject) {
+    row(("  arrows (whole and cut), subject " + subject).c_str(), r, "");
+  }
   row("separate shapes never merged", separate, ">= 99%");
   row("non-shape pairs snapped together", pairs_merged, "<= 2%");
   row("non-shape pairs with any snap", pairs_any, "(context)");

@@ -2,22 +2,13 @@
 #include "annulus_polish.hpp"
 
 #include "certificate.hpp"
+#include "live_candidate.hpp"
 #include "penshape/core/annulus/translation.hpp"
 
 namespace penshape::recognize_detail {
 
 bool polish_with_annulus(const PreparedStroke& s, Scored& winner, const RecognizerConfig& config) {
-  switch (winner.fit.shape) {
-    case ShapeClass::kTriangle:
-    case ShapeClass::kQuadrilateral:
-    case ShapeClass::kRectangle:
-    case ShapeClass::kSquare:
-    case ShapeClass::kDiamond:
-    case ShapeClass::kRegularPolygon:
-      break;
-    default:
-      return false;
-  }
+  if (!convex_polygon(winner.fit.shape)) return false;
   const Certificate& before = winner.candidate.certificate;
   annulus::MinWidthResult placed;
   try {

@@ -1,11 +1,15 @@
-// Arrow fitting: the shaft from the two farthest points of the drawing, a barb on each side of
-// the shaft at the head, then a minimax polish of every vertex.
+// Arrow fitting: the shaft from the two farthest points of the drawing (or, when a barb reaches
+// farther from the tail than the tip, to the farthest point away from that barb), a barb on each
+// side of the shaft at the head, then a minimax polish of every vertex (and of a curved shaft's
+// bulge).
 #include "fit_arrow.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <optional>
+
+#include "classifier.hpp"
 
 namespace penshape::recognize_detail {
 namespace {
@@ -24,6 +28,8 @@ constexpr double kStraightFraction = 0.6;
 constexpr double kSecondStartAbove = 0.4;
 // A curved shaft bows by at most this fraction of its chord.
 constexpr double kMaxBulge = 0.25;
+// Free parameters (as degrees_of_freedom() counts them): straight, curved and double arrows.
+constexpr double kStraightParameters = 8, kCurvedParameters = 9, kDoubleParameters = 12;
 
 } // namespace
 
@@ -85,16 +91,33 @@ struct ArrowState {
   double bulge = 0.0;
 };
 
+// Where along the union a vertex was last found near it: the next search starts there, since
+// the polish moves vertices by small steps.
+struct PieceHint {
+  std::size_t piece = 0;
+  std::size_t segment = 0;
+};
+
 // Whether p lies farther than `floor` from every piece, and if so how far (else `floor`): a
-// vertex nearer the union than the cloud's worst point cannot raise the objective.
-double union_distance_above(const UnionStroke& u, PointD p, double floor) {
+// vertex nearer the union than the cloud's worst point cannot raise the objective. The segments
+// are scanned from `hint` on (the answer does not depend on the order).
+double union_distance_above(const UnionStroke& u, PointD p, double floor, PieceHint& hint) {
   const double floor2 = floor * floor;
   double best2 = INFINITY;
-  for (const std::vector<PointD>& piece : u.pieces) {
+  const std::size_t n = u.pieces.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t pi = (hint.piece + k) % n;
+    const std::vector<PointD>& piece = u.pieces[pi];
     if (piece.size() == 1) best2 = std::min(best2, dot(p - piece[0], p - piece[0]));
-    for (std::size_t i = 0; i + 1 < piece.size(); ++i) {
+    const std::size_t segments = piece.size() > 0 ? piece.size() - 1 : 0;
+    const std::size_t from = k == 0 && hint.segment < segments ? hint.segment : 0;
+    for (std::size_t j = 0; j < segments; ++j) {
+      const std::size_t i = (from + j) % segments;
       best2 = std::min(best2, segment_distance2(p, piece[i], piece[i + 1]));
-      if (best2 <= floor2) return floor;
+      if (best2 <= floor2) {
+        hint = {pi, i};
+        return floor;
+      }
     }
   }
   return std::sqrt(best2);
@@ -109,6 +132,8 @@ struct Objective {
   const UnionStroke& u;
   ShapeClass shape;
   mutable std::size_t worst_at = 0;
+  mutable PieceHint hints[6] = {};
+  mutable PieceHint shaft_hints[3] = {};
 
   double operator()(const ArrowState& a, double limit = INFINITY) const {
     if (std::abs(a.bulge) > kMaxBulge * distance(a.v[0], a.v[1])) return INFINITY;
@@ -119,6 +144,8 @@ struct Objective {
       const std::size_t i = (worst_at + k) % cloud.size();
       double d2 = INFINITY;
       for (std::size_t j = 0; j + 1 < path.size(); ++j) {
+        // The path retraces each barb (tip, barb, tip): the way back is the same segment.
+        if (j > 0 && path[j + 1] == path[j - 1]) continue;
         d2 = std::min(d2, segment_distance2(cloud[i], path[j], path[j + 1]));
       }
       if (d2 > worst2) {
@@ -130,9 +157,20 @@ struct Objective {
       }
     }
     double worst = std::sqrt(worst2);
-    for (const PointD& p : a.v) {
-      worst = std::max(worst, union_distance_above(u, p, worst));
+    for (std::size_t k = 0; k < a.v.size(); ++k) {
+      worst = std::max(worst, union_distance_above(u, a.v[k], worst, hints[k % 6]));
       if (worst >= limit) return worst;
+    }
+    // A curved shaft may bow away from the ink between its ends, which the cloud alone does not
+    // see (the certificate does): its quarter points must lie near the union too (a few points:
+    // the polish only needs to be steered, the certificate checks the whole shaft).
+    if (a.bulge != 0.0) {
+      const std::vector<PointD> shaft = shaft_path(a.v[0], a.v[1], a.bulge);
+      for (std::size_t k = 0; k < 3; ++k) {
+        const PointD q = shaft[(k + 1) * (shaft.size() - 1) / 4];
+        worst = std::max(worst, union_distance_above(u, q, worst, shaft_hints[k]));
+        if (worst >= limit) return worst;
+      }
     }
     return worst;
   }
@@ -150,25 +188,51 @@ double polish(ArrowState& a, const Objective& objective, double step, bool curve
     for (std::size_t i = 0; i < unknowns && budget > 0 && !improved; ++i) {
       for (const PointD dir : {PointD{1, 0}, PointD{-1, 0}, PointD{0, 1}, PointD{0, -1}}) {
         if (i == a.v.size() && dir.y != 0) continue; // the bulge is one number
-        ArrowState trial = a;
+        // The trial is made in place and undone from saved values (no copy per trial).
+        const double old_bulge = a.bulge;
+        const PointD old_vertex = i < a.v.size() ? a.v[i] : PointD{};
         if (i == a.v.size()) {
-          trial.bulge += step * dir.x;
+          a.bulge += step * dir.x;
         } else {
-          trial.v[i] = trial.v[i] + step * dir;
+          a.v[i] = a.v[i] + step * dir;
         }
-        const double value = objective(trial, best);
+        const double value = objective(a, best);
         --budget;
         if (value < best) {
           best = value;
-          a = std::move(trial);
           improved = true;
           break;
         }
+        a.bulge = old_bulge;
+        if (i < a.v.size()) a.v[i] = old_vertex;
       }
     }
     if (!improved) step /= 2.0;
   }
   return best;
+}
+
+// The bulge of the arc through the shaft's ends that follows the points drawn along the shaft
+// (those nearer the shaft than either barb, away from its ends): a parabola's mean offset from
+// its chord is 2/3 of its sagitta.
+double estimate_bulge(const std::vector<PointD>& cloud, const ArrowState& a) {
+  const double c = distance(a.v[0], a.v[1]);
+  if (c <= 0) return 0.0;
+  const PointD u = (1.0 / c) * (a.v[1] - a.v[0]);
+  double sum = 0;
+  std::size_t n = 0;
+  for (const PointD& p : cloud) {
+    const double t = dot(p - a.v[0], u);
+    const double d = segment_distance(p, a.v[0], a.v[1]);
+    if (t < 0.1 * c || t > 0.9 * c || d > 0.25 * c) continue;
+    if (d > segment_distance(p, a.v[1], a.v[2]) || d > segment_distance(p, a.v[1], a.v[3])) {
+      continue;
+    }
+    sum += cross(u, p - a.v[0]);
+    ++n;
+  }
+  if (n == 0) return 0.0;
+  return std::clamp(1.5 * sum / static_cast<double>(n), -kMaxBulge * c, kMaxBulge * c);
 }
 
 // Least-squares refinement of a single arrow's start (a few rounds of k-lines): every point
@@ -209,19 +273,7 @@ void settle(const std::vector<PointD>& cloud, ArrowState& a) {
     };
     a.v = {far_end(0), tip, far_end(1), far_end(2)};
   }
-  const double c = distance(a.v[0], a.v[1]);
-  if (c <= 0) return;
-  const PointD u = (1.0 / c) * (a.v[1] - a.v[0]);
-  double sum = 0;
-  std::size_t n = 0;
-  for (const PointD& p : cloud) {
-    const double t = dot(p - a.v[0], u);
-    if (t < 0.1 * c || t > 0.9 * c || segment_distance(p, a.v[0], a.v[1]) > 0.25 * c) continue;
-    sum += cross(u, p - a.v[0]);
-    ++n;
-  }
-  if (n > 0)
-    a.bulge = std::clamp(1.5 * sum / static_cast<double>(n), -kMaxBulge * c, kMaxBulge * c);
+  a.bulge = estimate_bulge(cloud, a);
 }
 
 Fit make_fit(ShapeClass shape, ArrowState a, double error) {
@@ -241,9 +293,69 @@ Fit make_fit(ShapeClass shape, ArrowState a, double error) {
   return f;
 }
 
+// The single arrows from `tail` to `tip` with the barbs found at the tip (none when no barb
+// stands out on both sides): straight, and curved when the straight one fits too loosely.
+// Returns the straight arrow's fit error (infinite when none).
+double fit_single(const std::vector<PointD>& cloud, const UnionStroke& u, PointD tail, PointD tip,
+                  double epsilon, bool try_curved, std::vector<Fit>& out) {
+  const auto head = find_barbs(cloud, tip, tail, epsilon);
+  if (!head) return INFINITY;
+  const double step = epsilon / 2.0;
+  const ArrowState start{{tail, tip, head->first, head->second}, 0.0};
+  const Objective objective{cloud, u, ShapeClass::kArrow};
+  // Straight: polished from the raw start or the least-squares start, the one fitting better
+  // first; the other only when the first does not fit tightly enough to pass surely.
+  ArrowState settled = start;
+  settle(cloud, settled);
+  ArrowState curved = settled;
+  settled.bulge = 0.0;
+  ArrowState first = start, second = std::move(settled);
+  if (objective(second) < objective(first)) std::swap(first, second);
+  double e_straight = polish(first, objective, step, false);
+  if (e_straight > kSecondStartAbove * epsilon) {
+    const double e_second = polish(second, objective, step, false);
+    if (e_second < e_straight) {
+      e_straight = e_second;
+      first = std::move(second);
+    }
+  }
+  out.push_back(make_fit(ShapeClass::kArrow, first, e_straight));
+  // Curved, when the shaft bows visibly and the straight arrow fits too loosely to pass:
+  // polished from the straight arrow bent to follow its shaft's points, and from the
+  // least-squares start.
+  if (e_straight > kStraightFraction * epsilon && try_curved) {
+    ArrowState bent = first;
+    bent.bulge = estimate_bulge(cloud, bent);
+    for (ArrowState* c : {&bent, &curved}) {
+      if (std::abs(c->bulge) < epsilon / 4.0) continue;
+      const double e = polish(*c, objective, step, true);
+      out.push_back(make_fit(ShapeClass::kArrow, std::move(*c), e));
+    }
+  }
+  return e_straight;
+}
+
+// Another tip for a shaft from `tail`: the point farthest from the tail that lies more than
+// 2 epsilon from `tip` (the first guess). A barb that leans forward can end farther from the
+// tail than the tip does; the tip is then the farthest point away from that barb's end.
+std::optional<PointD> other_tip(const std::vector<PointD>& cloud, PointD tail, PointD tip,
+                                double epsilon) {
+  std::optional<PointD> best;
+  double far = 0.0;
+  for (const PointD& p : cloud) {
+    if (distance(p, tip) <= 2.0 * epsilon) continue;
+    if (distance(p, tail) > far) far = distance(p, tail), best = p;
+  }
+  // A tip much nearer the tail than the first guess would make barbs longer than the shaft.
+  if (!best || far < 0.5 * distance(tail, tip)) return std::nullopt;
+  return best;
+}
+
 } // namespace
 
-std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon) {
+std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon, double rank_to_beat) {
+  auto may_win = [&](double parameters) { return kPricePerParameter * parameters < rank_to_beat; };
+  if (!may_win(kStraightParameters)) return {};
   const std::vector<PointD> cloud = cloud_of(u);
   if (cloud.size() < 8) return {};
   // The two farthest points: the tail and the tip (barbs lean back, so the tip is the farthest
@@ -262,42 +374,29 @@ std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon) {
   }
   if (diameter <= 2.0 * epsilon) return {};
   std::vector<Fit> out;
-  const auto at_a = find_barbs(cloud, cloud[a], cloud[b], epsilon);
-  const auto at_b = find_barbs(cloud, cloud[b], cloud[a], epsilon);
-  const double step = epsilon / 2.0;
+  const bool curved = may_win(kCurvedParameters);
+  double best = INFINITY;
   for (const bool tip_is_b : {true, false}) {
-    const auto& head = tip_is_b ? at_b : at_a;
-    if (!head) continue;
-    const ArrowState start{
-        {tip_is_b ? cloud[a] : cloud[b], tip_is_b ? cloud[b] : cloud[a], head->first, head->second},
-        0.0};
-    const Objective objective{cloud, u, ShapeClass::kArrow};
-    // Straight: polished from the raw start or the least-squares start, the one fitting better
-    // first; the other only when the first does not fit tightly enough to pass surely.
-    ArrowState settled = start;
-    settle(cloud, settled);
-    ArrowState curved = settled;
-    settled.bulge = 0.0;
-    ArrowState first = start, second = std::move(settled);
-    if (objective(second) < objective(first)) std::swap(first, second);
-    double e_straight = polish(first, objective, step, false);
-    if (e_straight > kSecondStartAbove * epsilon) {
-      const double e_second = polish(second, objective, step, false);
-      if (e_second < e_straight) {
-        e_straight = e_second;
-        first = std::move(second);
+    const PointD tail = tip_is_b ? cloud[a] : cloud[b], tip = tip_is_b ? cloud[b] : cloud[a];
+    best = std::min(best, fit_single(cloud, u, tail, tip, epsilon, curved, out));
+  }
+  // Neither end of the diameter is the tip when a barb reaches farther from the tail than the
+  // tip: then no head stands out at either end, and each end is tried as the tail with the
+  // other tip.
+  if (!std::isfinite(best)) {
+    for (const bool tail_is_a : {true, false}) {
+      const PointD tail = tail_is_a ? cloud[a] : cloud[b], tip = tail_is_a ? cloud[b] : cloud[a];
+      if (const auto t = other_tip(cloud, tail, tip, epsilon)) {
+        fit_single(cloud, u, tail, *t, epsilon, curved, out);
       }
     }
-    out.push_back(make_fit(ShapeClass::kArrow, std::move(first), e_straight));
-    // Curved, when the shaft bows visibly and the straight arrow fits too loosely to pass.
-    if (std::abs(curved.bulge) >= epsilon / 4.0 && e_straight > kStraightFraction * epsilon) {
-      const double e = polish(curved, objective, step, true);
-      out.push_back(make_fit(ShapeClass::kArrow, std::move(curved), e));
-    }
   }
-  if (at_a && at_b) {
+  const auto at_a = find_barbs(cloud, cloud[a], cloud[b], epsilon);
+  const auto at_b = find_barbs(cloud, cloud[b], cloud[a], epsilon);
+  if (at_a && at_b && may_win(kDoubleParameters)) {
     ArrowState st{{cloud[a], cloud[b], at_b->first, at_b->second, at_a->first, at_a->second}, 0.0};
-    const double e = polish(st, Objective{cloud, u, ShapeClass::kDoubleArrow}, step, false);
+    const double e =
+        polish(st, Objective{cloud, u, ShapeClass::kDoubleArrow}, epsilon / 2.0, false);
     out.push_back(make_fit(ShapeClass::kDoubleArrow, std::move(st), e));
   }
   return out;

@@ -1,5 +1,6 @@
 #pragma once
 // Arrow and double-arrow proposals for one or several strokes (group_recognize.hpp, "Arrows").
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -13,8 +14,10 @@ namespace penshape::recognize_detail {
 std::vector<PointD> cloud_of(const UnionStroke& u);
 
 // Candidates (arrow in either direction, double arrow) fitted to the union of the strokes, best
-// fit first; empty when no head stands out. Estimates only: the certificate decides.
-std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon);
+// fit first; empty when no head stands out. Estimates only: the certificate decides. Kinds whose
+// least possible rank (kPricePerParameter x free parameters, classifier.hpp) is not below
+// `rank_to_beat` are not fitted: they could never win over the snap that set it.
+std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon, double rank_to_beat = INFINITY);
 
 // Why a certified arrow is not a plausible snap (empty when it is); `drawn_length` is the summed
 // length of the strokes.

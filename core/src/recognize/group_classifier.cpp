@@ -7,6 +7,7 @@
 
 #include "classifier.hpp"
 #include "fit_arrow.hpp"
+#include "live_candidate.hpp"
 #include "stroke_chain.hpp"
 
 namespace penshape::recognize_detail {
@@ -37,10 +38,12 @@ void sort_scored(std::vector<Scored>& scored) {
   });
 }
 
+// Arrows that might beat a snap of rank `rank_to_beat` (infinite: none).
 std::vector<Scored> score_arrows(const UnionStroke& u, const std::vector<PointD>& cloud,
-                                 double drawn_length, double epsilon, double pen_radius) {
+                                 double drawn_length, double epsilon, double pen_radius,
+                                 double rank_to_beat) {
   std::vector<Scored> out;
-  for (Fit& f : fit_arrows(u, epsilon)) {
+  for (Fit& f : fit_arrows(u, epsilon, rank_to_beat)) {
     Scored sc;
     Candidate& c = sc.candidate;
     c.shape = f.shape;
@@ -71,21 +74,9 @@ constexpr double kMinClosedWidth = 2.0;
 // The width of a closed shape (polygons: the least over the sides of the farthest vertex from
 // the side's line, exact for convex ones); infinite for open shapes.
 double closed_width(const Fit& f) {
-  switch (f.shape) {
-    case ShapeClass::kCircle:
-      return 2.0 * f.params.radius_x;
-    case ShapeClass::kEllipse:
-      return 2.0 * std::min(f.params.radius_x, f.params.radius_y);
-    case ShapeClass::kTriangle:
-    case ShapeClass::kQuadrilateral:
-    case ShapeClass::kRectangle:
-    case ShapeClass::kSquare:
-    case ShapeClass::kDiamond:
-    case ShapeClass::kRegularPolygon:
-      break;
-    default:
-      return INFINITY;
-  }
+  if (f.shape == ShapeClass::kCircle) return 2.0 * f.params.radius_x;
+  if (f.shape == ShapeClass::kEllipse) return 2.0 * std::min(f.params.radius_x, f.params.radius_y);
+  if (!convex_polygon(f.shape)) return INFINITY;
   const std::vector<PointD>& v = f.params.vertices;
   double width = INFINITY;
   for (std::size_t i = 0; i < v.size(); ++i) {
@@ -120,6 +111,20 @@ std::vector<Scored> score_chain(const UnionStroke& u, const PreparedStroke& s,
   return scored;
 }
 
+// The rank an arrow must beat to win over a snap: the snap's rank, or none at all (0) for a
+// closed shape at least 2 epsilon wide. An arrow is three straight pieces from one point (its
+// tip); drawn ink within 0.6 epsilon of them lies in three strips 1.2 epsilon wide meeting
+// there, and a closed outline in such strips either hugs one strip (narrower than 2 epsilon) or
+// crosses between strips where no ink is drawn. So such an outline never certifies as an arrow.
+double rank_for_arrows_to_beat(ShapeClass shape, const ShapeParams& params, double rank,
+                               double epsilon) {
+  Fit f;
+  f.shape = shape;
+  f.params = params;
+  const double width = closed_width(f);
+  return std::isfinite(width) && width >= kMinClosedWidth * epsilon ? 0.0 : rank;
+}
+
 // The winner of one stroke's own recognition as a Scored entry, to compete with the arrows.
 double recognition_rank(const Recognition& r) {
   if (r.shape == ShapeClass::kFreeform) return INFINITY;
@@ -151,14 +156,14 @@ UnionRecognition recognize_union_detail(std::span<const StrokeInput> strokes,
   UnionRecognition out;
   out.strokes = prepare_union(paths, tau);
   const std::vector<PointD> cloud = cloud_of(out.strokes);
-  // The strokes read as one path (the single-stroke fitters see the union through it).
-  const PreparedStroke chain = prepare_points(chain_pieces(paths), tau);
-  std::vector<Scored> arrows =
-      score_arrows(out.strokes, cloud, drawn_length, tol.epsilon, tol.pen_radius);
-  sort_scored(arrows);
   if (strokes.size() == 1) {
     out.recognition = recognize(strokes.front(), config);
     out.rank = recognition_rank(out.recognition);
+    const double to_beat = rank_for_arrows_to_beat(out.recognition.shape, out.recognition.params,
+                                                   out.rank, tol.epsilon);
+    std::vector<Scored> arrows =
+        score_arrows(out.strokes, cloud, drawn_length, tol.epsilon, tol.pen_radius, to_beat);
+    sort_scored(arrows);
     if (!arrows.empty() && arrows.front().snap && arrows.front().rank < out.rank) {
       Recognition r = out.recognition;
       std::vector<Candidate> others = std::move(r.alternatives);
@@ -180,8 +185,20 @@ UnionRecognition recognize_union_detail(std::span<const StrokeInput> strokes,
     }
     return out;
   }
+  // The strokes read as one path (the single-stroke fitters see the union through it).
+  const PreparedStroke chain = prepare_points(chain_pieces(paths), tau);
   std::vector<Scored> scored = score_chain(out.strokes, chain, config, tol.epsilon, tol.pen_radius);
-  for (Scored& a : arrows) scored.push_back(std::move(a));
+  // The best snap (score_chain may leave refused candidates before it).
+  const auto best =
+      std::find_if(scored.begin(), scored.end(), [](const Scored& sc) { return sc.snap; });
+  const double to_beat =
+      best == scored.end()
+          ? INFINITY
+          : rank_for_arrows_to_beat(best->fit.shape, best->fit.params, best->rank, tol.epsilon);
+  for (Scored& a :
+       score_arrows(out.strokes, cloud, drawn_length, tol.epsilon, tol.pen_radius, to_beat)) {
+    scored.push_back(std::move(a));
+  }
   sort_scored(scored);
   out.rank = !scored.empty() && scored.front().snap ? scored.front().rank : INFINITY;
   out.recognition = choose(std::move(scored), tol.epsilon, tol.pen_radius);

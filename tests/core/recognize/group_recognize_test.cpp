@@ -224,6 +224,25 @@ TEST(GroupRecognize, ArrowAsShaftThenTwoBarbs) {
   expect_arrow(out[0], s, {0, 0}, {200, 0}, 3);
 }
 
+// A wide head whose long barb ends farther from the tail than the tip does: the two farthest
+// points of the drawing are the tail and that barb's end, and the tip must still be found.
+TEST(GroupRecognize, ArrowWhoseBarbReachesFartherThanTheTip) {
+  const double a1 = 75.0 * std::numbers::pi / 180.0, a2 = 40.0 * std::numbers::pi / 180.0;
+  const PointD barb1{200 - 120 * std::cos(a1), 120 * std::sin(a1)};
+  const PointD barb2{200 - 60 * std::cos(a2), -60 * std::sin(a2)};
+  ASSERT_GT(std::hypot(barb1.x, barb1.y), 200.0); // farther from the tail than the tip
+  const std::vector<StrokeInput> s{input(polyline({{0, 0}, {200, 0}, barb1, {200, 0}, barb2}, 0))};
+  const std::vector<GroupedShape> out = recognize_strokes(s);
+  ASSERT_EQ(out.size(), 1u);
+  const Recognition& r = out[0].recognition;
+  ASSERT_EQ(r.shape, ShapeClass::kArrow) << to_string(r.shape);
+  ASSERT_EQ(r.params.vertices.size(), 4u);
+  EXPECT_LT(std::hypot(r.params.vertices[0].x, r.params.vertices[0].y), 6.0);
+  EXPECT_LT(std::hypot(r.params.vertices[1].x - 200, r.params.vertices[1].y), 6.0);
+  EXPECT_NEAR(r.params.head_angle, (a1 + a2) / 2, 0.12);
+  expect_independently_certified(out[0], s);
+}
+
 TEST(GroupRecognize, DoubleArrow) {
   const std::vector<StrokeInput> s{input(polyline(
       {{40, 30}, {0, 0}, {40, -30}, {0, 0}, {200, 0}, {160, 30}, {200, 0}, {160, -30}}, 0))};
