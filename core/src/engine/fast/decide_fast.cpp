@@ -103,7 +103,7 @@ CertifiedInput certified_input(const IRings& q_grid, double tolerance, double ce
   for (double tol = tolerance; tol >= tolerance / 8.0 && !out.index; tol /= 2.0) {
     if (auto q_dp = simplify_rings_checked(q_grid, tol)) {
       out.index.emplace(*q_dp, cell);
-      out.eta = kInputRounding + tol;
+      out.eta = add_up(kInputRounding, tol);
       if (!is_certifiable_region(*out.index)) out.index.reset();
     }
   }
@@ -134,6 +134,8 @@ DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& para
   const double eps = frame.units(params.tolerance);
   const double d = frame.units(params.precision);
   const double unit = frame.units(Rational(1));
+  const Bounds r_bounds = frame.bounds(params.radius);
+  const Bounds eps_bounds = frame.bounds(params.tolerance);
 
   const IRings q_grid = frame.round(q);
   if (q_grid.empty()) return finish();
@@ -162,7 +164,8 @@ DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& para
       if (p.empty() || !is_certifiable_region(SegmentIndex(flatten(p), r / 2.0))) {
         p = simplify(pi_hat, b.simplify);
       }
-      const YesCheckInput in{&*input.index, input.eta, &q_index, q_vertices, r, eps, b.margin};
+      const YesCheckInput in{&*input.index, input.eta,  &q_index, q_vertices,
+                             r_bounds,      eps_bounds, b.margin};
       if (verify_yes(in, p, cancel)) {
         result.answer = Answer::kYes;
         result.solution = to_polygon_set(frame, p);
@@ -189,7 +192,8 @@ DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& para
 
   const SegmentIndex outer_index(flatten(q_eps_out), r / 2.0);
   const SegmentIndex q_prime_index(flatten(q_prime_out), r / 2.0);
-  const NoCheckInput no{&q_index, &outer_index, r, eps, b.margin / 2.0, b.margin / 4.0};
+  const NoCheckInput no{&q_index,   &outer_index,   r_bounds,
+                        eps_bounds, b.margin / 2.0, b.margin / 4.0};
   for (const IPt& w : witness_candidates(diff, q_index, q_prime_index)) {
     if (verify_no_witness(no, w, cancel)) {
       result.answer = Answer::kNo;
