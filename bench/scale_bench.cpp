@@ -10,7 +10,9 @@
 #include <cstdio>
 #include <numbers>
 #include <random>
+#include <string>
 
+#include "engine/fast/certified.hpp"
 #include "former_validation.hpp"
 #include "geometry/segment_sweep.hpp"
 #include "penshape/core/deconstruct.hpp"
@@ -99,7 +101,11 @@ void validation_table() {
   std::printf("\n");
 }
 
-int main() {
+int main(int argc, char** argv) {
+  // --margins: the fast engine's former double-with-margins comparisons (before/after runs).
+  if (argc > 1 && std::string(argv[1]) == "--margins") {
+    penshape::fast::set_certify_mode(penshape::fast::CertifyMode::kMargins);
+  }
   validation_table();
   std::printf("wavy star, r = w/30, eps = r/2, delta = eps/8 (fast engine, no simplification)\n");
   std::printf("%8s | %13s | %9s %15s %7s | %10s %9s\n", "vertices", "validation ms", "answer",

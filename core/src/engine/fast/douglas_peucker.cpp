@@ -73,8 +73,8 @@ std::optional<IRings> simplify_rings_checked(const IRings& rings, double toleran
   IRings out;
   out.reserve(rings.size());
   for (const IRing& ring : rings) {
-    // Proposed a little tighter than the bound we certify, so that the check usually passes.
-    const std::vector<std::size_t> idx = kept_indices(ring, tolerance * 0.875);
+    // Proposed half a unit tighter than the bound we certify (as before the certified check).
+    const std::vector<std::size_t> idx = kept_indices(ring, tolerance - 0.5);
     IRing s;
     for (const std::size_t k : idx) s.push_back(ring[k]);
     if (s.size() < 3 || (twice_area(s) > 0) != (twice_area(ring) > 0)) return std::nullopt;
