@@ -8,6 +8,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <ctime>
 #include <numbers>
 #include <random>
 #include <string>
@@ -63,6 +65,13 @@ bool sweep_ring_has_contact(const penshape::Ring& ring) {
       .has_value();
 }
 
+// Thread CPU time: what the machine's other load does not inflate.
+double cpu_ms() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) / 1e6;
+}
+
 double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -102,9 +111,27 @@ void validation_table() {
 }
 
 int main(int argc, char** argv) {
-  // --margins: the fast engine's former double-with-margins comparisons (before/after runs).
-  if (argc > 1 && std::string(argv[1]) == "--margins") {
-    penshape::fast::set_certify_mode(penshape::fast::CertifyMode::kMargins);
+  // --margins: the fast engine's former double-with-margins comparisons (before/after runs);
+  // --only N: just the deconstruction of the N-vertex star (for profiling).
+  int only = 0;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--margins") penshape::fast::set_certify_mode(penshape::fast::CertifyMode::kMargins);
+    if (a == "--only" && i + 1 < argc) only = std::atoi(argv[++i]);
+  }
+  if (only > 0) {
+    const penshape::PolygonSet q = wavy_star(only);
+    const penshape::Rational r(2080 / 30);
+    double c0 = cpu_ms();
+    penshape::validate_region(q);
+    std::printf("validation alone: cpu %.1f ms\n", cpu_ms() - c0);
+    c0 = cpu_ms();
+    const auto t0 = std::chrono::steady_clock::now();
+    const penshape::DeconstructResult res = penshape::deconstruct(q, {r, r / 2, r / 16});
+    std::printf("%d vertices: %s in %.1f ms, cpu %.1f ms (%llu exact fallbacks)\n", only,
+                penshape::to_string(res.answer), ms_since(t0), cpu_ms() - c0,
+                static_cast<unsigned long long>(penshape::fast::exact_fallbacks()));
+    return 0;
   }
   validation_table();
   std::printf("wavy star, r = w/30, eps = r/2, delta = eps/8 (fast engine, no simplification)\n");

@@ -54,6 +54,35 @@ IRegion offset_stage(const IRings& rings, double delta, double tol, const Decons
   return offset_round(rings, delta, tol);
 }
 
+// Offsets and insets of inputs with more vertices than this go in steps (below).
+constexpr std::size_t kStepwiseOffsetVertices = 4096;
+
+// An approximation R of offset(rings, delta) with offset(delta - tol) ⊆ R ⊆ offset(delta), as
+// offset_stage gives (delta < 0: the same for the inset), computed in four steps of tol/4 each
+// when the input is large: Minkowski sums with disks compose (D_a ⊕ D_b = D_{a+b}), so do
+// erosions, and each step's approximation loses at most its tolerance: the bounds are the same. A
+// dense, jagged ring's one-step offset makes Clipper resolve the crossings of every offset edge
+// with all the others within 2 delta (1.9 s of 3 s at 200,000 vertices); small first steps fill the
+// jags, so each step meets few.
+IRegion offset_stepped(const IRings& rings, double delta, double tol,
+                       const DeconstructLimits& limits, double unit, std::size_t& disk_vertices) {
+  std::size_t n = 0;
+  for (const IRing& ring : rings) n += ring.size();
+  if (n <= kStepwiseOffsetVertices || std::fabs(delta) <= 4.0 * tol) {
+    return offset_stage(rings, delta, tol, limits, unit, disk_vertices);
+  }
+  // Cumulative radii delta/32, delta/8, delta/2, delta: each step fills the jags of the last.
+  constexpr double kFractions[] = {1.0 / 32, 1.0 / 8, 1.0 / 2};
+  IRings current = rings;
+  double done = 0.0;
+  for (const double f : kFractions) {
+    current =
+        flatten(offset_stage(current, delta * f - done, tol / 4, limits, unit, disk_vertices));
+    done = delta * f;
+  }
+  return offset_stage(current, delta - done, tol / 4, limits, unit, disk_vertices);
+}
+
 // Points of Q̃ \ Q̂' (exterior chain) worth trying as NO witnesses: inside Q̃ away from its
 // boundary, farthest from Q̂' first. Vertices of the difference often sit on ∂Q̃, so we also
 // try points pulled from each vertex towards the piece's centroid.
@@ -152,11 +181,11 @@ DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& para
   const IRings& q_simple = input.index ? input.index->rings() : q_grid;
   const double sigma = input.eta - kInputRounding;
   if (input.index) {
-    const IRegion q_eps = offset_stage(q_simple, eps - 2 * b.margin - sigma, b.arc_tolerance,
-                                       limits, unit, result.disk_vertices);
+    const IRegion q_eps = offset_stepped(q_simple, eps - 2 * b.margin - sigma, b.arc_tolerance,
+                                         limits, unit, result.disk_vertices);
     check_cancel(cancel);
-    const IRegion pi_hat = offset_stage(flatten(q_eps), -(r + 2 * b.margin + b.arc_tolerance),
-                                        b.arc_tolerance, limits, unit, result.disk_vertices);
+    const IRegion pi_hat = offset_stepped(flatten(q_eps), -(r + 2 * b.margin + b.arc_tolerance),
+                                          b.arc_tolerance, limits, unit, result.disk_vertices);
     check_cancel(cancel);
     if (!pi_hat.empty()) {
       // Ring-wise simplification is usually still a valid region; otherwise let Clipper union it.
@@ -177,15 +206,15 @@ DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& para
   }
 
   // Exterior chain (Algorithm 3 with margins): Q̂' ⊇ offset(Π, r + eps) with room to spare.
-  const IRegion q_eps_out = offset_stage(q_simple, eps + 2 * b.margin + sigma + b.arc_tolerance,
-                                         b.arc_tolerance, limits, unit, result.disk_vertices);
+  const IRegion q_eps_out = offset_stepped(q_simple, eps + 2 * b.margin + sigma + b.arc_tolerance,
+                                           b.arc_tolerance, limits, unit, result.disk_vertices);
   check_cancel(cancel);
-  const IRegion pi_out = offset_stage(flatten(q_eps_out), -(r - 2 * b.margin), b.arc_tolerance,
-                                      limits, unit, result.disk_vertices);
+  const IRegion pi_out = offset_stepped(flatten(q_eps_out), -(r - 2 * b.margin), b.arc_tolerance,
+                                        limits, unit, result.disk_vertices);
   check_cancel(cancel);
   const IRegion q_prime_out =
-      offset_stage(flatten(pi_out), r + eps + 2 * b.margin + b.arc_tolerance, b.arc_tolerance,
-                   limits, unit, result.disk_vertices);
+      offset_stepped(flatten(pi_out), r + eps + 2 * b.margin + b.arc_tolerance, b.arc_tolerance,
+                     limits, unit, result.disk_vertices);
   check_cancel(cancel);
   const IRegion diff = difference(q_grid, flatten(q_prime_out));
   if (diff.empty()) return finish();
