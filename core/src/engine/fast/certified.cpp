@@ -9,6 +9,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "geometry/distance_kernel.hpp"
 #include "segment_index.hpp"
@@ -120,7 +121,7 @@ int compare_distance(const OnPiece& y, IPt a, IPt b, double threshold) {
     return former_compare(point_segment_distance(eval_double(y), to_d(a), to_d(b)), threshold);
   }
   {
-    const CGAL::Protect_FPU_rounding<true> rounding;
+    const UpwardRounding rounding;
     const int s =
         interval_sign(eval<IntervalNT>(y), eval<IntervalNT>(a), eval<IntervalNT>(b), threshold);
     if (s != 0) return s;
@@ -136,7 +137,7 @@ int compare_point_distance(const OnPiece& y, const OnPiece& z, double threshold)
     return (d > threshold) - (d < threshold);
   }
   {
-    const CGAL::Protect_FPU_rounding<true> rounding;
+    const UpwardRounding rounding;
     const IntervalPt u = eval<IntervalNT>(y);
     const int s = interval_sign(u, eval<IntervalNT>(z), eval<IntervalNT>(z), threshold);
     if (s != 0) return s;
@@ -156,7 +157,7 @@ bool segments_farther_than(const OnPiece& y0, const OnPiece& y1, IPt a, IPt b, d
     return d >= threshold + kFormerDistanceSlack;
   }
   {
-    const CGAL::Protect_FPU_rounding<true> rounding;
+    const UpwardRounding rounding;
     const int s = separated_and_far(eval<IntervalNT>(y0), eval<IntervalNT>(y1), eval<IntervalNT>(a),
                                     eval<IntervalNT>(b), threshold, &interval_sign);
     if (s != 0) return s > 0;
@@ -168,32 +169,38 @@ bool segments_farther_than(const OnPiece& y0, const OnPiece& y1, IPt a, IPt b, d
 }
 
 Box enclosing_box(const OnPiece& y0, const OnPiece& y1) {
-  const CGAL::Protect_FPU_rounding<true> rounding;
+  const UpwardRounding rounding;
   const IntervalPt a = eval<IntervalNT>(y0), b = eval<IntervalNT>(y1);
   return {std::min(a.x.inf(), b.x.inf()), std::min(a.y.inf(), b.y.inf()),
           std::max(a.x.sup(), b.x.sup()), std::max(a.y.sup(), b.y.sup())};
 }
 
+// A sum rounded to nearest is within half an ulp of the exact value: one ulp outwards bounds
+// it without switching the rounding mode.
 double add_up(double a, double b) {
-  const CGAL::Protect_FPU_rounding<true> rounding;
-  return (IntervalNT(a) + IntervalNT(b)).sup();
+  return std::nextafter(a + b, std::numeric_limits<double>::infinity());
 }
 
 double sub_down(double a, double b) {
-  const CGAL::Protect_FPU_rounding<true> rounding;
-  return (IntervalNT(a) - IntervalNT(b)).inf();
+  return std::nextafter(a - b, -std::numeric_limits<double>::infinity());
 }
 
-bool all_edges_farther(const SegmentIndex& index, const OnPiece& y, double threshold) {
-  const Box box = enclosing_box(y, y);
+namespace {
+
+// The edges of the index whose boxes are not proven farther than T along an axis from the box
+// of y0, y1 (gathered in the default rounding mode, like the index's own cells), in a buffer
+// reused by the thread (callers consume it before the next call).
+const std::vector<std::size_t>& edges_near(const SegmentIndex& index, const OnPiece& y0,
+                                           const OnPiece& y1, double threshold) {
+  const Box box = enclosing_box(y0, y1);
   constexpr double inf = std::numeric_limits<double>::infinity();
   const double min_x = std::nextafter(box.lo_x - threshold, -inf);
   const double max_x = std::nextafter(box.hi_x + threshold, inf);
   const double min_y = std::nextafter(box.lo_y - threshold, -inf);
   const double max_y = std::nextafter(box.hi_y + threshold, inf);
-  bool ok = true;
+  thread_local std::vector<std::size_t> out;
+  out.clear();
   index.for_each_near(min_x, min_y, max_x, max_y, [&](std::size_t k) {
-    if (!ok) return;
     const Segment& g = index.segments()[k];
     if (static_cast<double>(std::min(g.a.x, g.b.x)) > max_x ||
         static_cast<double>(std::max(g.a.x, g.b.x)) < min_x ||
@@ -201,9 +208,74 @@ bool all_edges_farther(const SegmentIndex& index, const OnPiece& y, double thres
         static_cast<double>(std::max(g.a.y, g.b.y)) < min_y) {
       return;
     }
-    if (!farther_than(y, g.a, g.b, threshold)) ok = false;
+    out.push_back(k);
   });
-  return ok;
+  return out;
+}
+
+} // namespace
+
+bool piece_farther_than(const SegmentIndex& index, const OnPiece& y0, const OnPiece& y1,
+                        double threshold) {
+  const std::vector<std::size_t>& near = edges_near(index, y0, y1, threshold);
+  if (margins()) {
+    for (const std::size_t k : near) {
+      const Segment& g = index.segments()[k];
+      if (!segments_farther_than(y0, y1, g.a, g.b, threshold)) return false;
+    }
+    return true;
+  }
+  // One rounding-mode switch for all the intervals; the exact fallback after it.
+  std::vector<std::size_t> undecided;
+  {
+    const UpwardRounding rounding;
+    const IntervalPt i0 = eval<IntervalNT>(y0), i1 = eval<IntervalNT>(y1);
+    for (const std::size_t k : near) {
+      const Segment& g = index.segments()[k];
+      const int s = separated_and_far(i0, i1, eval<IntervalNT>(g.a), eval<IntervalNT>(g.b),
+                                      threshold, &interval_sign);
+      if (s < 0) return false;
+      if (s == 0) undecided.push_back(k);
+    }
+  }
+  for (const std::size_t k : undecided) {
+    const Segment& g = index.segments()[k];
+    ++t_exact_fallbacks;
+    if (separated_and_far(eval<Rational>(y0), eval<Rational>(y1), eval<Rational>(g.a),
+                          eval<Rational>(g.b), threshold, &exact_sign) <= 0) {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool all_edges_farther(const SegmentIndex& index, const OnPiece& y, double threshold) {
+  const std::vector<std::size_t>& near = edges_near(index, y, y, threshold);
+  if (margins()) {
+    for (const std::size_t k : near) {
+      const Segment& g = index.segments()[k];
+      if (!farther_than(y, g.a, g.b, threshold)) return false;
+    }
+    return true;
+  }
+  std::vector<std::size_t> undecided;
+  {
+    const UpwardRounding rounding;
+    const IntervalPt iy = eval<IntervalNT>(y);
+    for (const std::size_t k : near) {
+      const Segment& g = index.segments()[k];
+      const int s = interval_sign(iy, eval<IntervalNT>(g.a), eval<IntervalNT>(g.b), threshold);
+      if (s < 0) return false;
+      if (s == 0) undecided.push_back(k);
+    }
+  }
+  for (const std::size_t k : undecided) {
+    const Segment& g = index.segments()[k];
+    if (exact_sign(eval<Rational>(y), eval<Rational>(g.a), eval<Rational>(g.b), threshold) <= 0) {
+      return false;
+    }
+  }
+  return true;
 }
 
 bool some_edge_closer(const SegmentIndex& index, const OnPiece& y, double threshold) {

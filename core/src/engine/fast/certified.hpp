@@ -5,7 +5,12 @@
 // directed rounding, through geometry/distance_kernel.hpp) and, when the interval cannot decide,
 // with exact rationals. Points are doubles or integers, thresholds are doubles: all exactly
 // representable as rationals, so the exact fallback answers the very question asked.
+#include <CGAL/FPU.h>
+
 #include <cstdint>
+#if defined(__x86_64__) && defined(__SSE2__)
+#include <xmmintrin.h>
+#endif
 
 #include "int_geometry.hpp"
 
@@ -17,6 +22,27 @@ namespace penshape::fast {
 enum class CertifyMode { kInterval, kMargins };
 void set_certify_mode(CertifyMode mode);
 [[nodiscard]] CertifyMode certify_mode();
+
+// Rounding towards +infinity, what CGAL::Interval_nt<false> needs, for this scope. On x86-64
+// every double operation is SSE, so one MXCSR write does it (CGAL's Protect_FPU_rounding goes
+// through fesetround, which also sets the unused x87 unit and costs several times more; the
+// certificates switch modes hundreds of thousands of times). Elsewhere: CGAL's.
+#if defined(__x86_64__) && defined(__SSE2__)
+class UpwardRounding {
+ public:
+  UpwardRounding() : saved_(_mm_getcsr()) {
+    _mm_setcsr((saved_ & ~static_cast<unsigned>(_MM_ROUND_MASK)) | _MM_ROUND_UP);
+  }
+  ~UpwardRounding() { _mm_setcsr(saved_); }
+  UpwardRounding(const UpwardRounding&) = delete;
+  UpwardRounding& operator=(const UpwardRounding&) = delete;
+
+ private:
+  unsigned saved_;
+};
+#else
+using UpwardRounding = CGAL::Protect_FPU_rounding<true>;
+#endif
 
 // How many predicates (in this thread) needed the exact fallback so far: for tests that must
 // exercise it, and for the README's account of how often intervals decide.
@@ -67,6 +93,10 @@ struct Box {
 
 class SegmentIndex;
 
+// Every edge of the index is proven farther than T from the segment [y0, y1]
+// (segments_farther_than edge by edge, under one rounding-mode switch).
+[[nodiscard]] bool piece_farther_than(const SegmentIndex& index, const OnPiece& y0,
+                                      const OnPiece& y1, double threshold);
 // Every edge of the index is proven farther than T from y (an edge whose box is proven farther
 // along an axis is skipped by that argument alone).
 [[nodiscard]] bool all_edges_farther(const SegmentIndex& index, const OnPiece& y, double threshold);

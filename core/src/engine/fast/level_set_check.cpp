@@ -27,7 +27,7 @@ struct Interval {
 
 // A piece of the walked curve: the exact segment between the double points p and q, with a
 // certified bound: every curve point it stands for lies within `error` of some point of the
-// piece (derived with outward rounding in straight_piece / arc_piece below).
+// piece (derived with outward rounding in Walker::ends / arc_piece below).
 struct Piece {
   DPt p;
   DPt q;
@@ -116,22 +116,32 @@ DPt represent(const detail::IPoint& e, double& deviation) {
 }
 
 // Upper bound on the sagitta L (1 - cos(phi/2)) of the arc between the directions u and w
-// (angle phi < pi), in the cancellation-free form L (c²/4) / (1 + sqrt(1 - c²/4)) where
-// c = |u/|u| - w/|w|| is the unit chord (requires upward rounding).
+// (angle phi < pi), requires upward rounding. With c = |u/|u| - w/|w|| the unit chord,
+// 1 - cos(phi/2) = (c²/4) / (1 + sqrt(1 - c²/4)) <= c² / (8 - c²) (as sqrt(x) >= x on [0, 1]),
+// and when u·w >= 0 (phi <= pi/2), c² = 2 (1 - cos phi) = 2 sin² phi / (1 + cos phi)
+// <= 2 sin² phi / (1 + cos² phi) = 2 (u x w)² / (|u|² |w|² + (u·w)²) (cos >= cos² on [0, 1]):
+// no square root, no cancellation, tight for small angles. Otherwise c² from unit vectors.
 double sagitta_bound(DPt u, DPt w, double level) {
   const IntervalNT ux(u.x), uy(u.y), wx(w.x), wy(w.y);
-  const IntervalNT lu = CGAL::sqrt(ux * ux + uy * uy), lw = CGAL::sqrt(wx * wx + wy * wy);
-  const IntervalNT cx = ux / lu - wx / lw, cy = uy / lu - wy / lw;
-  const IntervalNT quarter = (cx * cx + cy * cy) / 4;
-  const IntervalNT rest = 1 - quarter;
-  const double root = rest.inf() > 0 ? CGAL::sqrt(IntervalNT(rest.inf())).inf() : 0.0;
-  return (IntervalNT(level) * quarter / (1 + IntervalNT(root))).sup();
+  const IntervalNT uu = ux * ux + uy * uy, ww = wx * wx + wy * wy;
+  const IntervalNT dot = ux * wx + uy * wy;
+  IntervalNT c2;
+  if (dot.inf() >= 0) {
+    const IntervalNT cr = ux * wy - uy * wx;
+    c2 = 2 * (cr * cr) / (uu * ww + dot * dot);
+  } else {
+    const IntervalNT lu = CGAL::sqrt(uu), lw = CGAL::sqrt(ww);
+    const IntervalNT cx = ux / lu - wx / lw, cy = uy / lu - wy / lw;
+    c2 = cx * cx + cy * cy;
+  }
+  if (c2.sup() >= 4) return level; // a half turn at most moves L
+  return (IntervalNT(level) * c2 / (8 - c2)).sup();
 }
 
 // Sign of the cross product u x w, exactly (intervals, then rationals).
 int cross_sign(DPt u, DPt w) {
   {
-    const CGAL::Protect_FPU_rounding<true> rounding;
+    const UpwardRounding rounding;
     const IntervalNT c = IntervalNT(u.x) * IntervalNT(w.y) - IntervalNT(u.y) * IntervalNT(w.x);
     if (c.inf() > 0) return 1;
     if (c.sup() < 0) return -1;
@@ -149,12 +159,17 @@ class Walker {
     const IRings& rings = q_.a->rings();
     for (const IRing& ring : rings) {
       const std::size_t n = ring.size();
+      ends(ring);
       for (std::size_t i = 0; i < n; ++i) {
         const IPt prev = ring[(i + n - 1) % n];
         const IPt v = ring[i];
         const IPt next = ring[(i + 1) % n];
-        if (!check(straight_piece(v, next))) return false;
-        if (orientation(prev, v, next) > 0 && !arc(prev, v, next)) return false;
+        // The offset segment of edge v -> next: from out_[i] to in_[i + 1]; every point of the
+        // true segment is within the larger deviation of the piece (convexity).
+        const Rep& p = out_[i];
+        const Rep& q = in_[(i + 1) % n];
+        if (!check({p.p, q.p, std::max(p.dev, q.dev)})) return false;
+        if (orientation(prev, v, next) > 0 && !arc(prev, v, next, in_[i], out_[i])) return false;
         if ((++pieces_ & 255U) == 0 && cancel_ && cancel_()) throw Cancelled();
       }
     }
@@ -162,26 +177,41 @@ class Walker {
   }
 
  private:
+  // A double standing for an exact point of the level set, and its proven distance to it.
+  struct Rep {
+    DPt p;
+    double dev;
+  };
+
   // The right normal direction of a -> b, exact (integer differences, |.| <= 2^32).
   static DPt right_direction(IPt a, IPt b) {
     return {static_cast<double>(b.y - a.y), -static_cast<double>(b.x - a.x)};
   }
 
-  // The offset segment of edge a -> b at distance `level`: its endpoints a + L n and b + L n
-  // (n the exact unit normal) enclosed in intervals; the piece joins doubles inside them, and
-  // every point of the true segment is within the larger deviation of the piece (convexity).
-  Piece straight_piece(IPt a, IPt b) const {
-    const CGAL::Protect_FPU_rounding<true> rounding;
-    const DPt u = right_direction(a, b);
-    double ea = 0.0, eb = 0.0;
-    const DPt p = represent(on_circle(a, u, q_.level), ea);
-    const DPt q = represent(on_circle(b, u, q_.level), eb);
-    return {p, q, std::max(ea, eb)};
+  static Rep rep(IPt c, DPt u, double level) {
+    Rep r{};
+    r.p = represent(on_circle(c, u, level), r.dev);
+    return r;
   }
 
-  // The arc of radius `level` around a convex vertex v, from the right normal of (prev, v) to
-  // that of (v, next), counterclockwise, as chords of sagitta about max_sagitta.
-  bool arc(IPt prev, IPt v, IPt next) {
+  // For every vertex v_i of the ring, the exact points v_i + L n of the normals of its incoming
+  // (in_) and outgoing (out_) edges, enclosed in intervals under one rounding-mode switch: the
+  // ends of the straight pieces and of the arcs.
+  void ends(const IRing& ring) {
+    const std::size_t n = ring.size();
+    in_.resize(n);
+    out_.resize(n);
+    const UpwardRounding rounding;
+    for (std::size_t i = 0; i < n; ++i) {
+      const IPt v = ring[i];
+      in_[i] = rep(v, right_direction(ring[(i + n - 1) % n], v), q_.level);
+      out_[i] = rep(v, right_direction(v, ring[(i + 1) % n]), q_.level);
+    }
+  }
+
+  // The arc of radius `level` around a convex vertex v, from the right normal u0 of (prev, v)
+  // to u1 of (v, next), counterclockwise, as chords of sagitta about max_sagitta.
+  bool arc(IPt prev, IPt v, IPt next, const Rep& start, const Rep& end) {
     const DPt u0 = right_direction(prev, v);
     const DPt u1 = right_direction(v, next);
     const double a0 = std::atan2(u0.y, u0.x);
@@ -191,38 +221,55 @@ class Walker {
     const double max_half = std::acos(std::max(0.0, 1.0 - q_.max_sagitta / q_.level));
     const int m = std::max(1, static_cast<int>(std::ceil(sweep / (2.0 * max_half))));
     const double step = sweep / m;
-    DPt from = u0;
+    Dir from{u0, start, true};
     for (int k = 0; k < m; ++k) {
       const double angle = a0 + step * (k + 1);
-      const DPt to = k + 1 == m ? u1 : DPt{std::cos(angle), std::sin(angle)};
+      Dir to{u1, end, true};
+      if (k + 1 < m) {
+        to.u = {std::cos(angle), std::sin(angle)};
+        to.exact_end = false;
+        const UpwardRounding rounding;
+        to.rep = rep(v, to.u, q_.level);
+      }
       if (!arc_piece(v, from, to, a0 + step * k, angle, u0, u1)) return false;
       from = to;
     }
     return true;
   }
 
+  // A direction of the arc: an end normal (exact_end) or a proposed one, with its point.
+  struct Dir {
+    DPt u;
+    Rep rep;
+    bool exact_end;
+  };
+
   // The sub-arc between directions `from` and `to` (angles given as hints for splitting). The
   // chords cover the arc from u0 to u1 when every direction lies in that cone (< pi, the vertex
-  // is convex) and consecutive directions turn counterclockwise: checked exactly, else the
-  // piece is not verified. Error = sagitta bound + the endpoints' deviations, rounded up.
-  bool arc_piece(IPt c, DPt from, DPt to, double a_from, double a_to, DPt u0, DPt u1) {
-    if (cross_sign(u0, to) < 0 || cross_sign(to, u1) < 0 || cross_sign(from, to) < 0) {
-      return false;
-    }
+  // is convex) and consecutive directions turn counterclockwise: checked exactly (the end
+  // normals are in the cone and in order by convexity), else the piece is not verified.
+  // Error = sagitta bound + the endpoints' deviations, rounded up.
+  bool arc_piece(IPt c, const Dir& from, const Dir& to, double a_from, double a_to, DPt u0,
+                 DPt u1) {
+    if (!to.exact_end && (cross_sign(u0, to.u) < 0 || cross_sign(to.u, u1) < 0)) return false;
+    if (!(from.exact_end && to.exact_end) && cross_sign(from.u, to.u) < 0) return false;
     Piece piece{};
     double sagitta = 0.0;
     {
-      const CGAL::Protect_FPU_rounding<true> rounding;
-      double ef = 0.0, et = 0.0;
-      piece.p = represent(on_circle(c, from, q_.level), ef);
-      piece.q = represent(on_circle(c, to, q_.level), et);
-      sagitta = sagitta_bound(from, to, q_.level);
-      piece.error = sagitta + std::max(ef, et);
+      const UpwardRounding rounding;
+      piece.p = from.rep.p;
+      piece.q = to.rep.p;
+      sagitta = sagitta_bound(from.u, to.u, q_.level);
+      piece.error = sagitta + std::max(from.rep.dev, to.rep.dev);
     }
     if (check(piece)) return true;
     if (sagitta < kMinSagitta) return false;
     const double mid = 0.5 * (a_from + a_to);
-    const DPt m{std::cos(mid), std::sin(mid)};
+    Dir m{{std::cos(mid), std::sin(mid)}, {}, false};
+    {
+      const UpwardRounding rounding;
+      m.rep = rep(c, m.u, q_.level);
+    }
     return arc_piece(c, from, m, a_from, mid, u0, u1) && arc_piece(c, m, to, mid, a_to, u0, u1);
   }
 
@@ -236,33 +283,14 @@ class Walker {
     return compare_point_distance(on(s, tm), at_point(z), need) < 0;
   }
 
-  // Proven d([y(t0), y(t1)], ∂B) > need, edge by edge. An edge is skipped only when its box is
-  // proven farther than `need` along an axis from the sub-piece's enclosing box (sums rounded
-  // to nearest are pushed one ulp outwards, which bounds their error).
+  // Proven d([y(t0), y(t1)], ∂B) > need (certified.hpp).
   bool far_from_b(const Piece& s, double t0, double t1, double need) {
-    const Box box = enclosing_box(on(s, t0), on(s, t1));
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    const double min_x = std::nextafter(box.lo_x - need, -inf);
-    const double max_x = std::nextafter(box.hi_x + need, inf);
-    const double min_y = std::nextafter(box.lo_y - need, -inf);
-    const double max_y = std::nextafter(box.hi_y + need, inf);
-    bool ok = true;
-    q_.b->for_each_near(min_x, min_y, max_x, max_y, [&](std::size_t k) {
-      if (!ok) return;
-      const Segment& g = q_.b->segments()[k];
-      const double gx0 = static_cast<double>(std::min(g.a.x, g.b.x));
-      const double gx1 = static_cast<double>(std::max(g.a.x, g.b.x));
-      const double gy0 = static_cast<double>(std::min(g.a.y, g.b.y));
-      const double gy1 = static_cast<double>(std::max(g.a.y, g.b.y));
-      if (gx0 > max_x || gx1 < min_x || gy0 > max_y || gy1 < min_y) return;
-      if (!segments_farther_than(on(s, t0), on(s, t1), g.a, g.b, need)) ok = false;
-    });
-    return ok;
+    return piece_farther_than(*q_.b, on(s, t0), on(s, t1), need);
   }
 
   // Lower bound on L - half - error for the deep test, rounded down.
   double deep_threshold(const Piece& s) const {
-    const CGAL::Protect_FPU_rounding<true> rounding;
+    const UpwardRounding rounding;
     const IntervalNT dx = IntervalNT(s.q.x) - IntervalNT(s.p.x);
     const IntervalNT dy = IntervalNT(s.q.y) - IntervalNT(s.p.y);
     const IntervalNT half = CGAL::sqrt(dx * dx + dy * dy) / 2;
@@ -365,6 +393,7 @@ class Walker {
   const LevelSetQuery& q_;
   const CancelHook& cancel_;
   unsigned pieces_ = 0;
+  std::vector<Rep> in_, out_;
 };
 
 bool segments_intersect(IPt p1, IPt p2, IPt q1, IPt q2) {

@@ -22,7 +22,7 @@ struct Cell {
 
 // half · sqrt(2), rounded up: the cell's radius around its centre.
 double cell_radius(double half) {
-  const CGAL::Protect_FPU_rounding<true> rounding;
+  const UpwardRounding rounding;
   using I = CGAL::Interval_nt<false>;
   return (I(half) * CGAL::sqrt(I(2))).sup();
 }
