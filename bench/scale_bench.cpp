@@ -4,7 +4,12 @@
 // engine, no simplification) against the 1 s target at 200k, and `penshape verify`'s checker.
 // First, validation's touching/crossing test on the star and on a comb (every edge spans every
 // vertical line: the former x-range sweep's O(n²) case): the Shamos–Hoey sweep inside
-// validate_region against the former test (bench/former_validation.hpp), in the same run.
+// validate_region against the former test (bench/former_validation.hpp), in the same run; and
+// validation of a polygon with thousands of holes (the nesting sweep).
+//   scale_bench [--margins] [--only N]
+// --margins times the fast engine's former margin-based comparisons; --only N runs only the
+// N-vertex star's deconstruction and prints its wall and thread CPU time (the shared build
+// machine's load inflates wall time) and how many predicates needed the exact fallback.
 #include <chrono>
 #include <cmath>
 #include <cstdio>

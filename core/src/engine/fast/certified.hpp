@@ -31,14 +31,20 @@ void set_certify_mode(CertifyMode mode);
 class UpwardRounding {
  public:
   UpwardRounding() : saved_(_mm_getcsr()) {
+    // CGAL's interval sqrt switches both units through fesetround: keep the x87 word too.
+    __asm__ volatile("fnstcw %0" : "=m"(saved_x87_));
     _mm_setcsr((saved_ & ~static_cast<unsigned>(_MM_ROUND_MASK)) | _MM_ROUND_UP);
   }
-  ~UpwardRounding() { _mm_setcsr(saved_); }
+  ~UpwardRounding() {
+    _mm_setcsr(saved_);
+    __asm__ volatile("fldcw %0" : : "m"(saved_x87_));
+  }
   UpwardRounding(const UpwardRounding&) = delete;
   UpwardRounding& operator=(const UpwardRounding&) = delete;
 
  private:
   unsigned saved_;
+  unsigned short saved_x87_ = 0;
 };
 #else
 using UpwardRounding = CGAL::Protect_FPU_rounding<true>;
