@@ -210,6 +210,7 @@ void name_nesting_fault(const std::vector<RingRef>& rings, const PolygonSet& q) 
 // inside another lies in one of its holes, and no hole lies in another hole of its polygon).
 // The containers come from one O(n log n) sweep (geometry/ring_nesting).
 void check_nesting(const std::vector<RingRef>& rings, const PolygonSet& q) {
+  if (rings.size() < 2) return; // one outer ring: nothing can be nested wrongly
   std::vector<std::vector<FilteredPoint>> points;
   points.reserve(rings.size());
   std::vector<std::size_t> outer_of(q.polygons.size());
