@@ -98,12 +98,27 @@ bool stadium_interval(const Piece& s, DPt a, DPt b, double radius, Interval& out
 IPt round_point(DPt p) { return {std::llround(p.x), std::llround(p.y)}; }
 
 // The exact point c + L u / |u| enclosed in intervals (requires upward rounding).
-detail::IPoint on_circle(IPt c, DPt u, double level) {
+// sqrt of an interval under upward rounding without switching modes (CGAL::sqrt switches to
+// downward and back for the lower end): the upward-rounded root of the upper end bounds it
+// from above; the upward-rounded root of the lower end exceeds the true one by less than an
+// ulp, so one ulp down bounds it from below.
+IntervalNT sqrt_upward(const IntervalNT& v) {
+  const double lo = v.inf() > 0 ? std::nextafter(std::sqrt(v.inf()), 0.0) : 0.0;
+  return {lo, std::sqrt(v.sup())};
+}
+
+// The exact unit vector u / |u| enclosed in intervals (requires upward rounding).
+detail::IPoint unit(DPt u) {
   const IntervalNT ux(u.x), uy(u.y);
-  const IntervalNT len = CGAL::sqrt(ux * ux + uy * uy);
+  const IntervalNT len = sqrt_upward(ux * ux + uy * uy);
+  return {ux / len, uy / len};
+}
+
+// The exact point c + L n enclosed in intervals, n a unit vector's enclosure.
+detail::IPoint on_circle(IPt c, const detail::IPoint& n, double level) {
   const IntervalNT l(level);
-  return {IntervalNT(static_cast<double>(c.x)) + l * ux / len,
-          IntervalNT(static_cast<double>(c.y)) + l * uy / len};
+  return {IntervalNT(static_cast<double>(c.x)) + l * n.x,
+          IntervalNT(static_cast<double>(c.y)) + l * n.y};
 }
 
 // A double inside the enclosure and an upper bound on its distance to every point of it
@@ -130,7 +145,7 @@ double sagitta_bound(DPt u, DPt w, double level) {
     const IntervalNT cr = ux * wy - uy * wx;
     c2 = 2 * (cr * cr) / (uu * ww + dot * dot);
   } else {
-    const IntervalNT lu = CGAL::sqrt(uu), lw = CGAL::sqrt(ww);
+    const IntervalNT lu = sqrt_upward(uu), lw = sqrt_upward(ww);
     const IntervalNT cx = ux / lu - wx / lw, cy = uy / lu - wy / lw;
     c2 = cx * cx + cy * cy;
   }
@@ -190,7 +205,7 @@ class Walker {
 
   static Rep rep(IPt c, DPt u, double level) {
     Rep r{};
-    r.p = represent(on_circle(c, u, level), r.dev);
+    r.p = represent(on_circle(c, unit(u), level), r.dev);
     return r;
   }
 
@@ -203,9 +218,12 @@ class Walker {
     out_.resize(n);
     const UpwardRounding rounding;
     for (std::size_t i = 0; i < n; ++i) {
-      const IPt v = ring[i];
-      in_[i] = rep(v, right_direction(ring[(i + n - 1) % n], v), q_.level);
-      out_[i] = rep(v, right_direction(v, ring[(i + 1) % n]), q_.level);
+      // Edge i -> i + 1: one unit normal for both of its ends.
+      const IPt a = ring[i], b = ring[(i + 1) % n];
+      const detail::IPoint normal = unit(right_direction(a, b));
+      out_[i].p = represent(on_circle(a, normal, q_.level), out_[i].dev);
+      Rep& end = in_[(i + 1) % n];
+      end.p = represent(on_circle(b, normal, q_.level), end.dev);
     }
   }
 
@@ -293,7 +311,7 @@ class Walker {
     const UpwardRounding rounding;
     const IntervalNT dx = IntervalNT(s.q.x) - IntervalNT(s.p.x);
     const IntervalNT dy = IntervalNT(s.q.y) - IntervalNT(s.p.y);
-    const IntervalNT half = CGAL::sqrt(dx * dx + dy * dy) / 2;
+    const IntervalNT half = sqrt_upward(dx * dx + dy * dy) / 2;
     return (IntervalNT(q_.level) - half - IntervalNT(s.error)).inf();
   }
 

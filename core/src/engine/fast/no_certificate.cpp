@@ -20,11 +20,11 @@ struct Cell {
   double half;
 };
 
-// half · sqrt(2), rounded up: the cell's radius around its centre.
+// half · sqrt(2), rounded up: the cell's radius around its centre (the double nearest sqrt(2),
+// 1.4142135623730951, lies above it: its square exceeds 2 exactly).
 double cell_radius(double half) {
   const UpwardRounding rounding;
-  using I = CGAL::Interval_nt<false>;
-  return (I(half) * CGAL::sqrt(I(2))).sup();
+  return half * 1.4142135623730951;
 }
 
 // x + d when that sum is exact in double (Fast2Sum: the rounding error of x + d is recovered
