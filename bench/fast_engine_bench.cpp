@@ -1,6 +1,9 @@
 // Micro-benchmark of the fast deconstruction engine alone: kazakhstan_paper1881, eps = r/2,
 // delta = eps/8, r = w/10, w/30, w/50, w/100 (w = bounding-box width). Prints a table of the
 // median time per decision, the answer and |P|; `--json` prints one object per case.
+// `--certify both` (the default) times each case with the certified predicates (interval
+// arithmetic with an exact fallback) and with the former double-with-margins comparisons, in
+// the same run, and prints the ratio; `--certify interval` or `--certify margins` runs one.
 // The side-by-side comparison with the reference engine lives in the main deconstruct bench.
 #include <algorithm>
 #include <chrono>
@@ -10,9 +13,11 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "engine/engines.hpp"
+#include "engine/fast/certified.hpp"
 
 namespace {
 
@@ -59,10 +64,12 @@ const char* answer_name(penshape::Answer a) {
 int main(int argc, char** argv) {
   bool json = false;
   int repeats = 9;
+  std::string certify = "both";
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--json") json = true;
     if (a == "--repeats" && i + 1 < argc) repeats = std::max(1, std::atoi(argv[++i]));
+    if (a == "--certify" && i + 1 < argc) certify = argv[++i];
   }
   const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR");
   const std::string dir = env != nullptr ? env : PENSHAPE_SHARED_DATA_DIR;
@@ -73,41 +80,55 @@ int main(int argc, char** argv) {
     max_x = std::max(max_x, p.x);
   }
   const penshape::Rational w = max_x - min_x;
+  std::vector<std::pair<const char*, penshape::fast::CertifyMode>> modes;
+  if (certify != "margins") modes.push_back({"interval", penshape::fast::CertifyMode::kInterval});
+  if (certify != "interval") modes.push_back({"margins", penshape::fast::CertifyMode::kMargins});
   if (!json) {
-    std::printf("%-8s %-10s %12s %12s %12s %8s %6s\n", "r", "answer", "median_ms", "min_ms",
-                "cpu_med_ms", "|P|", "disk");
+    std::printf("%-8s %-9s %-10s %12s %12s %12s %8s %6s %8s\n", "r", "certify", "answer",
+                "median_ms", "min_ms", "cpu_med_ms", "|P|", "disk", "cpu/marg");
   }
   for (const int div : {10, 30, 50, 100}) {
     penshape::DeconstructParams params;
     params.radius = w / div;
     params.tolerance = params.radius / 2;
     params.precision = params.tolerance / 8;
-    std::vector<double> ms, cpu;
-    penshape::DeconstructResult last;
-    for (int k = 0; k < repeats; ++k) {
-      const double c0 = cpu_ms();
-      const auto t0 = std::chrono::steady_clock::now();
-      last = penshape::detail::decide_fast(q, params, {}, {});
-      const auto t1 = std::chrono::steady_clock::now();
-      cpu.push_back(cpu_ms() - c0);
-      ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
-    }
-    std::sort(ms.begin(), ms.end());
-    std::sort(cpu.begin(), cpu.end());
-    const double median = ms[ms.size() / 2];
-    const double cpu_median = cpu[cpu.size() / 2];
     const std::string r = "w/" + std::to_string(div);
-    if (json) {
-      std::printf(
-          "{\"case\":\"kazakhstan_paper1881\",\"r\":\"%s\",\"engine\":\"fast\",\"answer\":\"%s\","
-          "\"median_ms\":%.3f,\"min_ms\":%.3f,\"cpu_median_ms\":%.3f,\"solution_vertices\":%zu,"
-          "\"disk_vertices\":%zu}\n",
-          r.c_str(), answer_name(last.answer), median, ms.front(), cpu_median,
-          last.solution.vertex_count(), last.disk_vertices);
-    } else {
-      std::printf("%-8s %-10s %12.3f %12.3f %12.3f %8zu %6zu\n", r.c_str(),
-                  answer_name(last.answer), median, ms.front(), cpu_median,
-                  last.solution.vertex_count(), last.disk_vertices);
+    // Interleaved repeats, so that load on the shared machine hits both modes alike.
+    std::vector<std::vector<double>> ms(modes.size()), cpu(modes.size());
+    std::vector<penshape::DeconstructResult> last(modes.size());
+    for (int k = 0; k < repeats; ++k) {
+      for (std::size_t m = 0; m < modes.size(); ++m) {
+        penshape::fast::set_certify_mode(modes[m].second);
+        const double c0 = cpu_ms();
+        const auto t0 = std::chrono::steady_clock::now();
+        last[m] = penshape::detail::decide_fast(q, params, {}, {});
+        const auto t1 = std::chrono::steady_clock::now();
+        cpu[m].push_back(cpu_ms() - c0);
+        ms[m].push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+      }
+    }
+    penshape::fast::set_certify_mode(penshape::fast::CertifyMode::kInterval);
+    std::vector<double> cpu_median(modes.size());
+    for (std::size_t m = 0; m < modes.size(); ++m) {
+      std::sort(ms[m].begin(), ms[m].end());
+      std::sort(cpu[m].begin(), cpu[m].end());
+      cpu_median[m] = cpu[m][cpu[m].size() / 2];
+    }
+    for (std::size_t m = 0; m < modes.size(); ++m) {
+      const double median = ms[m][ms[m].size() / 2];
+      const double ratio = cpu_median[m] / cpu_median.back();
+      if (json) {
+        std::printf(
+            "{\"case\":\"kazakhstan_paper1881\",\"r\":\"%s\",\"engine\":\"fast\","
+            "\"certify\":\"%s\",\"answer\":\"%s\",\"median_ms\":%.3f,\"min_ms\":%.3f,"
+            "\"cpu_median_ms\":%.3f,\"solution_vertices\":%zu,\"disk_vertices\":%zu}\n",
+            r.c_str(), modes[m].first, answer_name(last[m].answer), median, ms[m].front(),
+            cpu_median[m], last[m].solution.vertex_count(), last[m].disk_vertices);
+      } else {
+        std::printf("%-8s %-9s %-10s %12.3f %12.3f %12.3f %8zu %6zu %7.2fx\n", r.c_str(),
+                    modes[m].first, answer_name(last[m].answer), median, ms[m].front(),
+                    cpu_median[m], last[m].solution.vertex_count(), last[m].disk_vertices, ratio);
+      }
     }
   }
   return 0;

@@ -4,13 +4,22 @@
 // engine, no simplification) against the 1 s target at 200k, and `penshape verify`'s checker.
 // First, validation's touching/crossing test on the star and on a comb (every edge spans every
 // vertical line: the former x-range sweep's O(n²) case): the Shamos–Hoey sweep inside
-// validate_region against the former test (bench/former_validation.hpp), in the same run.
+// validate_region against the former test (bench/former_validation.hpp), in the same run; and
+// validation of a polygon with thousands of holes (the nesting sweep).
+//   scale_bench [--margins] [--only N]
+// --margins times the fast engine's former margin-based comparisons; --only N runs only the
+// N-vertex star's deconstruction and prints its wall and thread CPU time (the shared build
+// machine's load inflates wall time) and how many predicates needed the exact fallback.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <ctime>
 #include <numbers>
 #include <random>
+#include <string>
 
+#include "engine/fast/certified.hpp"
 #include "former_validation.hpp"
 #include "geometry/segment_sweep.hpp"
 #include "penshape/core/deconstruct.hpp"
@@ -48,6 +57,22 @@ penshape::PolygonSet comb(int n) {
   return {{{ring, {}}}};
 }
 
+// A square with n/4 - 1 square holes on a grid: the nesting check's worst case before its sweep
+// (every hole was tested against every other hole).
+penshape::PolygonSet holes(int n) {
+  const int side = static_cast<int>(std::sqrt(n / 4.0));
+  penshape::PolygonWithHoles p;
+  const int extent = 4 * side + 2;
+  p.outer = {{0, 0}, {extent, 0}, {extent, extent}, {0, extent}};
+  for (int i = 0; i < side; ++i) {
+    for (int j = 0; j < side; ++j) {
+      const int x = 4 * i + 2, y = 4 * j + 2;
+      p.holes.push_back({{x, y}, {x, y + 2}, {x + 2, y + 2}, {x + 2, y}});
+    }
+  }
+  return {{p}};
+}
+
 // The new touching/crossing test alone on one ring (what the former test did).
 bool sweep_ring_has_contact(const penshape::Ring& ring) {
   std::vector<penshape::detail::FilteredPoint> pts;
@@ -59,6 +84,13 @@ bool sweep_ring_has_contact(const penshape::Ring& ring) {
              segs,
              [n](std::size_t i, std::size_t j) { return (i + 1) % n == j || (j + 1) % n == i; })
       .has_value();
+}
+
+// Thread CPU time: what the machine's other load does not inflate.
+double cpu_ms() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) / 1e6;
 }
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
@@ -96,10 +128,41 @@ void validation_table() {
                   contact || found ? " (a contact found in valid input!)" : "");
     }
   }
+  // Nesting: validate_region on a polygon with many holes (the former pairwise test was
+  // O(n · holes): 10^4 holes meant 10^9 point tests).
+  for (const int n : {10'000, 50'000, 200'000}) {
+    const penshape::PolygonSet q = holes(n);
+    const auto t0 = std::chrono::steady_clock::now();
+    penshape::validate_region(q);
+    std::printf("%6s %8zu | %13.1f | (%zu holes: nesting by one sweep)\n", "holes",
+                q.vertex_count(), ms_since(t0), q.polygons[0].holes.size());
+  }
   std::printf("\n");
 }
 
-int main() {
+int main(int argc, char** argv) {
+  // --margins: the fast engine's former double-with-margins comparisons (before/after runs);
+  // --only N: just the deconstruction of the N-vertex star (for profiling).
+  int only = 0;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--margins") penshape::fast::set_certify_mode(penshape::fast::CertifyMode::kMargins);
+    if (a == "--only" && i + 1 < argc) only = std::atoi(argv[++i]);
+  }
+  if (only > 0) {
+    const penshape::PolygonSet q = wavy_star(only);
+    const penshape::Rational r(2080 / 30);
+    double c0 = cpu_ms();
+    penshape::validate_region(q);
+    std::printf("validation alone: cpu %.1f ms\n", cpu_ms() - c0);
+    c0 = cpu_ms();
+    const auto t0 = std::chrono::steady_clock::now();
+    const penshape::DeconstructResult res = penshape::deconstruct(q, {r, r / 2, r / 16});
+    std::printf("%d vertices: %s in %.1f ms, cpu %.1f ms (%llu exact fallbacks)\n", only,
+                penshape::to_string(res.answer), ms_since(t0), cpu_ms() - c0,
+                static_cast<unsigned long long>(penshape::fast::exact_fallbacks()));
+    return 0;
+  }
   validation_table();
   std::printf("wavy star, r = w/30, eps = r/2, delta = eps/8 (fast engine, no simplification)\n");
   std::printf("%8s | %13s | %9s %15s %7s | %10s %9s\n", "vertices", "validation ms", "answer",

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "geometry/exact_predicates.hpp"
+#include "geometry/ring_nesting.hpp"
 #include "geometry/segment_sweep.hpp"
 #include "penshape/core/deconstruct.hpp"
 #include "penshape/core/disk_approximation.hpp"
@@ -163,7 +164,8 @@ bool inside(const RingRef& r, const FilteredPoint& p) {
   return in;
 }
 
-void check_nesting(const std::vector<RingRef>& rings, const PolygonSet& q) {
+// The pairwise test below, O(n · rings): run only to name the fault once the sweep found one.
+void name_nesting_fault(const std::vector<RingRef>& rings, const PolygonSet& q) {
   // rings are ordered polygon by polygon, outer first.
   std::vector<std::size_t> outer_of(q.polygons.size());
   std::vector<std::vector<std::size_t>> holes_of(q.polygons.size());
@@ -201,6 +203,33 @@ void check_nesting(const std::vector<RingRef>& rings, const PolygonSet& q) {
       }
     }
   }
+}
+
+// With disjoint boundaries, the region is well nested exactly when every hole's innermost
+// container is its own outer ring and every outer ring's is a hole or nothing (then a polygon
+// inside another lies in one of its holes, and no hole lies in another hole of its polygon).
+// The containers come from one O(n log n) sweep (geometry/ring_nesting).
+void check_nesting(const std::vector<RingRef>& rings, const PolygonSet& q) {
+  if (rings.size() < 2) return; // one outer ring: nothing can be nested wrongly
+  std::vector<std::vector<FilteredPoint>> points;
+  points.reserve(rings.size());
+  std::vector<std::size_t> outer_of(q.polygons.size());
+  for (std::size_t k = 0; k < rings.size(); ++k) {
+    points.push_back(rings[k].points);
+    if (rings[k].hole < 0) outer_of[rings[k].polygon] = k;
+  }
+  const std::vector<long> parent = detail::ring_parents(points);
+  bool ok = true;
+  for (std::size_t k = 0; k < rings.size() && ok; ++k) {
+    if (rings[k].hole >= 0) {
+      ok = parent[k] == static_cast<long>(outer_of[rings[k].polygon]);
+    } else {
+      ok = parent[k] < 0 || rings[static_cast<std::size_t>(parent[k])].hole >= 0;
+    }
+  }
+  if (ok) return;
+  name_nesting_fault(rings, q);
+  throw InvalidInput("rings are nested inconsistently"); // not reached: the faults coincide
 }
 
 } // namespace

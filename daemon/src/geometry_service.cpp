@@ -190,6 +190,10 @@ grpc::Status GeometryServiceImpl::SearchTolerance(
         to_proto(r.eps_high, out->mutable_upper());
         to_proto(r.solution.solution, out->mutable_solution());
         to_proto_params(r.solution, out->mutable_params());
+        out->set_converged(r.converged);
+        out->set_note(r.note);
+        out->set_decider_calls(r.decider_calls);
+        out->set_fallback_calls(r.fallback_calls);
       });
 }
 

@@ -264,6 +264,12 @@ TEST_F(GeometryEngineRpc, SearchToleranceEqualsTheCoreSearch) {
       penshape::Rational(result.upper().rational()) - penshape::Rational(result.lower().rational()),
       penshape::Rational(1, 4));
   EXPECT_GT(result.solution().polygons_size(), 0);
+  // The search's own account travels too (proto3 would default converged to false).
+  ASSERT_TRUE(direct.converged);
+  EXPECT_TRUE(result.converged());
+  EXPECT_EQ(result.note(), direct.note);
+  EXPECT_EQ(result.fallback_calls(), direct.fallback_calls);
+  EXPECT_GE(result.decider_calls(), 1U);
 }
 
 TEST_F(GeometryEngineRpc, ACancelledSuggestRadiusStopsPromptly) {

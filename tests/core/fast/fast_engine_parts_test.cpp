@@ -128,7 +128,8 @@ TEST(FastEngineParts, YesCertificateAcceptsExactlyTheValidSquares) {
   const fast::SegmentIndex q({square(0, 0, 20000)}, 250);
   for (const std::int64_t t : {200, 450, 520, 800, 1040, 1080, 1500}) {
     fast::IRegion p{{square(t, t, 20000 - 2 * t), {}}};
-    const fast::YesCheckInput in{&q, fast::kInputRounding, &q, {{0, 0}}, 1000.0, 500.0, 16.0};
+    const fast::YesCheckInput in{
+        &q, fast::kInputRounding, &q, {{0, 0}}, {1000.0, 1000.0}, {500.0, 500.0}, 16.0};
     const bool valid = t >= 500 + 2 && t <= 1058; // a little slack for the certificate margins
     const bool invalid = t < 500 || t > 1061;
     const bool ok = fast::verify_yes(in, p, {});

@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <vector>
 
+#include "certified.hpp"
+
 namespace penshape::fast {
 namespace {
 
@@ -70,20 +72,19 @@ IRing simplify_ring(const IRing& ring, double tolerance) {
 std::optional<IRings> simplify_rings_checked(const IRings& rings, double tolerance) {
   IRings out;
   out.reserve(rings.size());
-  const double bound = tolerance - kDistanceSlack;
   for (const IRing& ring : rings) {
-    // Simplify a little tighter than the bound we check, so rounding never decides.
-    const std::vector<std::size_t> idx = kept_indices(ring, bound - kDistanceSlack);
+    // Proposed half a unit tighter than the bound we certify (as before the certified check).
+    const std::vector<std::size_t> idx = kept_indices(ring, tolerance - 0.5);
     IRing s;
     for (const std::size_t k : idx) s.push_back(ring[k]);
     if (s.size() < 3 || (twice_area(s) > 0) != (twice_area(ring) > 0)) return std::nullopt;
-    // Every dropped vertex within the bound of the chord that replaced it.
+    // Every dropped vertex within the tolerance of the chord that replaced it (certified).
     for (std::size_t c = 0; c < idx.size(); ++c) {
       const std::size_t from = idx[c];
       const std::size_t to = c + 1 < idx.size() ? idx[c + 1] : ring.size();
-      const DPt a = to_d(ring[from]), b = to_d(ring[to % ring.size()]);
+      const IPt a = ring[from], b = ring[to % ring.size()];
       for (std::size_t k = from + 1; k < to; ++k) {
-        if (point_segment_distance(to_d(ring[k]), a, b) > bound) return std::nullopt;
+        if (compare_distance(at_point(ring[k]), a, b, tolerance) > 0) return std::nullopt;
       }
     }
     out.push_back(std::move(s));

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
+
+#include <CGAL/gmpxx.h>
 
 namespace penshape::fast {
 namespace {
@@ -65,6 +68,11 @@ GridFrame::GridFrame(const PolygonSet& q, const DeconstructParams& params) {
 
 double GridFrame::units(const Rational& length) const {
   return Rational(length * pow2(k_)).get_d();
+}
+
+Bounds GridFrame::bounds(const Rational& length) const {
+  const std::pair<double, double> iv = CGAL::to_interval(Rational(length * pow2(k_)));
+  return {iv.first, iv.second};
 }
 
 namespace {

@@ -5,6 +5,7 @@
 // against every margin the engine keeps, and results convert back to exact rationals.
 #include <cstdint>
 
+#include "certified.hpp"
 #include "int_geometry.hpp"
 #include "penshape/core/deconstruct.hpp"
 
@@ -13,7 +14,8 @@ namespace penshape::fast {
 // Largest |grid coordinate| anywhere in the computation (Clipper's fast 64-bit range is 2^30;
 // offsets stay inside the box enlarged by r + eps + 2 delta, which the frame includes).
 inline constexpr double kMaxGridCoordinate = 1073741823.0; // 2^30 - 1
-// Upper bound on the distance between an input vertex and its grid point: sqrt(2)/2 < 0.75.
+// Upper bound on the distance between an input vertex and its grid point: sqrt(2)/2 < 0.75
+// (0.75² = 0.5625 > 1/2, exactly).
 inline constexpr double kInputRounding = 0.75;
 
 class GridFrame {
@@ -24,6 +26,8 @@ class GridFrame {
 
   // Length in grid units (rounded to double: relative error 2^-53).
   [[nodiscard]] double units(const Rational& length) const;
+  // Length in grid units as doubles that enclose the exact value (CGAL::to_interval).
+  [[nodiscard]] Bounds bounds(const Rational& length) const;
 
   // q rounded to the grid, each ring with the region on its left (outer CCW, holes CW).
   [[nodiscard]] IRings round(const PolygonSet& q) const;

@@ -3,35 +3,6 @@
 #include <algorithm>
 
 namespace penshape::fast {
-namespace {
-
-// Sign of the orientation of c relative to a->b in double, or 0 when rounding could flip it.
-int robust_side(DPt a, DPt b, DPt c) {
-  const double ux = b.x - a.x;
-  const double uy = b.y - a.y;
-  const double vx = c.x - a.x;
-  const double vy = c.y - a.y;
-  const double cross = ux * vy - uy * vx;
-  // Error of the products and the subtraction: a few ulps of the operand magnitudes.
-  const double bound = 1e-12 * (std::fabs(ux * vy) + std::fabs(uy * vx)) + 1e-9;
-  if (cross > bound) return 1;
-  if (cross < -bound) return -1;
-  return 0;
-}
-
-} // namespace
-
-double segment_segment_distance_lower(DPt p, DPt q, DPt a, DPt b) {
-  const int s1 = robust_side(a, b, p);
-  const int s2 = robust_side(a, b, q);
-  const int s3 = robust_side(p, q, a);
-  const int s4 = robust_side(p, q, b);
-  // Unless both pairs are strictly separated, the segments may touch or cross.
-  if (!(s1 * s2 > 0 || s3 * s4 > 0)) return 0.0;
-  return std::min({point_segment_distance(p, a, b), point_segment_distance(q, a, b),
-                   point_segment_distance(a, p, q), point_segment_distance(b, p, q)});
-}
-
 Int128 twice_area(const IRing& ring) {
   Int128 sum = 0;
   const std::size_t n = ring.size();

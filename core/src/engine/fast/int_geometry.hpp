@@ -1,9 +1,8 @@
 #pragma once
 // Integer-grid geometry for the fast engine. Every polygon the engine touches has integer
 // vertices (grid units, |coordinate| <= 2^31, see grid_frame.hpp), so orientations and winding
-// numbers are exact in 128-bit integers. Distances are computed in double: with operands of
-// magnitude <= 2^32 units each result is within 2^-16 units of the true value, and every test
-// that relies on a distance keeps a margin of at least kDistanceSlack (see README.md).
+// numbers are exact in 128-bit integers. Distances here are doubles that only propose: every
+// distance comparison that decides a certificate is in certified.hpp.
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -31,9 +30,6 @@ struct DPt {
 using IRing = std::vector<IPt>;
 using IRings = std::vector<IRing>;
 
-// Margin (grid units) that every double distance comparison keeps; far above the 2^-16 error.
-inline constexpr double kDistanceSlack = 0.25;
-
 inline DPt to_d(IPt p) { return {static_cast<double>(p.x), static_cast<double>(p.y)}; }
 
 // Exact orientation of c relative to the directed line a->b: >0 left, <0 right, 0 collinear.
@@ -44,18 +40,12 @@ inline int orientation(IPt a, IPt b, IPt c) {
 }
 
 // Distance from p to the segment [a, b] (a may equal b): the shared kernel's double path
-// (geometry/distance_kernel.hpp). Its error with operands of magnitude <= 2^33 is below 2^-17
-// units (the cross product's rounding over the segment's length, then a few ulps), inside the
-// 2^-16 the margins are built on (README.md).
+// (geometry/distance_kernel.hpp), for proposals only.
 inline double point_segment_distance(DPt p, DPt a, DPt b) {
   using P = detail::Point2<double>;
   // The double path always decides a branch: the optional is never empty.
   return std::sqrt(*detail::squared_distance_to_segment(P{p.x, p.y}, P{a.x, a.y}, P{b.x, b.y}));
 }
-
-// A lower bound on the distance between segments [p, q] and [a, b]: 0 unless the segments are
-// clearly apart (orientation tests that are too close to call count as touching).
-double segment_segment_distance_lower(DPt p, DPt q, DPt a, DPt b);
 
 // Twice the signed area, exactly.
 Int128 twice_area(const IRing& ring);

@@ -2,14 +2,22 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
+
+#include <CGAL/FPU.h>
+#include <CGAL/Interval_nt.h>
+
+#include "certified.hpp"
+#include "geometry/distance_kernel.hpp"
 
 namespace penshape::fast {
 namespace {
 
-// Error of a straight offset piece: the unit normal and its product with `level` in double.
-constexpr double kStraightPieceError = 1.0 / 1024.0;
-// Arc chords are refined down to this sagitta (grid units) before a piece counts as failed.
+using detail::IntervalNT;
+
+// Arc chords are refined down to this sagitta (grid units) before a piece counts as not
+// verified. It only limits the work spent on a piece; soundness rests on the derived errors.
 constexpr double kMinSagitta = 0.5;
 
 struct Interval {
@@ -17,8 +25,9 @@ struct Interval {
   double hi;
 };
 
-// A piece of the walked curve: y(t) = p + t (q - p), t in [0, 1]; every curve point it stands
-// for lies within `error` of the piece and vice versa.
+// A piece of the walked curve: the exact segment between the double points p and q, with a
+// certified bound: every curve point it stands for lies within `error` of some point of the
+// piece (derived with outward rounding in Walker::ends / arc_piece below).
 struct Piece {
   DPt p;
   DPt q;
@@ -28,6 +37,7 @@ struct Piece {
 DPt at(const Piece& s, double t) {
   return {s.p.x + t * (s.q.x - s.p.x), s.p.y + t * (s.q.y - s.p.y)};
 }
+OnPiece on(const Piece& s, double t) { return {s.p, s.q, t}; }
 
 // Solves k0 + k1 t in [lo, hi] for t; returns false when empty.
 bool linear_range(double k0, double k1, double lo, double hi, Interval& out) {
@@ -87,6 +97,75 @@ bool stadium_interval(const Piece& s, DPt a, DPt b, double radius, Interval& out
 
 IPt round_point(DPt p) { return {std::llround(p.x), std::llround(p.y)}; }
 
+// The exact point c + L u / |u| enclosed in intervals (requires upward rounding).
+// sqrt of an interval under upward rounding without switching modes (CGAL::sqrt switches to
+// downward and back for the lower end): the upward-rounded root of the upper end bounds it
+// from above; the upward-rounded root of the lower end exceeds the true one by less than an
+// ulp, so one ulp down bounds it from below.
+IntervalNT sqrt_upward(const IntervalNT& v) {
+  const double lo = v.inf() > 0 ? std::nextafter(std::sqrt(v.inf()), 0.0) : 0.0;
+  return {lo, std::sqrt(v.sup())};
+}
+
+// The exact unit vector u / |u| enclosed in intervals (requires upward rounding).
+detail::IPoint unit(DPt u) {
+  const IntervalNT ux(u.x), uy(u.y);
+  const IntervalNT len = sqrt_upward(ux * ux + uy * uy);
+  return {ux / len, uy / len};
+}
+
+// The exact point c + L n enclosed in intervals, n a unit vector's enclosure.
+detail::IPoint on_circle(IPt c, const detail::IPoint& n, double level) {
+  const IntervalNT l(level);
+  return {IntervalNT(static_cast<double>(c.x)) + l * n.x,
+          IntervalNT(static_cast<double>(c.y)) + l * n.y};
+}
+
+// A double inside the enclosure and an upper bound on its distance to every point of it
+// (requires upward rounding, so each operation below rounds up).
+DPt represent(const detail::IPoint& e, double& deviation) {
+  const DPt p{e.x.inf(), e.y.inf()};
+  const double dx = e.x.sup() - p.x, dy = e.y.sup() - p.y;
+  deviation = std::sqrt(dx * dx + dy * dy);
+  return p;
+}
+
+// Upper bound on the sagitta L (1 - cos(phi/2)) of the arc between the directions u and w
+// (angle phi < pi), requires upward rounding. With c = |u/|u| - w/|w|| the unit chord,
+// 1 - cos(phi/2) = (c²/4) / (1 + sqrt(1 - c²/4)) <= c² / (8 - c²) (as sqrt(x) >= x on [0, 1]),
+// and when u·w >= 0 (phi <= pi/2), c² = 2 (1 - cos phi) = 2 sin² phi / (1 + cos phi)
+// <= 2 sin² phi / (1 + cos² phi) = 2 (u x w)² / (|u|² |w|² + (u·w)²) (cos >= cos² on [0, 1]):
+// no square root, no cancellation, tight for small angles. Otherwise c² from unit vectors.
+double sagitta_bound(DPt u, DPt w, double level) {
+  const IntervalNT ux(u.x), uy(u.y), wx(w.x), wy(w.y);
+  const IntervalNT uu = ux * ux + uy * uy, ww = wx * wx + wy * wy;
+  const IntervalNT dot = ux * wx + uy * wy;
+  IntervalNT c2;
+  if (dot.inf() >= 0) {
+    const IntervalNT cr = ux * wy - uy * wx;
+    c2 = 2 * (cr * cr) / (uu * ww + dot * dot);
+  } else {
+    const IntervalNT lu = sqrt_upward(uu), lw = sqrt_upward(ww);
+    const IntervalNT cx = ux / lu - wx / lw, cy = uy / lu - wy / lw;
+    c2 = cx * cx + cy * cy;
+  }
+  if (c2.sup() >= 4) return level; // a half turn at most moves L
+  return (IntervalNT(level) * c2 / (8 - c2)).sup();
+}
+
+// Sign of the cross product u x w, exactly (intervals, then rationals).
+int cross_sign(DPt u, DPt w) {
+  {
+    const UpwardRounding rounding;
+    const IntervalNT c = IntervalNT(u.x) * IntervalNT(w.y) - IntervalNT(u.y) * IntervalNT(w.x);
+    if (c.inf() > 0) return 1;
+    if (c.sup() < 0) return -1;
+  }
+  // Products of doubles are exact as rationals.
+  const int c = cmp(Rational(u.x) * Rational(w.y), Rational(u.y) * Rational(w.x));
+  return (c > 0) - (c < 0);
+}
+
 class Walker {
  public:
   Walker(const LevelSetQuery& q, const CancelHook& cancel) : q_(q), cancel_(cancel) {}
@@ -95,12 +174,17 @@ class Walker {
     const IRings& rings = q_.a->rings();
     for (const IRing& ring : rings) {
       const std::size_t n = ring.size();
+      ends(ring);
       for (std::size_t i = 0; i < n; ++i) {
         const IPt prev = ring[(i + n - 1) % n];
         const IPt v = ring[i];
         const IPt next = ring[(i + 1) % n];
-        if (!straight(v, next)) return false;
-        if (orientation(prev, v, next) > 0 && !arc(prev, v, next)) return false;
+        // The offset segment of edge v -> next: from out_[i] to in_[i + 1]; every point of the
+        // true segment is within the larger deviation of the piece (convexity).
+        const Rep& p = out_[i];
+        const Rep& q = in_[(i + 1) % n];
+        if (!check({p.p, q.p, std::max(p.dev, q.dev)})) return false;
+        if (orientation(prev, v, next) > 0 && !arc(prev, v, next, in_[i], out_[i])) return false;
         if ((++pieces_ & 255U) == 0 && cancel_ && cancel_()) throw Cancelled();
       }
     }
@@ -108,88 +192,138 @@ class Walker {
   }
 
  private:
-  static DPt right_normal(IPt a, IPt b) {
-    const double dx = static_cast<double>(b.x - a.x), dy = static_cast<double>(b.y - a.y);
-    const double len = std::hypot(dx, dy);
-    return {dy / len, -dx / len};
+  // A double standing for an exact point of the level set, and its proven distance to it.
+  struct Rep {
+    DPt p;
+    double dev;
+  };
+
+  // The right normal direction of a -> b, exact (integer differences, |.| <= 2^32).
+  static DPt right_direction(IPt a, IPt b) {
+    return {static_cast<double>(b.y - a.y), -static_cast<double>(b.x - a.x)};
   }
 
-  bool straight(IPt a, IPt b) {
-    const DPt n = right_normal(a, b);
-    const double l = q_.level;
-    return check({{static_cast<double>(a.x) + l * n.x, static_cast<double>(a.y) + l * n.y},
-                  {static_cast<double>(b.x) + l * n.x, static_cast<double>(b.y) + l * n.y},
-                  kStraightPieceError});
+  static Rep rep(IPt c, DPt u, double level) {
+    Rep r{};
+    r.p = represent(on_circle(c, unit(u), level), r.dev);
+    return r;
   }
 
-  // The arc of radius `level` around a convex vertex v, from the outgoing normal of (prev, v)
-  // to that of (v, next), counterclockwise, as chords with sagitta <= max_sagitta; a chord that
-  // cannot be verified is split in two until its sagitta is below kMinSagitta.
-  bool arc(IPt prev, IPt v, IPt next) {
-    const DPt n0 = right_normal(prev, v);
-    const DPt n1 = right_normal(v, next);
-    const double a0 = std::atan2(n0.y, n0.x);
-    double sweep = std::atan2(n1.y, n1.x) - a0;
+  // For every vertex v_i of the ring, the exact points v_i + L n of the normals of its incoming
+  // (in_) and outgoing (out_) edges, enclosed in intervals under one rounding-mode switch: the
+  // ends of the straight pieces and of the arcs.
+  void ends(const IRing& ring) {
+    const std::size_t n = ring.size();
+    in_.resize(n);
+    out_.resize(n);
+    const UpwardRounding rounding;
+    for (std::size_t i = 0; i < n; ++i) {
+      // Edge i -> i + 1: one unit normal for both of its ends.
+      const IPt a = ring[i], b = ring[(i + 1) % n];
+      const detail::IPoint normal = unit(right_direction(a, b));
+      out_[i].p = represent(on_circle(a, normal, q_.level), out_[i].dev);
+      Rep& end = in_[(i + 1) % n];
+      end.p = represent(on_circle(b, normal, q_.level), end.dev);
+    }
+  }
+
+  // The arc of radius `level` around a convex vertex v, from the right normal u0 of (prev, v)
+  // to u1 of (v, next), counterclockwise, as chords of sagitta about max_sagitta.
+  bool arc(IPt prev, IPt v, IPt next, const Rep& start, const Rep& end) {
+    const DPt u0 = right_direction(prev, v);
+    const DPt u1 = right_direction(v, next);
+    const double a0 = std::atan2(u0.y, u0.x);
+    double sweep = std::atan2(u1.y, u1.x) - a0;
     while (sweep < 0.0) sweep += 2.0 * M_PI;
     while (sweep >= 2.0 * M_PI) sweep -= 2.0 * M_PI;
     const double max_half = std::acos(std::max(0.0, 1.0 - q_.max_sagitta / q_.level));
     const int m = std::max(1, static_cast<int>(std::ceil(sweep / (2.0 * max_half))));
     const double step = sweep / m;
+    Dir from{u0, start, true};
     for (int k = 0; k < m; ++k) {
-      if (!arc_piece(to_d(v), a0 + step * k, a0 + step * (k + 1))) return false;
+      const double angle = a0 + step * (k + 1);
+      Dir to{u1, end, true};
+      if (k + 1 < m) {
+        to.u = {std::cos(angle), std::sin(angle)};
+        to.exact_end = false;
+        const UpwardRounding rounding;
+        to.rep = rep(v, to.u, q_.level);
+      }
+      if (!arc_piece(v, from, to, a0 + step * k, angle, u0, u1)) return false;
+      from = to;
     }
     return true;
   }
 
-  bool arc_piece(DPt c, double from, double to) {
-    const double l = q_.level;
-    const double sagitta = l * (1.0 - std::cos((to - from) / 2.0)) + kStraightPieceError;
-    const Piece piece{{c.x + l * std::cos(from), c.y + l * std::sin(from)},
-                      {c.x + l * std::cos(to), c.y + l * std::sin(to)},
-                      sagitta};
+  // A direction of the arc: an end normal (exact_end) or a proposed one, with its point.
+  struct Dir {
+    DPt u;
+    Rep rep;
+    bool exact_end;
+  };
+
+  // The sub-arc between directions `from` and `to` (angles given as hints for splitting). The
+  // chords cover the arc from u0 to u1 when every direction lies in that cone (< pi, the vertex
+  // is convex) and consecutive directions turn counterclockwise: checked exactly (the end
+  // normals are in the cone and in order by convexity), else the piece is not verified.
+  // Error = sagitta bound + the endpoints' deviations, rounded up.
+  bool arc_piece(IPt c, const Dir& from, const Dir& to, double a_from, double a_to, DPt u0,
+                 DPt u1) {
+    if (!to.exact_end && (cross_sign(u0, to.u) < 0 || cross_sign(to.u, u1) < 0)) return false;
+    if (!(from.exact_end && to.exact_end) && cross_sign(from.u, to.u) < 0) return false;
+    Piece piece{};
+    double sagitta = 0.0;
+    {
+      const UpwardRounding rounding;
+      piece.p = from.rep.p;
+      piece.q = to.rep.p;
+      sagitta = sagitta_bound(from.u, to.u, q_.level);
+      piece.error = sagitta + std::max(from.rep.dev, to.rep.dev);
+    }
     if (check(piece)) return true;
     if (sagitta < kMinSagitta) return false;
-    const double mid = 0.5 * (from + to);
-    return arc_piece(c, from, mid) && arc_piece(c, mid, to);
+    const double mid = 0.5 * (a_from + a_to);
+    Dir m{{std::cos(mid), std::sin(mid)}, {}, false};
+    {
+      const UpwardRounding rounding;
+      m.rep = rep(c, m.u, q_.level);
+    }
+    return arc_piece(c, from, m, a_from, mid, u0, u1) && arc_piece(c, m, to, mid, a_to, u0, u1);
   }
 
-  bool outside_b(DPt p) const { return q_.b->winding(round_point(p)) <= 0; }
+  // The sub-piece [t0, t1] lies in the open exterior of B: its rounded midpoint has winding 0
+  // and is proven closer to the sub-piece than the sub-piece's proven distance to ∂B (`need`,
+  // checked by the caller), so the segment joining them does not meet ∂B.
+  bool outside_b(const Piece& s, double t0, double t1, double need) const {
+    const double tm = 0.5 * (t0 + t1);
+    const IPt z = round_point(at(s, tm));
+    if (q_.b->winding(z) > 0) return false;
+    return compare_point_distance(on(s, tm), at_point(z), need) < 0;
+  }
 
-  // Lower bound on the distance from the sub-piece [t0, t1] to B's edges, clipped at `need`.
+  // Proven d([y(t0), y(t1)], ∂B) > need (certified.hpp).
   bool far_from_b(const Piece& s, double t0, double t1, double need) {
-    const DPt p = at(s, t0), q = at(s, t1);
-    bool ok = true;
-    q_.b->for_each_near(
-        std::min(p.x, q.x) - need, std::min(p.y, q.y) - need, std::max(p.x, q.x) + need,
-        std::max(p.y, q.y) + need, [&](std::size_t k) {
-          if (!ok) return;
-          const Segment& g = q_.b->segments()[k];
-          // Boxes farther apart than `need` cannot hold closer points.
-          const double gx0 = static_cast<double>(std::min(g.a.x, g.b.x));
-          const double gx1 = static_cast<double>(std::max(g.a.x, g.b.x));
-          const double gy0 = static_cast<double>(std::min(g.a.y, g.b.y));
-          const double gy1 = static_cast<double>(std::max(g.a.y, g.b.y));
-          const double bx = std::max({gx0 - std::max(p.x, q.x), std::min(p.x, q.x) - gx1, 0.0});
-          const double by = std::max({gy0 - std::max(p.y, q.y), std::min(p.y, q.y) - gy1, 0.0});
-          if (bx * bx + by * by >= need * need) return;
-          if (segment_segment_distance_lower(p, q, g.da(), g.db()) < need) ok = false;
-        });
-    return ok;
+    return piece_farther_than(*q_.b, on(s, t0), on(s, t1), need);
+  }
+
+  // Lower bound on L - half - error for the deep test, rounded down.
+  double deep_threshold(const Piece& s) const {
+    const UpwardRounding rounding;
+    const IntervalNT dx = IntervalNT(s.q.x) - IntervalNT(s.p.x);
+    const IntervalNT dy = IntervalNT(s.q.y) - IntervalNT(s.p.y);
+    const IntervalNT half = sqrt_upward(dx * dx + dy * dy) / 2;
+    return (IntervalNT(q_.level) - half - IntervalNT(s.error)).inf();
   }
 
   bool check(const Piece& s) {
-    const DPt mid = at(s, 0.5);
-    // Deep inside {d(·, A) < level}: every point of the piece is within half its length of the
-    // midpoint, so a midpoint closer than level - half - error is proof enough (1-Lipschitz).
-    const double half =
-        0.5 * std::sqrt((s.q.x - s.p.x) * (s.q.x - s.p.x) + (s.q.y - s.p.y) * (s.q.y - s.p.y));
-    const double deep = q_.level - half - s.error - kDistanceSlack;
-    // Distance every represented curve point must keep from B's edges.
-    const double need = q_.clearance + s.error + kDistanceSlack;
+    // Distance every represented curve point must keep from B's edges: clearance + error.
+    const double need = add_up(q_.clearance, s.error);
     const bool far = far_from_b(s, 0.0, 1.0, need);
-    if (far && outside_b(mid)) return true;
-    if (deep > 0.0 && q_.a->distance(mid, deep) < deep) return true;
-    // Near or inside B: drop the parts provably closer than `level` to A (all of the piece when
+    if (far && outside_b(s, 0.0, 1.0, need)) return true;
+    // Deep inside {d(·, A) < level}: every piece point is within half its length of the
+    // midpoint and every curve point within `error` of the piece (1-Lipschitz).
+    if (some_edge_closer(*q_.a, on(s, 0.5), deep_threshold(s))) return true;
+    // Near or inside B: drop the parts proven closer than `level` to A (all of the piece when
     // it lies inside B), then check the remaining gaps.
     std::vector<Interval> forbidden;
     if (far) forbidden.push_back({0.0, 1.0});
@@ -208,12 +342,14 @@ class Walker {
     return gaps_are_clear(s, cover_intervals(s, all), need);
   }
 
-  // Verified intervals of the piece whose points are closer than `level` to some edge of A;
-  // stops once `wanted` is covered. Returned merged and sorted.
+  // Intervals of the piece whose points are proven closer than level - error to some edge of
+  // A (so the curve points they stand for are closer than level): proposed in double with a
+  // smaller radius, then both endpoints are certified, and the stadium is convex. Stops once
+  // `wanted` is covered. Returned merged and sorted.
   std::vector<Interval> cover_intervals(const Piece& s, const std::vector<Interval>& wanted) {
     const double l = q_.level;
-    const double radius = l - s.error - 1.0; // computed with
-    const double verify = l - s.error - 0.5; // checked against (convexity does the rest)
+    const double radius = l - s.error - 1.0;    // proposed with
+    const double verify = sub_down(l, s.error); // certified against (strictly)
     std::vector<Interval> cover;
     const DPt p = s.p, q = s.q;
     bool done = false;
@@ -223,8 +359,8 @@ class Walker {
                           const Segment& g = q_.a->segments()[k];
                           Interval iv;
                           if (!stadium_interval(s, g.da(), g.db(), radius, iv)) return;
-                          if (point_segment_distance(at(s, iv.lo), g.da(), g.db()) > verify ||
-                              point_segment_distance(at(s, iv.hi), g.da(), g.db()) > verify) {
+                          if (!closer_than(on(s, iv.lo), g.a, g.b, verify) ||
+                              !closer_than(on(s, iv.hi), g.a, g.b, verify)) {
                             return;
                           }
                           cover.push_back(iv);
@@ -257,12 +393,13 @@ class Walker {
     return true;
   }
 
-  // The parts of [0, 1] outside the merged cover must be far from B and outside it.
+  // The parts of [0, 1] outside the merged cover must be far from B and outside it. Parameters
+  // are exact doubles, so a gap [g0, g1] and its neighbouring cover intervals share endpoints.
   bool gaps_are_clear(const Piece& s, const std::vector<Interval>& cover, double need) {
     double start = 0.0;
     auto gap = [&](double g0, double g1) {
       if (g1 < g0) return true;
-      return far_from_b(s, g0, g1, need) && outside_b(at(s, 0.5 * (g0 + g1)));
+      return far_from_b(s, g0, g1, need) && outside_b(s, g0, g1, need);
     };
     for (const Interval& c : cover) {
       if (c.lo > start && !gap(start, c.lo)) return false;
@@ -274,6 +411,7 @@ class Walker {
   const LevelSetQuery& q_;
   const CancelHook& cancel_;
   unsigned pieces_ = 0;
+  std::vector<Rep> in_, out_;
 };
 
 bool segments_intersect(IPt p1, IPt p2, IPt q1, IPt q2) {

@@ -1,14 +1,15 @@
 #pragma once
 // The one primitive both YES inclusions reduce to (README.md, "Why YES is certified"):
 //
-//   every point z with d(z, A) = level satisfies d(z, ∂B) >= clearance and z outside B,
+//   every point z with d(z, A) = level satisfies d(z, ∂B) > clearance and z outside B,
 //
 // for integer regions A and B given by simple rings with the region on their left. The level
 // set {d(·, A) = level} lies on the outward offset segments of A's edges and on the arcs around
 // A's convex vertices; we walk those curves (arcs as chords within a known sagitta), remove the
 // parts that are provably closer than `level` to another edge of A (so not on the level set),
 // and check the rest against B with segment-to-segment distance lower bounds and one exact
-// winding number per remaining piece. Everything is conservative: false means "not verified".
+// winding number per remaining piece. Every deciding comparison is certified (certified.hpp)
+// and the chords' errors are derived with outward rounding: false means "not verified".
 #include "penshape/core/deconstruct.hpp"
 #include "segment_index.hpp"
 
@@ -16,9 +17,9 @@ namespace penshape::fast {
 
 struct LevelSetQuery {
   const SegmentIndex* a = nullptr; // region whose level set is walked
-  double level = 0.0;              // grid units, > 1
+  double level = 0.0;              // grid units, > 1, taken as exact
   const SegmentIndex* b = nullptr; // region the level set must stay away from
-  double clearance = 0.0;          // grid units, >= 1 (so winding tests are unambiguous)
+  double clearance = 0.0;          // grid units, >= 3/4 (> the rounding of a point to the grid)
   double max_sagitta = 1.0;        // chord error allowed when walking arcs
 };
 

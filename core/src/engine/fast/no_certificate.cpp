@@ -1,63 +1,95 @@
 #include "no_certificate.hpp"
 
+#include <CGAL/FPU.h>
+#include <CGAL/Interval_nt.h>
+
 #include <cmath>
 #include <vector>
 
+#include "certified.hpp"
 #include "grid_frame.hpp"
 
 namespace penshape::fast {
 namespace {
 
-constexpr double kParamRounding = 1.0 / 256.0;
-
 IPt round_point(DPt p) { return {std::llround(p.x), std::llround(p.y)}; }
 
+// An axis-parallel square cell [c - half, c + half]²; centres and halves are exact doubles.
 struct Cell {
   DPt c;
-  double half; // half side; the cell's radius is half * sqrt(2)
+  double half;
 };
+
+// half · sqrt(2), rounded up: the cell's radius around its centre (the double nearest sqrt(2),
+// 1.4142135623730951, lies above it: its square exceeds 2 exactly).
+double cell_radius(double half) {
+  const UpwardRounding rounding;
+  return half * 1.4142135623730951;
+}
+
+// x + d when that sum is exact in double (Fast2Sum: the rounding error of x + d is recovered
+// exactly when |d| <= |x|), so that the four children tile their parent exactly.
+bool exact_sum(double x, double d, double& out) {
+  out = x + d;
+  return std::fabs(d) <= std::fabs(x) ? (out - x) == d : (out - d) == x;
+}
+
+// The smallest double with at most 8 significant bits that is >= v (> 0): quadtree halves
+// then stay short dyadic numbers, so child centres are exact for many levels.
+double short_dyadic_at_least(double v) {
+  int e = 0;
+  std::frexp(v, &e); // v in [2^(e-1), 2^e)
+  const double unit = std::ldexp(1.0, e - 8);
+  return std::ceil(v / unit) * unit; // division by a power of two and ceil: exact
+}
 
 class NoWitnessCheck {
  public:
   NoWitnessCheck(const NoCheckInput& in, const CancelHook& cancel) : in_(in), cancel_(cancel) {}
 
   bool run(IPt q) {
-    // q ∈ Q: inside Q̃ and farther than η from its boundary (H(Q, Q̃) <= η).
+    // q ∈ Q: inside Q̃ and farther than η0 from its boundary (H(Q, Q̃) <= η0).
     if (in_.q->winding(q) <= 0) return false;
-    const double clear = kInputRounding + kDistanceSlack;
-    if (in_.q->distance(to_d(q), clear + 1.0) <= clear) return false;
+    if (!all_edges_farther(*in_.q, at_point(q), kInputRounding)) return false;
 
-    const double disk = in_.radius + in_.tolerance + kParamRounding;
-    std::vector<Cell> stack{{to_d(q), disk}};
+    // disk >= r + eps: every point of D_{r+eps}(q) lies in a cell that is dropped for missing
+    // the disk or that has a witness.
+    const double disk = add_up(in_.radius.hi, in_.tolerance.hi);
+    std::vector<Cell> stack{{to_d(q), short_dyadic_at_least(disk)}};
     std::size_t visited = 0;
     while (!stack.empty()) {
       const Cell cell = stack.back();
       stack.pop_back();
       if (++visited > in_.max_cells) return false;
       if ((visited & 255U) == 0 && cancel_ && cancel_()) throw Cancelled();
-      const double rho = cell.half * std::sqrt(2.0) + kDistanceSlack;
-      if (std::hypot(cell.c.x - static_cast<double>(q.x), cell.c.y - static_cast<double>(q.y)) -
-              rho >
-          disk) {
-        continue; // misses the disk
-      }
+      const double rho = cell_radius(cell.half);
+      // |c - q| > disk + rho: no point of the cell is in the disk.
+      if (compare_point_distance(at_point(cell.c), at_point(q), add_up(disk, rho)) > 0) continue;
       if (has_witness(cell.c, rho)) continue;
-      if (cell.half * std::sqrt(2.0) <= in_.min_cell) return false;
+      if (rho <= in_.min_cell) return false;
       const double h = cell.half / 2.0;
       for (const double dx : {-h, h}) {
-        for (const double dy : {-h, h}) stack.push_back({{cell.c.x + dx, cell.c.y + dy}, h});
+        for (const double dy : {-h, h}) {
+          Cell child{{0.0, 0.0}, h};
+          if (!exact_sum(cell.c.x, dx, child.c.x) || !exact_sum(cell.c.y, dy, child.c.y)) {
+            return false;
+          }
+          stack.push_back(child);
+        }
       }
     }
     return true;
   }
 
  private:
-  // A grid point z with |z - c| + rho < r and d(z, Q) > eps.
+  // A grid point z with |z - c| + rho <= r and d(z, Q) > eps: then z ∈ D_r(y) \ offset(Q, eps)
+  // for every y of the cell, so no y of the cell lies in Π.
   bool has_witness(DPt c, double rho) const {
-    const double reach = in_.radius - kParamRounding - kDistanceSlack - rho;
+    const double reach = sub_down(in_.radius.lo, rho); // reach + rho <= r
     if (reach <= 0.0) return false;
     if (good(round_point(c), c, reach)) return true;
-    // The nearest point of the outer offset's boundary, pushed outwards (region on the left).
+    // Proposal: the nearest point of the outer offset's boundary, pushed outwards (region on
+    // the left), computed in double; good() decides.
     double best = reach;
     const Segment* nearest = nullptr;
     in_.outer_offset->for_each_near(c.x - reach, c.y - reach, c.x + reach, c.y + reach,
@@ -81,13 +113,10 @@ class NoWitnessCheck {
   }
 
   bool good(IPt z, DPt c, double reach) const {
-    if (std::hypot(static_cast<double>(z.x) - c.x, static_cast<double>(z.y) - c.y) > reach) {
-      return false;
-    }
+    if (compare_point_distance(at_point(z), at_point(c), reach) > 0) return false;
+    // Outside Q̃ and d(z, ∂Q̃) > eps + η0, so d(z, Q) >= d(z, Q̃) - η0 > eps.
     if (in_.q->winding(z) > 0) return false;
-    // d(z, Q) >= d(z, Q̃) - η > eps.
-    const double need = in_.tolerance + kParamRounding + kInputRounding + kDistanceSlack;
-    return in_.q->distance(to_d(z), need + 1.0) > need;
+    return all_edges_farther(*in_.q, at_point(z), add_up(in_.tolerance.hi, kInputRounding));
   }
 
   const NoCheckInput& in_;

@@ -4,9 +4,11 @@
 // Then no y of that disk lies in Π = inset(offset(Q, eps), r), so q ∉ offset(Π, r + eps) and
 // DECIDE(Q, r, eps) answers NO. The disk is covered by a quadtree; each cell gets one witness z,
 // taken from the boundary of the exterior approximation of offset(Q, eps) (outside it, pushed
-// out a little) or the cell centre itself, and every witness is checked exactly on the grid.
+// out a little) or the cell centre itself, and every witness and every dropped cell is checked
+// with the certified predicates of certified.hpp.
 #include <cstddef>
 
+#include "certified.hpp"
 #include "penshape/core/deconstruct.hpp"
 #include "segment_index.hpp"
 
@@ -15,8 +17,8 @@ namespace penshape::fast {
 struct NoCheckInput {
   const SegmentIndex* q = nullptr;            // Q̃
   const SegmentIndex* outer_offset = nullptr; // boundary of a region ⊇ offset(Q̃, eps + margin)
-  double radius = 0.0;                        // r, grid units
-  double tolerance = 0.0;                     // eps, grid units
+  Bounds radius;                              // r, grid units (exact value enclosed)
+  Bounds tolerance;                           // eps, grid units (exact value enclosed)
   double push = 1.0;                          // how far witnesses are pushed off that boundary
   double min_cell = 1.0;                      // smallest cell radius before giving up
   std::size_t max_cells = 200'000;

@@ -48,6 +48,28 @@ class SegmentIndex {
     }
   }
 
+  // The same, stopping as soon as f returns true (returns whether it did).
+  template <class F>
+  bool find_near(double min_x, double min_y, double max_x, double max_y, F&& f) const {
+    if (segments_.empty()) return false;
+    const int x0 = clamp_col(min_x), x1 = clamp_col(max_x);
+    const int y0 = clamp_row(min_y), y1 = clamp_row(max_y);
+    ++stamp_;
+    for (int gy = y0; gy <= y1; ++gy) {
+      for (int gx = x0; gx <= x1; ++gx) {
+        const std::size_t c = static_cast<std::size_t>(gy) * static_cast<std::size_t>(nx_) +
+                              static_cast<std::size_t>(gx);
+        for (std::uint32_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
+          const std::uint32_t s = cell_items_[k];
+          if (seen_[s] == stamp_) continue;
+          seen_[s] = stamp_;
+          if (f(static_cast<std::size_t>(s))) return true;
+        }
+      }
+    }
+    return false;
+  }
+
   // Exact winding number of p (nonzero = inside). Unspecified for p on an edge.
   [[nodiscard]] int winding(IPt p) const;
   // The same, ignoring the edges of one ring (p may lie on that ring).

@@ -115,7 +115,6 @@ std::optional<PolygonSet> simplify_fast_solution(const PolygonSet& q,
                                                  const PolygonSet& solution,
                                                  const CancelHook& cancel) {
   const GridFrame frame(q, params);
-  const double r = frame.units(params.radius);
   const double eps = frame.units(params.tolerance);
   const double d = frame.units(params.precision);
   const IRings q_grid = frame.round(q);
@@ -126,7 +125,13 @@ std::optional<PolygonSet> simplify_fast_solution(const PolygonSet& q,
   if (!is_certifiable_region(q_index)) return std::nullopt;
   std::vector<IPt> q_vertices;
   for (const auto& poly : q.polygons) q_vertices.push_back(frame.round(poly.outer.front()));
-  const YesCheckInput in{&q_index, kInputRounding, &q_index, q_vertices, r, eps, d / 32.0};
+  const YesCheckInput in{&q_index,
+                         kInputRounding,
+                         &q_index,
+                         q_vertices,
+                         frame.bounds(params.radius),
+                         frame.bounds(params.tolerance),
+                         d / 32.0};
 
   const IRegion raw = to_grid(frame, solution);
   IRings capped;

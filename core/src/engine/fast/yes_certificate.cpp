@@ -2,48 +2,48 @@
 
 #include <algorithm>
 
+#include "certified.hpp"
 #include "grid_frame.hpp"
 #include "level_set_check.hpp"
 
 namespace penshape::fast {
 namespace {
 
-// Covers the double rounding of r and eps in grid units (relative error 2^-53 on <= 2^31).
-constexpr double kParamRounding = 1.0 / 256.0;
-
-// d(v, region) <= bound, conservatively (inside counts as distance 0).
+// d(v, region) < bound, certified (inside counts as distance 0).
 bool within(const SegmentIndex& region, IPt v, double bound) {
   if (region.winding(v) > 0) return true;
-  return region.distance(to_d(v), bound + 1.0) <= bound;
+  return some_edge_closer(region, at_point(v), bound);
 }
 
 } // namespace
 
 bool verify_yes(const YesCheckInput& in, const IRegion& p, const CancelHook& cancel) {
   if (p.empty()) return false;
-  const SegmentIndex pi(flatten(p), in.radius / 2.0);
+  const SegmentIndex pi(flatten(p), in.radius.lo / 2.0);
   if (!is_certifiable_region(pi)) return false;
 
-  const double level_a = in.tolerance - in.eta - kParamRounding;    // <= eps - η
-  const double level_b = in.radius + in.tolerance - kParamRounding; // <= r + eps
+  // The levels are doubles rounded down from the exact bounds, and are then taken as exact.
+  const double level_a = sub_down(in.tolerance.lo, in.eta);        // <= eps - η
+  const double level_b = sub_down(in.radius.lo, -in.tolerance.lo); // <= r + eps
+  if (level_a <= 1.0 || level_b <= 1.0) return false;
 
-  // (A2) no component of P lies wholly where d(·, Q_s) > level_a (in.q is Q_s or Q̃).
+  // (A2) no component of P lies wholly where d(·, Q_s) >= level_a (in.q is Q_s or Q̃).
   for (const IPolygon& poly : p) {
-    if (!within(*in.q, poly.outer.front(), level_a - kDistanceSlack)) return false;
+    if (!within(*in.q, poly.outer.front(), level_a)) return false;
   }
-  // (B2) no component of Q lies wholly where d(·, P) > level_b (its vertex is within η).
+  // (B2) no component of Q lies wholly where d(·, P) >= level_b: its grid vertex is within
+  // η0 = 3/4 of the true one.
+  const double level_b_vertex = sub_down(level_b, kInputRounding);
   for (const IPt& v : in.q_component_vertices) {
-    if (!within(pi, v, level_b - kInputRounding - kDistanceSlack)) return false;
+    if (!within(pi, v, level_b_vertex)) return false;
   }
-  // (A1) the level set {d(·, Q_s) = level_a} keeps distance > r from P.
-  if (!level_set_avoids({in.q, level_a, &pi, in.radius + kParamRounding, in.max_sagitta}, cancel)) {
+  // (A1) the level set {d(·, Q_s) = level_a} keeps distance > r (r <= radius.hi) from P.
+  if (!level_set_avoids({in.q, level_a, &pi, in.radius.hi, in.max_sagitta}, cancel)) {
     return false;
   }
   // (B1) the level set {d(·, P) = level_b} stays outside Q: farther than η0 from Q̃ (the
   // unsimplified grid input, so the simplification does not eat into this margin).
-  return level_set_avoids(
-      {&pi, level_b, in.q_grid, std::max(1.0, kInputRounding + kParamRounding), in.max_sagitta},
-      cancel);
+  return level_set_avoids({&pi, level_b, in.q_grid, kInputRounding, in.max_sagitta}, cancel);
 }
 
 } // namespace penshape::fast

@@ -6,6 +6,7 @@
 // so H(offset(P, r), Q) <= eps (Proposition 3). False means "not verified", never "wrong".
 #include <vector>
 
+#include "certified.hpp"
 #include "clipper_stage.hpp"
 #include "penshape/core/deconstruct.hpp"
 #include "segment_index.hpp"
@@ -14,11 +15,11 @@ namespace penshape::fast {
 
 struct YesCheckInput {
   const SegmentIndex* q = nullptr;       // Q̃ or a simplification (simple rings, checked)
-  double eta = 0.0;                      // proven bound on H(Q, that region), grid units
+  double eta = 0.0;                      // proven upper bound on H(Q, that region), grid units
   const SegmentIndex* q_grid = nullptr;  // Q̃ itself: H(Q, Q̃) <= kInputRounding
   std::vector<IPt> q_component_vertices; // one grid vertex per polygon of Q (its outer ring)
-  double radius = 0.0;                   // r, grid units
-  double tolerance = 0.0;                // eps, grid units
+  Bounds radius;                         // r, grid units (exact value enclosed)
+  Bounds tolerance;                      // eps, grid units (exact value enclosed)
   double max_sagitta = 1.0;              // chord error when walking arcs
 };
 

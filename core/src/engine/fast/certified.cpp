@@ -1,0 +1,311 @@
+// Certified predicates of the fast engine: intervals first, exact rationals when the interval
+// cannot decide (certified.hpp). The kMargins branch is the former double-with-slack arithmetic,
+// reachable only from the bench.
+#include "certified.hpp"
+
+#include <CGAL/FPU.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "geometry/distance_kernel.hpp"
+#include "segment_index.hpp"
+
+namespace penshape::fast {
+namespace {
+
+using detail::IntervalNT;
+using detail::Point2;
+using ExactPt = Point2<Rational>;
+using IntervalPt = Point2<IntervalNT>;
+
+std::atomic<CertifyMode> g_mode{CertifyMode::kInterval};
+
+// The former margin of every double distance comparison (kMargins only).
+constexpr double kFormerDistanceSlack = 0.25;
+
+thread_local std::uint64_t t_exact_fallbacks = 0;
+
+bool margins() { return g_mode.load(std::memory_order_relaxed) == CertifyMode::kMargins; }
+
+template <typename NT>
+Point2<NT> eval(const OnPiece& y) {
+  const NT px(y.p.x), py(y.p.y);
+  if (y.t == 0.0) return {px, py};
+  const NT t(y.t);
+  return {px + t * (NT(y.q.x) - px), py + t * (NT(y.q.y) - py)};
+}
+
+template <typename NT>
+Point2<NT> eval(IPt p) {
+  return {NT(static_cast<double>(p.x)), NT(static_cast<double>(p.y))};
+}
+
+DPt eval_double(const OnPiece& y) {
+  if (y.t == 0.0) return y.p;
+  return {y.p.x + y.t * (y.q.x - y.p.x), y.p.y + y.t * (y.q.y - y.p.y)};
+}
+
+// sign(d(p, [s, t])² - T²) with intervals: 0 when undecided.
+int interval_sign(const IntervalPt& p, const IntervalPt& s, const IntervalPt& t, double threshold) {
+  const IntervalNT t2 = IntervalNT(threshold) * IntervalNT(threshold);
+  const auto d2 = detail::squared_distance_to_segment(p, s, t);
+  if (!d2) return 0;
+  if (d2->sup() < t2.inf()) return -1;
+  if (d2->inf() > t2.sup()) return 1;
+  return 0;
+}
+
+int exact_sign(const ExactPt& p, const ExactPt& s, const ExactPt& t, double threshold) {
+  ++t_exact_fallbacks;
+  const Rational th(threshold);
+  const int c = cmp(*detail::squared_distance_to_segment(p, s, t), th * th);
+  return (c > 0) - (c < 0);
+}
+
+template <typename NT>
+NT cross(const Point2<NT>& a, const Point2<NT>& b, const Point2<NT>& c) {
+  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
+int sign_of(const IntervalNT& v) {
+  if (v.inf() > 0) return 1;
+  if (v.sup() < 0) return -1;
+  return 0; // undecided (or zero)
+}
+int sign_of(const Rational& v) { return sgn(v) > 0 ? 1 : (sgn(v) < 0 ? -1 : 0); }
+
+// Strict separation by one of the two lines and all four endpoint distances above T:
+// 1 proven, -1 disproven, 0 undecided (intervals only; the exact version never returns 0).
+template <typename NT, typename DistSign>
+int separated_and_far(const Point2<NT>& y0, const Point2<NT>& y1, const Point2<NT>& a,
+                      const Point2<NT>& b, double threshold, DistSign dist_sign) {
+  const int s1 = sign_of(cross(a, b, y0)), s2 = sign_of(cross(a, b, y1));
+  const int s3 = sign_of(cross(y0, y1, a)), s4 = sign_of(cross(y0, y1, b));
+  const bool separated = s1 * s2 > 0 || s3 * s4 > 0;
+  if (s1 * s2 < 0 && s3 * s4 < 0) return -1; // they cross
+  int result = separated ? 1 : 0;
+  for (const int s : {dist_sign(y0, a, b, threshold), dist_sign(y1, a, b, threshold),
+                      dist_sign(a, y0, y1, threshold), dist_sign(b, y0, y1, threshold)}) {
+    if (s < 0) return -1;
+    if (s == 0) result = 0;
+  }
+  return result;
+}
+
+// Former robust_side: the double sign with a hand-chosen error threshold (kMargins only).
+int former_side(DPt a, DPt b, DPt c) {
+  const double ux = b.x - a.x, uy = b.y - a.y, vx = c.x - a.x, vy = c.y - a.y;
+  const double cr = ux * vy - uy * vx;
+  const double bound = 1e-12 * (std::fabs(ux * vy) + std::fabs(uy * vx)) + 1e-9;
+  return cr > bound ? 1 : (cr < -bound ? -1 : 0);
+}
+
+int former_compare(double d, double threshold) {
+  if (d < threshold - kFormerDistanceSlack) return -1;
+  if (d > threshold + kFormerDistanceSlack) return 1;
+  return 0;
+}
+
+} // namespace
+
+void set_certify_mode(CertifyMode mode) { g_mode.store(mode, std::memory_order_relaxed); }
+CertifyMode certify_mode() { return g_mode.load(std::memory_order_relaxed); }
+std::uint64_t exact_fallbacks() { return t_exact_fallbacks; }
+
+int compare_distance(const OnPiece& y, IPt a, IPt b, double threshold) {
+  if (margins()) {
+    return former_compare(point_segment_distance(eval_double(y), to_d(a), to_d(b)), threshold);
+  }
+  {
+    const UpwardRounding rounding;
+    const int s =
+        interval_sign(eval<IntervalNT>(y), eval<IntervalNT>(a), eval<IntervalNT>(b), threshold);
+    if (s != 0) return s;
+  }
+  return exact_sign(eval<Rational>(y), eval<Rational>(a), eval<Rational>(b), threshold);
+}
+
+int compare_point_distance(const OnPiece& y, const OnPiece& z, double threshold) {
+  if (margins()) {
+    // The former code compared point distances plainly (its slack sat in the thresholds).
+    const DPt u = eval_double(y), v = eval_double(z);
+    const double d = std::hypot(u.x - v.x, u.y - v.y);
+    return (d > threshold) - (d < threshold);
+  }
+  {
+    const UpwardRounding rounding;
+    const IntervalPt u = eval<IntervalNT>(y);
+    const int s = interval_sign(u, eval<IntervalNT>(z), eval<IntervalNT>(z), threshold);
+    if (s != 0) return s;
+  }
+  const ExactPt v = eval<Rational>(z);
+  return exact_sign(eval<Rational>(y), v, v, threshold);
+}
+
+bool segments_farther_than(const OnPiece& y0, const OnPiece& y1, IPt a, IPt b, double threshold) {
+  if (margins()) {
+    const DPt p = eval_double(y0), q = eval_double(y1), da = to_d(a), db = to_d(b);
+    const int s1 = former_side(da, db, p), s2 = former_side(da, db, q);
+    const int s3 = former_side(p, q, da), s4 = former_side(p, q, db);
+    if (!(s1 * s2 > 0 || s3 * s4 > 0)) return false;
+    const double d = std::min({point_segment_distance(p, da, db), point_segment_distance(q, da, db),
+                               point_segment_distance(da, p, q), point_segment_distance(db, p, q)});
+    return d >= threshold + kFormerDistanceSlack;
+  }
+  {
+    const UpwardRounding rounding;
+    const int s = separated_and_far(eval<IntervalNT>(y0), eval<IntervalNT>(y1), eval<IntervalNT>(a),
+                                    eval<IntervalNT>(b), threshold, &interval_sign);
+    if (s != 0) return s > 0;
+  }
+  // Exact: a zero orientation means "not strictly separated", a zero distance sign "not above".
+  ++t_exact_fallbacks;
+  return separated_and_far(eval<Rational>(y0), eval<Rational>(y1), eval<Rational>(a),
+                           eval<Rational>(b), threshold, &exact_sign) > 0;
+}
+
+Box enclosing_box(const OnPiece& y0, const OnPiece& y1) {
+  const UpwardRounding rounding;
+  const IntervalPt a = eval<IntervalNT>(y0), b = eval<IntervalNT>(y1);
+  return {std::min(a.x.inf(), b.x.inf()), std::min(a.y.inf(), b.y.inf()),
+          std::max(a.x.sup(), b.x.sup()), std::max(a.y.sup(), b.y.sup())};
+}
+
+// A sum rounded to nearest is within half an ulp of the exact value: one ulp outwards bounds
+// it without switching the rounding mode.
+double add_up(double a, double b) {
+  return std::nextafter(a + b, std::numeric_limits<double>::infinity());
+}
+
+double sub_down(double a, double b) {
+  return std::nextafter(a - b, -std::numeric_limits<double>::infinity());
+}
+
+namespace {
+
+// The edges of the index whose boxes are not proven farther than T along an axis from the box
+// of y0, y1 (gathered in the default rounding mode, like the index's own cells), in a buffer
+// reused by the thread (callers consume it before the next call).
+const std::vector<std::size_t>& edges_near(const SegmentIndex& index, const OnPiece& y0,
+                                           const OnPiece& y1, double threshold) {
+  const Box box = enclosing_box(y0, y1);
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  const double min_x = std::nextafter(box.lo_x - threshold, -inf);
+  const double max_x = std::nextafter(box.hi_x + threshold, inf);
+  const double min_y = std::nextafter(box.lo_y - threshold, -inf);
+  const double max_y = std::nextafter(box.hi_y + threshold, inf);
+  thread_local std::vector<std::size_t> out;
+  out.clear();
+  // Diagonal test: gaps rounded to nearest then one ulp down are lower bounds; the squares'
+  // sum rounded to nearest has a relative error below 2^-51, and so has T² above.
+  const double need2 = threshold * threshold * (1.0 + 0x1p-50);
+  index.for_each_near(min_x, min_y, max_x, max_y, [&](std::size_t k) {
+    const Segment& g = index.segments()[k];
+    const double gx0 = static_cast<double>(std::min(g.a.x, g.b.x));
+    const double gx1 = static_cast<double>(std::max(g.a.x, g.b.x));
+    const double gy0 = static_cast<double>(std::min(g.a.y, g.b.y));
+    const double gy1 = static_cast<double>(std::max(g.a.y, g.b.y));
+    if (gx0 > max_x || gx1 < min_x || gy0 > max_y || gy1 < min_y) return;
+    const double bx =
+        std::max({std::nextafter(gx0 - box.hi_x, -inf), std::nextafter(box.lo_x - gx1, -inf), 0.0});
+    const double by =
+        std::max({std::nextafter(gy0 - box.hi_y, -inf), std::nextafter(box.lo_y - gy1, -inf), 0.0});
+    if ((bx * bx + by * by) * (1.0 - 0x1p-50) > need2) return;
+    out.push_back(k);
+  });
+  return out;
+}
+
+} // namespace
+
+bool piece_farther_than(const SegmentIndex& index, const OnPiece& y0, const OnPiece& y1,
+                        double threshold) {
+  const std::vector<std::size_t>& near = edges_near(index, y0, y1, threshold);
+  if (margins()) {
+    for (const std::size_t k : near) {
+      const Segment& g = index.segments()[k];
+      if (!segments_farther_than(y0, y1, g.a, g.b, threshold)) return false;
+    }
+    return true;
+  }
+  // One rounding-mode switch for all the intervals; the exact fallback after it.
+  std::vector<std::size_t> undecided;
+  {
+    const UpwardRounding rounding;
+    const IntervalPt i0 = eval<IntervalNT>(y0), i1 = eval<IntervalNT>(y1);
+    for (const std::size_t k : near) {
+      const Segment& g = index.segments()[k];
+      const int s = separated_and_far(i0, i1, eval<IntervalNT>(g.a), eval<IntervalNT>(g.b),
+                                      threshold, &interval_sign);
+      if (s < 0) return false;
+      if (s == 0) undecided.push_back(k);
+    }
+  }
+  for (const std::size_t k : undecided) {
+    const Segment& g = index.segments()[k];
+    ++t_exact_fallbacks;
+    if (separated_and_far(eval<Rational>(y0), eval<Rational>(y1), eval<Rational>(g.a),
+                          eval<Rational>(g.b), threshold, &exact_sign) <= 0) {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool all_edges_farther(const SegmentIndex& index, const OnPiece& y, double threshold) {
+  const std::vector<std::size_t>& near = edges_near(index, y, y, threshold);
+  if (margins()) {
+    for (const std::size_t k : near) {
+      const Segment& g = index.segments()[k];
+      if (!farther_than(y, g.a, g.b, threshold)) return false;
+    }
+    return true;
+  }
+  std::vector<std::size_t> undecided;
+  {
+    const UpwardRounding rounding;
+    const IntervalPt iy = eval<IntervalNT>(y);
+    for (const std::size_t k : near) {
+      const Segment& g = index.segments()[k];
+      const int s = interval_sign(iy, eval<IntervalNT>(g.a), eval<IntervalNT>(g.b), threshold);
+      if (s < 0) return false;
+      if (s == 0) undecided.push_back(k);
+    }
+  }
+  for (const std::size_t k : undecided) {
+    const Segment& g = index.segments()[k];
+    if (exact_sign(eval<Rational>(y), eval<Rational>(g.a), eval<Rational>(g.b), threshold) <= 0) {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool some_edge_closer(const SegmentIndex& index, const OnPiece& y, double threshold) {
+  if (threshold <= 0.0) return false;
+  const DPt approx = eval_double(y);
+  // Doubles propose: an edge clearly closer (by a sixteenth) is certified at once; otherwise
+  // the nearest edge found is.
+  const double clear = threshold * (15.0 / 16.0);
+  const Segment* best = nullptr;
+  double best_d = threshold + 1.0;
+  const double reach = best_d;
+  const bool early = index.find_near(
+      approx.x - reach, approx.y - reach, approx.x + reach, approx.y + reach, [&](std::size_t k) {
+        const Segment& g = index.segments()[k];
+        const double d = point_segment_distance(approx, g.da(), g.db());
+        if (d < best_d) {
+          best_d = d;
+          best = &g;
+        }
+        return d < clear && closer_than(y, g.a, g.b, threshold);
+      });
+  return early ||
+         (best != nullptr && best_d >= clear && closer_than(y, best->a, best->b, threshold));
+}
+
+} // namespace penshape::fast
