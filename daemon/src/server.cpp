@@ -30,7 +30,8 @@ constexpr std::chrono::seconds kShutdownGrace{5};
 
 struct PenshapeServer::Impl {
   Impl(const ServerOptions& options, ServerParts parts)
-      : state(options.config.limits, options.config.settings, options.config.device_settings),
+      : state(options.config.limits, options.config.settings, options.config.device_settings,
+              options.config.grouping),
         pipeline(state),
         geometry(state),
         live(state),

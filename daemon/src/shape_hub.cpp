@@ -129,14 +129,16 @@ void ShapeHub::unsubscribe(Subscription* subscription) {
   if (subscription->filter_.raw_reports) raw_subscribers_.fetch_sub(1);
 }
 
-void ShapeHub::publish(v1::LiveEvent event) {
+std::uint64_t ShapeHub::publish(v1::LiveEvent event) {
   std::lock_guard order(publish_mutex_);
   std::shared_lock lock(mutex_);
-  if (closed_) return;
-  event.set_sequence(sequence_.fetch_add(1) + 1);
+  if (closed_) return 0;
+  const std::uint64_t sequence = sequence_.fetch_add(1) + 1;
+  event.set_sequence(sequence);
   event.set_published_us(monotonic_us());
   const EventPtr shared = std::make_shared<const v1::LiveEvent>(std::move(event));
   for (Subscription* s : subscribers_) s->push(shared);
+  return sequence;
 }
 
 void ShapeHub::close() {
