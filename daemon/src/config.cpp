@@ -115,7 +115,7 @@ bool apply_grouping_key(const LineContext& at, const std::string& key, std::stri
     return false;
   }
   try {
-    grouping = apply_grouping(grouping, change, "");
+    grouping = apply_grouping(grouping, change, "group_");
   } catch (const InvalidInput& e) {
     at.fail("", e.what());
   }

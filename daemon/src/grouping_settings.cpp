@@ -2,6 +2,7 @@
 #include "penshape/daemon/grouping_settings.hpp"
 
 #include <cmath>
+#include <sstream>
 
 #include "penshape/core/deconstruct.hpp"
 
@@ -21,7 +22,9 @@ GroupingConfig apply_grouping(GroupingConfig base, const v1::GroupingSettings& c
   if (g.has_max_pause_s()) {
     if (!std::isfinite(g.max_pause_s()) || g.max_pause_s() < 0 ||
         g.max_pause_s() > kMaxLivePauseSeconds) {
-      throw InvalidInput(field_prefix + "max_pause_s is " + std::to_string(g.max_pause_s()) +
+      std::ostringstream value;
+      value << g.max_pause_s();
+      throw InvalidInput(field_prefix + "max_pause_s is " + value.str() +
                          "; expected seconds in [0, 60]");
     }
     base.max_pause_seconds = g.max_pause_s();
