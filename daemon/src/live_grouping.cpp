@@ -192,7 +192,12 @@ std::optional<v1::PreviewGroup> LiveGrouping::preview_group(const std::string& d
   }
   // The stroke so far added to a copy: the strand's own grouping is untouched.
   const std::unique_ptr<StrokeGroupSession> session = snapshot->session->clone();
-  GroupedStrokeAnalysis result = session->add(partial, false, cancel);
+  GroupedStrokeAnalysis result;
+  try {
+    result = session->add(partial, false, cancel);
+  } catch (const std::exception&) {
+    return std::nullopt; // a stroke so far the grouping refuses (or cancelled): no group preview
+  }
   const v1::ShapeKind kind = result.analysis.shape.kind();
   if (!result.grouped || result.strokes.size() < 2 || kind == v1::SHAPE_KIND_NONE ||
       kind == v1::SHAPE_KIND_UNSPECIFIED) {

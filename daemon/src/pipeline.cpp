@@ -7,6 +7,7 @@
 #include "call_runner.hpp"
 #include "geometry_service.hpp"
 #include "penshape/daemon/proto_convert.hpp"
+#include "thread_scheduling.hpp"
 
 namespace penshape::daemon {
 
@@ -52,6 +53,7 @@ void Pipeline::stroke_started(const std::string& device_id, std::uint64_t stroke
 
 void Pipeline::sample(const std::string& device_id, std::uint64_t stroke_id,
                       const PenSample& sample) {
+  request_short_slice_once(); // the reader thread: a sample must reach subscribers within 1 ms
   v1::LiveEvent event;
   event.set_device_id(device_id);
   v1::SamplesBatch* batch = event.mutable_samples();

@@ -70,7 +70,9 @@ class Subscription {
  private:
   friend class ShapeHub;
   Subscription(ShapeHub& hub, EventFilter filter, std::size_t capacity);
-  void push(const EventPtr& event);
+  // Appends the event when the filter accepts it (true: the subscriber must be woken).
+  bool enqueue(const EventPtr& event);
+  void wake();
   void close();
 
   ShapeHub& hub_;
