@@ -4,12 +4,13 @@
 // analyzer (ink polygon + certified shape on the geometry workers); a real gRPC subscriber on a
 // unix socket times each ShapeRecognized from the moment the pen lifted. Beside it, in the same
 // run, the report → subscriber latency of the samples themselves (the live stream), and the
-// baseline: the analyzer called directly (no daemon, no gRPC). Two stroke sets: as recorded (the
-// recording is at 200 Hz, so played one sample per ms they are drawn 5x faster), and resampled to
-// 1 kHz (one sample per ms of the original time: what a 1 kHz tablet delivers, 5x the samples,
-// drawn at the original pace). For each, two phases: a subscriber of samples and shapes, then one
-// that also asks for live previews (computed on the idle lane while drawing).
-// The process's CPU share while replaying and its peak RSS are printed for each (server and the
+// baselines: the analyzer called directly, and a tablet's grouping session called directly (no
+// daemon, no gRPC). The daemon groups each tablet's strokes (the default config). Two stroke sets:
+// as recorded (the recording is at 200 Hz, so played one sample per ms they are drawn 5x faster),
+// and resampled to 1 kHz (one sample per ms of the original time: what a 1 kHz tablet delivers, 5x
+// the samples, drawn at the original pace). For each, two phases: a subscriber of samples and
+// shapes, then one that also asks for live previews (computed on the idle lane while drawing). The
+// process's CPU share while replaying and its peak RSS are printed for each (server and the
 // subscriber share the process, so both are upper bounds for the daemon).
 //
 //   build/release/bench/daemon_penup_latency [--rounds N] [--json]
@@ -133,6 +134,17 @@ penshape::Stroke resampled_to_1khz(const penshape::Stroke& in) {
   return out;
 }
 
+// The stroke moved in time to start 1 ms after `*clock_us` (the previous stroke's pen-up), which
+// then becomes its own last sample's time: strokes back to back, as the phases play them.
+penshape::Stroke back_to_back(const penshape::Stroke& in, std::int64_t* clock_us) {
+  penshape::Stroke out = in;
+  if (out.samples.empty()) return out;
+  const std::int64_t shift = *clock_us + 1000 - out.samples.front().time_us;
+  for (auto& sample : out.samples) sample.time_us += shift;
+  *clock_us = out.samples.back().time_us;
+  return out;
+}
+
 struct PhaseResult {
   bool previews = false;
   std::vector<double> penup_ms;
@@ -252,6 +264,23 @@ int main(int argc, char** argv) {
                 .count());
       }
     }
+    // Baseline with grouping: the same strokes added in order to one tablet's grouping session
+    // (ink polygon, the stroke alone, then unions with its recent strokes), back to back in time
+    // as the phases play them: what the daemon's strand computes after each pen-up.
+    std::vector<double> grouped_ms;
+    auto session =
+        analyzer->group_session(penshape::daemon::PenSettings{}, penshape::GroupingConfig{});
+    std::int64_t clock_us = 0;
+    for (int r = 0; r < rounds; ++r) {
+      for (const auto& s : set->strokes) {
+        const penshape::Stroke timed = back_to_back(s, &clock_us);
+        const auto t0 = std::chrono::steady_clock::now();
+        (void)session->add(timed, true, {});
+        grouped_ms.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                .count());
+      }
+    }
     std::size_t max_samples = 0;
     for (const auto& s : set->strokes) max_samples = std::max(max_samples, s.samples.size());
     if (!json) {
@@ -261,6 +290,8 @@ int main(int argc, char** argv) {
     const std::string tag = set == &dense ? " [1 kHz]" : "";
     print_row(json, ("baseline: analyzer called directly" + tag).c_str(), percentiles(direct_ms),
               "ms", "");
+    print_row(json, ("baseline: grouping session called directly" + tag).c_str(),
+              percentiles(grouped_ms), "ms", "");
     for (bool previews : {false, true}) {
       const PhaseResult phase = run_phase(dir, *set, analyzer, rounds, previews);
       const std::string t = tag + (previews ? " (+previews)" : "");

@@ -52,6 +52,47 @@ void write_sample_json(JsonWriter& json, const v1::PenSample& s) {
   json.end_object();
 }
 
+void write_ids(JsonWriter& json, const char* key,
+               const google::protobuf::RepeatedField<std::uint64_t>& ids) {
+  json.key(key).begin_array();
+  for (const std::uint64_t id : ids) json.integer(static_cast<std::int64_t>(id));
+  json.end_array();
+}
+
+void write_tidy(JsonWriter& json, const google::protobuf::RepeatedPtrField<std::string>& tidy) {
+  json.key("tidy").begin_array();
+  for (const std::string& t : tidy) json.string(t);
+  json.end_array();
+}
+
+// " 1 2 3" for a list of ids.
+std::string id_list(const google::protobuf::RepeatedField<std::uint64_t>& ids) {
+  std::string out;
+  for (const std::uint64_t id : ids) {
+    out += ' ';
+    out += std::to_string(id);
+  }
+  return out;
+}
+
+// What a grouped answer replaces: "; replaces strokes 1 2 3 4; supersedes shape 7; tidy axis".
+std::string grouping_text(const google::protobuf::RepeatedField<std::uint64_t>& strokes,
+                          const google::protobuf::RepeatedField<std::uint64_t>& shapes,
+                          const google::protobuf::RepeatedPtrField<std::string>& tidy) {
+  std::string out;
+  if (strokes.size() > 1) out += "; replaces strokes" + id_list(strokes);
+  if (!shapes.empty())
+    out += std::string("; supersedes shape") + (shapes.size() > 1 ? "s" : "") + id_list(shapes);
+  if (!tidy.empty()) {
+    out += "; tidy";
+    for (const std::string& t : tidy) {
+      out += ' ';
+      out += t;
+    }
+  }
+  return out;
+}
+
 } // namespace
 
 std::string shape_kind_name(v1::ShapeKind kind) {
@@ -243,6 +284,16 @@ std::string event_json(const v1::LiveEvent& event) {
       json.key("candidates").begin_array();
       for (const auto& c : event.preview().candidates()) write_shape_json(json, c);
       json.end_array();
+      if (event.preview().has_group()) {
+        const v1::PreviewGroup& g = event.preview().group();
+        json.key("group").begin_object();
+        json.key("shape");
+        write_shape_json(json, g.shape());
+        write_ids(json, "replaced_stroke_ids", g.replaced_stroke_ids());
+        write_ids(json, "supersedes_shape_ids", g.supersedes_shape_ids());
+        write_tidy(json, g.tidy());
+        json.end_object();
+      }
       break;
     case v1::LiveEvent::kShape:
       json.key("type").string("shape");
@@ -254,6 +305,11 @@ std::string event_json(const v1::LiveEvent& event) {
       json.end_array();
       json.key("compute_us")
           .integer(static_cast<std::int64_t>(event.shape().timings().compute_us()));
+      json.key("shape_id").integer(static_cast<std::int64_t>(event.shape().shape_id()));
+      write_ids(json, "replaced_stroke_ids", event.shape().replaced_stroke_ids());
+      write_ids(json, "supersedes_shape_ids", event.shape().supersedes_shape_ids());
+      write_ids(json, "supersedes_sequences", event.shape().supersedes_sequences());
+      write_tidy(json, event.shape().tidy());
       break;
     case v1::LiveEvent::kDeconstructed: {
       const auto& d = event.deconstructed();
@@ -320,12 +376,21 @@ std::string event_line(const v1::LiveEvent& event) {
         out += ' '; // appended separately: g++ 12 warns falsely (-Wrestrict) on " " + string
         out += shape_kind_name(c.kind());
       }
+      if (event.preview().has_group()) {
+        const v1::PreviewGroup& g = event.preview().group();
+        out += "; with earlier strokes: " + shape_summary(g.shape()) +
+               grouping_text(g.replaced_stroke_ids(), g.supersedes_shape_ids(), g.tidy());
+      }
       return out;
     }
-    case v1::LiveEvent::kShape:
-      return who + "stroke " + std::to_string(event.shape().stroke_id()) +
-             (event.shape().shape().kind() == v1::SHAPE_KIND_NONE ? " is " : " is a ") +
-             shape_summary(event.shape().shape());
+    case v1::LiveEvent::kShape: {
+      const v1::ShapeRecognized& r = event.shape();
+      std::string out = who + "stroke " + std::to_string(r.stroke_id());
+      if (r.shape_id() != 0) out += " (shape " + std::to_string(r.shape_id()) + ")";
+      return out + (r.shape().kind() == v1::SHAPE_KIND_NONE ? " is " : " is a ") +
+             shape_summary(r.shape()) +
+             grouping_text(r.replaced_stroke_ids(), r.supersedes_shape_ids(), r.tidy());
+    }
     case v1::LiveEvent::kDeconstructed: {
       const auto& d = event.deconstructed();
       const auto& r = d.result();

@@ -60,6 +60,16 @@ def shape_record(device_id, stroke_id, shape):
     return record
 
 
+def add_grouping(record, recognized):
+    """What a grouped answer replaces: an app removes the ink of the replaced strokes and the
+    superseded shapes (an upgrade, e.g. three sides and then the rectangle), then draws this one.
+    """
+    record["shape_id"] = recognized.shape_id
+    record["replaced_stroke_ids"] = list(recognized.replaced_stroke_ids)
+    record["supersedes_shape_ids"] = list(recognized.supersedes_shape_ids)
+    record["tidy"] = list(recognized.tidy)
+
+
 def describe(record):
     text = "stroke %d on %s: %s" % (record["stroke_id"], record["device_id"], record["kind"])
     if "vertices" in record:
@@ -69,6 +79,10 @@ def describe(record):
     if "hausdorff_bound_mm" in record:
         text += ", within %.3g mm of the ink (tolerance %.3g mm)" % (
             record["hausdorff_bound_mm"], record["tolerance_mm"])
+    if len(record.get("replaced_stroke_ids", [])) > 1:
+        text += "; replaces strokes " + " ".join(map(str, record["replaced_stroke_ids"]))
+    if record.get("supersedes_shape_ids"):
+        text += "; supersedes shapes " + " ".join(map(str, record["supersedes_shape_ids"]))
     return text
 
 
@@ -107,6 +121,7 @@ def main():
                     event.stroke_finished.not_analysed), flush=True)
             elif kind == "shape":
                 record = shape_record(event.device_id, event.shape.stroke_id, event.shape.shape)
+                add_grouping(record, event.shape)
                 print(json.dumps(record) if args.json else describe(record), flush=True)
                 shapes += 1
                 if args.count and shapes >= args.count:

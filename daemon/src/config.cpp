@@ -11,6 +11,8 @@
 #include <set>
 #include <sstream>
 
+#include "penshape/core/deconstruct.hpp"
+
 namespace penshape::daemon {
 namespace {
 
@@ -87,6 +89,39 @@ bool apply_settings_key(const LineContext& at, const std::string& key, std::stri
   return true;
 }
 
+// Applies one grouping key (grouping, group_*, tidy_*) to `grouping`; false when `key` is not one.
+bool apply_grouping_key(const LineContext& at, const std::string& key, std::string_view value,
+                        GroupingConfig& grouping) {
+  v1::GroupingSettings change;
+  if (key == "grouping") {
+    change.set_disabled(!parse_bool(at, key, value));
+  } else if (key == "group_max_strokes") {
+    change.set_max_strokes(
+        static_cast<std::uint32_t>(parse_size(at, key, value, 1, kMaxLiveGroupStrokes)));
+  } else if (key == "group_max_pause_s") {
+    change.set_max_pause_s(parse_double(at, key, value));
+  } else if (key.rfind("tidy_", 0) == 0) {
+    const std::map<std::string, void (v1::GroupingSettings::*)(bool)> switches = {
+        {"tidy_circle", &v1::GroupingSettings::set_tidy_circle},
+        {"tidy_right_angles", &v1::GroupingSettings::set_tidy_right_angles},
+        {"tidy_equal_sides", &v1::GroupingSettings::set_tidy_equal_sides},
+        {"tidy_axis", &v1::GroupingSettings::set_tidy_axis},
+        {"tidy_parallel", &v1::GroupingSettings::set_tidy_parallel},
+        {"tidy_connection", &v1::GroupingSettings::set_tidy_connection}};
+    const auto it = switches.find(key);
+    if (it == switches.end()) return false;
+    (change.*(it->second))(parse_bool(at, key, value));
+  } else {
+    return false;
+  }
+  try {
+    grouping = apply_grouping(grouping, change, "group_");
+  } catch (const InvalidInput& e) {
+    at.fail("", e.what());
+  }
+  return true;
+}
+
 void apply_global_key(const LineContext& at, const std::string& key, std::string_view value,
                       DaemonConfig& config, PenSettingsUpdate& defaults) {
   Limits& l = config.limits;
@@ -119,6 +154,7 @@ void apply_global_key(const LineContext& at, const std::string& key, std::string
     it->second();
     return;
   }
+  if (apply_grouping_key(at, key, value, config.grouping)) return;
   if (!apply_settings_key(at, key, value, defaults)) at.fail(key, "unknown key");
 }
 

@@ -1,6 +1,8 @@
 #include "config_service.hpp"
 
 #include "call_runner.hpp"
+#include "penshape/core/deconstruct.hpp"
+#include "penshape/daemon/grouping_settings.hpp"
 #include "penshape/daemon/proto_convert.hpp"
 
 namespace penshape::daemon {
@@ -19,6 +21,7 @@ void ConfigServiceImpl::fill(const std::string& key, v1::SettingsResponse* respo
   response->set_device_key(key);
   to_proto(state_.settings.effective(key), response->mutable_effective());
   response->set_overridden(!key.empty() && state_.settings.overridden(key));
+  to_proto(state_.grouping.get(), response->mutable_grouping());
 }
 
 grpc::Status ConfigServiceImpl::GetSettings(grpc::ServerContext* /*context*/,
@@ -35,7 +38,16 @@ grpc::Status ConfigServiceImpl::SetSettings(grpc::ServerContext* /*context*/,
   if (grpc::Status s = check_key(request->device_key()); !s.ok()) return s;
   try {
     const PenSettingsUpdate update = settings_update_from_proto(request->settings(), "settings");
+    if (request->has_grouping()) {
+      if (!request->device_key().empty()) {
+        throw InvalidInput(
+            "grouping: the live grouping is daemon-wide; set it with device_key \"\"");
+      }
+      // Checked whole before anything changes: a bad value leaves both settings as they were.
+      (void)apply_grouping(state_.grouping.get(), request->grouping(), "grouping.");
+    }
     state_.settings.update(request->device_key(), update, request->reset());
+    if (request->has_grouping()) state_.grouping.update(request->grouping());
   } catch (...) {
     return status_from_current_exception(nullptr);
   }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "penshape/daemon/geometry_backend.hpp"
+#include "penshape/daemon/grouping_settings.hpp"
 #include "penshape/daemon/limits.hpp"
 #include "penshape/daemon/pen_settings.hpp"
 #include "penshape/daemon/sample_source.hpp"
@@ -43,13 +44,15 @@ class DeviceRegistry {
 //   preview_pool  live previews while the pen moves: idle priority, a hint that may come late.
 struct DaemonState {
   DaemonState(const Limits& l, const PenSettings& defaults,
-              std::map<std::string, PenSettingsUpdate> per_device)
+              std::map<std::string, PenSettingsUpdate> per_device,
+              GroupingConfig live_grouping = {})
       : limits(l),
         pool(l.worker_threads, l.worker_queue_jobs, WorkerPriority::kBatch),
         stroke_pool(l.stroke_worker_threads, l.worker_queue_jobs, WorkerPriority::kInteractive),
         preview_pool(1, kPreviewQueueJobs, WorkerPriority::kIdle),
         hub(l.max_subscribers, l.max_raw_report_subscribers),
-        settings(defaults, std::move(per_device)) {}
+        settings(defaults, std::move(per_device)),
+        grouping(live_grouping) {}
 
   // Previews in flight are at most one per device (pipeline.hpp); more queued would be stale.
   static constexpr std::size_t kPreviewQueueJobs = 16;
@@ -60,6 +63,7 @@ struct DaemonState {
   WorkerPool preview_pool;
   ShapeHub hub;
   SettingsStore settings;
+  GroupingStore grouping; // live strokes' grouping window and tidy-up (Config RPC, config file)
   DeviceRegistry devices;
   std::shared_ptr<GeometryBackend> geometry; // null: Deconstruct is UNIMPLEMENTED
   std::shared_ptr<StrokeAnalyzer> analyzer;  // null: no ink polygons or shapes

@@ -8,6 +8,7 @@
 #include "geometry_service.hpp"
 #include "penshape/daemon/proto_convert.hpp"
 #include "pipeline.hpp"
+#include "thread_scheduling.hpp"
 
 namespace penshape::daemon {
 namespace {
@@ -21,6 +22,7 @@ constexpr std::chrono::milliseconds kCancelPoll{500};
 // the queue is drained (OK: the daemon stopped after delivering everything).
 template <typename Writer>
 grpc::Status pump(Subscription& subscription, grpc::ServerContext* context, Writer* writer) {
+  request_short_slice_once(); // this thread writes the stream: waking it must not wait a slice
   for (;;) {
     if (context->IsCancelled()) return grpc::Status::CANCELLED;
     Subscription::Delivery delivery = subscription.next(kCancelPoll);

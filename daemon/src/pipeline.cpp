@@ -1,11 +1,13 @@
 #include "pipeline.hpp"
 
 #include <chrono>
+#include <optional>
 #include <utility>
 
 #include "call_runner.hpp"
 #include "geometry_service.hpp"
 #include "penshape/daemon/proto_convert.hpp"
+#include "thread_scheduling.hpp"
 
 namespace penshape::daemon {
 
@@ -24,6 +26,7 @@ void Pipeline::device_detached(const std::string& device_id) {
     const auto it = drawing_.find(device_id);
     if (it != drawing_.end() && !it->second.preview_running) drawing_.erase(it);
   }
+  grouping_.forget_device(device_id);
   v1::LiveEvent event;
   event.set_device_id(device_id);
   event.mutable_device_detached()->set_device_id(device_id);
@@ -50,6 +53,7 @@ void Pipeline::stroke_started(const std::string& device_id, std::uint64_t stroke
 
 void Pipeline::sample(const std::string& device_id, std::uint64_t stroke_id,
                       const PenSample& sample) {
+  request_short_slice_once(); // the reader thread: a sample must reach subscribers within 1 ms
   v1::LiveEvent event;
   event.set_device_id(device_id);
   v1::SamplesBatch* batch = event.mutable_samples();
@@ -91,12 +95,16 @@ void Pipeline::maybe_preview(const std::string& device_id, Drawing& drawing) {
       }
       std::vector<v1::Shape> candidates =
           state_.analyzer->preview(partial, settings, cancel_hook(stop));
-      if (!candidates.empty()) {
+      // The group the stroke would complete with the device's recent strokes (certified).
+      std::optional<v1::PreviewGroup> group =
+          grouping_.preview_group(device_id, partial, cancel_hook(stop));
+      if (!candidates.empty() || group) {
         v1::LiveEvent event;
         event.set_device_id(device_id);
         v1::PreviewCandidates* preview = event.mutable_preview();
         preview->set_stroke_id(partial.id);
         for (auto& c : candidates) *preview->add_candidates() = std::move(c);
+        if (group) preview->mutable_group()->Swap(&*group);
         state_.hub.publish(std::move(event));
       }
     } catch (...) {
@@ -135,6 +143,10 @@ void Pipeline::stroke_finished(const std::string& device_id, Stroke stroke) {
   if (!state_.analyzer) {
     publish_stroke(state_.hub, device_id, stroke, nullptr,
                    "this build has no stroke analyzer (ink polygon and recognizer)", {});
+    return;
+  }
+  if (grouping_.groups()) { // grouped in order on its device's strand
+    grouping_.finish(device_id, std::move(stroke));
     return;
   }
   const PenSettings settings = settings_for(state_, stroke.tablet);

@@ -1,10 +1,11 @@
 #pragma once
 // The daemon's SampleSink: device events and samples go straight to the hub (the reader thread
-// only copies and queues); finished strokes go to the stroke lane for their ink polygon and shape,
-// then to the hub, and, for subscribers that ask, to the geometry lane for their deconstruction
-// (StrokeDeconstructed); strokes in progress get previews on the idle-priority preview lane now and
-// then, only while some subscriber asks for previews. A preview still queued or running when its
-// stroke ends is cancelled: the stroke's final shape supersedes it.
+// only copies and queues); finished strokes go to the stroke lane for their ink polygon and shape
+// (grouped with the device's recent strokes, in order, when the analyzer groups:
+// live_grouping.hpp), then to the hub, and, for subscribers that ask, to the geometry lane for
+// their deconstruction (StrokeDeconstructed); strokes in progress get previews on the idle-priority
+// preview lane now and then, only while some subscriber asks for previews. A preview still queued
+// or running when its stroke ends is cancelled: the stroke's final shape supersedes it.
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "daemon_state.hpp"
+#include "live_grouping.hpp"
 
 namespace penshape::daemon {
 
@@ -22,7 +24,14 @@ class Pipeline final : public SampleSink {
   // At most one preview per device per interval (about three display frames).
   static constexpr std::chrono::milliseconds kPreviewInterval{50};
 
-  explicit Pipeline(DaemonState& state) : state_(state) {}
+  explicit Pipeline(DaemonState& state)
+      : state_(state),
+        grouping_(
+            state, [this] { job_started(); }, [this] { job_done(); },
+            [this](const std::string& device_id, std::uint64_t stroke_id, const v1::PolygonSet& ink,
+                   const PenSettings& settings) {
+              maybe_deconstruct(device_id, stroke_id, ink, settings);
+            }) {}
 
   void device_attached(const DeviceDescriptor& device) override;
   void device_detached(const std::string& device_id) override;
@@ -73,6 +82,7 @@ class Pipeline final : public SampleSink {
   std::condition_variable idle_;
   std::size_t in_flight_ = 0;
   std::map<std::string, Drawing> drawing_; // by device id, guarded by mutex_
+  LiveGrouping grouping_; // each device's strokes grouped in order (when the analyzer groups)
 };
 
 } // namespace penshape::daemon

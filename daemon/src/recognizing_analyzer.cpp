@@ -1,8 +1,10 @@
 #include "penshape/daemon/recognizing_analyzer.hpp"
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 
 #include "penshape/core/ink.hpp"
 #include "penshape/core/live_recognizer.hpp"
@@ -81,7 +83,70 @@ bool has_distinct_points(const std::vector<StrokePoint>& pts) {
   return false;
 }
 
-class RecognizingAnalyzer final : public StrokeAnalyzer {
+// The proto form of a recognition's certified alternatives (runner-ups), best first.
+void add_alternatives(const Recognition& r, std::vector<v1::Shape>* out) {
+  for (const Candidate& c : r.alternatives) {
+    if (!c.certificate.certified || !c.rejected.empty()) continue;
+    out->push_back(to_proto_shape(
+        c.shape, c.params, c.clean, c.certificate,
+        c.certificate.epsilon > 0 ? 1 - c.certificate.bound / (2 * c.certificate.epsilon) : 0));
+  }
+}
+
+// One tablet's live grouping: core's StrokeGrouper on the strokes' paths in mm; a lone stroke is
+// certified on its ink polygon (as analyze() does), a group on the union of its strokes' paths.
+class GroupSession final : public StrokeGroupSession {
+ public:
+  // `finished` is told each finished stroke's id (the analyzer drops its preview state).
+  GroupSession(const PenSettings& settings, const GroupingConfig& grouping,
+               std::function<void(std::uint64_t)> finished)
+      : settings_(settings),
+        grouper_(grouping, config_for(settings)),
+        finished_(std::move(finished)) {}
+
+  GroupedStrokeAnalysis add(const Stroke& stroke, bool with_ink,
+                            const CancelHook& cancel) override {
+    GroupedStrokeAnalysis out;
+    std::optional<InkPolygon> ink;
+    if (with_ink) {
+      if (finished_) finished_(stroke.id);
+      ink = ink_polygon(stroke, ink_options_for(settings_));
+      to_proto(ink->region, &out.analysis.ink_polygon);
+    }
+    if (cancel && cancel()) throw Cancelled();
+    StrokeInput input;
+    input.samples = path_mm(stroke);
+    if (input.samples.size() < 2 || !has_distinct_points(input.samples)) {
+      out.analysis.shape.set_kind(v1::SHAPE_KIND_NONE); // a dot: nothing to snap to, not grouped
+      return out;
+    }
+    input.ink = ink ? &*ink : nullptr;
+    input.pen_radius = settings_.pen_radius_mm;
+    const GroupUpdate u = grouper_.add(input);
+    const Recognition& r = u.shape.recognition;
+    out.analysis.shape = to_proto_shape(r.shape, r.params, r.clean, r.certificate, r.confidence);
+    add_alternatives(r, &out.analysis.alternatives);
+    out.grouped = true;
+    out.answer = u.shape.id;
+    out.strokes = u.shape.strokes;
+    out.superseded = u.superseded;
+    out.tidy = u.shape.tidy;
+    return out;
+  }
+
+  [[nodiscard]] std::unique_ptr<StrokeGroupSession> clone() const override {
+    return std::make_unique<GroupSession>(*this);
+  }
+  [[nodiscard]] std::size_t stroke_count() const override { return grouper_.stroke_count(); }
+
+ private:
+  PenSettings settings_;
+  StrokeGrouper grouper_;
+  std::function<void(std::uint64_t)> finished_;
+};
+
+class RecognizingAnalyzer final : public StrokeAnalyzer,
+                                  public std::enable_shared_from_this<RecognizingAnalyzer> {
  public:
   StrokeAnalysis analyze(const Stroke& stroke, const PenSettings& settings,
                          const CancelHook& cancel) override {
@@ -105,13 +170,16 @@ class RecognizingAnalyzer final : public StrokeAnalyzer {
     const Recognition r = recognize(input, config_for(settings));
     if (cancel && cancel()) throw Cancelled();
     analysis.shape = to_proto_shape(r.shape, r.params, r.clean, r.certificate, r.confidence);
-    for (const Candidate& c : r.alternatives) {
-      if (!c.certificate.certified || !c.rejected.empty()) continue;
-      analysis.alternatives.push_back(to_proto_shape(
-          c.shape, c.params, c.clean, c.certificate,
-          c.certificate.epsilon > 0 ? 1 - c.certificate.bound / (2 * c.certificate.epsilon) : 0));
-    }
+    add_alternatives(r, &analysis.alternatives);
     return analysis;
+  }
+
+  std::unique_ptr<StrokeGroupSession> group_session(const PenSettings& settings,
+                                                    const GroupingConfig& grouping) override {
+    return std::make_unique<GroupSession>(settings, grouping,
+                                          [self = weak_from_this()](std::uint64_t id) {
+                                            if (auto analyzer = self.lock()) analyzer->forget(id);
+                                          });
   }
 
   std::vector<v1::RecognizedGroup> recognize_group(const std::vector<Stroke>& strokes,

@@ -19,6 +19,7 @@
 #include "live_service.hpp"
 #include "log.hpp"
 #include "pipeline.hpp"
+#include "thread_scheduling.hpp"
 #include "unix_socket.hpp"
 
 namespace penshape::daemon {
@@ -30,7 +31,8 @@ constexpr std::chrono::seconds kShutdownGrace{5};
 
 struct PenshapeServer::Impl {
   Impl(const ServerOptions& options, ServerParts parts)
-      : state(options.config.limits, options.config.settings, options.config.device_settings),
+      : state(options.config.limits, options.config.settings, options.config.device_settings,
+              options.config.grouping),
         pipeline(state),
         geometry(state),
         live(state),
@@ -61,6 +63,10 @@ struct PenshapeServer::Impl {
 
 PenshapeServer::PenshapeServer(const ServerOptions& options, ServerParts parts)
     : impl_(std::make_unique<Impl>(options, std::move(parts))) {
+  // The threads created from here on (gRPC's, the sample source's readers) inherit a short time
+  // slice, so that a sample is delivered within 1 ms even while strokes are analysed; the worker
+  // lanes were created before and keep the default slice (thread_scheduling.hpp).
+  request_short_slice_once();
   const Limits& limits = options.config.limits;
   impl_->socket_path = unix_socket_path(options.address);
   if (!impl_->socket_path.empty()) refuse_if_in_use(impl_->socket_path);

@@ -46,20 +46,20 @@ Subscription::Subscription(ShapeHub& hub, EventFilter filter, std::size_t capaci
 
 Subscription::~Subscription() { hub_.unsubscribe(this); }
 
-void Subscription::push(const EventPtr& event) {
-  if (!filter_.accepts(*event)) return;
-  {
-    std::lock_guard lock(mutex_);
-    if (closed_) return;
-    if (queue_.size() >= capacity_) {
-      queue_.pop_front();
-      ++dropped_pending_;
-      ++dropped_total_;
-    }
-    queue_.push_back(event);
+bool Subscription::enqueue(const EventPtr& event) {
+  if (!filter_.accepts(*event)) return false;
+  std::lock_guard lock(mutex_);
+  if (closed_) return false;
+  if (queue_.size() >= capacity_) {
+    queue_.pop_front();
+    ++dropped_pending_;
+    ++dropped_total_;
   }
-  ready_.notify_one();
+  queue_.push_back(event);
+  return true;
 }
+
+void Subscription::wake() { ready_.notify_one(); }
 
 void Subscription::close() {
   {
@@ -129,14 +129,31 @@ void ShapeHub::unsubscribe(Subscription* subscription) {
   if (subscription->filter_.raw_reports) raw_subscribers_.fetch_sub(1);
 }
 
-void ShapeHub::publish(v1::LiveEvent event) {
-  std::lock_guard order(publish_mutex_);
-  std::shared_lock lock(mutex_);
-  if (closed_) return;
-  event.set_sequence(sequence_.fetch_add(1) + 1);
-  event.set_published_us(monotonic_us());
-  const EventPtr shared = std::make_shared<const v1::LiveEvent>(std::move(event));
-  for (Subscription* s : subscribers_) s->push(shared);
+// Publishers run at every priority: tablet readers (normal), stroke analyses (nice 5), previews
+// (SCHED_IDLE). A low-priority publisher must never hold publish_mutex_ for long, or a reader
+// waits behind it (priority inversion): so the event is allocated before the lock, the critical
+// section only numbers it and appends it to the queues, and the subscribers are woken after it
+// is released (a woken subscriber thread preempts a low-priority waker at once; it must not do so
+// while the waker holds the lock every reader needs).
+std::uint64_t ShapeHub::publish(v1::LiveEvent event) {
+  const auto shared = std::make_shared<v1::LiveEvent>(std::move(event));
+  thread_local std::vector<Subscription*> woken;
+  woken.clear();
+  std::shared_lock lock(mutex_); // shared: publishers never wait for each other here
+  if (closed_) return 0;
+  std::uint64_t sequence = 0;
+  {
+    std::lock_guard order(publish_mutex_);
+    sequence = sequence_.fetch_add(1) + 1;
+    shared->set_sequence(sequence);
+    shared->set_published_us(monotonic_us());
+    const EventPtr event_ptr = shared;
+    for (Subscription* s : subscribers_) {
+      if (s->enqueue(event_ptr)) woken.push_back(s);
+    }
+  }
+  for (Subscription* s : woken) s->wake(); // still registered: the shared lock is held
+  return sequence;
 }
 
 void ShapeHub::close() {

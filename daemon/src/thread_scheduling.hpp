@@ -11,4 +11,12 @@ void lower_current_thread(int nice_increment);
 // SCHED_IDLE: the thread runs only when a core has nothing else to do.
 void make_current_thread_idle();
 
+// Asks the scheduler for a short time slice (0.1 ms) for the calling thread, once per thread:
+// with Linux's EEVDF scheduler (6.6 and later; custom slices since 6.12) a thread with a short
+// slice gets an earlier deadline and, on wake-up, preempts threads running with the default
+// slice (stroke analyses, other programs' builds), without any privilege and without a bigger
+// share of the CPU. For the threads a sample crosses on its way to a subscriber: the tablet
+// reader and the gRPC thread writing the subscriber's stream. Older kernels ignore it.
+void request_short_slice_once();
+
 } // namespace penshape::daemon

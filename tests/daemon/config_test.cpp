@@ -128,3 +128,49 @@ TEST(Config, PhysicalSizeErrorsNameLineAndKey) {
 }
 
 } // namespace
+
+// The live grouping keys: the documented defaults (core's GroupingConfig), each key read, and
+// out-of-range or misspelt values refused naming the line and the key.
+TEST(Config, GroupingKeysAndTheirDefaults) {
+  const auto defaults = parse_config("", "test.conf").grouping;
+  EXPECT_TRUE(defaults.enabled);
+  EXPECT_EQ(defaults.max_strokes, 4U);
+  EXPECT_EQ(defaults.max_pause_seconds, 2.0);
+  EXPECT_TRUE(defaults.tidy.axis);
+  const auto config = parse_config(
+      "grouping = false\n"
+      "group_max_strokes = 3\n"
+      "group_max_pause_s = 0.5\n"
+      "tidy_circle = false\n"
+      "tidy_right_angles = false\n"
+      "tidy_equal_sides = false\n"
+      "tidy_axis = false\n"
+      "tidy_parallel = false\n"
+      "tidy_connection = false\n",
+      "test.conf");
+  const auto& g = config.grouping;
+  EXPECT_FALSE(g.enabled);
+  EXPECT_EQ(g.max_strokes, 3U);
+  EXPECT_EQ(g.max_pause_seconds, 0.5);
+  EXPECT_FALSE(g.tidy.circle || g.tidy.right_angles || g.tidy.equal_sides || g.tidy.axis ||
+               g.tidy.parallel || g.tidy.connection);
+}
+
+TEST(Config, BadGroupingValuesNameTheLineAndKey) {
+  EXPECT_EQ(error_of("\ngroup_max_strokes = 9\n"),
+            "test.conf:2: group_max_strokes: expected an integer in 1..8, got '9'");
+  EXPECT_EQ(error_of("group_max_strokes = 0\n"),
+            "test.conf:1: group_max_strokes: expected an integer in 1..8, got '0'");
+  EXPECT_EQ(error_of("group_max_pause_s = -1\n"),
+            "test.conf:1: group_max_pause_s is -1; expected seconds in [0, 60]");
+  EXPECT_EQ(error_of("group_max_pause_s = 61\n"),
+            "test.conf:1: group_max_pause_s is 61; expected seconds in [0, 60]");
+  EXPECT_EQ(error_of("group_max_pause_s = nan\n"),
+            "test.conf:1: group_max_pause_s: expected a number, got 'nan'");
+  EXPECT_EQ(error_of("grouping = yes\n"),
+            "test.conf:1: grouping: expected true or false, got 'yes'");
+  EXPECT_EQ(error_of("tidy_axes = true\n"), "test.conf:1: tidy_axes: unknown key");
+  EXPECT_EQ(error_of("[device 056a:0010]\ngrouping = false\n"),
+            "test.conf:2: grouping: unknown key in a [device] section (pen_radius_mm, "
+            "tolerance_fraction, precision_fraction, width_mm, height_mm)");
+}

@@ -9,6 +9,12 @@
 //   pen_radius_mm = 1.0              # default pen settings (pen_settings.hpp for the ranges)
 //   tolerance_fraction = 0.5
 //   precision_fraction = 0.125
+//   grouping = true                  # group each tablet's recent strokes into one shape
+//   group_max_strokes = 4            #  at most this many strokes in a group, 1..8
+//   group_max_pause_s = 2.0          #  pen-up pause a group may span, seconds in [0, 60]
+//   tidy_circle = true               # tidy-up switches (each applied only when certified):
+//   tidy_right_angles = true         #  tidy_circle, tidy_right_angles, tidy_equal_sides,
+//                                    #  tidy_axis, tidy_parallel, tidy_connection
 //
 //   [device 056a:0010]               # settings for one tablet model (vendor:product, hex;
 //   pen_radius_mm = 0.8              #  [device "056a:0010"] with quotes is the same)
@@ -24,6 +30,7 @@
 #include <string_view>
 #include <utility>
 
+#include "penshape/daemon/grouping_settings.hpp"
 #include "penshape/daemon/limits.hpp"
 #include "penshape/daemon/pen_settings.hpp"
 
@@ -35,6 +42,7 @@ struct DaemonConfig {
   bool tcp_allow_non_loopback = false;
   Limits limits;
   PenSettings settings;
+  GroupingConfig grouping; // live strokes' grouping window and tidy-up switches
   std::map<std::string, PenSettingsUpdate> device_settings; // by device key "vvvv:pppp"
   // Physical sizes (width, height in mm) by device key, for tablets whose table row, descriptor
   // and probe give none: without one such a tablet's size is unknown (never device units as mm).

@@ -70,7 +70,9 @@ class Subscription {
  private:
   friend class ShapeHub;
   Subscription(ShapeHub& hub, EventFilter filter, std::size_t capacity);
-  void push(const EventPtr& event);
+  // Appends the event when the filter accepts it (true: the subscriber must be woken).
+  bool enqueue(const EventPtr& event);
+  void wake();
   void close();
 
   ShapeHub& hub_;
@@ -100,8 +102,8 @@ class ShapeHub {
                                           Refusal* why = nullptr);
 
   // Stamps sequence and published_us, then fans the event out. Thread-safe; never blocks on a
-  // subscriber. After close() events are discarded.
-  void publish(v1::LiveEvent event);
+  // subscriber. After close() events are discarded. Returns the event's sequence (0: discarded).
+  std::uint64_t publish(v1::LiveEvent event);
   // Ends every subscription once its queue is drained; new subscriptions are refused.
   void close();
 

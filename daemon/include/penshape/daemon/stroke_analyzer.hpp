@@ -4,6 +4,8 @@
 // its results to the penshape.v1 messages; the daemon runs it on the geometry workers for live
 // strokes, SubmitStroke, StreamSamples and Geometry.Recognize, and asks it for previews while a
 // live stroke is drawn.
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "penshape/core/deconstruct.hpp"
@@ -24,6 +26,33 @@ struct StrokeAnalysis {
   std::vector<v1::Shape> alternatives;
 };
 
+// What adding one live stroke to its tablet's grouping gave (StrokeGroupSession::add).
+struct GroupedStrokeAnalysis {
+  // The new stroke's ink polygon; shape and alternatives: the answer that now covers the stroke
+  // (certified on the union of its strokes when it covers several).
+  StrokeAnalysis analysis;
+  bool grouped = false;   // false: the stroke was not added to the grouping (a dot): alone
+  std::size_t answer = 0; // the session's id of this answer (when grouped)
+  std::vector<std::size_t> strokes;    // session indices of the strokes it covers, ascending
+  std::vector<std::size_t> superseded; // session ids of the earlier answers it replaces
+  std::vector<std::string> tidy;       // tidy-up constraints applied
+};
+
+// One tablet's grouping of recent strokes (core's StrokeGrouper): strokes are added in drawing
+// order, one at a time; a session is not thread-safe (the pipeline runs one device's strokes in
+// order on one worker at a time). Stroke indices count the strokes added (dots are not added).
+class StrokeGroupSession {
+ public:
+  virtual ~StrokeGroupSession() = default;
+  // The stroke's ink polygon (when `with_ink`: previews skip it) and its grouped answer. Throws
+  // Cancelled when `cancel` asks to stop (the stroke is then not added).
+  virtual GroupedStrokeAnalysis add(const Stroke& stroke, bool with_ink,
+                                    const CancelHook& cancel) = 0;
+  // An independent copy (a preview adds the stroke in progress to a copy).
+  [[nodiscard]] virtual std::unique_ptr<StrokeGroupSession> clone() const = 0;
+  [[nodiscard]] virtual std::size_t stroke_count() const = 0;
+};
+
 class StrokeAnalyzer {
  public:
   virtual ~StrokeAnalyzer() = default;
@@ -31,10 +60,6 @@ class StrokeAnalyzer {
   // stroke it refuses and Cancelled when `cancel` asks to stop.
   virtual StrokeAnalysis analyze(const Stroke& stroke, const PenSettings& settings,
                                  const CancelHook& cancel) = 0;
-  // The shapes the stroke in progress would snap to if the pen lifted now, best first (the
-  // on-line decision while points arrive). `partial` holds the samples so far. Called on a worker
-  // at most once per Pipeline::kPreviewInterval per device, never twice at once for one device;
-  // the default offers none.
   // Several strokes in drawing order grouped into drawings (core's recognize_strokes, on the
   // strokes' paths in mm with the settings' pen radius): every stroke in exactly one group.
   // Throws InvalidInput naming `strokes[i]` for a stroke it refuses; analyzers that do not
@@ -44,6 +69,16 @@ class StrokeAnalyzer {
                                                            const GroupingConfig& /*grouping*/) {
     return {};
   }
+  // A new grouping of live strokes for one tablet, or null when this analyzer does not group
+  // (then each live stroke is analysed alone by analyze()).
+  virtual std::unique_ptr<StrokeGroupSession> group_session(const PenSettings& /*settings*/,
+                                                            const GroupingConfig& /*grouping*/) {
+    return nullptr;
+  }
+  // The shapes the stroke in progress would snap to if the pen lifted now, best first (the
+  // on-line decision while points arrive). `partial` holds the samples so far. Called on a worker
+  // at most once per Pipeline::kPreviewInterval per device, never twice at once for one device;
+  // the default offers none.
   virtual std::vector<v1::Shape> preview(const Stroke& /*partial*/, const PenSettings& /*settings*/,
                                          const CancelHook& /*cancel*/) {
     return {};

@@ -1,0 +1,220 @@
+// Per-device strands grouping live strokes, and group previews (live_grouping.hpp).
+#include "live_grouping.hpp"
+
+#include <chrono>
+#include <utility>
+
+#include "call_runner.hpp"
+#include "penshape/daemon/proto_convert.hpp"
+
+namespace penshape::daemon {
+namespace {
+
+// Recent answers kept per device: a group only absorbs answers within its last max_strokes (<= 8)
+// groups, so older ones are never superseded.
+constexpr std::size_t kRecentAnswers = 64;
+
+std::uint64_t micros(std::chrono::steady_clock::duration d) {
+  return static_cast<std::uint64_t>(
+      std::chrono::duration_cast<std::chrono::microseconds>(d).count());
+}
+
+} // namespace
+
+LiveGrouping::History LiveGrouping::History::copy() const {
+  History out;
+  out.session = session ? session->clone() : nullptr;
+  out.settings = settings;
+  out.grouping = grouping;
+  out.stroke_ids = stroke_ids;
+  out.answers = answers;
+  return out;
+}
+
+bool LiveGrouping::groups() {
+  int known = groups_.load();
+  if (known < 0) {
+    known = state_.analyzer && state_.analyzer->group_session({}, {}) ? 1 : 0;
+    groups_.store(known);
+  }
+  return known == 1;
+}
+
+void LiveGrouping::finish(const std::string& device_id, Stroke stroke) {
+  std::shared_ptr<Lane> lane;
+  {
+    std::lock_guard lock(mutex_);
+    auto& slot = lanes_[device_id];
+    if (!slot) slot = std::make_shared<Lane>();
+    lane = slot;
+  }
+  {
+    std::lock_guard lock(lane->mutex);
+    lane->queue.push_back({std::move(stroke), std::chrono::steady_clock::now()});
+    if (lane->running) return; // the strand takes it after the strokes before it
+    lane->running = true;
+  }
+  job_started_();
+  if (state_.stroke_pool.submit([this, lane, device_id](const StopCondition& /*unused*/) {
+        run_strand(lane, device_id);
+      })) {
+    return;
+  }
+  job_done_();
+  // Never block the reader and never lose a stroke: publish them without their analysis.
+  std::deque<Pending> refused;
+  {
+    std::lock_guard lock(lane->mutex);
+    refused.swap(lane->queue);
+    lane->running = false;
+  }
+  for (const Pending& p : refused) {
+    publish_stroke(state_.hub, device_id, p.stroke, nullptr,
+                   "the geometry queue was full; the stroke was not analysed", {});
+  }
+}
+
+void LiveGrouping::run_strand(const std::shared_ptr<Lane>& lane, const std::string& device_id) {
+  for (;;) {
+    Pending next;
+    {
+      std::lock_guard lock(lane->mutex);
+      if (lane->queue.empty()) {
+        lane->running = false;
+        break;
+      }
+      next = std::move(lane->queue.front());
+      lane->queue.pop_front();
+    }
+    process(*lane, device_id, std::move(next));
+  }
+  job_done_();
+}
+
+void LiveGrouping::process(Lane& lane, const std::string& device_id, Pending pending) {
+  const auto started = std::chrono::steady_clock::now();
+  v1::Timings timings;
+  timings.set_queued_us(micros(started - pending.submitted));
+  const Stroke& stroke = pending.stroke;
+  History& h = lane.history;
+  const PenSettings settings = settings_for(state_, stroke.tablet);
+  const GroupingConfig grouping = state_.grouping.get();
+  // New settings (Config RPC) or a long session: start afresh with the values now in force.
+  if (!h.session || !(h.settings == settings) || !same_grouping(h.grouping, grouping) ||
+      h.session->stroke_count() >= kMaxSessionStrokes) {
+    h = History{};
+    h.session = state_.analyzer->group_session(settings, grouping);
+    h.settings = settings;
+    h.grouping = grouping;
+  }
+  const StopCondition stop(started + std::chrono::seconds(state_.limits.max_call_seconds), {});
+  try {
+    GroupedStrokeAnalysis result = h.session->add(stroke, true, cancel_hook(stop));
+    const auto now = std::chrono::steady_clock::now();
+    timings.set_compute_us(micros(now - started));
+    timings.set_total_us(micros(now - pending.submitted));
+    publish(device_id, stroke, result, timings, h);
+    if (published_) published_(device_id, stroke.id, result.analysis.ink_polygon, settings);
+  } catch (const std::exception& e) {
+    publish_stroke(state_.hub, device_id, stroke, nullptr,
+                   std::string("analysis failed: ") + e.what(), timings);
+  } catch (...) {
+    publish_stroke(state_.hub, device_id, stroke, nullptr, "analysis failed", timings);
+  }
+  // After the shape is out: the copy a preview of the next stroke starts from.
+  std::shared_ptr<const History> snapshot;
+  if (state_.hub.wants_previews()) snapshot = std::make_shared<const History>(h.copy());
+  std::lock_guard lock(lane.mutex);
+  lane.snapshot = std::move(snapshot);
+}
+
+void LiveGrouping::publish(const std::string& device_id, const Stroke& stroke,
+                           GroupedStrokeAnalysis& result, const v1::Timings& timings,
+                           History& history) {
+  v1::LiveEvent finished;
+  finished.set_device_id(device_id);
+  v1::StrokeFinished* f = finished.mutable_stroke_finished();
+  to_proto(stroke, f->mutable_stroke());
+  *f->mutable_ink_polygon() = result.analysis.ink_polygon; // kept for the deconstruction
+  state_.hub.publish(std::move(finished));
+
+  v1::LiveEvent event;
+  event.set_device_id(device_id);
+  v1::ShapeRecognized* s = event.mutable_shape();
+  s->set_stroke_id(stroke.id);
+  s->mutable_shape()->Swap(&result.analysis.shape);
+  for (auto& alternative : result.analysis.alternatives) s->add_alternatives()->Swap(&alternative);
+  *s->mutable_timings() = timings;
+  const std::uint64_t shape_id = ++next_shape_id_;
+  s->set_shape_id(shape_id);
+  if (result.grouped) history.stroke_ids.push_back(stroke.id); // its session index
+  const bool snapped = s->shape().kind() != v1::SHAPE_KIND_NONE;
+  if (!result.grouped && snapped) s->add_replaced_stroke_ids(stroke.id);
+  if (result.grouped && snapped) {
+    for (const std::size_t i : result.strokes) {
+      if (i < history.stroke_ids.size()) s->add_replaced_stroke_ids(history.stroke_ids[i]);
+    }
+  }
+  for (const std::size_t id : result.superseded) {
+    const auto it = history.answers.find(id);
+    s->add_supersedes_shape_ids(it == history.answers.end() ? 0 : it->second.shape_id);
+    s->add_supersedes_sequences(it == history.answers.end() ? 0 : it->second.sequence);
+    if (it != history.answers.end()) history.answers.erase(it);
+  }
+  for (const std::string& t : result.tidy) s->add_tidy(t);
+  const std::uint64_t sequence = state_.hub.publish(std::move(event));
+  if (!result.grouped) return;
+  history.answers[result.answer] = {shape_id, sequence};
+  while (history.answers.size() > kRecentAnswers) history.answers.erase(history.answers.begin());
+}
+
+void LiveGrouping::forget_device(const std::string& device_id) {
+  std::lock_guard lock(mutex_);
+  const auto it = lanes_.find(device_id);
+  if (it == lanes_.end()) return;
+  std::lock_guard lane_lock(it->second->mutex);
+  if (!it->second->running) lanes_.erase(it);
+}
+
+std::optional<v1::PreviewGroup> LiveGrouping::preview_group(const std::string& device_id,
+                                                            const Stroke& partial,
+                                                            const CancelHook& cancel) {
+  std::shared_ptr<const History> snapshot;
+  {
+    std::lock_guard lock(mutex_);
+    const auto it = lanes_.find(device_id);
+    if (it == lanes_.end()) return std::nullopt;
+    std::lock_guard lane_lock(it->second->mutex);
+    snapshot = it->second->snapshot;
+  }
+  if (!snapshot || !snapshot->session || snapshot->session->stroke_count() == 0) {
+    return std::nullopt;
+  }
+  // The stroke so far added to a copy: the strand's own grouping is untouched.
+  const std::unique_ptr<StrokeGroupSession> session = snapshot->session->clone();
+  GroupedStrokeAnalysis result;
+  try {
+    result = session->add(partial, false, cancel);
+  } catch (const std::exception&) {
+    return std::nullopt; // a stroke so far the grouping refuses (or cancelled): no group preview
+  }
+  const v1::ShapeKind kind = result.analysis.shape.kind();
+  if (!result.grouped || result.strokes.size() < 2 || kind == v1::SHAPE_KIND_NONE ||
+      kind == v1::SHAPE_KIND_UNSPECIFIED) {
+    return std::nullopt;
+  }
+  v1::PreviewGroup group;
+  group.mutable_shape()->Swap(&result.analysis.shape);
+  for (const std::size_t i : result.strokes) {
+    const bool earlier = i < snapshot->stroke_ids.size();
+    group.add_replaced_stroke_ids(earlier ? snapshot->stroke_ids[i] : partial.id);
+  }
+  for (const std::size_t id : result.superseded) {
+    const auto it = snapshot->answers.find(id);
+    group.add_supersedes_shape_ids(it == snapshot->answers.end() ? 0 : it->second.shape_id);
+  }
+  for (const std::string& t : result.tidy) group.add_tidy(t);
+  return group;
+}
+
+} // namespace penshape::daemon

@@ -1,0 +1,100 @@
+#pragma once
+// The pipeline's sequenced stage for live strokes: each tablet's finished strokes are grouped
+// with its recent strokes (the analyzer's StrokeGroupSession, core's StrokeGrouper). Strokes of
+// all devices are analysed on the stroke lane, but one device's strokes run one at a time and
+// in drawing order (a strand per device: a job on the stroke lane that takes the device's
+// queued strokes until none is left), since a grouping must see them in order. A stroke's ink
+// polygon and shape are computed in that one step, so grouping adds no hand-over between workers
+// to the pen-up -> shape path.
+//
+// Each answer is published as StrokeFinished then ShapeRecognized with its shape_id, the ids of
+// the strokes whose ink it replaces and the shape_ids (and LiveEvent sequences) of the earlier
+// answers it supersedes. While previews are wanted, a copy of each device's grouping is kept
+// after every stroke, so a preview can add the stroke in progress to a copy of its own (on the
+// preview lane, without touching the strand's state).
+#include <atomic>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "daemon_state.hpp"
+#include "penshape/v1/live.pb.h"
+
+namespace penshape::daemon {
+
+class LiveGrouping {
+ public:
+  // A session holds at most this many strokes; then it starts afresh (strokes that old can no
+  // longer group; this bounds a long session's memory and the cost of a preview's copy).
+  static constexpr std::size_t kMaxSessionStrokes = 256;
+
+  // Told after a stroke's shape is published, with its ink polygon (the deconstruction follows).
+  using ShapePublished = std::function<void(const std::string& device_id, std::uint64_t stroke_id,
+                                            const v1::PolygonSet& ink, const PenSettings&)>;
+  // `job_started` / `job_done` account the strand jobs (Pipeline::wait_idle).
+  LiveGrouping(DaemonState& state, std::function<void()> job_started,
+               std::function<void()> job_done, ShapePublished published)
+      : state_(state),
+        job_started_(std::move(job_started)),
+        job_done_(std::move(job_done)),
+        published_(std::move(published)) {}
+
+  // The analyzer groups strokes (else each live stroke is analysed alone, concurrently).
+  bool groups();
+  // Queues a finished stroke for its device's strand (call only when groups()).
+  void finish(const std::string& device_id, Stroke stroke);
+  // The device is gone: its grouping is forgotten (unless its strand still runs).
+  void forget_device(const std::string& device_id);
+  // The certified group the stroke in progress would complete with its device's recent strokes
+  // if the pen lifted now, or nothing. Called on the preview lane.
+  std::optional<v1::PreviewGroup> preview_group(const std::string& device_id, const Stroke& partial,
+                                                const CancelHook& cancel);
+
+ private:
+  struct Answer {
+    std::uint64_t shape_id = 0;
+    std::uint64_t sequence = 0;
+  };
+  // A device's grouping and what its session's indices and ids stand for.
+  struct History {
+    std::unique_ptr<StrokeGroupSession> session;
+    PenSettings settings;
+    GroupingConfig grouping;
+    std::vector<std::uint64_t> stroke_ids; // by session stroke index
+    std::map<std::size_t, Answer> answers; // by session answer id, the recent ones
+    [[nodiscard]] History copy() const;
+  };
+  struct Pending {
+    Stroke stroke;
+    std::chrono::steady_clock::time_point submitted;
+  };
+  struct Lane {
+    std::mutex mutex;
+    std::deque<Pending> queue;               // guarded by mutex
+    bool running = false;                    // a strand job runs (guarded by mutex)
+    History history;                         // used by the running strand job only
+    std::shared_ptr<const History> snapshot; // for previews, guarded by mutex
+  };
+
+  void run_strand(const std::shared_ptr<Lane>& lane, const std::string& device_id);
+  void process(Lane& lane, const std::string& device_id, Pending pending);
+  void publish(const std::string& device_id, const Stroke& stroke, GroupedStrokeAnalysis& result,
+               const v1::Timings& timings, History& history);
+
+  DaemonState& state_;
+  std::function<void()> job_started_;
+  std::function<void()> job_done_;
+  ShapePublished published_;
+  std::atomic<int> groups_{-1}; // the analyzer groups: -1 not known yet, 0 no, 1 yes
+  std::atomic<std::uint64_t> next_shape_id_{0};
+  std::mutex mutex_;                                   // guards lanes_
+  std::map<std::string, std::shared_ptr<Lane>> lanes_; // by device id
+};
+
+} // namespace penshape::daemon

@@ -1,0 +1,66 @@
+// `penshape watch` prints what a grouped answer replaces: the strokes whose ink it replaces and
+// the earlier shapes it supersedes, in its text line and its JSON object, and a preview's group.
+#include "live_event_text.hpp"
+
+#include <gtest/gtest.h>
+
+namespace {
+
+namespace v1 = penshape::v1;
+
+v1::LiveEvent rectangle_upgrade() {
+  v1::LiveEvent event;
+  event.set_sequence(40);
+  event.set_device_id("hidraw3");
+  v1::ShapeRecognized* s = event.mutable_shape();
+  s->set_stroke_id(4);
+  s->mutable_shape()->set_kind(v1::SHAPE_KIND_RECTANGLE);
+  s->set_shape_id(9);
+  for (std::uint64_t id : {1, 2, 3, 4}) s->add_replaced_stroke_ids(id);
+  s->add_supersedes_shape_ids(7);
+  s->add_supersedes_sequences(31);
+  s->add_tidy("axis");
+  return event;
+}
+
+TEST(LiveEventText, ShapeLineNamesReplacedStrokesAndSupersededShapes) {
+  const std::string line = penshape::cli::event_line(rectangle_upgrade());
+  EXPECT_NE(line.find("[hidraw3] stroke 4 (shape 9) is a rectangle"), std::string::npos) << line;
+  EXPECT_NE(line.find("; replaces strokes 1 2 3 4; supersedes shape 7; tidy axis"),
+            std::string::npos)
+      << line;
+}
+
+TEST(LiveEventText, ShapeJsonNamesReplacedStrokesAndSupersededShapes) {
+  const std::string json = penshape::cli::event_json(rectangle_upgrade());
+  EXPECT_NE(json.find("\"shape_id\":9"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"replaced_stroke_ids\":[1,2,3,4]"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"supersedes_shape_ids\":[7]"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"supersedes_sequences\":[31]"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"tidy\":[\"axis\"]"), std::string::npos) << json;
+}
+
+TEST(LiveEventText, LoneShapeLineIsUnchangedButForItsId) {
+  v1::LiveEvent event;
+  event.set_device_id("hidraw3");
+  event.mutable_shape()->set_stroke_id(5);
+  event.mutable_shape()->mutable_shape()->set_kind(v1::SHAPE_KIND_NONE);
+  EXPECT_EQ(penshape::cli::event_line(event).find("replaces"), std::string::npos);
+  EXPECT_EQ(penshape::cli::event_line(event).find("(shape"), std::string::npos);
+}
+
+TEST(LiveEventText, PreviewOfAGroupNamesItsStrokes) {
+  v1::LiveEvent event;
+  event.set_device_id("hidraw3");
+  v1::PreviewCandidates* p = event.mutable_preview();
+  p->set_stroke_id(4);
+  p->mutable_group()->mutable_shape()->set_kind(v1::SHAPE_KIND_RECTANGLE);
+  for (std::uint64_t id : {1, 2, 3, 4}) p->mutable_group()->add_replaced_stroke_ids(id);
+  p->mutable_group()->add_supersedes_shape_ids(7);
+  const std::string line = penshape::cli::event_line(event);
+  EXPECT_NE(line.find("with earlier strokes: rectangle"), std::string::npos) << line;
+  EXPECT_NE(line.find("replaces strokes 1 2 3 4; supersedes shape 7"), std::string::npos) << line;
+  EXPECT_NE(penshape::cli::event_json(event).find("\"group\":{"), std::string::npos);
+}
+
+} // namespace
