@@ -84,6 +84,11 @@ bool SegmentIndex::any_within(PointD p, double radius) const {
 }
 
 double SegmentIndex::nearest_above(PointD p, double floor) const {
+  std::uint32_t id = 0;
+  return nearest_above(p, floor, id);
+}
+
+double SegmentIndex::nearest_above(PointD p, double floor, std::uint32_t& id) const {
   if (segments_.empty()) return INFINITY;
   const std::int64_t pc = column(p.x), pr = row(p.y);
   // Rings of cells around p's cell: after ring k every unvisited cell is at least k cells
@@ -95,7 +100,11 @@ double SegmentIndex::nearest_above(PointD p, double floor) const {
     const auto cell = static_cast<std::size_t>(r * nx_ + c);
     for (std::uint32_t k = start_[cell]; k < start_[cell + 1]; ++k) {
       const Segment& s = segments_[ids_[k]];
-      best2 = std::min(best2, segment_distance2(p, s.a, s.b));
+      const double d2 = segment_distance2(p, s.a, s.b);
+      if (d2 < best2) {
+        best2 = d2;
+        id = ids_[k];
+      }
       if (best2 <= floor2) return true;
     }
     return false;
