@@ -37,9 +37,10 @@ class CertifiedShape {
 
   [[nodiscard]] const CleanShape& shape() const { return shape_; }
 
- private:
-  [[nodiscard]] detail::IPoint curve_point(double t) const; // encloses shape.at(t)
+  // Encloses shape.at(t) (curves only).
+  [[nodiscard]] detail::IPoint curve_point(double t) const;
 
+ private:
   const CleanShape& shape_;
   detail::IntervalNT cos_r_{1.0}, sin_r_{0.0};
   double end_slack_ = 0.0;

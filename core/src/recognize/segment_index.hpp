@@ -22,6 +22,9 @@ class SegmentIndex {
 
   // True when some segment is at distance <= radius from p (exact up to rounding).
   [[nodiscard]] bool any_within(PointD p, double radius) const;
+  // False only when every segment is certainly farther than radius from p (interval arithmetic
+  // with directed rounding through geometry/distance_kernel.hpp): a selection that never misses.
+  [[nodiscard]] bool maybe_within(PointD p, double radius) const;
 
   // The distance from p to the nearest segment when it exceeds `floor`; otherwise some value
   // <= floor (the search stops at the first segment within floor). +inf without segments.
