@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -184,6 +186,50 @@ TEST(VerifyCli, CorruptedRecognitionsFail) {
   EXPECT_EQ(run(replaced(answer, "\"certificate\":{", "\"certificat\":{")).exit_code, 2);
   EXPECT_EQ(run(replaced(answer, "\"class\":\"circle\"", "\"class\":\"blob\"")).exit_code, 2);
   EXPECT_EQ(run(replaced(answer, "\"lines\":[", "\"lines\":[99,")).exit_code, 2);
+}
+
+// A rectangle drawn as two L's (JSON lines): one answer for both strokes ("lines": [1, 2]); it
+// verifies on their union, and a corner moved by 2 eps does not.
+TEST(VerifyCli, GroupAnswerIsCheckedOnTheUnion) {
+  std::string text;
+  double t = 0;
+  const auto point = [&](double x, double y) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "[%.6f, %.6f, %.3f]", x, y, t);
+    text += buf;
+  };
+  const auto stroke = [&](std::initializer_list<std::pair<double, double>> corners) {
+    std::vector<std::pair<double, double>> c(corners);
+    text += "{\"points\": [";
+    for (std::size_t i = 0; i + 1 < c.size(); ++i) {
+      for (int k = 0; k < 30; ++k, t += 0.01) {
+        const double f = k / 30.0;
+        point(c[i].first + f * (c[i + 1].first - c[i].first) + 0.3 * std::sin(t * 50),
+              c[i].second + f * (c[i + 1].second - c[i].second));
+        text += ", ";
+      }
+    }
+    point(c.back().first, c.back().second);
+    text += "]}\n";
+    t += 0.3;
+  };
+  stroke({{0, 0}, {100, 0}, {100, 60}});
+  stroke({{100, 60}, {0, 60}, {0, 0}});
+  const std::string strokes = write("two_ls.jsonl", text);
+  std::string answer;
+  const Result ok = recognize_and_verify(strokes, &answer);
+  ASSERT_NE(answer.find("\"lines\":[1,2]"), std::string::npos) << answer;
+  ASSERT_NE(answer.find("\"class\":\"rectangle\""), std::string::npos) << answer;
+  EXPECT_EQ(ok.exit_code, 0) << ok.out;
+  EXPECT_EQ(ok.out, "verified\n");
+  // The first corner moved 30 to the right (eps is about 15).
+  const auto v = answer.find("\"vertices\":[[") + 13;
+  const auto comma = answer.find(',', v);
+  const double x = std::stod(answer.substr(v, comma - v));
+  const std::string moved = answer.substr(0, v) + std::to_string(x + 30.0) + answer.substr(comma);
+  const Result bad = penshape::test::run_command(cli() + " verify " + strokes + " " +
+                                                 write("two_ls_moved.json", moved));
+  EXPECT_EQ(bad.exit_code, 1) << bad.out;
 }
 
 } // namespace

@@ -180,6 +180,7 @@ RowCrossing crossing(PointD a, PointD b, double y) {
 // interval holds x). `crossed` counts the crossings with lo < x so far (x increases).
 int parity(const std::vector<RowCrossing>& xs, double widest, double x, std::size_t& crossed) {
   while (crossed < xs.size() && xs[crossed].lo < x) ++crossed;
+  if (crossed < xs.size() && xs[crossed].lo <= x) return -1; // lo == x: it holds x
   // Crossings at lo >= x are right of x. Of those left of it, only the last few (lo within
   // `widest` of x) can reach x.
   for (std::size_t k = crossed; k-- > 0;) {
