@@ -2,6 +2,7 @@
 // the independent exact verifier of penshape/core/verify.hpp.
 #include "verify_command.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -13,7 +14,9 @@
 #include "json_reader.hpp"
 #include "json_writer.hpp"
 #include "penshape/core/verify.hpp"
+#include "stroke_files.hpp"
 #include "verify_answer.hpp"
+#include "verify_recognition_answer.hpp"
 
 namespace penshape::cli {
 namespace {
@@ -31,7 +34,14 @@ constexpr const char* kHelp =
     "proof did not close near a point). With several answers each line is `answer N: ...`.\n"
     "--json prints one object per answer: answer, status (verified|refuted|unproven), verified,\n"
     "message, cells.\n"
-    "Exit codes: 0 every answer verified, 1 some answer not verified, 2 bad input.";
+    "Exit codes: 0 every answer verified, 1 some answer not verified, 2 bad input.\n\n"
+    "Recognition answers: FILE is the stroke file `penshape recognize FILE --json` read and\n"
+    "ANSWER.json what it printed (one object per shape or group; the strokes are found by\n"
+    "\"lines\"). eps and r come from each answer's certificate. The clean shape is rebuilt from\n"
+    "its class and params (curves as chord polylines with a derived deviation) and the paths are\n"
+    "proven within eps of each other (which bounds the inks, r-disks on both, by the same):\n"
+    "refuted names a point of one ink farther than eps from the other; unproven says where the\n"
+    "paths are not within eps. Freeform answers claim nothing and are accepted.";
 
 std::string read_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -64,6 +74,88 @@ void print(const VerifyReport& rep, const DeconstructionClaim& claim, std::size_
   std::puts(line.c_str());
 }
 
+// The strokes an answer covers, by their lines in the stroke file.
+std::vector<std::vector<PointD>> strokes_of(const std::vector<FileStroke>& file,
+                                            const RecognitionAnswer& a) {
+  std::vector<std::vector<PointD>> out;
+  for (const std::size_t line : a.lines) {
+    const auto it =
+        std::find_if(file.begin(), file.end(), [&](const FileStroke& s) { return s.line == line; });
+    if (it == file.end()) throw InputError("no stroke at line " + std::to_string(line));
+    std::vector<PointD> points;
+    for (const StrokePoint& p : it->points) points.push_back({p.x, p.y});
+    out.push_back(std::move(points));
+  }
+  return out;
+}
+
+void print_recognition(const VerifyReport& rep, const RecognitionAnswer& a, std::size_t index,
+                       std::size_t count, bool as_json) {
+  if (as_json) {
+    JsonWriter json;
+    json.begin_object();
+    json.key("line").integer(static_cast<std::int64_t>(a.lines.front()));
+    json.key("class").string(to_string(a.claim.shape));
+    json.key("status").string(to_string(rep.status));
+    json.key("verified").boolean(rep.status == VerifyStatus::kVerified);
+    json.key("message").string(rep.message);
+    json.key("cells").integer(static_cast<std::int64_t>(rep.cells));
+    json.end_object();
+    std::puts(json.str().c_str());
+    return;
+  }
+  std::string line = count > 1 ? "answer " + std::to_string(index + 1) + ": " : std::string();
+  if (rep.status == VerifyStatus::kVerified) {
+    line += rep.message;
+  } else {
+    line += "line " + std::to_string(a.lines.front()) + " " + to_string(a.claim.shape) + " " +
+            to_string(rep.status) + ": " + rep.message;
+  }
+  std::puts(line.c_str());
+}
+
+// FILE is a stroke file and `values` what `recognize --json` printed.
+int verify_recognitions(const std::string& path, const std::string& answer_path,
+                        const std::vector<JsonValue>& values, bool as_json) {
+  std::vector<RecognitionAnswer> answers;
+  std::vector<std::vector<std::vector<PointD>>> strokes;
+  try {
+    std::vector<FileStroke> file;
+    try {
+      file = read_stroke_file(path);
+    } catch (const StrokeFileError& e) {
+      throw InputError(e.what());
+    }
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      if (is_recognition_summary(values[i])) continue;
+      try {
+        answers.push_back(recognition_from_json(values[i]));
+        strokes.push_back(strokes_of(file, answers.back()));
+      } catch (const InputError& e) {
+        throw InputError(answer_path + ": answer " + std::to_string(i + 1) + ": " + e.what());
+      }
+    }
+    if (answers.empty()) throw InputError(answer_path + ": no answer");
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "penshape verify: %s\n", e.what());
+    return kExitBadInput;
+  }
+  bool all = true;
+  for (std::size_t i = 0; i < answers.size(); ++i) {
+    VerifyReport rep;
+    try {
+      rep = verify_recognition(strokes[i], answers[i].claim);
+    } catch (const InvalidInput& e) {
+      std::fprintf(stderr, "penshape verify: %s: answer %zu: %s\n", answer_path.c_str(), i + 1,
+                   e.what());
+      return kExitBadInput;
+    }
+    all = all && rep.status == VerifyStatus::kVerified;
+    print_recognition(rep, answers[i], i, answers.size(), as_json);
+  }
+  return all ? kExitOk : kExitInternal;
+}
+
 } // namespace
 
 int run_verify(std::span<const std::string_view> args) {
@@ -77,6 +169,22 @@ int run_verify(std::span<const std::string_view> args) {
   const std::string& answer_path = parsed.positionals()[1];
   std::vector<DeconstructionClaim> claims;
   PolygonSet q;
+  {
+    // Recognition answers (they name a class) go with a stroke file.
+    std::vector<JsonValue> values;
+    try {
+      values = parse_json_values(read_text(answer_path));
+    } catch (const JsonError& e) {
+      std::fprintf(stderr, "penshape verify: %s: %s\n", answer_path.c_str(), e.what());
+      return kExitBadInput;
+    } catch (const InputError& e) {
+      std::fprintf(stderr, "penshape verify: %s\n", e.what());
+      return kExitBadInput;
+    }
+    if (!values.empty() && is_recognition_answer(values.front())) {
+      return verify_recognitions(path, answer_path, values, parsed.flag("--json"));
+    }
+  }
   try {
     q = read_polygon_file(path);
     if (q.empty()) throw InputError(path + ": no polygon");

@@ -2,10 +2,15 @@
 // --json` verify, corrupted ones fail with exit code 1, bad input exits 2.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
 #include "run_command.hpp"
+#include "test_data.hpp"
 
 namespace {
 
@@ -98,6 +103,133 @@ TEST(VerifyCli, BadInputExitsTwo) {
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_NE(missing.out.find("params.tolerance"), std::string::npos) << missing.out;
   EXPECT_EQ(penshape::test::run_command(cli() + " verify " + square()).exit_code, 2);
+}
+
+// ---- Recognition answers ----
+
+// `recognize FILE --json` written next to the tests, and `verify FILE` on it.
+Result recognize_and_verify(const std::string& strokes, std::string* answer_out = nullptr) {
+  const Result rec = penshape::test::run_command(cli() + " recognize '" + strokes + "' --json");
+  EXPECT_EQ(rec.exit_code, 0) << strokes << ": " << rec.out;
+  const std::string a = write("recognized.json", rec.out);
+  if (answer_out) *answer_out = rec.out;
+  return penshape::test::run_command(cli() + " verify '" + strokes + "' " + a);
+}
+
+// Every stroke file under `dir`, every `stride`th in sorted order.
+std::vector<std::string> stroke_files(const std::filesystem::path& dir, std::size_t stride) {
+  std::vector<std::string> all;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(dir)) {
+    if (e.path().extension() == ".xml") all.push_back(e.path().string());
+  }
+  std::sort(all.begin(), all.end());
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < all.size(); i += stride) out.push_back(all[i]);
+  return out;
+}
+
+TEST(VerifyCli, RecognitionsOfBundledStrokesVerify) {
+  const auto files = stroke_files(penshape::test::bundled_data_dir() / "strokes", 2);
+  ASSERT_GT(files.size(), 150U); // every other file (all 334 take 40 s)
+  for (const std::string& f : files) {
+    const Result r = recognize_and_verify(f);
+    EXPECT_EQ(r.exit_code, 0) << f << ": " << r.out;
+  }
+}
+
+TEST(VerifyCli, RecognitionsOfSharedStrokesVerify) {
+  PENSHAPE_SHARED_OR_SKIP(dir, "strokes/dollar1");
+  for (const std::string& f : stroke_files(dir, 40)) {
+    const Result r = recognize_and_verify(f);
+    EXPECT_EQ(r.exit_code, 0) << f << ": " << r.out;
+  }
+}
+
+// Replaces the first `from` in `text` by `to`.
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from << " in " << text;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+TEST(VerifyCli, CorruptedRecognitionsFail) {
+  const std::string f =
+      (penshape::test::bundled_data_dir() / "strokes/dollar1/s02/medium/circle03.xml").string();
+  std::string answer;
+  ASSERT_EQ(recognize_and_verify(f, &answer).exit_code, 0);
+  // The answer: a circle of radius about 45.5 with eps about 16 (see the file's recognition).
+  ASSERT_NE(answer.find("\"class\":\"circle\""), std::string::npos) << answer;
+  const auto run = [&](const std::string& text) {
+    return penshape::test::run_command(cli() + " verify '" + f + "' " +
+                                       write("corrupt.json", text));
+  };
+  // The centre moved by 2 eps (32 to the right).
+  const auto c = answer.find("\"center\":[") + 10;
+  const auto comma = answer.find(',', c);
+  const double x = std::stod(answer.substr(c, comma - c));
+  const Result moved = run(answer.substr(0, c) + std::to_string(x + 32.0) + answer.substr(comma));
+  EXPECT_EQ(moved.exit_code, 1) << moved.out;
+  EXPECT_NE(moved.out.find("circle "), std::string::npos) << moved.out;
+  // eps shrunk to 2 (the stroke wanders about 8 from the circle).
+  const auto e = answer.find("\"epsilon\":") + 10;
+  const auto e_end = answer.find(',', e);
+  const Result shrunk = run(answer.substr(0, e) + "2" + answer.substr(e_end));
+  EXPECT_EQ(shrunk.exit_code, 1) << shrunk.out;
+  // The class swapped: a segment through two points of the circle.
+  const Result swapped =
+      run(replaced(replaced(answer, "\"class\":\"circle\"", "\"class\":\"segment\""),
+                   "\"params\":{", "\"params\":{\"vertices\":[[90,191],[182,191]],"));
+  EXPECT_EQ(swapped.exit_code, 1) << swapped.out;
+  EXPECT_NE(swapped.out.find("segment refuted"), std::string::npos) << swapped.out;
+  // Bad input: no certificate, an unknown class, a line with no stroke.
+  EXPECT_EQ(run(replaced(answer, "\"certificate\":{", "\"certificat\":{")).exit_code, 2);
+  EXPECT_EQ(run(replaced(answer, "\"class\":\"circle\"", "\"class\":\"blob\"")).exit_code, 2);
+  EXPECT_EQ(run(replaced(answer, "\"lines\":[", "\"lines\":[99,")).exit_code, 2);
+}
+
+// A rectangle drawn as two L's (JSON lines): one answer for both strokes ("lines": [1, 2]); it
+// verifies on their union, and a corner moved by 2 eps does not.
+TEST(VerifyCli, GroupAnswerIsCheckedOnTheUnion) {
+  std::string text;
+  double t = 0;
+  const auto point = [&](double x, double y) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "[%.6f, %.6f, %.3f]", x, y, t);
+    text += buf;
+  };
+  const auto stroke = [&](std::initializer_list<std::pair<double, double>> corners) {
+    std::vector<std::pair<double, double>> c(corners);
+    text += "{\"points\": [";
+    for (std::size_t i = 0; i + 1 < c.size(); ++i) {
+      for (int k = 0; k < 30; ++k, t += 0.01) {
+        const double f = k / 30.0;
+        point(c[i].first + f * (c[i + 1].first - c[i].first) + 0.3 * std::sin(t * 50),
+              c[i].second + f * (c[i + 1].second - c[i].second));
+        text += ", ";
+      }
+    }
+    point(c.back().first, c.back().second);
+    text += "]}\n";
+    t += 0.3;
+  };
+  stroke({{0, 0}, {100, 0}, {100, 60}});
+  stroke({{100, 60}, {0, 60}, {0, 0}});
+  const std::string strokes = write("two_ls.jsonl", text);
+  std::string answer;
+  const Result ok = recognize_and_verify(strokes, &answer);
+  ASSERT_NE(answer.find("\"lines\":[1,2]"), std::string::npos) << answer;
+  ASSERT_NE(answer.find("\"class\":\"rectangle\""), std::string::npos) << answer;
+  EXPECT_EQ(ok.exit_code, 0) << ok.out;
+  EXPECT_EQ(ok.out, "verified\n");
+  // The first corner moved 30 to the right (eps is about 15).
+  const auto v = answer.find("\"vertices\":[[") + 13;
+  const auto comma = answer.find(',', v);
+  const double x = std::stod(answer.substr(v, comma - v));
+  const std::string moved = answer.substr(0, v) + std::to_string(x + 30.0) + answer.substr(comma);
+  const Result bad = penshape::test::run_command(cli() + " verify " + strokes + " " +
+                                                 write("two_ls_moved.json", moved));
+  EXPECT_EQ(bad.exit_code, 1) << bad.out;
 }
 
 } // namespace

@@ -10,6 +10,8 @@
 #include <CGAL/Interval_nt.h>
 #include <CGAL/gmpxx.h>
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 
 #include "penshape/core/polygon_set.hpp"
@@ -88,5 +90,52 @@ inline int compare_squared_distance(const ExactPoint& p, const IPoint& pi, const
   const int c = cmp(*squared_distance_to_segment(pe, se, te), r2);
   return (c > 0) - (c < 0);
 }
+
+} // namespace penshape::detail
+
+// ---- Certified upper bounds (the recognizer's snap certificates) ----
+// A certificate's bound is a maximum of distances, each bounded above through a part of the other
+// side that doubles proposed (the nearest segment, the foot point on a curve): any part gives an
+// upper bound, so a poor proposal only loosens the bound, never breaks it. These evaluate with
+// Interval_nt<false>, so the caller holds a CGAL::Protect_FPU_rounding<true> guard.
+namespace penshape::detail {
+
+inline IPoint enclose(PointD p) { return {IntervalNT(p.x), IntervalNT(p.y)}; }
+
+// Encloses d(p, [s, t])² for every p in the box: the exact case where certain, else the distance
+// to the segment's line below and to its nearer end above.
+inline IntervalNT squared_distance_enclosure(const IPoint& p, const IPoint& s, const IPoint& t) {
+  if (const auto d2 = squared_distance_to_segment(p, s, t)) return *d2;
+  const IntervalNT dx = t.x - s.x, dy = t.y - s.y;
+  const IntervalNT to_s = CGAL::square(p.x - s.x) + CGAL::square(p.y - s.y);
+  const IntervalNT to_t = CGAL::square(p.x - t.x) + CGAL::square(p.y - t.y);
+  const IntervalNT len2 = CGAL::square(dx) + CGAL::square(dy);
+  const double line =
+      len2.inf() > 0 ? (CGAL::square(dx * (p.y - s.y) - dy * (p.x - s.x)) / len2).inf() : 0.0;
+  return {std::max(0.0, line), std::min(to_s.sup(), to_t.sup())};
+}
+
+// >= d(p, [s, t]) for every p in the box.
+inline double distance_upper(const IPoint& p, const IPoint& s, const IPoint& t) {
+  return CGAL::sqrt(squared_distance_enclosure(p, s, t)).sup();
+}
+inline double distance_upper(const IPoint& p, PointD s, PointD t) {
+  return distance_upper(p, enclose(s), enclose(t));
+}
+// >= |p - q| for every p, q in the boxes.
+inline double distance_upper(const IPoint& p, const IPoint& q) {
+  return CGAL::sqrt(CGAL::square(p.x - q.x) + CGAL::square(p.y - q.y)).sup();
+}
+
+// cos and sin enclosed: the C library's result widened by two ulps each side (glibc documents at
+// most 1 ulp for both on x86-64 and aarch64). Call these in the default rounding mode (outside
+// the guard): the library's accuracy is stated for it.
+inline IntervalNT widen_ulps(double v) {
+  const double lo = std::nextafter(std::nextafter(v, -HUGE_VAL), -HUGE_VAL);
+  const double hi = std::nextafter(std::nextafter(v, HUGE_VAL), HUGE_VAL);
+  return {std::max(-1.0, lo), std::min(1.0, hi)};
+}
+inline IntervalNT enclose_cos(double t) { return widen_ulps(std::cos(t)); }
+inline IntervalNT enclose_sin(double t) { return widen_ulps(std::sin(t)); }
 
 } // namespace penshape::detail

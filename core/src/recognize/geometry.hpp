@@ -1,10 +1,12 @@
 #pragma once
 // Small double-precision plane geometry shared by the recognizer's fitters and its certificate.
+// Point-to-segment distance is the kernel's (geometry/distance_kernel.hpp), not a copy.
 #include <algorithm>
 #include <cmath>
 #include <span>
 #include <vector>
 
+#include "geometry/distance_kernel.hpp"
 #include "penshape/core/polygon_set.hpp"
 
 namespace penshape::recognize_detail {
@@ -17,14 +19,12 @@ inline double cross(PointD a, PointD b) { return a.x * b.y - a.y * b.x; }
 inline double norm(PointD a) { return std::sqrt(a.x * a.x + a.y * a.y); }
 inline double distance(PointD a, PointD b) { return norm(a - b); }
 
-// Squared distance from p to the segment [a, b] (a == b allowed).
+// Squared distance from p to the segment [a, b] (a == b allowed): the one kernel's double
+// instance (geometry/distance_kernel.hpp), which proposes; certificates evaluate the same formula
+// in intervals (certified_distance.hpp).
 inline double segment_distance2(PointD p, PointD a, PointD b) {
-  const PointD ab = b - a;
-  const PointD ap = p - a;
-  const double len2 = dot(ab, ab);
-  const double t = len2 > 0.0 ? std::clamp(dot(ap, ab) / len2, 0.0, 1.0) : 0.0;
-  const PointD d = ap - t * ab;
-  return dot(d, d);
+  using P = detail::Point2<double>;
+  return *detail::squared_distance_to_segment(P{p.x, p.y}, P{a.x, a.y}, P{b.x, b.y});
 }
 inline double segment_distance(PointD p, PointD a, PointD b) {
   return std::sqrt(segment_distance2(p, a, b));

@@ -2,64 +2,202 @@
 // penshape/core/ink_certificate.hpp).
 #include "ink_certificate.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
+
+#include "certified_distance.hpp"
 
 namespace penshape::recognize_detail {
 namespace {
 
-constexpr double kHalfDiagonal = 0.70710678118654757; // >= 1/sqrt(2) (rounded up)
+using detail::enclose;
+using detail::IntervalNT;
+using Guard = CGAL::Protect_FPU_rounding<true>;
+
 // Curves (box, ellipse chords) are sampled with at most about this many points.
 constexpr double kMaxCurveSamples = 20'000.0;
 
-// The clean shape's distance function as the grid needs it: an upper bound everywhere (for the
-// Q side) and a test "is the true distance <= rho?" that never says no wrongly (for the
-// clean-ink side).
+// The clean shape's distance function as the grid needs it, certified: an upper bound everywhere
+// (for the Q side) and a test "is the true distance <= rho?" that never says no wrongly (for the
+// clean-ink side). Doubles propose; the answers are interval bounds (certified_distance.hpp).
 class ShapeDistance {
  public:
-  ShapeDistance(const CleanShape& shape, double h) : shape_(shape) {
+  ShapeDistance(const CleanShape& shape, double h) : shape_(shape), certified_(shape) {
+    if (shape.kind == CleanShape::Kind::kCircle && !shape.full_curve()) prepare_arc();
     if (shape.kind != CleanShape::Kind::kEllipse) return;
-    // The ellipse sampled with arc-length steps <= hs: every point of it is within hs / 2 of a
-    // sample, so d(g, ellipse) >= d(g, sample chords) - hs / 2.
-    hs_ =
-        std::max(h / 4.0, 2.0 * std::numbers::pi * std::max(shape.rx, shape.ry) / kMaxCurveSamples);
-    const std::vector<PointD> pts = shape.sample(hs_);
+    // The ellipse's chords through enclosed points at parameter steps dt: every point of the
+    // ellipse is within speed dt / 2 of a true sample, which is within `reach` of its chord
+    // vertex, so d(g, ellipse) >= d(g, chords) - slack_.
+    const double speed = std::max(shape.rx, shape.ry);
+    const double hs = std::max(h / 4.0, 2.0 * std::numbers::pi * speed / kMaxCurveSamples);
+    const auto n =
+        static_cast<std::size_t>(std::max(8.0, std::ceil(std::abs(shape.sweep) * speed / hs)));
+    std::vector<PointD> pts;
+    double reach = 0.0, step = 0.0, prev = shape.t0;
+    for (std::size_t k = 0; k <= n; ++k) {
+      const double t = shape.t0 + shape.sweep * static_cast<double>(k) / static_cast<double>(n);
+      const detail::IPoint box = certified_.curve_point(t);
+      const PointD v{0.5 * (box.x.inf() + box.x.sup()), 0.5 * (box.y.inf() + box.y.sup())};
+      const Guard rounding;
+      reach = std::max(reach, detail::distance_upper(box, enclose(v)));
+      if (k > 0)
+        step =
+            std::max(step, (IntervalNT(speed) * CGAL::abs(IntervalNT(t) - IntervalNT(prev))).sup());
+      prev = t;
+      pts.push_back(v);
+    }
     std::vector<Segment> chords;
     for (std::size_t i = 0; i + 1 < pts.size(); ++i) chords.push_back({pts[i], pts[i + 1]});
     chords_ = SegmentIndex(std::move(chords), 2.0 * h);
-    cos_ = std::cos(shape.rotation);
-    sin_ = std::sin(shape.rotation);
+    slack_ = sum_up({step / 2.0, reach, certified_.end_slack()}); // step / 2 is exact
+    cos_ = detail::enclose_cos(shape.rotation);
+    sin_ = detail::enclose_sin(shape.rotation);
   }
 
-  // True when upper() is the exact distance (up to rounding): polylines and circular arcs.
-  [[nodiscard]] bool exact() const { return shape_.kind != CleanShape::Kind::kEllipse; }
+  // >= d(g, C).
+  [[nodiscard]] double upper(PointD g) const { return certified_.upper(enclose(g), g); }
 
-  // >= d(g, C): exact for polylines and circular arcs, a point on the ellipse otherwise.
-  [[nodiscard]] double upper(PointD g) const { return shape_.distance_to(g); }
-
-  // False only when d(g, C) > rho.
+  // False only when d(g, C) > rho, certainly.
   [[nodiscard]] bool maybe_within(PointD g, double rho) const {
-    if (shape_.kind != CleanShape::Kind::kEllipse) return shape_.distance_to(g) <= rho;
-    // Quick rejection: with F(p) = x^2/a^2 + y^2/b^2 - 1 (ellipse frame) and e the foot point,
-    // |F(g)| = |F(g) - F(e)| <= d * max |grad F| over the disk of radius d around g. If d <= rho,
-    // that max is <= 2 sqrt((|x| + rho)^2 / a^4 + (|y| + rho)^2 / b^4), so a larger |F(g)| / rho
-    // proves d > rho.
-    const PointD d = g - shape_.center;
-    const double x = std::abs(cos_ * d.x + sin_ * d.y);
-    const double y = std::abs(-sin_ * d.x + cos_ * d.y);
-    const double a2 = shape_.rx * shape_.rx, b2 = shape_.ry * shape_.ry;
-    const double f = std::abs(x * x / a2 + y * y / b2 - 1.0);
-    const double gx = (x + rho) / a2, gy = (y + rho) / b2;
-    if (f > 2.0 * rho * std::sqrt(gx * gx + gy * gy) * (1.0 + 1e-9)) return false;
-    return chords_.any_within(g, rho + hs_ / 2.0);
+    const CleanShape& s = shape_;
+    switch (s.kind) {
+      case CleanShape::Kind::kPolyline:
+        return polyline_maybe_within(g, rho);
+      case CleanShape::Kind::kCircle: {
+        // | |g - c| - R | <= d(g, arc) for any arc of the circle.
+        const Guard rounding;
+        const IntervalNT vx = IntervalNT(g.x) - IntervalNT(s.center.x);
+        const IntervalNT vy = IntervalNT(g.y) - IntervalNT(s.center.y);
+        const IntervalNT r = CGAL::sqrt(CGAL::square(vx) + CGAL::square(vy));
+        double lower = CGAL::abs(r - IntervalNT(s.rx)).inf();
+        // An arc, g certainly outside its sector: the nearest point is an end.
+        if (arc_ && outside_sector(vx, vy)) {
+          const detail::IPoint ig = enclose(g);
+          const double to_ends = std::min(
+              CGAL::sqrt(CGAL::square(ig.x - end0_.x) + CGAL::square(ig.y - end0_.y)).inf(),
+              CGAL::sqrt(CGAL::square(ig.x - end1_.x) + CGAL::square(ig.y - end1_.y)).inf());
+          lower = std::max(lower, to_ends);
+        }
+        // The true arc reaches at most end_slack beyond the one [t0, t0 + sweep] rounded gives.
+        return lower <= sum_up({rho, certified_.end_slack()});
+      }
+      case CleanShape::Kind::kEllipse:
+        break;
+    }
+    if (!ellipse_equation_allows(g, rho)) return false;
+    return chords_.maybe_within(g, sum_up({rho, slack_}));
   }
 
  private:
+  // The arc's ends and the directions of its bounding rays, enclosed; the sector is from u0_
+  // counterclockwise to u1_ (ends swapped for a negative sweep), `wide_` when it exceeds a half
+  // turn. Left unset (no sector test) when its span is too near a half turn to tell.
+  void prepare_arc() {
+    const CleanShape& s = shape_;
+    const double te = s.t0 + s.sweep;
+    const double from = s.sweep >= 0 ? s.t0 : te, to = s.sweep >= 0 ? te : s.t0;
+    end0_ = certified_.curve_point(s.t0);
+    end1_ = certified_.curve_point(te);
+    u0_ = {detail::enclose_cos(from), detail::enclose_sin(from)};
+    u1_ = {detail::enclose_cos(to), detail::enclose_sin(to)};
+    const Guard rounding;
+    const IntervalNT span = IntervalNT(to) - IntervalNT(from);
+    const double pi_lo = std::numbers::pi, pi_hi = std::nextafter(std::numbers::pi, INFINITY);
+    if (span.sup() < pi_lo) {
+      arc_ = true;
+      wide_ = false;
+    } else if (span.inf() > pi_hi) {
+      arc_ = true;
+      wide_ = true;
+    }
+  }
+
+  // g - centre = (vx, vy) certainly outside the sector (caller holds the guard).
+  [[nodiscard]] bool outside_sector(const IntervalNT& vx, const IntervalNT& vy) const {
+    const IntervalNT after_start = u0_.x * vy - u0_.y * vx; // >= 0: counterclockwise of u0
+    const IntervalNT before_end = vx * u1_.y - vy * u1_.x;  // >= 0: clockwise of u1
+    if (wide_) return after_start.sup() < 0 && before_end.sup() < 0;
+    return after_start.sup() < 0 || before_end.sup() < 0;
+  }
+
+  // Quick rejection: with F(p) = x^2/a^2 + y^2/b^2 - 1 (ellipse frame) and e the foot point,
+  // |F(g)| = |F(g) - F(e)| <= d * max |grad F| over the disk of radius d around g. If d <= rho,
+  // that max is <= 2 sqrt((|x| + rho)^2 / a^4 + (|y| + rho)^2 / b^4), so a larger |F(g)| / rho
+  // proves d > rho. Evaluated in intervals: false only when certain.
+  [[nodiscard]] bool ellipse_equation_allows(PointD g, double rho) const {
+    const CleanShape& s = shape_;
+    const Guard rounding;
+    const IntervalNT dx = IntervalNT(g.x) - IntervalNT(s.center.x);
+    const IntervalNT dy = IntervalNT(g.y) - IntervalNT(s.center.y);
+    const IntervalNT x = CGAL::abs(cos_ * dx + sin_ * dy), y = CGAL::abs(cos_ * dy - sin_ * dx);
+    const IntervalNT a2 = CGAL::square(IntervalNT(s.rx)), b2 = CGAL::square(IntervalNT(s.ry));
+    const IntervalNT f = CGAL::abs(CGAL::square(x) / a2 + CGAL::square(y) / b2 - IntervalNT(1.0));
+    const IntervalNT r(rho);
+    const IntervalNT gx = (x + r) / a2, gy = (y + r) / b2;
+    return f.inf() <= (IntervalNT(2.0) * r * CGAL::sqrt(CGAL::square(gx) + CGAL::square(gy))).sup();
+  }
+
+  // Each segment's box first (a coordinate gap rounded down bounds the distance below), then
+  // the interval distance of the segments whose box is near.
+  [[nodiscard]] bool polyline_maybe_within(PointD g, double rho) const {
+    const std::vector<PointD>& path = shape_.path;
+    const Guard rounding;
+    const double rho2 = CGAL::square(IntervalNT(rho)).sup();
+    const detail::IPoint ig = enclose(g);
+    for (std::size_t i = 0; i + 1 < path.size() || (i == 0 && path.size() == 1); ++i) {
+      const PointD a = path[i], b = path.size() == 1 ? path[0] : path[i + 1];
+      // -(g.x - lo) is lo - g.x rounded down (the guard rounds up).
+      const double gap_x =
+          std::max({-(g.x - std::min(a.x, b.x)), -(std::max(a.x, b.x) - g.x), 0.0});
+      const double gap_y =
+          std::max({-(g.y - std::min(a.y, b.y)), -(std::max(a.y, b.y) - g.y), 0.0});
+      if (gap_x > rho || gap_y > rho) continue;
+      if (detail::squared_distance_enclosure(ig, enclose(a), enclose(b)).inf() <= rho2) return true;
+    }
+    return false;
+  }
+
   const CleanShape& shape_;
-  double hs_ = 0.0;
+  CertifiedShape certified_;
   SegmentIndex chords_{{}, 1.0};
-  double cos_ = 1.0, sin_ = 0.0;
+  double slack_ = 0.0;
+  IntervalNT cos_{1.0}, sin_{0.0};
+  bool arc_ = false, wide_ = false;
+  detail::IPoint end0_{}, end1_{}, u0_{}, u1_{};
 };
+
+// Where the row y crosses the edge [a, b] (a.y != b.y), enclosed.
+RowCrossing crossing(PointD a, PointD b, double y) {
+  const Guard rounding;
+  const IntervalNT t = (IntervalNT(y) - IntervalNT(a.y)) / (IntervalNT(b.y) - IntervalNT(a.y));
+  const IntervalNT x = IntervalNT(a.x) + t * (IntervalNT(b.x) - IntervalNT(a.x));
+  return {x.inf(), x.sup()};
+}
+
+// Inside Q' along the row: 1 certainly inside, 0 certainly outside, -1 not certain (a crossing's
+// interval holds x). `crossed` counts the crossings with lo < x so far (x increases).
+int parity(const std::vector<RowCrossing>& xs, double widest, double x, std::size_t& crossed) {
+  while (crossed < xs.size() && xs[crossed].lo < x) ++crossed;
+  if (crossed < xs.size() && xs[crossed].lo <= x) return -1; // lo == x: it holds x
+  // Crossings at lo >= x are right of x. Of those left of it, only the last few (lo within
+  // `widest` of x) can reach x.
+  for (std::size_t k = crossed; k-- > 0;) {
+    if (xs[k].hi >= x) return -1;
+    if (xs[k].lo < x - 2.0 * widest) break;
+  }
+  return static_cast<int>(crossed % 2);
+}
+
+// The rounding of Q's vertices: sup |v - to_double(v)| over the vertices, rounded up.
+double vertex_rounding(const ExactPoint& v, PointD d) {
+  const std::pair<double, double> x = CGAL::to_interval(v.x), y = CGAL::to_interval(v.y);
+  const Guard rounding;
+  const IntervalNT dx = CGAL::abs(IntervalNT(x.first, x.second) - IntervalNT(d.x));
+  const IntervalNT dy = CGAL::abs(IntervalNT(y.first, y.second) - IntervalNT(d.y));
+  return CGAL::sqrt(CGAL::square(dx) + CGAL::square(dy)).sup();
+}
 
 } // namespace
 
@@ -80,6 +218,7 @@ InkRegion prepare_ink(const InkPolygon& ink, double epsilon) {
       if (!std::isfinite(a.x) || !std::isfinite(a.y)) {
         throw InvalidInput("ink certificate: an ink polygon coordinate is not finite");
       }
+      q.rounding = std::max(q.rounding, vertex_rounding(ring[i], a));
       edges.push_back({a, b});
       q.lo = {std::min(q.lo.x, a.x), std::min(q.lo.y, a.y)};
       q.hi = {std::max(q.hi.x, a.x), std::max(q.hi.y, a.y)};
@@ -92,13 +231,15 @@ InkRegion prepare_ink(const InkPolygon& ink, double epsilon) {
   }
   if (edges.empty()) throw InvalidInput("ink certificate: the ink polygon has no edges");
   // Spacing: epsilon / 10, coarser when the sampled box (Q's box grown by about 1.3 epsilon on
-  // each side, the most a certifiable shape's ink can reach) would exceed the point budget.
+  // each side, the most a certifiable shape's ink can reach) would exceed the point budget. The
+  // spacing only sets the work: the half-diagonal added is the actual one.
   const double w = q.hi.x - q.lo.x + 2.6 * epsilon, ht = q.hi.y - q.lo.y + 2.6 * epsilon;
   q.h = std::max(epsilon / kInkGridDivisions, std::sqrt(w * ht / kMaxInkGridPoints));
   q.h = std::max(q.h, 1e-12 * std::max(w, ht));
   q.origin = q.lo;
-  // Rows of the grid that meet Q's box, with the x where each edge crosses the row (half-open in
-  // y so that a vertex on the row counts once for the two edges meeting there).
+  // Rows of the grid that meet Q's box, with where each edge crosses the row (half-open in y so
+  // that a vertex on the row counts once for the two edges meeting there: exact comparisons of
+  // doubles).
   q.first_row = static_cast<std::int64_t>(std::floor((q.lo.y - q.origin.y) / q.h));
   const auto last_row = static_cast<std::int64_t>(std::ceil((q.hi.y - q.origin.y) / q.h));
   q.rows.assign(static_cast<std::size_t>(last_row - q.first_row + 1), {});
@@ -110,11 +251,15 @@ InkRegion prepare_ink(const InkPolygon& ink, double epsilon) {
     for (std::int64_t j = std::max(j0, q.first_row); j <= std::min(j1, last_row); ++j) {
       const double y = q.origin.y + static_cast<double>(j) * q.h;
       if (y < ylo || y >= yhi) continue;
-      const double t = (y - e.a.y) / (e.b.y - e.a.y);
-      q.rows[static_cast<std::size_t>(j - q.first_row)].push_back(e.a.x + t * (e.b.x - e.a.x));
+      const RowCrossing c = crossing(e.a, e.b, y);
+      q.widest = std::max(q.widest, c.hi - c.lo);
+      q.rows[static_cast<std::size_t>(j - q.first_row)].push_back(c);
     }
   }
-  for (auto& row : q.rows) std::sort(row.begin(), row.end());
+  for (auto& row : q.rows) {
+    std::sort(row.begin(), row.end(),
+              [](const RowCrossing& a, const RowCrossing& b) { return a.lo < b.lo; });
+  }
   q.edges = SegmentIndex(std::move(edges), 2.0 * q.h);
   return q;
 }
@@ -129,41 +274,34 @@ Certificate certify_ink(const InkRegion& q, const CleanShape& shape, double epsi
   cert.sample_spacing = h;
   const double r = pen_radius;
 
-  // The clean ink's box: C sampled with steps <= hs (every point of C within hs / 2 of a
-  // sample), grown by r + hs / 2.
-  // Polylines: the vertices give the box exactly. Curves: at most kMaxCurveSamples samples.
+  // The clean ink's box (which grid points to visit; a proposal: points outside it are certainly
+  // farther than rho from C only by the sampling argument, so the box is grown by a step more).
   double hs = 0.0;
   if (shape.kind != CleanShape::Kind::kPolyline) {
     const double length = std::abs(shape.sweep) * std::max(shape.rx, shape.ry);
     hs = std::max(h / 4.0, length / kMaxCurveSamples);
   }
   PointD lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
-  double magnitude = q.magnitude;
   for (const PointD& p : hs > 0 ? shape.sample(hs) : shape.path) {
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
   }
-  const double grow = r + hs / 2.0;
+  const double grow = r + hs + h;
   lo = {lo.x - grow, lo.y - grow};
   hi = {hi.x + grow, hi.y + grow};
-  magnitude = std::max({magnitude, std::abs(lo.x), std::abs(lo.y), std::abs(hi.x), std::abs(hi.y)});
-  const PointD ulo{std::min(lo.x, q.lo.x), std::min(lo.y, q.lo.y)};
-  const PointD uhi{std::max(hi.x, q.hi.x), std::max(hi.y, q.hi.y)};
+  const PointD ulo{std::min(lo.x, q.lo.x - h), std::min(lo.y, q.lo.y - h)};
+  const PointD uhi{std::max(hi.x, q.hi.x + h), std::max(hi.y, q.hi.y + h)};
   const double extent = std::hypot(uhi.x - ulo.x, uhi.y - ulo.y);
-  // Rounding: every distance below is a few operations on coordinates of magnitude <=
-  // `magnitude`, its error a small multiple of 2^-52 * magnitude; this margin is far above.
-  const double margin = 1e-13 * magnitude + 1e-9 * extent;
   if (!std::isfinite(extent)) {
     cert.bound = INFINITY;
     return cert;
   }
-  // A clean ink reaching more than epsilon + 2h beyond Q's box has a point farther than epsilon
-  // from Q: it cannot certify. Its bound is the union box's diagonal (any point of either region
-  // is within it of any point of the other), honest and cheap.
-  const double reach = epsilon + 2.0 * h;
+  // A clean ink reaching more than epsilon + 3h beyond Q's box has a point farther than epsilon
+  // from Q: it cannot certify (reported with the union box's diagonal, not a certificate).
+  const double reach = epsilon + 3.0 * h;
   if (lo.x < q.lo.x - reach || lo.y < q.lo.y - reach || hi.x > q.hi.x + reach ||
       hi.y > q.hi.y + reach) {
-    cert.bound = extent + q.hausdorff_bound + margin;
+    cert.bound = extent + q.hausdorff_bound;
     return cert;
   }
 
@@ -173,45 +311,56 @@ Certificate certify_ink(const InkRegion& q, const CleanShape& shape, double epsi
   const auto i1 = static_cast<std::int64_t>(std::ceil((uhi.x - q.origin.x) / h));
   const auto j0 = static_cast<std::int64_t>(std::floor((ulo.y - q.origin.y) / h));
   const auto j1 = static_cast<std::int64_t>(std::ceil((uhi.y - q.origin.y) / h));
-  const double half_diag = kHalfDiagonal * h;
-  const double rho = r + half_diag + margin; // grid points that can stand for the clean ink
-  const double near_q = half_diag + margin;  // grid points that can stand for Q
-  double worst_clean = 0.0; // max d(g, Q) over grid points standing for the clean ink
-  double worst_ink = 0.0;   // max (d(g, C) - r) over grid points standing for Q
-  static const std::vector<double> kNoCrossings;
+  // The grid is origin + (i h, j h) in doubles: its points are exact, but their spacing is h up
+  // to rounding; the half-diagonal of the largest cell actually used bounds the reach. Every
+  // cell's side is at most h + (rounding of origin + i h), enclosed below.
+  double half_diag = 0.0;
+  {
+    const Guard rounding;
+    const auto at = [&](std::int64_t i, double o) {
+      return IntervalNT(o) + IntervalNT(static_cast<double>(i)) * IntervalNT(h);
+    };
+    // origin + i h rounds within half an ulp of the largest coordinate: twice that per side.
+    const double ulp =
+        std::max({CGAL::abs(at(i0, q.origin.x)).sup(), CGAL::abs(at(i1, q.origin.x)).sup(),
+                  CGAL::abs(at(j0, q.origin.y)).sup(), CGAL::abs(at(j1, q.origin.y)).sup()}) *
+        std::numeric_limits<double>::epsilon();
+    const IntervalNT side = IntervalNT(h) + IntervalNT(ulp);
+    half_diag = (side * CGAL::sqrt(IntervalNT(2.0)) / IntervalNT(2.0)).sup();
+  }
+  const double rho = sum_up({r, half_diag}); // grid points that can stand for the clean ink
+  const double near_q = sum_up({half_diag, q.rounding}); // grid points that can stand for Q
+  double worst_clean = 0.0; // >= max d(g, Q') over grid points standing for the clean ink
+  double worst_ink = 0.0;   // >= max (d(g, C) - r) over grid points standing for Q
+  static const std::vector<RowCrossing> kNoCrossings;
   for (std::int64_t j = j0; j <= j1; ++j) {
     const double y = q.origin.y + static_cast<double>(j) * h;
     const std::int64_t k = j - q.first_row;
-    const std::vector<double>& xs = k >= 0 && k < static_cast<std::int64_t>(q.rows.size())
-                                        ? q.rows[static_cast<std::size_t>(k)]
-                                        : kNoCrossings;
+    const std::vector<RowCrossing>& xs = k >= 0 && k < static_cast<std::int64_t>(q.rows.size())
+                                             ? q.rows[static_cast<std::size_t>(k)]
+                                             : kNoCrossings;
     std::size_t crossed = 0;
     for (std::int64_t i = i0; i <= i1; ++i) {
       const PointD g{q.origin.x + static_cast<double>(i) * h, y};
-      while (crossed < xs.size() && xs[crossed] < g.x) ++crossed;
-      const bool inside = (crossed % 2) == 1;
-      if (inside) {
-        // d(g, Q) = 0: stands for Q; for the clean ink it contributes 0.
-        worst_ink = std::max(worst_ink, to_shape.upper(g) - r);
-        continue;
+      const int inside = parity(xs, q.widest, g.x, crossed);
+      // Clean-ink side: d(g, Q') = 0 inside; else an interval upper bound to the proposed edge.
+      if (inside != 1 && to_shape.maybe_within(g, rho)) {
+        std::uint32_t id = 0;
+        (void)q.edges.nearest_above(g, worst_clean, id);
+        worst_clean = std::max(worst_clean, upper_to_segment(enclose(g), q.edges.segment(id)));
       }
-      if (!to_shape.exact()) {
-        if (to_shape.maybe_within(g, rho)) {
-          worst_clean = std::max(worst_clean, q.edges.nearest_above(g, worst_clean));
+      // Q side: inside Q', or possibly within near_q of its boundary.
+      if (inside != 0 || q.edges.maybe_within(g, near_q)) {
+        const double dc = to_shape.upper(g);
+        if (dc > r) {
+          const Guard rounding;
+          worst_ink = std::max(worst_ink, (IntervalNT(dc) - IntervalNT(r)).sup());
         }
-        if (q.edges.any_within(g, near_q)) {
-          worst_ink = std::max(worst_ink, to_shape.upper(g) - r);
-        }
-        continue;
       }
-      // Exact distance (polylines, circular arcs): one evaluation serves both sides, and the
-      // Q-side test is skipped when it could not raise the maximum.
-      const double dc = to_shape.upper(g);
-      if (dc <= rho) worst_clean = std::max(worst_clean, q.edges.nearest_above(g, worst_clean));
-      if (dc - r > worst_ink && q.edges.any_within(g, near_q)) worst_ink = dc - r;
     }
   }
-  cert.bound = std::max(worst_clean, worst_ink) + half_diag + 2.0 * margin + q.hausdorff_bound;
+  // H(C ⊕ D_r, T) <= H(C ⊕ D_r, Q') + H(Q', Q) + H(Q, T).
+  cert.bound = sum_up({std::max(worst_clean, worst_ink), half_diag, q.rounding, q.hausdorff_bound});
   cert.certified = std::isfinite(cert.bound) && cert.bound <= epsilon;
   return cert;
 }

@@ -15,16 +15,25 @@ namespace penshape::recognize_detail {
 inline constexpr double kInkGridDivisions = 10.0;
 inline constexpr double kMaxInkGridPoints = 250'000.0;
 
-// Q in doubles: its edges in a segment grid and, per grid row, the sorted x where edges cross
-// the row (inside/outside along the row by parity).
+// Where an edge of Q crosses a grid row: an interval holding the exact x (directed rounding).
+struct RowCrossing {
+  double lo;
+  double hi;
+};
+
+// Q' (Q's vertices rounded to doubles) : its edges in a segment grid and, per grid row, the
+// crossings sorted by lo (inside/outside along the row by parity, certain when no crossing's
+// interval holds the grid point).
 struct InkRegion {
   double hausdorff_bound = 0.0; // InkPolygon::hausdorff_bound
+  double rounding = 0.0;        // >= H(Q, Q'): the largest vertex rounding, rounded up
   double h = 0.0;               // grid spacing
   PointD origin;                // grid points are origin + (i h, j h), i and j integers
   PointD lo, hi;                // Q's bounding box
-  double magnitude = 0.0;       // largest |coordinate| of Q (rounding margin)
+  double magnitude = 0.0;       // largest |coordinate| of Q
+  double widest = 0.0;          // the widest crossing interval (for the parity's ambiguity)
   std::int64_t first_row = 0;   // rows[k] is grid row first_row + k
-  std::vector<std::vector<double>> rows;
+  std::vector<std::vector<RowCrossing>> rows;
   SegmentIndex edges{{}, 1.0};
 };
 

@@ -83,7 +83,37 @@ bool SegmentIndex::any_within(PointD p, double radius) const {
   return false;
 }
 
+bool SegmentIndex::maybe_within(PointD p, double radius) const {
+  if (segments_.empty()) return false;
+  // The cells as any_within finds them: each segment is listed one cell beyond the cells it
+  // crosses, so rounding in the cell arithmetic cannot hide it.
+  const std::int64_t c0 = std::max<std::int64_t>(0, column(p.x - radius));
+  const std::int64_t c1 = std::min(nx_ - 1, column(p.x + radius));
+  const std::int64_t r0 = std::max<std::int64_t>(0, row(p.y - radius));
+  const std::int64_t r1 = std::min(ny_ - 1, row(p.y + radius));
+  const CGAL::Protect_FPU_rounding<true> rounding;
+  const double r2 = CGAL::square(detail::IntervalNT(radius)).sup();
+  const detail::IPoint ip = detail::enclose(p);
+  for (std::int64_t r = r0; r <= r1; ++r) {
+    for (std::int64_t c = c0; c <= c1; ++c) {
+      const auto cell = static_cast<std::size_t>(r * nx_ + c);
+      for (std::uint32_t k = start_[cell]; k < start_[cell + 1]; ++k) {
+        const Segment& s = segments_[ids_[k]];
+        const detail::IntervalNT d2 =
+            detail::squared_distance_enclosure(ip, detail::enclose(s.a), detail::enclose(s.b));
+        if (d2.inf() <= r2) return true;
+      }
+    }
+  }
+  return false;
+}
+
 double SegmentIndex::nearest_above(PointD p, double floor) const {
+  std::uint32_t id = 0;
+  return nearest_above(p, floor, id);
+}
+
+double SegmentIndex::nearest_above(PointD p, double floor, std::uint32_t& id) const {
   if (segments_.empty()) return INFINITY;
   const std::int64_t pc = column(p.x), pr = row(p.y);
   // Rings of cells around p's cell: after ring k every unvisited cell is at least k cells
@@ -95,7 +125,11 @@ double SegmentIndex::nearest_above(PointD p, double floor) const {
     const auto cell = static_cast<std::size_t>(r * nx_ + c);
     for (std::uint32_t k = start_[cell]; k < start_[cell + 1]; ++k) {
       const Segment& s = segments_[ids_[k]];
-      best2 = std::min(best2, segment_distance2(p, s.a, s.b));
+      const double d2 = segment_distance2(p, s.a, s.b);
+      if (d2 < best2) {
+        best2 = d2;
+        id = ids_[k];
+      }
       if (best2 <= floor2) return true;
     }
     return false;

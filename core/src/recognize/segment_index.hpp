@@ -22,10 +22,17 @@ class SegmentIndex {
 
   // True when some segment is at distance <= radius from p (exact up to rounding).
   [[nodiscard]] bool any_within(PointD p, double radius) const;
+  // False only when every segment is certainly farther than radius from p (interval arithmetic
+  // with directed rounding through geometry/distance_kernel.hpp): a selection that never misses.
+  [[nodiscard]] bool maybe_within(PointD p, double radius) const;
 
   // The distance from p to the nearest segment when it exceeds `floor`; otherwise some value
   // <= floor (the search stops at the first segment within floor). +inf without segments.
   [[nodiscard]] double nearest_above(PointD p, double floor) const;
+  // The same, and in `id` the segment that gave it (a proposal for a certified evaluation).
+  [[nodiscard]] double nearest_above(PointD p, double floor, std::uint32_t& id) const;
+
+  [[nodiscard]] const Segment& segment(std::uint32_t id) const { return segments_[id]; }
 
   [[nodiscard]] bool empty() const { return segments_.empty(); }
 

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "certified_distance.hpp"
 #include "segment_index.hpp"
 #include "thin_path.hpp"
 
@@ -43,39 +44,36 @@ Certificate certify_union(const UnionStroke& u, const CleanShape& shape, double 
   double stroke_len = 0.0;
   for (const std::vector<PointD>& piece : u.pieces) stroke_len += path_length(piece);
   const double shape_len = path_length(shape.sample(u.size));
+  // The spacing only sets the work: the half steps taken are added to the bound.
   const double h =
       std::max({epsilon / 6.0, stroke_len / kMaxSamples, shape_len / kMaxSamples, 1e-12 * u.size});
   cert.sample_spacing = h;
+  const CertifiedShape certified(shape);
 
-  // sup over every piece of the distance to the shape (each segment sampled, ends included).
+  // sup over every piece of the distance to the shape (each segment sampled, ends included),
+  // certified (certified_distance.hpp).
   double worst = 0.0;
   std::vector<Segment> segments;
   for (const std::vector<PointD>& piece : u.pieces) {
-    if (piece.size() == 1) worst = std::max(worst, shape.distance_to(piece[0]));
+    if (piece.size() == 1) {
+      worst = std::max(worst, certified.upper(detail::enclose(piece[0]), piece[0]));
+      segments.push_back({piece[0], piece[0]});
+    }
     for (std::size_t i = 0; i + 1 < piece.size(); ++i) {
       segments.push_back({piece[i], piece[i + 1]});
-      const double len = distance(piece[i], piece[i + 1]);
-      const auto steps = static_cast<std::size_t>(std::max(1.0, std::ceil(len / h)));
-      for (std::size_t k = 0; k <= steps; ++k) {
-        const double f = static_cast<double>(k) / static_cast<double>(steps);
-        worst = std::max(worst, shape.distance_to(piece[i] + f * (piece[i + 1] - piece[i])));
-      }
+      worst = std::max(worst, segment_to_shape(piece[i], piece[i + 1], h, certified));
     }
   }
   // sup over the shape of the distance to the nearest piece (segments only: no jumps).
-  if (!segments.empty()) {
-    const SegmentIndex index(std::move(segments), epsilon / 2.0, 4096);
-    for (const PointD& s : shape.sample(h)) worst = std::max(worst, index.nearest_above(s, worst));
-  } else {
-    for (const PointD& s : shape.sample(h)) worst = std::max(worst, union_distance(u, s));
+  if (segments.empty()) {
+    cert.bound = INFINITY;
+    cert.method = "path";
+    return cert;
   }
-  // Rounding margin as in certify() (twice: the thinning's own tests).
-  double magnitude = u.size;
-  for (const std::vector<PointD>& piece : u.pieces) {
-    for (const PointD& p : piece) magnitude = std::max({magnitude, std::abs(p.x), std::abs(p.y)});
-  }
-  const double margin = 2.0 * (1e-13 * magnitude + 1e-9 * u.size);
-  cert.bound = worst + h / 2.0 + u.thinning + margin;
+  const SegmentIndex index(std::move(segments), epsilon / 2.0, 4096);
+  worst = std::max(worst, certified.farthest_from(index, h));
+  // + tau: thin_path decides H(A_i, A_i') <= tau with the same kernel.
+  cert.bound = sum_up({worst, u.thinning, certified.end_slack()});
   cert.certified = std::isfinite(cert.bound) && cert.bound <= epsilon;
   cert.method = "path";
   return cert;

@@ -22,8 +22,8 @@ UnionStroke prepare_union(const std::vector<std::vector<PointD>>& paths, double 
 
 // Upper bound on H(union of paths, clean path) (hence on the inks' distance for one pen radius):
 // every piece sampled with spacing <= h against the shape, the shape sampled with spacing <= h
-// against the nearest piece, + h / 2 + tau + a rounding margin, exactly as certify() does for
-// one stroke.
+// against the nearest piece, each distance an interval upper bound (certified_distance.hpp) plus
+// the half step actually taken, + tau, exactly as certify() does for one stroke.
 Certificate certify_union(const UnionStroke& u, const CleanShape& shape, double epsilon,
                           double pen_radius);
 

@@ -33,15 +33,26 @@
 //   - A clean ink whose box reaches more than epsilon + 2h beyond Q's box has a point farther
 //     than epsilon from Q and cannot certify; its bound is the diagonal of the union of the
 //     boxes (no two points of the regions are farther apart), plus Q.hausdorff_bound.
-// Rounding: every quantity is a few double operations on coordinates of magnitude <= M (the
-// largest |coordinate| of Q, of C's samples and of the box), so its error is a small multiple of
-// 2^-52 M; the selections are widened and the result raised by margin = 1e-13 M + 1e-9 (box
-// diagonal), far above that (as in the path certificate). Q's exact rational coordinates are
-// rounded to the nearest double (error <= 2^-53 M, inside the margin). A grid point within
-// rounding of Q's boundary may be classified either way: its distance to Q is within the margin
-// either way.
+// Arithmetic: doubles only propose (which grid points to visit, the nearest edge, the foot point
+// on C). Every selection that leaves a grid point out is proven in interval arithmetic with
+// directed rounding (CGAL Interval_nt, through core/src/geometry/distance_kernel.hpp): a point
+// is left out of G1 only when a lower bound on d(g, C) exceeds r + h/sqrt(2) (polylines: each
+// segment's box, then its interval distance; arcs: the distance to the circle, or to the nearer
+// end when g is certainly outside the arc's sector; ellipses: the algebraic bound, then the
+// chords through enclosed points at parameter steps dt, d(g, ellipse) >= d(g, chords) -
+// speed dt / 2 - the boxes' reach), and out of the Q side only when every edge is certainly
+// farther than h/sqrt(2). Every value taken into a maximum is an interval upper bound (the
+// distance to the proposed edge, or to the proposed foot point with sin and cos enclosed within
+// 2 ulps). Inside/outside comes from the row's crossings, each an interval: a grid point whose
+// crossing interval is not certainly left or right of it is treated as outside (its distance to
+// the nearest edge is then bounded, not assumed 0). Q's vertices are rounded to doubles (Q');
+// H(Q, Q') is at most the largest vertex rounding (a winding-number argument: a point of the
+// symmetric difference is passed by the boundary moving from Q to Q'), computed rounded up and
+// added. h/sqrt(2) is computed rounded up from the largest spacing of the double grid points.
+// The curve's end parameter t0 + sweep is rounded: the speed times that rounding is added.
+// No margin decides anything. Q.hausdorff_bound (ink.hpp) is taken as the ink module gives it.
 // Hence
-//     bound = max(S1 estimate, S2 estimate) + h/sqrt(2) + 2 margin + Q.hausdorff_bound
+//     bound = max(S1 estimate, S2 estimate) + h/sqrt(2) + H(Q, Q') + Q.hausdorff_bound
 //           >= H(C ⊕ D_r, T),
 // and the certificate holds when bound <= epsilon. The bound exceeds the true H(C ⊕ D_r, Q) by
 // at most about 2 h (the grid's h/sqrt(2) twice, once in the selection and once in the value,

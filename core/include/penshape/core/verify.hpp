@@ -21,9 +21,11 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "penshape/core/deconstruct.hpp"
 #include "penshape/core/polygon_set.hpp"
+#include "penshape/core/recognize.hpp"
 
 namespace penshape {
 
@@ -58,5 +60,33 @@ std::optional<std::string> region_problem(const PolygonSet& set);
 // not thrown). Throws InvalidInput for parameters out of range (r, eps, delta).
 VerifyReport verify_deconstruction(const PolygonSet& q, const DeconstructionClaim& claim,
                                    const VerifyLimits& limits = {});
+
+} // namespace penshape
+
+// ---- Recognition answers (penshape verify with a stroke file) ----
+// A recognition claims H(C ⊕ D_r, A ⊕ D_r) <= eps for the clean shape C its class and params
+// describe (recognize.hpp, group_recognize.hpp), the union A of the strokes' paths and the pen
+// radius r. The verifier proves the stronger H(C, A) <= eps (a common pen disk never increases
+// the Hausdorff distance): both directions by subdividing each side's segments until
+// d(midpoint, other side) + half the piece <= eps, every comparison an interval evaluation with
+// directed rounding (an inconclusive one subdivides further). Curves are replaced by chord
+// polylines with a derived deviation sigma (verify/verify_shape.hpp), so the budget is
+// eps - sigma. Refuted: a point of one path farther than eps + r + sigma from the other, which
+// is a point of one ink farther than eps from the other ink. Unproven: the paths are not within
+// eps there; an answer certified on inks (method "ink", variable radius) may be correct and
+// still end here, as the check is on paths. Freeform claims nothing and is accepted.
+namespace penshape {
+
+struct RecognitionClaim {
+  ShapeClass shape = ShapeClass::kFreeform;
+  ShapeParams params;
+  double epsilon = 0.0;
+  double pen_radius = 0.0;
+};
+
+// `strokes`: each stroke's positions in drawing order (>= 1 each). Throws InvalidInput for
+// parameters out of range, missing or non-finite shape parameters, or empty strokes.
+VerifyReport verify_recognition(const std::vector<std::vector<PointD>>& strokes,
+                                const RecognitionClaim& claim, const VerifyLimits& limits = {});
 
 } // namespace penshape

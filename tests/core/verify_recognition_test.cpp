@@ -1,0 +1,167 @@
+// The independent verifier of recognition answers (penshape/core/verify.hpp, "Recognition
+// answers") on strokes built here from closed-form curves: answers whose true distance is known
+// verify, and corrupted ones (a parameter moved by 2 eps, eps shrunk below the true distance,
+// the class swapped) do not. The CLI test re-checks what `penshape recognize --json` prints.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "penshape/core/verify.hpp"
+
+namespace penshape {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// A stroke along the ellipse (c, a, b, rotation rot) from t0 over `sweep`, n points, pushed
+// `wobble` outward and inward alternately (so its distance to the ellipse is about `wobble`).
+std::vector<PointD> ellipse_stroke(PointD c, double a, double b, double rot, double t0,
+                                   double sweep, std::size_t n, double wobble) {
+  std::vector<PointD> out;
+  for (std::size_t k = 0; k <= n; ++k) {
+    const double t = t0 + sweep * static_cast<double>(k) / static_cast<double>(n);
+    const double ex = a * std::cos(t), ey = b * std::sin(t);
+    // Outward normal of the ellipse at t (in its frame), unit length.
+    double nx = b * std::cos(t), ny = a * std::sin(t);
+    const double len = std::hypot(nx, ny);
+    nx /= len;
+    ny /= len;
+    const double w = (k % 2 == 0 ? 1.0 : -1.0) * wobble;
+    const double x = ex + w * nx, y = ey + w * ny;
+    out.push_back(
+        {c.x + std::cos(rot) * x - std::sin(rot) * y, c.y + std::sin(rot) * x + std::cos(rot) * y});
+  }
+  return out;
+}
+
+RecognitionClaim claim(ShapeClass s, ShapeParams p, double eps, double r = 1.0) {
+  return {s, std::move(p), eps, r};
+}
+
+ShapeParams circle_params(PointD c, double radius) {
+  ShapeParams p;
+  p.center = c;
+  p.radius_x = p.radius_y = radius;
+  return p;
+}
+
+VerifyStatus status(const std::vector<PointD>& stroke, const RecognitionClaim& c) {
+  return verify_recognition({stroke}, c).status;
+}
+
+TEST(VerifyRecognition, CircleWithinEpsVerifiesAndCorruptionsFail) {
+  const PointD c{100, 50};
+  const auto stroke = ellipse_stroke(c, 40, 40, 0, 0, 2 * kPi, 400, 1.0);
+  // The stroke is 1 from the circle (at its samples; between them the chords come nearer).
+  EXPECT_EQ(status(stroke, claim(ShapeClass::kCircle, circle_params(c, 40), 1.5)),
+            VerifyStatus::kVerified);
+  // eps below the true distance 1.
+  EXPECT_NE(status(stroke, claim(ShapeClass::kCircle, circle_params(c, 40), 0.9)),
+            VerifyStatus::kVerified);
+  // Centre moved by 2 eps.
+  EXPECT_NE(status(stroke, claim(ShapeClass::kCircle, circle_params({103, 50}, 40), 1.5)),
+            VerifyStatus::kVerified);
+  // Far off: refuted (a point farther than eps + r from the other ink).
+  EXPECT_EQ(status(stroke, claim(ShapeClass::kCircle, circle_params({120, 50}, 40), 1.5)),
+            VerifyStatus::kRefuted);
+}
+
+TEST(VerifyRecognition, RotatedEllipseAndArc) {
+  const PointD c{-20, 300};
+  const auto stroke = ellipse_stroke(c, 60, 25, 0.7, 0, 2 * kPi, 600, 0.5);
+  ShapeParams e;
+  e.center = c;
+  e.radius_x = 60;
+  e.radius_y = 25;
+  e.rotation = 0.7;
+  EXPECT_EQ(status(stroke, claim(ShapeClass::kEllipse, e, 0.8)), VerifyStatus::kVerified);
+  // Class swapped: the circle through the major axis misses the flat sides by about 35.
+  EXPECT_EQ(status(stroke, claim(ShapeClass::kCircle, circle_params(c, 60), 0.8)),
+            VerifyStatus::kRefuted);
+  ShapeParams wrong = e;
+  wrong.rotation = 0.7 + kPi / 2;
+  EXPECT_NE(status(stroke, claim(ShapeClass::kEllipse, wrong, 0.8)), VerifyStatus::kVerified);
+
+  const auto arc = ellipse_stroke({0, 0}, 30, 30, 0, 0.5, -2.0, 200, 0.25);
+  ShapeParams a = circle_params({0, 0}, 30);
+  a.start_angle = 0.5;
+  a.sweep_angle = -2.0;
+  EXPECT_EQ(status(arc, claim(ShapeClass::kArc, a, 0.4)), VerifyStatus::kVerified);
+  a.sweep_angle = -2.5; // the clean arc runs 15 past the stroke's end
+  EXPECT_NE(status(arc, claim(ShapeClass::kArc, a, 0.4)), VerifyStatus::kVerified);
+}
+
+TEST(VerifyRecognition, PolygonsAndPolylinesExactly) {
+  // The stroke is the rectangle's outline itself: any eps > 0 verifies.
+  const std::vector<PointD> rect{{0, 0}, {80, 0}, {80, 40}, {0, 40}, {0, 0}};
+  ShapeParams p;
+  p.vertices = {{0, 0}, {80, 0}, {80, 40}, {0, 40}};
+  EXPECT_EQ(status(rect, claim(ShapeClass::kRectangle, p, 1e-2, 0.0)), VerifyStatus::kVerified);
+  // A corner moved by 2 eps.
+  ShapeParams moved = p;
+  moved.vertices[2] = {80, 42};
+  EXPECT_NE(status(rect, claim(ShapeClass::kRectangle, moved, 1.0)), VerifyStatus::kVerified);
+  // As an open polyline the closing side is missing: its midpoint (0, 20) is 20 from it.
+  EXPECT_EQ(status(rect, claim(ShapeClass::kPolyline, p, 1.0)), VerifyStatus::kRefuted);
+  // Swapped to a triangle of the first three corners.
+  ShapeParams tri;
+  tri.vertices = {{0, 0}, {80, 0}, {80, 40}};
+  EXPECT_EQ(status(rect, claim(ShapeClass::kTriangle, tri, 1.0)), VerifyStatus::kRefuted);
+}
+
+TEST(VerifyRecognition, GroupIsTheUnionOfItsStrokes) {
+  const std::vector<PointD> left{{0, 0}, {0, 50}}, right{{50, 0}, {50, 50}};
+  ShapeParams seg;
+  seg.vertices = {{0, 0}, {0, 50}};
+  // One segment does not cover the other stroke...
+  EXPECT_EQ(verify_recognition({left, right}, claim(ShapeClass::kSegment, seg, 1.0)).status,
+            VerifyStatus::kRefuted);
+  ShapeParams square;
+  square.vertices = {{0, 0}, {50, 0}, {50, 50}, {0, 50}};
+  // ...and the square's top and bottom are 25 from both strokes at their middles.
+  EXPECT_EQ(verify_recognition({left, right}, claim(ShapeClass::kSquare, square, 1.0)).status,
+            VerifyStatus::kRefuted);
+  EXPECT_EQ(verify_recognition({left, right}, claim(ShapeClass::kSquare, square, 26.0)).status,
+            VerifyStatus::kVerified);
+}
+
+TEST(VerifyRecognition, ArrowWithCurvedShaft) {
+  // Shaft: the arc from (0, 0) to (100, 0) through (50, 10) (bulge 10 to the left of the chord):
+  // centre (50, -120), radius 130.
+  std::vector<PointD> stroke;
+  const double a0 = std::atan2(120.0, -50.0), a1 = std::atan2(120.0, 50.0);
+  for (int k = 0; k <= 200; ++k) {
+    const double t = a0 + (a1 - a0) * k / 200.0;
+    stroke.push_back({50 + 130 * std::cos(t), -120 + 130 * std::sin(t)});
+  }
+  stroke.back() = {100, 0};
+  stroke.push_back({90, 8});
+  stroke.push_back({100, 0});
+  stroke.push_back({90, -8});
+  ShapeParams p;
+  p.vertices = {{0, 0}, {100, 0}, {90, 8}, {90, -8}};
+  p.shaft_bulge = 10;
+  EXPECT_EQ(status(stroke, claim(ShapeClass::kArrow, p, 0.05)), VerifyStatus::kVerified);
+  p.shaft_bulge = -10; // bent the other way: 20 off at the middle
+  EXPECT_EQ(status(stroke, claim(ShapeClass::kArrow, p, 0.05)), VerifyStatus::kRefuted);
+  p.shaft_bulge = 0; // straight: 10 off
+  EXPECT_NE(status(stroke, claim(ShapeClass::kArrow, p, 5.0)), VerifyStatus::kVerified);
+}
+
+TEST(VerifyRecognition, FreeformClaimsNothingAndBadInputThrows) {
+  EXPECT_EQ(verify_recognition({{{0, 0}, {1, 1}}}, claim(ShapeClass::kFreeform, {}, 0)).status,
+            VerifyStatus::kVerified);
+  EXPECT_THROW(verify_recognition({{{0, 0}, {1, 1}}}, claim(ShapeClass::kCircle, {}, 1.0)),
+               InvalidInput);
+  EXPECT_THROW(
+      verify_recognition({{{0, 0}, {1, 1}}}, claim(ShapeClass::kCircle, circle_params({}, 1), -1)),
+      InvalidInput);
+  ShapeParams arrow;
+  arrow.vertices = {{0, 0}, {1, 1}};
+  EXPECT_THROW(verify_recognition({{{0, 0}, {1, 1}}}, claim(ShapeClass::kArrow, arrow, 1.0)),
+               InvalidInput);
+}
+
+} // namespace
+} // namespace penshape
