@@ -16,7 +16,7 @@ v1::LiveEvent rectangle_upgrade() {
   s->set_stroke_id(4);
   s->mutable_shape()->set_kind(v1::SHAPE_KIND_RECTANGLE);
   s->set_shape_id(9);
-  for (std::uint64_t id : {1, 2, 3, 4}) s->add_replaced_stroke_ids(id);
+  for (std::uint64_t id = 1; id <= 4; ++id) s->add_replaced_stroke_ids(id);
   s->add_supersedes_shape_ids(7);
   s->add_supersedes_sequences(31);
   s->add_tidy("axis");
@@ -55,7 +55,7 @@ TEST(LiveEventText, PreviewOfAGroupNamesItsStrokes) {
   v1::PreviewCandidates* p = event.mutable_preview();
   p->set_stroke_id(4);
   p->mutable_group()->mutable_shape()->set_kind(v1::SHAPE_KIND_RECTANGLE);
-  for (std::uint64_t id : {1, 2, 3, 4}) p->mutable_group()->add_replaced_stroke_ids(id);
+  for (std::uint64_t id = 1; id <= 4; ++id) p->mutable_group()->add_replaced_stroke_ids(id);
   p->mutable_group()->add_supersedes_shape_ids(7);
   const std::string line = penshape::cli::event_line(event);
   EXPECT_NE(line.find("with earlier strokes: rectangle"), std::string::npos) << line;
