@@ -7,12 +7,6 @@
 namespace penshape::cli {
 namespace {
 
-const JsonValue& field(const JsonValue& v, std::string_view key, const std::string& path) {
-  const JsonValue* f = v.find(key);
-  if (f == nullptr) throw InputError("missing field '" + path + std::string(key) + "'");
-  return *f;
-}
-
 Rational rational(const JsonValue& v, const std::string& path) {
   if (v.kind != JsonValue::Kind::kNumber && v.kind != JsonValue::Kind::kString) {
     throw InputError("field '" + path + "' must be a number");
@@ -46,8 +40,8 @@ PolygonSet polygon_set(const JsonValue& v, const std::string& path) {
   for (std::size_t k = 0; k < v.items.size(); ++k) {
     const std::string at = path + "[" + std::to_string(k) + "].";
     PolygonWithHoles p;
-    p.outer = ring(field(v.items[k], "outer", at), at + "outer");
-    const JsonValue& holes = field(v.items[k], "holes", at);
+    p.outer = ring(answer_field(v.items[k], "outer", at), at + "outer");
+    const JsonValue& holes = answer_field(v.items[k], "holes", at);
     if (holes.kind != JsonValue::Kind::kArray)
       throw InputError("field '" + at + "holes' must be a list");
     for (std::size_t h = 0; h < holes.items.size(); ++h) {
@@ -69,20 +63,27 @@ Answer answer_of(const JsonValue& v) {
 
 } // namespace
 
+const JsonValue& answer_field(const JsonValue& v, std::string_view key, const std::string& path) {
+  const JsonValue* f = v.find(key);
+  if (f == nullptr) throw InputError("missing field '" + path + std::string(key) + "'");
+  return *f;
+}
+
 DeconstructionClaim claim_from_json(const JsonValue& answer) {
   if (answer.kind != JsonValue::Kind::kObject) throw InputError("an answer must be a JSON object");
   if (answer.find("answer") == nullptr || answer.find("params") == nullptr) {
     throw InputError("not a deconstruct --json answer (no 'answer' and 'params' fields)");
   }
   DeconstructionClaim c;
-  c.answer = answer_of(field(answer, "answer", ""));
+  c.answer = answer_of(answer_field(answer, "answer", ""));
   const JsonValue* exact_fields = answer.find("exact");
   // Exact values when the answer carries them, else the printed decimals, read exactly.
-  const JsonValue& params = exact_fields != nullptr ? *exact_fields : field(answer, "params", "");
+  const JsonValue& params =
+      exact_fields != nullptr ? *exact_fields : answer_field(answer, "params", "");
   const std::string at = exact_fields != nullptr ? "exact." : "params.";
-  c.radius = rational(field(params, "radius", at), at + "radius");
-  c.tolerance = rational(field(params, "tolerance", at), at + "tolerance");
-  c.precision = rational(field(params, "precision", at), at + "precision");
+  c.radius = rational(answer_field(params, "radius", at), at + "radius");
+  c.tolerance = rational(answer_field(params, "tolerance", at), at + "tolerance");
+  c.precision = rational(answer_field(params, "precision", at), at + "precision");
   if (c.answer == Answer::kYes) {
     const JsonValue* wkt = exact_fields != nullptr ? exact_fields->find("solution") : nullptr;
     if (wkt != nullptr && wkt->kind == JsonValue::Kind::kString) {
@@ -92,7 +93,7 @@ DeconstructionClaim claim_from_json(const JsonValue& answer) {
         throw InputError(std::string("field 'exact.solution': ") + e.what());
       }
     } else {
-      c.solution = polygon_set(field(answer, "solution", ""), "solution");
+      c.solution = polygon_set(answer_field(answer, "solution", ""), "solution");
     }
   }
   if (c.answer == Answer::kNo) {

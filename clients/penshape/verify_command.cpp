@@ -51,12 +51,15 @@ std::string read_text(const std::string& path) {
   return text.str();
 }
 
-void print(const VerifyReport& rep, const DeconstructionClaim& claim, std::size_t index,
-           std::size_t count, bool as_json) {
+// One verdict: a JSON object (the claim's own keys first, written by `claim_keys`) or a text
+// line naming the claim (`what`) unless it is verified.
+template <typename ClaimKeys>
+void print_verdict(const VerifyReport& rep, const std::string& what, std::size_t index,
+                   std::size_t count, bool as_json, ClaimKeys&& claim_keys) {
   if (as_json) {
     JsonWriter json;
     json.begin_object();
-    json.key("answer").string(to_string(claim.answer));
+    claim_keys(json);
     json.key("status").string(to_string(rep.status));
     json.key("verified").boolean(rep.status == VerifyStatus::kVerified);
     json.key("message").string(rep.message);
@@ -69,9 +72,15 @@ void print(const VerifyReport& rep, const DeconstructionClaim& claim, std::size_
   if (rep.status == VerifyStatus::kVerified) {
     line += rep.message;
   } else {
-    line += std::string(to_string(claim.answer)) + " " + to_string(rep.status) + ": " + rep.message;
+    line += what + " " + to_string(rep.status) + ": " + rep.message;
   }
   std::puts(line.c_str());
+}
+
+void print(const VerifyReport& rep, const DeconstructionClaim& claim, std::size_t index,
+           std::size_t count, bool as_json) {
+  print_verdict(rep, to_string(claim.answer), index, count, as_json,
+                [&](JsonWriter& json) { json.key("answer").string(to_string(claim.answer)); });
 }
 
 // The strokes an answer covers, by their lines in the stroke file.
@@ -91,27 +100,12 @@ std::vector<std::vector<PointD>> strokes_of(const std::vector<FileStroke>& file,
 
 void print_recognition(const VerifyReport& rep, const RecognitionAnswer& a, std::size_t index,
                        std::size_t count, bool as_json) {
-  if (as_json) {
-    JsonWriter json;
-    json.begin_object();
+  const std::string what =
+      "line " + std::to_string(a.lines.front()) + " " + to_string(a.claim.shape);
+  print_verdict(rep, what, index, count, as_json, [&](JsonWriter& json) {
     json.key("line").integer(static_cast<std::int64_t>(a.lines.front()));
     json.key("class").string(to_string(a.claim.shape));
-    json.key("status").string(to_string(rep.status));
-    json.key("verified").boolean(rep.status == VerifyStatus::kVerified);
-    json.key("message").string(rep.message);
-    json.key("cells").integer(static_cast<std::int64_t>(rep.cells));
-    json.end_object();
-    std::puts(json.str().c_str());
-    return;
-  }
-  std::string line = count > 1 ? "answer " + std::to_string(index + 1) + ": " : std::string();
-  if (rep.status == VerifyStatus::kVerified) {
-    line += rep.message;
-  } else {
-    line += "line " + std::to_string(a.lines.front()) + " " + to_string(a.claim.shape) + " " +
-            to_string(rep.status) + ": " + rep.message;
-  }
-  std::puts(line.c_str());
+  });
 }
 
 // FILE is a stroke file and `values` what `recognize --json` printed.

@@ -6,15 +6,10 @@
 #include <string>
 
 #include "geometry_cli.hpp"
+#include "verify_answer.hpp"
 
 namespace penshape::cli {
 namespace {
-
-const JsonValue& field(const JsonValue& v, std::string_view key, const std::string& path) {
-  const JsonValue* f = v.find(key);
-  if (f == nullptr) throw InputError("missing field '" + path + std::string(key) + "'");
-  return *f;
-}
 
 double number(const JsonValue& v, const std::string& path) {
   if (v.kind != JsonValue::Kind::kNumber) throw InputError("field '" + path + "' must be a number");
@@ -80,7 +75,7 @@ bool is_recognition_summary(const JsonValue& v) {
 
 RecognitionAnswer recognition_from_json(const JsonValue& answer) {
   RecognitionAnswer out;
-  const JsonValue& cls = field(answer, "class", "");
+  const JsonValue& cls = answer_field(answer, "class", "");
   if (cls.kind != JsonValue::Kind::kString) throw InputError("field 'class' must be a string");
   const auto shape = shape_class_from_string(cls.text);
   if (!shape) throw InputError("field 'class': unknown class '" + cls.text + "'");
@@ -93,14 +88,14 @@ RecognitionAnswer recognition_from_json(const JsonValue& answer) {
       out.lines.push_back(line_number(lines->items[i], "lines[" + std::to_string(i) + "]"));
     }
   } else {
-    out.lines.push_back(line_number(field(answer, "line", ""), "line"));
+    out.lines.push_back(line_number(answer_field(answer, "line", ""), "line"));
   }
   if (out.claim.shape == ShapeClass::kFreeform) return out; // claims nothing
-  out.claim.params = params_of(field(answer, "params", ""));
-  const JsonValue& cert = field(answer, "certificate", "");
-  out.claim.epsilon = number(field(cert, "epsilon", "certificate."), "certificate.epsilon");
+  out.claim.params = params_of(answer_field(answer, "params", ""));
+  const JsonValue& cert = answer_field(answer, "certificate", "");
+  out.claim.epsilon = number(answer_field(cert, "epsilon", "certificate."), "certificate.epsilon");
   out.claim.pen_radius =
-      number(field(cert, "pen_radius", "certificate."), "certificate.pen_radius");
+      number(answer_field(cert, "pen_radius", "certificate."), "certificate.pen_radius");
   return out;
 }
 
