@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -27,6 +29,23 @@ constexpr std::size_t kMaxDiskVertices = 4096;
 
 // The smallest k (a multiple of 4, >= 8) with r·(1 - cos(π/k)) <= allowed; throws when that
 // needs more than kMaxDiskVertices.
+// The bound is rounded outwards: every operation's rounding taken against us.
+double up(double x) { return std::nextafter(x, std::numeric_limits<double>::infinity()); }
+double down(double x) { return std::nextafter(x, -std::numeric_limits<double>::infinity()); }
+
+double sum_up(std::initializer_list<double> terms) {
+  double s = 0.0;
+  for (const double t : terms) s = up(s + t);
+  return s;
+}
+
+// r·(1 - cos(π/k)) from above: π/k bounded above, its cosine (glibc: within 1 ulp) taken two
+// ulps down; cosine decreases on [0, π/8].
+double disk_sagitta_up(double r, std::size_t k) {
+  const double angle = up(up(std::numbers::pi) / static_cast<double>(k));
+  return up(r * up(1.0 - down(down(std::cos(angle)))));
+}
+
 std::size_t polygon_vertices(double r, double allowed) {
   const double ratio = allowed / r;
   if (ratio >= 1) return 8;
@@ -224,12 +243,17 @@ InkPolygon ink_polygon(const std::vector<std::vector<InkSample>>& strokes,
                        std::string("grid steps of ") + std::to_string(result.grid) + " mm)");
   }
   result.disk_vertices = k;
-  const double hull_bound = r_max * (1.0 - std::cos(std::numbers::pi / static_cast<double>(k))) +
-                            tau + std::numbers::sqrt2 * result.grid;
+  // Double arithmetic on coordinates (a disk vertex r·(cos, sin) added to a sample, the
+  // simplification's chord distances, Clipper's arc points) errs by at most a few ulps of the
+  // largest magnitude per operation, fewer than 16 along any chain here (each coordinate ~4
+  // operations, the distance's hypot and the radius term on top): that much is added too.
+  const double arithmetic = up(16.0 * std::ldexp(extent + r_max, -52));
+  const double diagonal = up(up(std::numbers::sqrt2) * result.grid);
+  const double hull_bound = sum_up({disk_sagitta_up(r_max, k), tau, diagonal, arithmetic});
   // Clipper rounds the number of arc steps, so a last chord may span 1.5 nominal steps: its
   // sagitta is at most 2.25 times the arc tolerance.
   const double arc_tolerance = max_error / 2 / 2.25;
-  const double offset_bound = max_error / 2 + tau + 1.5 * std::numbers::sqrt2 * result.grid;
+  const double offset_bound = sum_up({max_error / 2, tau, up(1.5 * diagonal), arithmetic});
 
   std::vector<double> cos_k(k);
   std::vector<double> sin_k(k);

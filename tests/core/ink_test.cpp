@@ -73,6 +73,30 @@ TEST(InkPolygon, SinglePointIsADisk) {
   expect_ink_close(pts, 2.0, ink, 0.05);
 }
 
+// The bound at its edge: a lone disk's polygon reaches in by its sagitta at every chord's
+// midpoint, so its worst deviation from the circle comes within the terms a disk does not use
+// (simplification tau, the grid) of the stated bound, and never beyond it.
+TEST(InkPolygon, DiskBoundIsReachedAndNeverExceeded) {
+  for (const double r : {0.5, 2.0, 37.0}) {
+    SCOPED_TRACE(r);
+    const InkPolygon ink = ink_polygon(with_radius({{3, -4}}, r), {.radius_mm = r});
+    double worst = 0;
+    for (const auto& ring : test::to_region_d(ink.region).rings) {
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        const PointD a = ring[i], b = ring[(i + 1) % ring.size()];
+        for (int s = 0; s <= 16; ++s) {
+          const double t = s / 16.0;
+          const double d = std::hypot(a.x + t * (b.x - a.x) - 3, a.y + t * (b.y - a.y) + 4);
+          worst = std::max(worst, std::abs(d - r));
+        }
+      }
+    }
+    const double tau = r / 50 / 4; // the default max_error is r / 50, a quarter for simplifying
+    EXPECT_LE(worst, ink.hausdorff_bound);
+    EXPECT_GE(worst, ink.hausdorff_bound - tau - 3 * std::numbers::sqrt2 * ink.grid);
+  }
+}
+
 TEST(InkPolygon, ClosedLoopEnclosesAHole) {
   std::vector<PointD> pts;
   for (int i = 0; i <= 64; ++i) {

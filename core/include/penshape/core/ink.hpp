@@ -20,6 +20,8 @@
 //   3. coordinates are rounded to a grid of 2^-m mm (Clipper's integers): at most three
 //      roundings of half a grid diagonal (input, offset vertices, union intersections), so
 //      error <= 1.5·sqrt(2)·grid.
+// The sum is computed with outward rounding, plus 16 ulps of (extent + radius) for the double
+// arithmetic that places the vertices and measures the simplification's distances.
 // max_error splits as 1/2 (disk), 1/4 (simplification), 1/4 (grid). The disk polygon may have at
 // most 4096 vertices (a smaller max_error relative to the radius is InvalidInput). Q's coordinates
 // are exact dyadic rationals (integers times the grid).
