@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "ellipse_foot.hpp"
+
 namespace penshape::recognize_detail {
 namespace {
 
@@ -39,20 +41,6 @@ double arc_foot(PointD p, const CleanShape& c) {
   const double e0 = distance(p, c.at(c.t0));
   const double e1 = distance(p, c.at(c.t0 + c.sweep));
   return e0 <= e1 ? c.t0 : c.t0 + c.sweep;
-}
-
-// The ellipse's foot parameter for p folded into the first quadrant of its frame (Newton on the
-// foot-point condition, as ellipse_distance): the proposal.
-double ellipse_foot(double x, double y, double a, double b) {
-  double t = std::atan2(a * y, b * x);
-  for (int it = 0; it < 6; ++it) {
-    const double st = std::sin(t), ct = std::cos(t);
-    const double g = (a * a - b * b) * st * ct - a * x * st + b * y * ct;
-    const double dg = (a * a - b * b) * (ct * ct - st * st) - a * x * ct - b * y * st;
-    if (dg == 0.0) break;
-    t = std::clamp(t - g / dg, 0.0, std::numbers::pi / 2);
-  }
-  return t;
 }
 
 } // namespace
@@ -135,8 +123,8 @@ double CertifiedShape::upper(const IPoint& box, PointD near) const {
       // Into the frame (first quadrant by symmetry), then the distance to (a cos t, b sin t).
       const PointD d = near - s.center;
       const double c = std::cos(s.rotation), sn = std::sin(s.rotation);
-      const double t =
-          ellipse_foot(std::abs(c * d.x + sn * d.y), std::abs(-sn * d.x + c * d.y), s.rx, s.ry);
+      const double t = ellipse_foot_parameter(std::abs(c * d.x + sn * d.y),
+                                              std::abs(-sn * d.x + c * d.y), s.rx, s.ry);
       const IntervalNT ct = detail::enclose_cos(t), st = detail::enclose_sin(t);
       const Guard rounding;
       const IntervalNT dx = box.x - IntervalNT(s.center.x), dy = box.y - IntervalNT(s.center.y);

@@ -1,7 +1,11 @@
 // Sampling and distances of clean shapes.
 #include "clean_shape.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
+
+#include "ellipse_foot.hpp"
 
 namespace penshape::recognize_detail {
 
@@ -140,6 +144,18 @@ double arc_distance(PointD p, const CleanShape& circle) {
   return std::min(e0, e1);
 }
 
+double ellipse_foot_parameter(double x, double y, double a, double b) {
+  double t = std::atan2(a * y, b * x);
+  for (int it = 0; it < 6; ++it) {
+    const double st = std::sin(t), ct = std::cos(t);
+    const double g = (a * a - b * b) * st * ct - a * x * st + b * y * ct;
+    const double dg = (a * a - b * b) * (ct * ct - st * st) - a * x * ct - b * y * st;
+    if (dg == 0.0) break;
+    t = std::clamp(t - g / dg, 0.0, std::numbers::pi / 2);
+  }
+  return t;
+}
+
 double ellipse_distance(PointD p, const CleanShape& e) {
   // Into the ellipse's frame, first quadrant (the distance is symmetric in both axes).
   const PointD d = p - e.center;
@@ -149,17 +165,7 @@ double ellipse_distance(PointD p, const CleanShape& e) {
   const double y = std::abs(-s * d.x + c * d.y);
   const double a = e.rx;
   const double b = e.ry;
-  // Newton on the foot-point condition g(t) = (a^2 - b^2) sin t cos t - a x sin t + b y cos t = 0
-  // for t in [0, pi/2]; whatever t it ends with, (a cos t, b sin t) lies on the ellipse, so the
-  // distance to it is an upper bound (exact when converged).
-  double t = std::atan2(a * y, b * x);
-  for (int it = 0; it < 6; ++it) {
-    const double st = std::sin(t), ct = std::cos(t);
-    const double g = (a * a - b * b) * st * ct - a * x * st + b * y * ct;
-    const double dg = (a * a - b * b) * (ct * ct - st * st) - a * x * ct - b * y * st;
-    if (dg == 0.0) break;
-    t = std::clamp(t - g / dg, 0.0, std::numbers::pi / 2);
-  }
+  const double t = ellipse_foot_parameter(x, y, a, b);
   return std::hypot(x - a * std::cos(t), y - b * std::sin(t));
 }
 

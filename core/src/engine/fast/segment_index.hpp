@@ -30,25 +30,13 @@ class SegmentIndex {
   // Calls f(index) once for every segment whose bounding box meets the box (may over-report).
   template <class F>
   void for_each_near(double min_x, double min_y, double max_x, double max_y, F&& f) const {
-    if (segments_.empty()) return;
-    const int x0 = clamp_col(min_x), x1 = clamp_col(max_x);
-    const int y0 = clamp_row(min_y), y1 = clamp_row(max_y);
-    ++stamp_;
-    for (int gy = y0; gy <= y1; ++gy) {
-      for (int gx = x0; gx <= x1; ++gx) {
-        const std::size_t c = static_cast<std::size_t>(gy) * static_cast<std::size_t>(nx_) +
-                              static_cast<std::size_t>(gx);
-        for (std::uint32_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
-          const std::uint32_t s = cell_items_[k];
-          if (seen_[s] == stamp_) continue;
-          seen_[s] = stamp_;
-          f(static_cast<std::size_t>(s));
-        }
-      }
-    }
+    (void)find_near(min_x, min_y, max_x, max_y, [&f](std::size_t s) {
+      f(s);
+      return false;
+    });
   }
 
-  // The same, stopping as soon as f returns true (returns whether it did).
+  // Calls f(index) as for_each_near, stopping as soon as f returns true (returns whether it did).
   template <class F>
   bool find_near(double min_x, double min_y, double max_x, double max_y, F&& f) const {
     if (segments_.empty()) return false;
