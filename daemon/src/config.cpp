@@ -148,6 +148,7 @@ void apply_global_key(const LineContext& at, const std::string& key, std::string
        [&] { l.subscriber_queue_events = parse_size(at, key, value, 1, 1'000'000); }},
       {"max_raw_report_subscribers",
        [&] { l.max_raw_report_subscribers = parse_size(at, key, value, 0, 4'096); }},
+      {"max_group_keys", [&] { l.max_group_keys = parse_size(at, key, value, 1, 65'536); }},
   };
   const auto it = handlers.find(key);
   if (it != handlers.end()) {

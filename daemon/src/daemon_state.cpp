@@ -61,6 +61,13 @@ PenSettings settings_for(const DaemonState& state, const TabletInfo& tablet) {
 void publish_stroke(ShapeHub& hub, const std::string& device_id, const Stroke& stroke,
                     const StrokeAnalysis* analysis, const std::string& not_analysed,
                     const v1::Timings& timings) {
+  publish_stroke(hub, device_id, stroke, analysis, not_analysed, timings, {});
+}
+
+std::uint64_t publish_stroke(ShapeHub& hub, const std::string& device_id, const Stroke& stroke,
+                             const StrokeAnalysis* analysis, const std::string& not_analysed,
+                             const v1::Timings& timings,
+                             const std::function<void(v1::ShapeRecognized&)>& decorate) {
   v1::LiveEvent finished;
   finished.set_device_id(device_id);
   v1::StrokeFinished* f = finished.mutable_stroke_finished();
@@ -68,7 +75,7 @@ void publish_stroke(ShapeHub& hub, const std::string& device_id, const Stroke& s
   if (analysis != nullptr) *f->mutable_ink_polygon() = analysis->ink_polygon;
   f->set_not_analysed(not_analysed);
   hub.publish(std::move(finished));
-  if (analysis == nullptr || analysis->shape.kind() == v1::SHAPE_KIND_UNSPECIFIED) return;
+  if (analysis == nullptr || analysis->shape.kind() == v1::SHAPE_KIND_UNSPECIFIED) return 0;
   v1::LiveEvent shape;
   shape.set_device_id(device_id);
   v1::ShapeRecognized* s = shape.mutable_shape();
@@ -76,7 +83,8 @@ void publish_stroke(ShapeHub& hub, const std::string& device_id, const Stroke& s
   *s->mutable_shape() = analysis->shape;
   for (const auto& alternative : analysis->alternatives) *s->add_alternatives() = alternative;
   *s->mutable_timings() = timings;
-  hub.publish(std::move(shape));
+  if (decorate) decorate(*s);
+  return hub.publish(std::move(shape));
 }
 
 void publish_raw_report(ShapeHub& hub, const std::string& device_id,

@@ -2,6 +2,7 @@
 // What the services share: limits, the worker pool, the hub, the settings, the pluggable parts.
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -9,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "group_history.hpp"
 #include "penshape/daemon/geometry_backend.hpp"
 #include "penshape/daemon/grouping_settings.hpp"
 #include "penshape/daemon/limits.hpp"
@@ -52,7 +54,8 @@ struct DaemonState {
         preview_pool(1, kPreviewQueueJobs, WorkerPriority::kIdle),
         hub(l.max_subscribers, l.max_raw_report_subscribers),
         settings(defaults, std::move(per_device)),
-        grouping(live_grouping) {}
+        grouping(live_grouping),
+        group_keys(l.max_group_keys) {}
 
   // Previews in flight are at most one per device (pipeline.hpp); more queued would be stale.
   static constexpr std::size_t kPreviewQueueJobs = 16;
@@ -70,6 +73,10 @@ struct DaemonState {
   // Ids for strokes the daemon numbers itself (SubmitStroke, StreamSamples), from 2^63 up so
   // they never meet a source's ids.
   std::atomic<std::uint64_t> next_stroke_id{std::uint64_t{1} << 63U};
+  // The groupings of SubmitStroke's group_keys (at most limits.max_group_keys).
+  GroupKeys group_keys;
+  // Ids of grouped answers (ShapeRecognized.shape_id), unique per run over every grouping.
+  std::atomic<std::uint64_t> next_shape_id{0};
 };
 
 void to_proto(const DeviceDescriptor& device, v1::DeviceInfo* out);
@@ -81,6 +88,12 @@ PenSettings settings_for(const DaemonState& state, const TabletInfo& tablet);
 void publish_stroke(ShapeHub& hub, const std::string& device_id, const Stroke& stroke,
                     const StrokeAnalysis* analysis, const std::string& not_analysed,
                     const v1::Timings& timings);
+// The same; `decorate` completes the ShapeRecognized (its grouping fields) before it is
+// published. Returns that event's sequence (0 when none was published).
+std::uint64_t publish_stroke(ShapeHub& hub, const std::string& device_id, const Stroke& stroke,
+                             const StrokeAnalysis* analysis, const std::string& not_analysed,
+                             const v1::Timings& timings,
+                             const std::function<void(v1::ShapeRecognized&)>& decorate);
 
 // Publishes one raw input report (RawReport). The caller checks hub.wants_raw_reports() first.
 void publish_raw_report(ShapeHub& hub, const std::string& device_id,

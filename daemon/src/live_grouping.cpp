@@ -10,26 +10,12 @@
 namespace penshape::daemon {
 namespace {
 
-// Recent answers kept per device: a group only absorbs answers within its last max_strokes (<= 8)
-// groups, so older ones are never superseded.
-constexpr std::size_t kRecentAnswers = 64;
-
 std::uint64_t micros(std::chrono::steady_clock::duration d) {
   return static_cast<std::uint64_t>(
       std::chrono::duration_cast<std::chrono::microseconds>(d).count());
 }
 
 } // namespace
-
-LiveGrouping::History LiveGrouping::History::copy() const {
-  History out;
-  out.session = session ? session->clone() : nullptr;
-  out.settings = settings;
-  out.grouping = grouping;
-  out.stroke_ids = stroke_ids;
-  out.answers = answers;
-  return out;
-}
 
 bool LiveGrouping::groups() {
   int known = groups_.load();
@@ -96,20 +82,13 @@ void LiveGrouping::process(Lane& lane, const std::string& device_id, Pending pen
   v1::Timings timings;
   timings.set_queued_us(micros(started - pending.submitted));
   const Stroke& stroke = pending.stroke;
-  History& h = lane.history;
+  GroupHistory& h = lane.history;
   const PenSettings settings = settings_for(state_, stroke.tablet);
-  const GroupingConfig grouping = state_.grouping.get();
-  // New settings (Config RPC) or a long session: start afresh with the values now in force.
-  if (!h.session || !(h.settings == settings) || !same_grouping(h.grouping, grouping) ||
-      h.session->stroke_count() >= kMaxSessionStrokes) {
-    h = History{};
-    h.session = state_.analyzer->group_session(settings, grouping);
-    h.settings = settings;
-    h.grouping = grouping;
-  }
+  // New settings (Config RPC): start afresh with the values now in force.
+  h.ensure(*state_.analyzer, settings, state_.grouping.get());
   const StopCondition stop(started + std::chrono::seconds(state_.limits.max_call_seconds), {});
   try {
-    GroupedStrokeAnalysis result = h.session->add(stroke, true, cancel_hook(stop));
+    GroupedStrokeAnalysis result = h.add(stroke, true, cancel_hook(stop));
     const auto now = std::chrono::steady_clock::now();
     timings.set_compute_us(micros(now - started));
     timings.set_total_us(micros(now - pending.submitted));
@@ -122,15 +101,15 @@ void LiveGrouping::process(Lane& lane, const std::string& device_id, Pending pen
     publish_stroke(state_.hub, device_id, stroke, nullptr, "analysis failed", timings);
   }
   // After the shape is out: the copy a preview of the next stroke starts from.
-  std::shared_ptr<const History> snapshot;
-  if (state_.hub.wants_previews()) snapshot = std::make_shared<const History>(h.copy());
+  std::shared_ptr<const GroupHistory> snapshot;
+  if (state_.hub.wants_previews()) snapshot = std::make_shared<const GroupHistory>(h.copy());
   std::lock_guard lock(lane.mutex);
   lane.snapshot = std::move(snapshot);
 }
 
 void LiveGrouping::publish(const std::string& device_id, const Stroke& stroke,
                            GroupedStrokeAnalysis& result, const v1::Timings& timings,
-                           History& history) {
+                           GroupHistory& history) {
   v1::LiveEvent finished;
   finished.set_device_id(device_id);
   v1::StrokeFinished* f = finished.mutable_stroke_finished();
@@ -138,6 +117,7 @@ void LiveGrouping::publish(const std::string& device_id, const Stroke& stroke,
   *f->mutable_ink_polygon() = result.analysis.ink_polygon; // kept for the deconstruction
   state_.hub.publish(std::move(finished));
 
+  const GroupAnswer answer = history.take(result, stroke.id); // reads the shape: before the swap
   v1::LiveEvent event;
   event.set_device_id(device_id);
   v1::ShapeRecognized* s = event.mutable_shape();
@@ -145,27 +125,11 @@ void LiveGrouping::publish(const std::string& device_id, const Stroke& stroke,
   s->mutable_shape()->Swap(&result.analysis.shape);
   for (auto& alternative : result.analysis.alternatives) s->add_alternatives()->Swap(&alternative);
   *s->mutable_timings() = timings;
-  const std::uint64_t shape_id = ++next_shape_id_;
-  s->set_shape_id(shape_id);
-  if (result.grouped) history.stroke_ids.push_back(stroke.id); // its session index
-  const bool snapped = s->shape().kind() != v1::SHAPE_KIND_NONE;
-  if (!result.grouped && snapped) s->add_replaced_stroke_ids(stroke.id);
-  if (result.grouped && snapped) {
-    for (const std::size_t i : result.strokes) {
-      if (i < history.stroke_ids.size()) s->add_replaced_stroke_ids(history.stroke_ids[i]);
-    }
-  }
-  for (const std::size_t id : result.superseded) {
-    const auto it = history.answers.find(id);
-    s->add_supersedes_shape_ids(it == history.answers.end() ? 0 : it->second.shape_id);
-    s->add_supersedes_sequences(it == history.answers.end() ? 0 : it->second.sequence);
-    if (it != history.answers.end()) history.answers.erase(it);
-  }
-  for (const std::string& t : result.tidy) s->add_tidy(t);
+  const std::uint64_t shape_id = ++state_.next_shape_id;
+  set_group_fields(answer, result.tidy, shape_id, s);
+  for (const std::uint64_t q : answer.supersedes_sequences) s->add_supersedes_sequences(q);
   const std::uint64_t sequence = state_.hub.publish(std::move(event));
-  if (!result.grouped) return;
-  history.answers[result.answer] = {shape_id, sequence};
-  while (history.answers.size() > kRecentAnswers) history.answers.erase(history.answers.begin());
+  history.remember(result, shape_id, sequence);
 }
 
 void LiveGrouping::forget_device(const std::string& device_id) {
@@ -179,7 +143,7 @@ void LiveGrouping::forget_device(const std::string& device_id) {
 std::optional<v1::PreviewGroup> LiveGrouping::preview_group(const std::string& device_id,
                                                             const Stroke& partial,
                                                             const CancelHook& cancel) {
-  std::shared_ptr<const History> snapshot;
+  std::shared_ptr<const GroupHistory> snapshot;
   {
     std::lock_guard lock(mutex_);
     const auto it = lanes_.find(device_id);
@@ -187,11 +151,11 @@ std::optional<v1::PreviewGroup> LiveGrouping::preview_group(const std::string& d
     std::lock_guard lane_lock(it->second->mutex);
     snapshot = it->second->snapshot;
   }
-  if (!snapshot || !snapshot->session || snapshot->session->stroke_count() == 0) {
+  if (!snapshot || !snapshot->session() || snapshot->session()->retained_stroke_count() == 0) {
     return std::nullopt;
   }
   // The stroke so far added to a copy: the strand's own grouping is untouched.
-  const std::unique_ptr<StrokeGroupSession> session = snapshot->session->clone();
+  const std::unique_ptr<StrokeGroupSession> session = snapshot->session()->clone();
   GroupedStrokeAnalysis result;
   try {
     result = session->add(partial, false, cancel);
@@ -206,12 +170,10 @@ std::optional<v1::PreviewGroup> LiveGrouping::preview_group(const std::string& d
   v1::PreviewGroup group;
   group.mutable_shape()->Swap(&result.analysis.shape);
   for (const std::size_t i : result.strokes) {
-    const bool earlier = i < snapshot->stroke_ids.size();
-    group.add_replaced_stroke_ids(earlier ? snapshot->stroke_ids[i] : partial.id);
+    group.add_replaced_stroke_ids(snapshot->stroke_id(i, partial.id));
   }
   for (const std::size_t id : result.superseded) {
-    const auto it = snapshot->answers.find(id);
-    group.add_supersedes_shape_ids(it == snapshot->answers.end() ? 0 : it->second.shape_id);
+    group.add_supersedes_shape_ids(snapshot->shape_id(id));
   }
   for (const std::string& t : result.tidy) group.add_tidy(t);
   return group;

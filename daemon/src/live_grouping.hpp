@@ -24,16 +24,13 @@
 #include <vector>
 
 #include "daemon_state.hpp"
+#include "group_history.hpp"
 #include "penshape/v1/live.pb.h"
 
 namespace penshape::daemon {
 
 class LiveGrouping {
  public:
-  // A session holds at most this many strokes; then it starts afresh (strokes that old can no
-  // longer group; this bounds a long session's memory and the cost of a preview's copy).
-  static constexpr std::size_t kMaxSessionStrokes = 256;
-
   // Told after a stroke's shape is published, with its ink polygon (the deconstruction follows).
   using ShapePublished = std::function<void(const std::string& device_id, std::uint64_t stroke_id,
                                             const v1::PolygonSet& ink, const PenSettings&)>;
@@ -57,43 +54,31 @@ class LiveGrouping {
                                                 const CancelHook& cancel);
 
  private:
-  struct Answer {
-    std::uint64_t shape_id = 0;
-    std::uint64_t sequence = 0;
-  };
-  // A device's grouping and what its session's indices and ids stand for.
-  struct History {
-    std::unique_ptr<StrokeGroupSession> session;
-    PenSettings settings;
-    GroupingConfig grouping;
-    std::vector<std::uint64_t> stroke_ids; // by session stroke index
-    std::map<std::size_t, Answer> answers; // by session answer id, the recent ones
-    [[nodiscard]] History copy() const;
-  };
   struct Pending {
     Stroke stroke;
     std::chrono::steady_clock::time_point submitted;
   };
   struct Lane {
     std::mutex mutex;
-    std::deque<Pending> queue;               // guarded by mutex
-    bool running = false;                    // a strand job runs (guarded by mutex)
-    History history;                         // used by the running strand job only
-    std::shared_ptr<const History> snapshot; // for previews, guarded by mutex
+    std::deque<Pending> queue; // guarded by mutex
+    bool running = false;      // a strand job runs (guarded by mutex)
+    // The device's grouping, used by the running strand job only. It keeps only the strokes the
+    // grouping window can reach, so a long session's memory (and a preview's copy) stay bounded.
+    GroupHistory history;
+    std::shared_ptr<const GroupHistory> snapshot; // for previews, guarded by mutex
   };
 
   void run_strand(const std::shared_ptr<Lane>& lane, const std::string& device_id);
   void process(Lane& lane, const std::string& device_id, Pending pending);
   void publish(const std::string& device_id, const Stroke& stroke, GroupedStrokeAnalysis& result,
-               const v1::Timings& timings, History& history);
+               const v1::Timings& timings, GroupHistory& history);
 
   DaemonState& state_;
   std::function<void()> job_started_;
   std::function<void()> job_done_;
   ShapePublished published_;
   std::atomic<int> groups_{-1}; // the analyzer groups: -1 not known yet, 0 no, 1 yes
-  std::atomic<std::uint64_t> next_shape_id_{0};
-  std::mutex mutex_;                                   // guards lanes_
+  std::mutex mutex_;            // guards lanes_
   std::map<std::string, std::shared_ptr<Lane>> lanes_; // by device id
 };
 

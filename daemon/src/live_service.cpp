@@ -4,6 +4,7 @@
 #include <chrono>
 #include <optional>
 
+#include "app_grouping.hpp"
 #include "call_runner.hpp"
 #include "geometry_service.hpp"
 #include "penshape/daemon/proto_convert.hpp"
@@ -127,6 +128,12 @@ grpc::Status LiveServiceImpl::Subscribe(grpc::ServerContext* context,
 grpc::Status LiveServiceImpl::SubmitStroke(grpc::ServerContext* context,
                                            const v1::SubmitStrokeRequest* request,
                                            v1::SubmitStrokeResponse* response) {
+  if (request->group_key().size() > state_.limits.max_group_key_bytes) {
+    return {grpc::StatusCode::INVALID_ARGUMENT,
+            "group_key: " + std::to_string(request->group_key().size()) +
+                " bytes, more than the limit max_group_key_bytes = " +
+                std::to_string(state_.limits.max_group_key_bytes)};
+  }
   Stroke stroke;
   PenSettings settings;
   try {
@@ -137,6 +144,9 @@ grpc::Status LiveServiceImpl::SubmitStroke(grpc::ServerContext* context,
     return status_from_current_exception(nullptr);
   }
   stroke.id = state_.next_stroke_id.fetch_add(1);
+  if (!request->group_key().empty()) {
+    return submit_grouped(context, *request, stroke, settings, response);
+  }
   StrokeAnalysis analysis;
   v1::Timings timings;
   const grpc::Status status =
@@ -144,10 +154,50 @@ grpc::Status LiveServiceImpl::SubmitStroke(grpc::ServerContext* context,
   if (!status.ok()) return status;
   if (request->publish()) publish_stroke(state_.hub, "app", stroke, &analysis, "", timings);
   response->set_stroke_id(stroke.id);
+  const v1::ShapeKind kind = analysis.shape.kind();
+  if (kind != v1::SHAPE_KIND_NONE && kind != v1::SHAPE_KIND_UNSPECIFIED) {
+    response->add_replaced_stroke_ids(stroke.id); // a stroke alone replaces its own ink
+  }
   *response->mutable_ink_polygon() = std::move(analysis.ink_polygon);
   *response->mutable_shape() = std::move(analysis.shape);
   for (auto& alternative : analysis.alternatives) *response->add_alternatives() = alternative;
   *response->mutable_timings() = timings;
+  return grpc::Status::OK;
+}
+
+grpc::Status LiveServiceImpl::submit_grouped(grpc::ServerContext* context,
+                                             const v1::SubmitStrokeRequest& request,
+                                             const Stroke& stroke, const PenSettings& settings,
+                                             v1::SubmitStrokeResponse* response) {
+  const std::shared_ptr<GroupKeys::Group> group = state_.group_keys.get(request.group_key());
+  // One stroke of a key at a time, in the order the calls take the lock.
+  std::lock_guard lock(group->mutex);
+  GroupedStrokeAnalysis result;
+  v1::Timings timings;
+  const grpc::Status status =
+      analyze_grouped(state_, context, group->history, stroke, settings, &result, &timings);
+  if (!status.ok()) return status;
+  const GroupAnswer answer = group->history.take(result, stroke.id);
+  const std::uint64_t shape_id = ++state_.next_shape_id;
+  std::uint64_t sequence = 0;
+  if (request.publish()) {
+    sequence = publish_stroke(state_.hub, "app", stroke, &result.analysis, "", timings,
+                              [&](v1::ShapeRecognized& s) {
+                                set_group_fields(answer, result.tidy, shape_id, &s);
+                                for (const std::uint64_t q : answer.supersedes_sequences) {
+                                  s.add_supersedes_sequences(q);
+                                }
+                              });
+  }
+  group->history.remember(result, shape_id, sequence);
+  response->set_stroke_id(stroke.id);
+  *response->mutable_ink_polygon() = std::move(result.analysis.ink_polygon);
+  *response->mutable_shape() = std::move(result.analysis.shape);
+  for (auto& alternative : result.analysis.alternatives) {
+    response->add_alternatives()->Swap(&alternative);
+  }
+  *response->mutable_timings() = timings;
+  set_group_fields(answer, result.tidy, shape_id, response);
   return grpc::Status::OK;
 }
 
@@ -183,14 +233,18 @@ grpc::Status LiveServiceImpl::StreamSamples(
     event.set_device_id("stream");
     return stream->Write(event);
   };
+  // The stream's own grouping: its strokes group with each other only.
+  GroupHistory grouping;
   auto finish_stroke = [&]() -> grpc::Status {
     Stroke stroke = std::move(*current);
     current.reset();
-    StrokeAnalysis analysis;
+    GroupedStrokeAnalysis result;
+    StrokeAnalysis& analysis = result.analysis;
     v1::Timings timings;
     std::string not_analysed;
     if (state_.analyzer) {
-      const grpc::Status s = analyze_stroke(state_, context, stroke, settings, &analysis, &timings);
+      const grpc::Status s =
+          analyze_grouped(state_, context, grouping, stroke, settings, &result, &timings);
       if (!s.ok()) return s;
     } else {
       not_analysed = "this build has no stroke analyzer (ink polygon and recognizer)";
@@ -204,10 +258,17 @@ grpc::Status LiveServiceImpl::StreamSamples(
     if (state_.analyzer && analysis.shape.kind() != v1::SHAPE_KIND_UNSPECIFIED) {
       v1::LiveEvent shape;
       v1::ShapeRecognized* r = shape.mutable_shape();
+      const GroupAnswer answer = grouping.take(result, stroke.id); // reads the shape: first
       r->set_stroke_id(stroke.id);
       *r->mutable_shape() = std::move(analysis.shape);
       for (auto& alternative : analysis.alternatives) *r->add_alternatives() = alternative;
       *r->mutable_timings() = timings;
+      const std::uint64_t shape_id = ++state_.next_shape_id;
+      set_group_fields(answer, result.tidy, shape_id, r);
+      for (std::size_t i = 0; i < answer.supersedes_shape_ids.size(); ++i) {
+        r->add_supersedes_sequences(0); // the stream's events are not published
+      }
+      grouping.remember(result, shape_id, 0);
       if (!write_event(std::move(shape))) return grpc::Status::CANCELLED;
     }
     return grpc::Status::OK;

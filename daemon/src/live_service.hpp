@@ -26,6 +26,10 @@ class LiveServiceImpl final : public v1::Live::Service {
   // A hub subscription or the status refusing it (RESOURCE_EXHAUSTED / UNAVAILABLE).
   grpc::Status subscribe(EventFilter filter, std::size_t capacity,
                          std::unique_ptr<Subscription>* out);
+  // SubmitStroke with a group_key: the stroke added to that key's grouping.
+  grpc::Status submit_grouped(grpc::ServerContext* context, const v1::SubmitStrokeRequest& request,
+                              const Stroke& stroke, const PenSettings& settings,
+                              v1::SubmitStrokeResponse* response);
 
   DaemonState& state_;
 };

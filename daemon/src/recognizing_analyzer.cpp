@@ -123,6 +123,7 @@ class GroupSession final : public StrokeGroupSession {
     input.ink = ink ? &*ink : nullptr;
     input.pen_radius = settings_.pen_radius_mm;
     const GroupUpdate u = grouper_.add(input);
+    grouper_.forget_unreachable(); // memory follows the grouping window, however long the session
     const Recognition& r = u.shape.recognition;
     out.analysis.shape = to_proto_shape(r.shape, r.params, r.clean, r.certificate, r.confidence);
     add_alternatives(r, &out.analysis.alternatives);
@@ -138,6 +139,12 @@ class GroupSession final : public StrokeGroupSession {
     return std::make_unique<GroupSession>(*this);
   }
   [[nodiscard]] std::size_t stroke_count() const override { return grouper_.stroke_count(); }
+  [[nodiscard]] std::size_t oldest_retained_stroke() const override {
+    return grouper_.oldest_retained_stroke();
+  }
+  [[nodiscard]] std::size_t retained_stroke_count() const override {
+    return grouper_.retained_stroke_count();
+  }
 
  private:
   PenSettings settings_;

@@ -304,6 +304,41 @@ TEST(LiveGrouping, TwoRectanglesDrawnApartStayTwo) {
   }
 }
 
+// A long session: rectangles drawn in 4 sides still group after hundreds of unrelated strokes
+// (short lines apart from each other, most within the pause window of the one before): one whose
+// sides are strokes 254-257 (a grouping that started afresh after 256 strokes would split it),
+// and one after 300 unrelated strokes. Each event names exactly its 4 strokes. The grouping keeps
+// only the strokes its window can reach (the session's bound is checked in the analyzer's test).
+TEST(LiveGrouping, RectanglesAfterHundredsOfStrokesStillGroup) {
+  Daemon d;
+  d.source->attach("tablet");
+  auto unrelated = [&](int from, int to) {
+    for (int i = from; i < to; ++i) {
+      const PointD o{10.0 * (i % 20), 10.0 * (i / 20)};
+      const PointD end = i % 2 == 0 ? PointD{o.x + 5, o.y} : PointD{o.x, o.y + 5};
+      d.source->draw("tablet", side(o, end), i % 25 == 24 ? 3'000'000 : 300'000);
+    }
+  };
+  unrelated(0, 253);
+  const auto first = d.draw_rectangle("tablet", 250, 20, 310, 60);
+  unrelated(253, 300);
+  const auto second = d.draw_rectangle("tablet", 250, 80, 310, 120);
+  const auto events = d.collector->shapes(308);
+  ASSERT_EQ(events.size(), 308U);
+  expect_consistent_supersession(events);
+  for (std::size_t i = 0; i < events.size(); ++i) {
+    if (i == 256 || i == 307) continue;
+    EXPECT_LE(covered(events[i].shape()).size(), 3U) << "event " << i;
+  }
+  for (const auto& [last, ids] :
+       {std::pair{events[256].shape(), first}, {events[307].shape(), second}}) {
+    EXPECT_EQ(last.stroke_id(), ids.back());
+    EXPECT_TRUE(is_rectangle(last.shape().kind())) << last.shape().kind();
+    EXPECT_EQ(ids_of(last.replaced_stroke_ids()), ids);
+    EXPECT_FALSE(last.supersedes_shape_ids().empty());
+  }
+}
+
 // No answer covers more than `max` strokes, and no rectangle covers four.
 void expect_groups_of_at_most(const std::vector<v1::LiveEvent>& events, int max) {
   for (const auto& e : events) {

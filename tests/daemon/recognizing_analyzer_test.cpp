@@ -136,5 +136,33 @@ TEST(RecognizingAnalyzer, GroupsAShaftAndItsHeadIntoOneArrow) {
                InvalidInput);
 }
 
+// A live grouping session keeps only the strokes its window can reach: through 200 short strokes
+// apart from each other, 0.1 s apart (all within the 2 s pause window), the strokes it keeps never
+// exceed the groups a stroke may join (6) times (max_strokes - 1), the oldest kept is recent, and
+// the session still counts every stroke.
+TEST(RecognizingAnalyzer, GroupSessionMemoryFollowsTheWindow) {
+  const auto analyzer = make_recognizing_analyzer();
+  PenSettings settings;
+  settings.pen_radius_mm = 0.5;
+  GroupingConfig grouping;
+  grouping.max_strokes = 4;
+  const auto session = analyzer->group_session(settings, grouping);
+  ASSERT_NE(session, nullptr);
+  for (int i = 0; i < 200; ++i) {
+    const PointD o{10.0 * (i % 20), 10.0 * (i / 20)};
+    std::vector<PointD> mm;
+    for (int k = 0; k <= 12; ++k) mm.push_back({o.x + 0.5 * k, o.y + 0.1 * std::sin(k)});
+    Stroke s = stroke_from(mm);
+    s.id = static_cast<std::uint64_t>(i);
+    for (PenSample& p : s.samples) p.time_us += static_cast<std::int64_t>(i) * 100'000;
+    const GroupedStrokeAnalysis r = session->add(s, false, {});
+    ASSERT_TRUE(r.grouped);
+    EXPECT_EQ(r.strokes, std::vector<std::size_t>{static_cast<std::size_t>(i)}) << "stroke " << i;
+    EXPECT_LE(session->retained_stroke_count(), 6U * 3U) << "stroke " << i;
+    EXPECT_GE(session->oldest_retained_stroke() + 6U * 4U, static_cast<std::size_t>(i));
+  }
+  EXPECT_EQ(session->stroke_count(), 200U);
+}
+
 } // namespace
 } // namespace penshape::daemon

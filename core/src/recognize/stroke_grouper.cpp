@@ -100,6 +100,38 @@ StrokeGrouper::StrokeGrouper(GroupingConfig grouping, RecognizerConfig recognize
 void StrokeGrouper::clear() {
   strokes_.clear();
   groups_.clear();
+  added_ = 0;
+}
+
+void StrokeGrouper::forget_unreachable() {
+  std::vector<bool> keep(groups_.size(), false);
+  std::size_t growable = 0;
+  std::size_t snapped = 0;
+  for (std::size_t g = groups_.size(); g-- > 0;) {
+    Entry& e = groups_[g];
+    // add() tries at most kMaxRecentGroups joinable groups, the newest first.
+    if (e.joinable && e.shape.strokes.size() < grouping_.max_strokes &&
+        growable < kMaxRecentGroups) {
+      ++growable;
+      keep[g] = true;
+    } else if (e.joinable) {
+      e.joinable = false;
+      for (const std::size_t i : e.shape.strokes) strokes_.erase(i);
+    }
+    // Tidy-up refers to the last max_strokes shapes that snapped, once add() has removed the
+    // (at most kMaxRecentGroups) groups the new stroke absorbs.
+    if (snaps(e.shape.recognition) && snapped < grouping_.max_strokes + kMaxRecentGroups) {
+      ++snapped;
+      keep[g] = true;
+    }
+  }
+  std::size_t kept = 0;
+  for (std::size_t g = 0; g < groups_.size(); ++g) {
+    if (!keep[g]) continue;
+    if (kept != g) groups_[kept] = std::move(groups_[g]); // never moved onto itself
+    ++kept;
+  }
+  groups_.resize(kept);
 }
 
 std::vector<GroupedShape> StrokeGrouper::shapes() const {
@@ -115,7 +147,7 @@ GroupUpdate StrokeGrouper::add(const StrokeInput& stroke) {
   RecognizerConfig config = recognizer_;
   if (stroke.pen_radius > 0) config.pen_radius = stroke.pen_radius;
   recognize_detail::validate_samples(stroke.samples, config);
-  const std::size_t index = strokes_.size();
+  const std::size_t index = added_;
   const double start = stroke.samples.front().t;
 
   // The best union with recent groups that snaps; else (below) the new stroke alone.
@@ -136,7 +168,7 @@ GroupUpdate StrokeGrouper::add(const StrokeInput& stroke) {
   std::map<std::size_t, Touch> cache;
   auto touch_of = [&](std::size_t s) -> const Touch& {
     auto it = cache.find(s);
-    if (it == cache.end()) it = cache.emplace(s, touch_path(strokes_[s].samples)).first;
+    if (it == cache.end()) it = cache.emplace(s, touch_path(strokes_.at(s).samples)).first;
     return it->second;
   };
   std::size_t best_count = 2;
@@ -155,8 +187,9 @@ GroupUpdate StrokeGrouper::add(const StrokeInput& stroke) {
     std::vector<StrokePoint> all;
     std::vector<const Touch*> t;
     for (const std::size_t s : members) {
-      inputs.push_back(strokes_[s]);
-      all.insert(all.end(), strokes_[s].samples.begin(), strokes_[s].samples.end());
+      const StrokeInput& kept = strokes_.at(s);
+      inputs.push_back(kept);
+      all.insert(all.end(), kept.samples.begin(), kept.samples.end());
       t.push_back(&touch_of(s));
     }
     inputs.push_back({stroke.samples, nullptr, nullptr, stroke.pen_radius});
@@ -208,9 +241,10 @@ GroupUpdate StrokeGrouper::add(const StrokeInput& stroke) {
   for (Entry& e : groups_) {
     if (!e.joinable || start - e.end_time <= grouping_.max_pause_seconds) continue;
     e.joinable = false;
-    for (const std::size_t i : e.shape.strokes) strokes_[i].samples = {};
+    for (const std::size_t i : e.shape.strokes) strokes_.erase(i);
   }
-  strokes_.push_back({stroke.samples, nullptr, nullptr, stroke.pen_radius});
+  strokes_[index] = {stroke.samples, nullptr, nullptr, stroke.pen_radius};
+  ++added_;
   groups_.push_back({shape, stroke.samples.back().t, true});
   return update;
 }

@@ -61,6 +61,7 @@
 //                  moves onto the nearest point of it.
 // GroupedShape::tidy lists the constraints applied, in this order.
 #include <cstddef>
+#include <map>
 #include <optional>
 #include <span>
 #include <string>
@@ -119,7 +120,23 @@ class StrokeGrouper {
 
   // The current answers (superseded ones removed), ordered by their first stroke.
   [[nodiscard]] std::vector<GroupedShape> shapes() const;
-  [[nodiscard]] std::size_t stroke_count() const { return strokes_.size(); }
+  // Strokes added so far (the next stroke's index), forgotten ones included.
+  [[nodiscard]] std::size_t stroke_count() const { return added_; }
+
+  // Forgets what no later stroke can reach, so that a long session's memory stays bounded: the
+  // samples of every stroke except those of the most recent groups a stroke may still join
+  // (within max_pause_seconds, fewer than max_strokes strokes, at most 6 of them: the groups
+  // add() tries), and every answer except those and the recent shapes tidy-up refers to (the
+  // last max_strokes + 6 that snapped). Called after each add(), the later answers are the same
+  // as without it. Indices and ids keep counting; shapes() then lists the kept answers only.
+  void forget_unreachable();
+  // Strokes whose samples are kept (those that may still join a group): after
+  // forget_unreachable() at most 6 * (max_strokes - 1).
+  [[nodiscard]] std::size_t retained_stroke_count() const { return strokes_.size(); }
+  // The index of the oldest stroke whose samples are kept (stroke_count() when none is).
+  [[nodiscard]] std::size_t oldest_retained_stroke() const {
+    return strokes_.empty() ? added_ : strokes_.begin()->first;
+  }
 
   // Forgets every stroke (a new page); ids keep increasing.
   void clear();
@@ -132,10 +149,11 @@ class StrokeGrouper {
   };
   GroupingConfig grouping_;
   RecognizerConfig recognizer_;
-  // Samples and pen radius only (ink pointers dropped); the samples of strokes whose group can
-  // no longer grow (older than max_pause_seconds) are dropped, so memory follows the window.
-  std::vector<StrokeInput> strokes_;
-  std::vector<Entry> groups_; // current answers
+  // Samples and pen radius only (ink pointers dropped); strokes whose group can no longer grow
+  // (older than max_pause_seconds) are dropped, so memory follows the window.
+  std::map<std::size_t, StrokeInput> strokes_; // by stroke index, the strokes that may join
+  std::size_t added_ = 0;                      // strokes added (the next stroke's index)
+  std::vector<Entry> groups_;                  // current answers
   std::size_t next_id_ = 0;
 };
 

@@ -18,6 +18,10 @@
 // | events queued per subscriber  | 1,024        | subscriber_queue_events | oldest dropped,
 // counted|
 // | raw-report subscribers        | 8            | max_raw_report_subscribers | RES._EXHAUSTED |
+// | SubmitStroke group_keys kept  | 64           | max_group_keys          | LRU key forgotten |
+// | group_key length              | 128 bytes    | (fixed)                 | INVALID_ARGUMENT |
+// (each StreamSamples stream groups its own strokes: streams count within max_subscribers; every
+// grouping keeps only the strokes its window can reach, at most 6 * (group_max_strokes - 1))
 //
 // Why delta >= r / 2^20: the engines approximate disks of radius r by polygons D̄_{a,b} with
 // b - a about delta; their vertex count grows like 4·sqrt(r / (2·delta)), which reaches the core's
@@ -45,6 +49,10 @@ struct Limits {
   // Subscribe calls with include_raw_reports at once (each gets every report of its devices, up
   // to the tablets' report rate); counted within max_subscribers. 0 turns raw reports off.
   std::size_t max_raw_report_subscribers = 8;
+  // SubmitStroke group_keys whose groupings are kept; a new key beyond them forgets the least
+  // recently used one. Each grouping keeps at most 6 * (group_max_strokes - 1) strokes.
+  std::size_t max_group_keys = 64;
+  std::size_t max_group_key_bytes = 128;
 };
 
 } // namespace penshape::daemon

@@ -51,6 +51,11 @@ class StrokeGroupSession {
   // An independent copy (a preview adds the stroke in progress to a copy).
   [[nodiscard]] virtual std::unique_ptr<StrokeGroupSession> clone() const = 0;
   [[nodiscard]] virtual std::size_t stroke_count() const = 0;
+  // A session forgets the strokes no later stroke can reach (so a long session's memory follows
+  // the grouping window, group_max_strokes and group_max_pause_s): the index of the oldest stroke
+  // it still keeps (stroke_count() when none), and how many it keeps.
+  [[nodiscard]] virtual std::size_t oldest_retained_stroke() const { return 0; }
+  [[nodiscard]] virtual std::size_t retained_stroke_count() const { return stroke_count(); }
 };
 
 class StrokeAnalyzer {
