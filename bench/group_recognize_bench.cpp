@@ -105,14 +105,28 @@ void draw_miss(const std::filesystem::path& file, const std::vector<Points>& str
         << arrow->certificate.certified << ": " << arrow->rejected;
   }
   out << "</text>\n";
+  // The winner's vertices and bends (to check the plausibility rules by hand).
+  out << "<!-- vertices";
+  for (const auto& q : r.params.vertices) out << ' ' << q.x << ',' << q.y;
+  out << " bends";
+  for (const auto& q : r.params.shaft_bends) out << ' ' << q.x << ',' << q.y;
+  out << " -->\n";
   // Every arrow candidate tried, one line each.
   double y = yl - 15;
   for (const auto& c : r.alternatives) {
     if (c.shape != ShapeClass::kArrow && c.shape != ShapeClass::kDoubleArrow) continue;
     out << "<text x='" << xl - 15 << "' y='" << y << "' font-size='6'>"
-        << penshape::to_string(c.shape) << " bulge " << c.params.shaft_bulge << " bound "
-        << c.certificate.bound << ": " << c.rejected << "</text>\n";
+        << penshape::to_string(c.shape) << " bulge " << c.params.shaft_bulge << " bends "
+        << c.params.shaft_bends.size() << " bound " << c.certificate.bound << ": " << c.rejected
+        << "</text>\n";
     y += 7;
+  }
+  // Bent-shaft candidates (blue, thin): where their bends went.
+  for (const auto& c : r.alternatives) {
+    if (c.params.shaft_bends.empty()) continue;
+    out << "<polyline fill='none' stroke='blue' stroke-width='0.4' points='";
+    for (const auto& q : c.clean) out << q.x << ',' << q.y << ' ';
+    out << "'/>\n";
   }
   for (const Points& p : strokes) {
     out << "<polyline fill='none' stroke='black' stroke-width='" << 2 * r.pen_radius + 0.01
@@ -184,6 +198,11 @@ int main(int argc, char** argv) {
     if (kNonShapes.count(g.kind)) {
       single_non_today.add(a != "freeform");
       single_non_group.add(b != "freeform");
+      if (b != "freeform") ++polygon_misses["single " + g.kind + " -> " + b];
+      if (b != "freeform" && !svg_dir.empty()) {
+        draw_miss(svg_dir / (subject_of(g.file) + "_" + std::to_string(v) + "_" + g.kind + ".svg"),
+                  {g.points}, grouped.front().recognition);
+      }
     }
     if (g.kind == "arrow") {
       const bool whole_ok = one_group_of(grouped, 1, kTargets.at("arrow"));
