@@ -8,7 +8,9 @@
 //   non-shape pairs snapped   two non-shape gestures touching: snapped to a shape together;
 //   single strokes            recognize() (today) beside StrokeGrouper on one stroke;
 //   time per stroke           StrokeGrouper::add (grouping, arrows, tidy-up included) beside
-//                             recognize() on the same strokes, thread CPU time p50/p99/max.
+//                             recognize() on the same strokes, thread CPU time p50/p99/max;
+//                             and the whole $1 arrows through recognize_strokes (bent shafts
+//                             are fitted there).
 // Usage: group_recognize_bench [--json] [--svg-dir DIR]   (data dir: $PENSHAPE_SHARED_DATA_DIR)
 //   --svg-dir: every arrow missed is drawn to DIR (strokes, and the best arrow candidate with why
 //              it was refused), to look at the failures.
@@ -176,7 +178,7 @@ int main(int argc, char** argv) {
   std::map<std::string, Rate> polygons; // by "rectangle/3" etc.
   Rate polygons_all, arrows_whole, arrows_cut, separate, pairs_merged, pairs_any;
   Rate single_shapes_today, single_shapes_group, single_non_today, single_non_group;
-  std::vector<double> t_group, t_today;
+  std::vector<double> t_group, t_today, t_arrows;
   std::map<std::string, int> polygon_misses;
   std::map<std::string, Rate> arrows_by_subject; // whole and cut, per subject
 
@@ -188,7 +190,9 @@ int main(int argc, char** argv) {
     const double t0 = now();
     const penshape::Recognition today = penshape::recognize(g.points);
     t_today.push_back(now() - t0);
+    const double g0 = now();
     const std::vector<GroupedShape> grouped = penshape::recognize_strokes(one);
+    if (g.kind == "arrow") t_arrows.push_back(now() - g0);
     const std::string a = penshape::to_string(today.shape);
     const std::string b = penshape::to_string(grouped.front().recognition.shape);
     if (kTargets.count(g.kind) && g.kind != "arrow") {
@@ -326,6 +330,7 @@ int main(int argc, char** argv) {
   if (!json) std::printf("\ntime per stroke (thread CPU time; target p99 <= 5 ms)\n");
   times("recognize(), one stroke (today)", t_today);
   times("StrokeGrouper::add, multi-stroke polygons", t_group);
+  times("recognize_strokes, one arrow stroke", t_arrows);
   if (!json && !polygon_misses.empty()) {
     std::printf("\nmisses:\n");
     for (const auto& [k, n] : polygon_misses) std::printf("  %4d  %s\n", n, k.c_str());

@@ -41,6 +41,9 @@ constexpr double kMaxBendTurn = 100.0 * kDegree;
 // at most this (straight and curved shafts are not held to it: the whole drawing sets their
 // direction, not one fitted bend).
 constexpr double kMaxBentHeadSkew = 25.0 * kDegree;
+// A bent shaft's seed is polished only when it fits within this many epsilons, and polished
+// again only when it ends below this many (fits above 1.25 epsilons are not certified).
+constexpr double kSeedWithin = 2.0, kRepolishBelow = 1.25;
 
 } // namespace
 
@@ -406,14 +409,24 @@ void fit_bent(const std::vector<PointD>& cloud, const Objective& objective, Arro
       objective.shape == ShapeClass::kDoubleArrow ? kDoubleParameters : kStraightParameters;
   a.bulge = 0.0;
   double error = INFINITY;
-  for (std::size_t k = 1; k <= kMaxShaftBends && error > kSecondStartAbove * epsilon; ++k) {
+  // A second bend only for a one-bend fit that is loose but near (kRepolishBelow): a bend more
+  // rarely rescues a drawing one bend does not come near.
+  for (std::size_t k = 1; k <= kMaxShaftBends && error > kSecondStartAbove * epsilon &&
+                          (k == 1 || error <= kRepolishBelow * epsilon);
+       ++k) {
     const double parameters = base + kBendParameters * static_cast<double>(k);
     if (kPricePerParameter * parameters >= rank_to_beat || !add_bend(cloud, a, epsilon)) return;
     refind_barbs(cloud, a, epsilon);
+    // Every vertex of the seed lies on the ink: a drawing that is a bent arrow fits it within a
+    // few epsilons already (the polish moves vertices by about epsilon), anything else is not
+    // worth polishing.
+    if (objective(a) > kSeedWithin * epsilon) return;
     error = polish(a, objective, epsilon / 2.0, false);
     // A compass search stalls where two errors tie (a bend between its pieces): started again
-    // from where it stopped, with its full step, it often goes on.
-    for (int again = 0; again < 2 && error > kSecondStartAbove * epsilon; ++again) {
+    // from where it stopped, with its full step, it often goes on (when it may still certify).
+    for (int again = 0;
+         again < 2 && error > kSecondStartAbove * epsilon && error <= kRepolishBelow * epsilon;
+         ++again) {
       error = polish(a, objective, epsilon / 2.0, false);
     }
     out.push_back(make_fit(objective.shape, a, error));
