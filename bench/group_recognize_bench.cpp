@@ -8,7 +8,9 @@
 //   non-shape pairs snapped   two non-shape gestures touching: snapped to a shape together;
 //   single strokes            recognize() (today) beside StrokeGrouper on one stroke;
 //   time per stroke           StrokeGrouper::add (grouping, arrows, tidy-up included) beside
-//                             recognize() on the same strokes, thread CPU time p50/p99/max.
+//                             recognize() on the same strokes, thread CPU time p50/p99/max;
+//                             and the whole $1 arrows through recognize_strokes (bent shafts
+//                             are fitted there).
 // Usage: group_recognize_bench [--json] [--svg-dir DIR]   (data dir: $PENSHAPE_SHARED_DATA_DIR)
 //   --svg-dir: every arrow missed is drawn to DIR (strokes, and the best arrow candidate with why
 //              it was refused), to look at the failures.
@@ -105,14 +107,28 @@ void draw_miss(const std::filesystem::path& file, const std::vector<Points>& str
         << arrow->certificate.certified << ": " << arrow->rejected;
   }
   out << "</text>\n";
+  // The winner's vertices and bends (to check the plausibility rules by hand).
+  out << "<!-- vertices";
+  for (const auto& q : r.params.vertices) out << ' ' << q.x << ',' << q.y;
+  out << " bends";
+  for (const auto& q : r.params.shaft_bends) out << ' ' << q.x << ',' << q.y;
+  out << " -->\n";
   // Every arrow candidate tried, one line each.
   double y = yl - 15;
   for (const auto& c : r.alternatives) {
     if (c.shape != ShapeClass::kArrow && c.shape != ShapeClass::kDoubleArrow) continue;
     out << "<text x='" << xl - 15 << "' y='" << y << "' font-size='6'>"
-        << penshape::to_string(c.shape) << " bulge " << c.params.shaft_bulge << " bound "
-        << c.certificate.bound << ": " << c.rejected << "</text>\n";
+        << penshape::to_string(c.shape) << " bulge " << c.params.shaft_bulge << " bends "
+        << c.params.shaft_bends.size() << " bound " << c.certificate.bound << ": " << c.rejected
+        << "</text>\n";
     y += 7;
+  }
+  // Bent-shaft candidates (blue, thin): where their bends went.
+  for (const auto& c : r.alternatives) {
+    if (c.params.shaft_bends.empty()) continue;
+    out << "<polyline fill='none' stroke='blue' stroke-width='0.4' points='";
+    for (const auto& q : c.clean) out << q.x << ',' << q.y << ' ';
+    out << "'/>\n";
   }
   for (const Points& p : strokes) {
     out << "<polyline fill='none' stroke='black' stroke-width='" << 2 * r.pen_radius + 0.01
@@ -162,7 +178,7 @@ int main(int argc, char** argv) {
   std::map<std::string, Rate> polygons; // by "rectangle/3" etc.
   Rate polygons_all, arrows_whole, arrows_cut, separate, pairs_merged, pairs_any;
   Rate single_shapes_today, single_shapes_group, single_non_today, single_non_group;
-  std::vector<double> t_group, t_today;
+  std::vector<double> t_group, t_today, t_arrows;
   std::map<std::string, int> polygon_misses;
   std::map<std::string, Rate> arrows_by_subject; // whole and cut, per subject
 
@@ -174,7 +190,9 @@ int main(int argc, char** argv) {
     const double t0 = now();
     const penshape::Recognition today = penshape::recognize(g.points);
     t_today.push_back(now() - t0);
+    const double g0 = now();
     const std::vector<GroupedShape> grouped = penshape::recognize_strokes(one);
+    if (g.kind == "arrow") t_arrows.push_back(now() - g0);
     const std::string a = penshape::to_string(today.shape);
     const std::string b = penshape::to_string(grouped.front().recognition.shape);
     if (kTargets.count(g.kind) && g.kind != "arrow") {
@@ -184,6 +202,11 @@ int main(int argc, char** argv) {
     if (kNonShapes.count(g.kind)) {
       single_non_today.add(a != "freeform");
       single_non_group.add(b != "freeform");
+      if (b != "freeform") ++polygon_misses["single " + g.kind + " -> " + b];
+      if (b != "freeform" && !svg_dir.empty()) {
+        draw_miss(svg_dir / (subject_of(g.file) + "_" + std::to_string(v) + "_" + g.kind + ".svg"),
+                  {g.points}, grouped.front().recognition);
+      }
     }
     if (g.kind == "arrow") {
       const bool whole_ok = one_group_of(grouped, 1, kTargets.at("arrow"));
@@ -307,6 +330,7 @@ int main(int argc, char** argv) {
   if (!json) std::printf("\ntime per stroke (thread CPU time; target p99 <= 5 ms)\n");
   times("recognize(), one stroke (today)", t_today);
   times("StrokeGrouper::add, multi-stroke polygons", t_group);
+  times("recognize_strokes, one arrow stroke", t_arrows);
   if (!json && !polygon_misses.empty()) {
     std::printf("\nmisses:\n");
     for (const auto& [k, n] : polygon_misses) std::printf("  %4d  %s\n", n, k.c_str());

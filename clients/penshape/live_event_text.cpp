@@ -172,6 +172,31 @@ std::string device_line(const v1::DeviceInfo& device) {
          (device.replay() ? "  (replay)" : "");
 }
 
+namespace {
+
+// ArrowParams as "arrow" {tail, tip, barbs, tail_barbs, head_angle_rad, shaft_bulge,
+// shaft_bends}.
+void write_arrow_json(JsonWriter& json, const v1::ArrowParams& a) {
+  auto points = [&](const char* key, const auto& list) {
+    json.key(key).begin_array();
+    for (const auto& p : list) write_point(json, p);
+    json.end_array();
+  };
+  json.key("arrow").begin_object();
+  json.key("tail");
+  write_point(json, a.tail());
+  json.key("tip");
+  write_point(json, a.tip());
+  points("barbs", a.barbs());
+  points("tail_barbs", a.tail_barbs());
+  json.key("head_angle_rad").number(a.head_angle_rad());
+  json.key("shaft_bulge").number(a.shaft_bulge());
+  points("shaft_bends", a.shaft_bends());
+  json.end_object();
+}
+
+} // namespace
+
 void write_shape_json(JsonWriter& json, const v1::Shape& shape) {
   json.begin_object();
   json.key("kind").string(shape_kind_name(shape.kind()));
@@ -206,6 +231,9 @@ void write_shape_json(JsonWriter& json, const v1::Shape& shape) {
       json.key("start_rad").number(shape.arc().start_rad());
       json.key("sweep_rad").number(shape.arc().sweep_rad());
       json.end_object();
+      break;
+    case v1::Shape::kArrow:
+      write_arrow_json(json, shape.arrow());
       break;
     default:
       break;

@@ -59,6 +59,10 @@ void write_params(JsonWriter& json, ShapeClass c, const ShapeParams& p) {
     // vertices: tail, tip, the tip's barbs (then the tail's barbs of a double arrow)
     json.key("head_angle").number(p.head_angle);
     json.key("shaft_bulge").number(p.shaft_bulge);
+    // A bent shaft's interior vertices from tail to tip (empty: straight or curved).
+    json.key("shaft_bends").begin_array();
+    for (const PointD& b : p.shaft_bends) write_point(json, b);
+    json.end_array();
   }
   json.end_object();
 }

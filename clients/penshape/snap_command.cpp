@@ -113,6 +113,12 @@ std::string json_line(const snap::Replacement& rep) {
     json.key("sweep_angle").number(r.params.sweep_angle);
   }
   if (r.params.head_angle > 0) json.key("head_angle").number(r.params.head_angle);
+  if (r.shape == ShapeClass::kArrow || r.shape == ShapeClass::kDoubleArrow) {
+    json.key("shaft_bulge").number(r.params.shaft_bulge);
+    json.key("shaft_bends").begin_array();
+    for (const PointD& b : r.params.shaft_bends) write_point(json, b);
+    json.end_array();
+  }
   json.end_object();
   json.key("tidy").begin_array();
   for (const auto& t : rep.tidy) json.string(t);

@@ -59,6 +59,14 @@ ShapeParams params_of(const JsonValue& p) {
   out.sweep_angle = optional_number(p, "sweep_angle", "params.");
   out.head_angle = optional_number(p, "head_angle", "params.");
   out.shaft_bulge = optional_number(p, "shaft_bulge", "params.");
+  if (const JsonValue* b = p.find("shaft_bends")) {
+    if (b->kind != JsonValue::Kind::kArray)
+      throw InputError("field 'params.shaft_bends' must be a list");
+    for (std::size_t i = 0; i < b->items.size(); ++i) {
+      out.shaft_bends.push_back(
+          point(b->items[i], "params.shaft_bends[" + std::to_string(i) + "]"));
+    }
+  }
   return out;
 }
 

@@ -22,13 +22,81 @@ bool is_snap(const Recognition& r) {
       return r.params.radius_x > 0;
     case ShapeClass::kEllipse:
       return r.params.radius_x > 0 && r.params.radius_y > 0;
+    case ShapeClass::kArrow:
+    case ShapeClass::kDoubleArrow:
+      return n == (r.shape == ShapeClass::kArrow ? 4u : 6u) && r.params.shaft_bends.size() <= 2 &&
+             (r.params.shaft_bends.empty() || r.params.shaft_bulge == 0);
     default:
       return n >= 3;
   }
 }
 
+namespace {
+
+// The chord step dt for a curve of largest radius `radius`: chords within the sag below.
+double chord_step(const Recognition& r, double radius) {
+  const double eps = r.certificate.epsilon;
+  // Also at most a tenth of the pen radius, so the facets do not show in the ink.
+  const double sag = std::max(
+      std::min({eps - r.certificate.bound, eps / 20, r.certificate.pen_radius / 10}), eps * 1e-3);
+  return std::sqrt(8 * sag / radius);
+}
+
+// The circular arc from a to b whose midpoint lies `bulge` to the left of the chord a -> b.
+std::vector<PointD> bowed(const Recognition& r, PointD a, PointD b, double bulge) {
+  const double c = std::hypot(b.x - a.x, b.y - a.y);
+  if (c <= 0) return {a, b};
+  const PointD u{(b.x - a.x) / c, (b.y - a.y) / c}, n{-u.y, u.x};
+  const double radius = (c * c / 4 + bulge * bulge) / (2 * std::abs(bulge));
+  // Centre on the normal through the chord's midpoint, on the side away from the bulge.
+  const double off = bulge - (bulge > 0 ? radius : -radius);
+  const PointD o{(a.x + b.x) / 2 + off * n.x, (a.y + b.y) / 2 + off * n.y};
+  const double t0 = std::atan2(a.y - o.y, a.x - o.x);
+  // A left bulge turns clockwise in (x, y) from a to b; past a half circle when it exceeds r.
+  const double half = std::asin(std::min(1.0, c / (2 * radius)));
+  const double magnitude = std::abs(bulge) <= radius ? 2 * half : 2 * std::numbers::pi - 2 * half;
+  const double sweep = bulge > 0 ? -magnitude : magnitude;
+  const auto n_chords = static_cast<std::size_t>(
+      std::clamp(std::ceil(std::abs(sweep) / chord_step(r, radius)), 8.0, 1e5));
+  std::vector<PointD> out;
+  for (std::size_t i = 0; i <= n_chords; ++i) {
+    const double t = t0 + sweep * static_cast<double>(i) / static_cast<double>(n_chords);
+    out.push_back({o.x + radius * std::cos(t), o.y + radius * std::sin(t)});
+  }
+  out.front() = a;
+  out.back() = b;
+  return out;
+}
+
+} // namespace
+
+std::vector<std::vector<PointD>> arrow_pieces(const Recognition& r) {
+  const ShapeParams& p = r.params;
+  const std::vector<PointD>& v = p.vertices;
+  // A curved shaft: the recognizer's clean path is what was certified (chords of the arc).
+  if (p.shaft_bulge != 0 && !r.clean.empty()) return {r.clean};
+  std::vector<PointD> shaft{v[0]};
+  shaft.insert(shaft.end(), p.shaft_bends.begin(), p.shaft_bends.end());
+  shaft.push_back(v[1]);
+  if (p.shaft_bulge != 0 && p.shaft_bends.empty()) shaft = bowed(r, v[0], v[1], p.shaft_bulge);
+  std::vector<std::vector<PointD>> out{shaft, {v[2], v[1], v[3]}};
+  if (v.size() == 6) out.push_back({v[4], v[0], v[5]});
+  return out;
+}
+
 std::vector<PointD> clean_polyline(const Recognition& r) {
   const ShapeParams& p = r.params;
+  if (r.shape == ShapeClass::kArrow || r.shape == ShapeClass::kDoubleArrow) {
+    // One line through every piece: the tail head and the head are retraced (the same ink).
+    const std::vector<std::vector<PointD>> pieces = arrow_pieces(r);
+    if (pieces.size() == 1) return pieces[0];
+    std::vector<PointD> out;
+    if (pieces.size() == 3) out = {pieces[2][0], pieces[2][1], pieces[2][2], pieces[2][1]};
+    if (!out.empty()) out.pop_back(); // the shaft starts at the tail
+    out.insert(out.end(), pieces[0].begin(), pieces[0].end());
+    out.insert(out.end(), {pieces[1][0], pieces[1][1], pieces[1][2]});
+    return out;
+  }
   const bool round = r.shape == ShapeClass::kCircle || r.shape == ShapeClass::kEllipse ||
                      r.shape == ShapeClass::kArc;
   if (!round) {

@@ -13,6 +13,12 @@ namespace penshape::snap {
 // within the tolerance of the stroke's ink, as the certificate says of the curve.
 std::vector<PointD> clean_polyline(const Recognition& r);
 
+// An arrow's pieces as polylines: the shaft (tail -> shaft bends -> tip), the head (barb 1 ->
+// tip -> barb 2), and a double arrow's tail head (barb 3 -> tail -> barb 4). A curved shaft: the
+// recognizer's clean path as one piece when it is given (what was certified), else the arc
+// sampled as clean_polyline samples arcs. clean_polyline joins the pieces into one line.
+std::vector<std::vector<PointD>> arrow_pieces(const Recognition& r);
+
 // Whether the recognizer's answer is a snap: a certified, non-freeform shape with the geometry of
 // its class (two segment ends, three or more polygon corners, positive radii).
 bool is_snap(const Recognition& r);

@@ -115,6 +115,19 @@ Element arc_element(const Recognition& r, const Affine& to_local) {
                      "," + num(e.y)}}};
 }
 
+// An arrow as one path: a subpath per piece (shaft through its bends, head, tail head).
+Element arrow_element(const Recognition& r, const Affine& to_local) {
+  std::string d;
+  for (const std::vector<PointD>& piece : arrow_pieces(r)) {
+    for (std::size_t i = 0; i < piece.size(); ++i) {
+      const PointD q = to_local.apply(piece[i]);
+      if (!d.empty()) d += ' ';
+      d.append(i == 0 ? "M " : "L ").append(num(q.x)).append(",").append(num(q.y));
+    }
+  }
+  return {"path", {{"d", d}}};
+}
+
 Element shape_element(const Recognition& r, const Affine& to_local) {
   const ShapeParams& p = r.params;
   std::vector<PointD> v;
@@ -138,6 +151,9 @@ Element shape_element(const Recognition& r, const Affine& to_local) {
                              mapped_angle(to_local, p.rotation));
     case ShapeClass::kArc:
       return arc_element(r, to_local);
+    case ShapeClass::kArrow:
+    case ShapeClass::kDoubleArrow:
+      return arrow_element(r, to_local);
     default:
       return polygon_or_rect(v, false);
   }

@@ -1,7 +1,8 @@
 #pragma once
 // Writing a snapped stroke back into its SVG: the element is replaced, at the same place in its
 // parent (same layer, same z-order), by a native element of the clean shape (rect, circle,
-// ellipse, line, polyline, polygon, or path with true arcs), in the element's own coordinates so
+// ellipse, line, polyline, polygon, path with true arcs, or for an arrow a path of its shaft
+// through its bends, its head and a double arrow's tail head), in the element's own coordinates so
 // that its transform, id, class and style stay. A calligraphy outline becomes a stroked shape of
 // the outline's colour and the estimated pen width. The new element names the class and the
 // certificate in data-penshape-class and data-penshape-certificate.

@@ -311,6 +311,7 @@ v1::Shape to_proto_shape(ShapeClass shape, const ShapeParams& params,
       for (std::size_t i = 4; i < v.size(); ++i) set_point(v[i], a->add_tail_barbs());
       a->set_head_angle_rad(params.head_angle);
       a->set_shaft_bulge(params.shaft_bulge);
+      for (const PointD& b : params.shaft_bends) set_point(b, a->add_shaft_bends());
       break;
     }
     default: {

@@ -63,4 +63,31 @@ TEST(LiveEventText, PreviewOfAGroupNamesItsStrokes) {
   EXPECT_NE(penshape::cli::event_json(event).find("\"group\":{"), std::string::npos);
 }
 
+// An arrow's parameters in the shape's JSON object, a bent shaft's bends included (tail to tip).
+TEST(LiveEventText, ArrowJsonHasItsShaftBends) {
+  v1::LiveEvent event;
+  event.set_device_id("hidraw3");
+  v1::Shape* shape = event.mutable_shape()->mutable_shape();
+  shape->set_kind(v1::SHAPE_KIND_ARROW);
+  v1::ArrowParams* a = shape->mutable_arrow();
+  auto set = [](v1::Point* p, double x, double y) {
+    p->set_x(x);
+    p->set_y(y);
+  };
+  set(a->mutable_tail(), 0, 0);
+  set(a->mutable_tip(), 100, -30);
+  set(a->add_barbs(), 90, -16);
+  set(a->add_barbs(), 84, -24);
+  set(a->add_shaft_bends(), 40, 2);
+  set(a->add_shaft_bends(), 60, 0);
+  a->set_head_angle_rad(0.5);
+  const std::string json = penshape::cli::event_json(event);
+  EXPECT_NE(json.find("\"arrow\":{\"tail\":[0,0],\"tip\":[100,-30],"
+                      "\"barbs\":[[90,-16],[84,-24]],\"tail_barbs\":[],"
+                      "\"head_angle_rad\":0.5,\"shaft_bulge\":0,"
+                      "\"shaft_bends\":[[40,2],[60,0]]}"),
+            std::string::npos)
+      << json;
+}
+
 } // namespace

@@ -235,4 +235,50 @@ TEST(VerifyCli, GroupAnswerIsCheckedOnTheUnion) {
   EXPECT_EQ(bad.exit_code, 1) << bad.out;
 }
 
+// A "hockey stick" arrow in one stroke (JSON lines), drawn with a known pen (--pen-radius 2, so
+// epsilon is 10): the answer's shaft has a bend ("shaft_bends"), it verifies, and the same answer
+// with the bend moved by 2 epsilon does not.
+TEST(VerifyCli, BentArrowAnswerVerifiesAndAMovedBendDoesNot) {
+  const double pi = std::acos(-1.0);
+  const double tail[2] = {0, 0}, bend[2] = {90, 0}, tip[2] = {200, -60};
+  const double back = std::atan2(bend[1] - tip[1], bend[0] - tip[0]);
+  const double barb1[2] = {tip[0] + 45 * std::cos(back + pi / 6),
+                           tip[1] + 45 * std::sin(back + pi / 6)};
+  const double barb2[2] = {tip[0] + 45 * std::cos(back - pi / 6),
+                           tip[1] + 45 * std::sin(back - pi / 6)};
+  const double* corners[] = {tail, bend, tip, barb1, tip, barb2};
+  std::string text = "{\"points\": [";
+  double t = 0;
+  for (std::size_t i = 0; i + 1 < 6; ++i) {
+    for (int k = i == 0 ? 0 : 1; k <= 30; ++k, t += 0.01) {
+      const double f = k / 30.0;
+      char buf[96];
+      std::snprintf(buf, sizeof buf, "%s[%.6f, %.6f, %.3f]", text.back() == '[' ? "" : ", ",
+                    corners[i][0] + f * (corners[i + 1][0] - corners[i][0]),
+                    corners[i][1] + f * (corners[i + 1][1] - corners[i][1]), t);
+      text += buf;
+    }
+  }
+  text += "]}\n";
+  const std::string strokes = write("hockey_stick.jsonl", text);
+  const Result rec =
+      penshape::test::run_command(cli() + " recognize --pen-radius 2 " + strokes + " --json");
+  ASSERT_EQ(rec.exit_code, 0) << rec.out;
+  ASSERT_NE(rec.out.find("\"class\":\"arrow\""), std::string::npos) << rec.out;
+  const auto b = rec.out.find("\"shaft_bends\":[[");
+  ASSERT_NE(b, std::string::npos) << rec.out;
+  const std::string answer = write("hockey_stick.json", rec.out);
+  const Result ok = penshape::test::run_command(cli() + " verify " + strokes + " " + answer);
+  EXPECT_EQ(ok.exit_code, 0) << ok.out;
+  // The bend moved 20 (2 epsilon) down, away from the corner's inside (the shaft turns up).
+  const auto y = rec.out.find(',', b) + 1;
+  const auto y_end = rec.out.find(']', y);
+  const double by = std::stod(rec.out.substr(y, y_end - y));
+  const std::string moved =
+      rec.out.substr(0, y) + std::to_string(by + 20.0) + rec.out.substr(y_end);
+  const Result bad = penshape::test::run_command(cli() + " verify " + strokes + " " +
+                                                 write("hockey_stick_moved.json", moved));
+  EXPECT_EQ(bad.exit_code, 1) << bad.out;
+}
+
 } // namespace

@@ -149,6 +149,52 @@ TEST(VerifyRecognition, ArrowWithCurvedShaft) {
   EXPECT_NE(status(stroke, claim(ShapeClass::kArrow, p, 5.0)), VerifyStatus::kVerified);
 }
 
+// Points every `step` along the polyline v (its vertices included).
+std::vector<PointD> along(const std::vector<PointD>& v, double step) {
+  std::vector<PointD> out{v.front()};
+  for (std::size_t i = 0; i + 1 < v.size(); ++i) {
+    const double len = std::hypot(v[i + 1].x - v[i].x, v[i + 1].y - v[i].y);
+    const int n = std::max(1, static_cast<int>(std::ceil(len / step)));
+    for (int k = 1; k <= n; ++k) {
+      const double f = static_cast<double>(k) / n;
+      out.push_back({v[i].x + f * (v[i + 1].x - v[i].x), v[i].y + f * (v[i + 1].y - v[i].y)});
+    }
+  }
+  return out;
+}
+
+TEST(VerifyRecognition, ArrowWithBentShaft) {
+  // Shaft (0, 0) -> (60, 0) -> (100, -30), barbs to (90, -16) and (84, -24); the stroke is
+  // that polyline exactly, so only the claim's shape decides.
+  const std::vector<PointD> stroke =
+      along({{0, 0}, {60, 0}, {100, -30}, {90, -16}, {100, -30}, {84, -24}}, 0.5);
+  ShapeParams p;
+  p.vertices = {{0, 0}, {100, -30}, {90, -16}, {84, -24}};
+  p.shaft_bends = {{60, 0}};
+  EXPECT_EQ(status(stroke, claim(ShapeClass::kArrow, p, 0.05)), VerifyStatus::kVerified);
+  // The bend moved by 2 eps straight away from the corner (along its outer bisector): that
+  // point of the claim is 2 eps from the stroke, beyond eps + r with r = eps / 4.
+  // Unit directions from the corner: back to the tail (-1, 0), on to the tip (0.8, -0.6); the
+  // outer bisector is minus their sum, normalised: (0.2, 0.6) / |(0.2, 0.6)|.
+  const double eps = 1.0;
+  const double len = std::hypot(0.2, 0.6);
+  ShapeParams moved = p;
+  moved.shaft_bends[0] = {60 + 2 * eps * 0.2 / len, 2 * eps * 0.6 / len};
+  EXPECT_EQ(status(stroke, claim(ShapeClass::kArrow, p, eps, eps / 4)), VerifyStatus::kVerified);
+  EXPECT_EQ(status(stroke, claim(ShapeClass::kArrow, moved, eps, eps / 4)), VerifyStatus::kRefuted);
+  // Straight (no bend): the corner is 20 from the chord.
+  ShapeParams straight = p;
+  straight.shaft_bends.clear();
+  EXPECT_EQ(status(stroke, claim(ShapeClass::kArrow, straight, 5.0, 1.0)), VerifyStatus::kRefuted);
+  // Bent and curved at once, or a bend not finite, is bad input.
+  ShapeParams both = p;
+  both.shaft_bulge = 3;
+  EXPECT_THROW(status(stroke, claim(ShapeClass::kArrow, both, 1.0)), InvalidInput);
+  ShapeParams nan = p;
+  nan.shaft_bends[0].x = std::nan("");
+  EXPECT_THROW(status(stroke, claim(ShapeClass::kArrow, nan, 1.0)), InvalidInput);
+}
+
 TEST(VerifyRecognition, FreeformClaimsNothingAndBadInputThrows) {
   EXPECT_EQ(verify_recognition({{{0, 0}, {1, 1}}}, claim(ShapeClass::kFreeform, {}, 0)).status,
             VerifyStatus::kVerified);

@@ -164,5 +164,73 @@ TEST(RecognizingAnalyzer, GroupSessionMemoryFollowsTheWindow) {
   EXPECT_EQ(session->stroke_count(), 200U);
 }
 
+// An arrow with a bent shaft through the proto and back: to_proto_shape, serialized and parsed
+// again, keeps the bends in order (tail to tip) beside the other arrow fields.
+TEST(RecognizingAnalyzer, BentShaftArrowRoundTripsThroughTheProto) {
+  ShapeParams p;
+  p.vertices = {{0, 0}, {100, -30}, {90, -16}, {84, -24}, {8, 6}, {8, -6}};
+  p.shaft_bends = {{40, 2}, {60, 0}};
+  p.head_angle = 0.5;
+  const v1::Shape shape =
+      to_proto_shape(ShapeClass::kDoubleArrow, p, {{0, 0}, {100, -30}}, Certificate{}, 0.9);
+  std::string bytes;
+  ASSERT_TRUE(shape.SerializeToString(&bytes));
+  v1::Shape back;
+  ASSERT_TRUE(back.ParseFromString(bytes));
+  ASSERT_TRUE(back.has_arrow());
+  EXPECT_EQ(back.kind(), v1::SHAPE_KIND_DOUBLE_ARROW);
+  const v1::ArrowParams& a = back.arrow();
+  ASSERT_EQ(a.shaft_bends_size(), 2);
+  EXPECT_EQ(a.shaft_bends(0).x(), 40);
+  EXPECT_EQ(a.shaft_bends(0).y(), 2);
+  EXPECT_EQ(a.shaft_bends(1).x(), 60);
+  EXPECT_EQ(a.shaft_bends(1).y(), 0);
+  EXPECT_EQ(a.shaft_bulge(), 0);
+  EXPECT_EQ(a.tip().x(), 100);
+  EXPECT_EQ(a.tail_barbs_size(), 2);
+  EXPECT_EQ(a.barbs(1).x(), 84);
+  EXPECT_EQ(a.head_angle_rad(), 0.5);
+  // A straight shaft has none.
+  p.shaft_bends.clear();
+  EXPECT_EQ(to_proto_shape(ShapeClass::kDoubleArrow, p, {}, Certificate{}, 0.9)
+                .arrow()
+                .shaft_bends_size(),
+            0);
+}
+
+// A "hockey stick" arrow drawn in one stroke (shaft 35 mm along x, then bent by about 29 degrees
+// to the tip; barbs 12 mm at 30 degrees to the last piece) comes back from the daemon with its
+// bend, near the drawn one, and certified.
+TEST(RecognizingAnalyzer, HockeyStickArrowKeepsItsBend) {
+  const PointD tail{20, 100}, bend{65, 100}, tip{120, 70};
+  const double back = std::atan2(bend.y - tip.y, bend.x - tip.x);
+  auto barb = [&](double side) {
+    const double a = back + side * std::numbers::pi / 6;
+    return PointD{tip.x + 12 * std::cos(a), tip.y + 12 * std::sin(a)};
+  };
+  std::vector<PointD> mm;
+  const std::vector<PointD> corners{tail, bend, tip, barb(1), tip, barb(-1)};
+  for (std::size_t i = 0; i + 1 < corners.size(); ++i) {
+    for (int k = i == 0 ? 0 : 1; k <= 40; ++k) {
+      const double f = k / 40.0;
+      mm.push_back({corners[i].x + f * (corners[i + 1].x - corners[i].x),
+                    corners[i].y + f * (corners[i + 1].y - corners[i].y)});
+    }
+  }
+  const auto analyzer = make_recognizing_analyzer();
+  PenSettings settings;
+  settings.pen_radius_mm = 0.5;
+  const std::vector<v1::RecognizedGroup> groups =
+      analyzer->recognize_group({stroke_from(mm)}, settings, GroupingConfig{});
+  ASSERT_EQ(groups.size(), 1u);
+  ASSERT_EQ(groups[0].shape().kind(), v1::SHAPE_KIND_ARROW);
+  const v1::ArrowParams& a = groups[0].shape().arrow();
+  ASSERT_EQ(a.shaft_bends_size(), 1);
+  // Within 0.6 epsilon (epsilon = 5 pen radii = 2.5 mm) of the drawn bend.
+  EXPECT_LT(std::hypot(a.shaft_bends(0).x() - bend.x, a.shaft_bends(0).y() - bend.y), 1.5);
+  EXPECT_LE(groups[0].shape().certificate().hausdorff_bound().approx(),
+            groups[0].shape().certificate().tolerance().approx());
+}
+
 } // namespace
 } // namespace penshape::daemon

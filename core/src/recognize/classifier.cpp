@@ -165,9 +165,12 @@ double degrees_of_freedom(const Fit& fit) {
     case ShapeClass::kArc:
       return 5;
     case ShapeClass::kArrow:
-      return fit.params.shaft_bulge == 0.0 ? 8 : 9; // a curved shaft: one more
-    case ShapeClass::kDoubleArrow:
-      return 12;
+    case ShapeClass::kDoubleArrow: {
+      // A curved shaft: one more; each bend of a bent shaft: two more.
+      const double base = fit.shape == ShapeClass::kArrow ? 8 : 12;
+      return base + (fit.params.shaft_bulge == 0.0 ? 0 : 1) +
+             2.0 * static_cast<double>(fit.params.shaft_bends.size());
+    }
     case ShapeClass::kFreeform:
       break;
   }

@@ -43,7 +43,14 @@ std::vector<PointD> CleanShape::sample(double h) const {
   return out;
 }
 
-std::vector<PointD> shaft_path(PointD tail, PointD tip, double bulge) {
+std::vector<PointD> shaft_path(PointD tail, PointD tip, double bulge,
+                               const std::vector<PointD>& bends) {
+  if (!bends.empty()) {
+    std::vector<PointD> out{tail};
+    out.insert(out.end(), bends.begin(), bends.end());
+    out.push_back(tip);
+    return out;
+  }
   const double c = distance(tail, tip);
   if (bulge == 0.0 || c <= 0.0) return {tail, tip};
   // The arc through tail, tip and the point `bulge` to the left of the chord's midpoint.
@@ -67,13 +74,14 @@ std::vector<PointD> shaft_path(PointD tail, PointD tip, double bulge) {
   return out;
 }
 
-std::vector<PointD> arrow_path(ShapeClass shape, const std::vector<PointD>& v, double bulge) {
+std::vector<PointD> arrow_path(ShapeClass shape, const std::vector<PointD>& v, double bulge,
+                               const std::vector<PointD>& bends) {
   const std::size_t need = shape == ShapeClass::kDoubleArrow ? 6 : 4;
   if (v.size() != need) throw InvalidInput("clean shape: an arrow needs its tail, tip and barbs");
   // One path through every piece; the retraces do not change the set (group_recognize.hpp).
   std::vector<PointD> path;
   if (shape == ShapeClass::kDoubleArrow) path = {v[4], v[0], v[5], v[0]};
-  const std::vector<PointD> shaft = shaft_path(v[0], v[1], bulge);
+  const std::vector<PointD> shaft = shaft_path(v[0], v[1], bulge, bends);
   if (path.empty()) {
     path = shaft;
   } else {
@@ -119,7 +127,16 @@ CleanShape clean_shape_of(ShapeClass shape, const ShapeParams& params) {
     if (!finite(v)) throw InvalidInput("clean shape: a vertex is not finite");
   }
   if (shape == ShapeClass::kArrow || shape == ShapeClass::kDoubleArrow) {
-    c.path = arrow_path(shape, params.vertices, params.shaft_bulge);
+    if (params.shaft_bends.size() > kMaxShaftBends) {
+      throw InvalidInput("clean shape: an arrow's shaft has at most 2 bends");
+    }
+    for (const PointD& b : params.shaft_bends) {
+      if (!finite(b)) throw InvalidInput("clean shape: a shaft bend is not finite");
+    }
+    if (!params.shaft_bends.empty() && params.shaft_bulge != 0.0) {
+      throw InvalidInput("clean shape: a shaft is bent or curved, not both");
+    }
+    c.path = arrow_path(shape, params.vertices, params.shaft_bulge, params.shaft_bends);
     return c;
   }
   if (shape != ShapeClass::kSegment && shape != ShapeClass::kPolyline) {

@@ -42,11 +42,17 @@ CleanShape clean_shape_of(ShapeClass shape, const ShapeParams& params);
 // whose midpoint is `bulge` to the left of the chord, as kShaftChords chords. The certificate is
 // of these chords (the clean path); with |bulge| <= chord / 4 (what the fitter allows) each chord
 // strays from the exact arc by under 0.2% of the chord.
+// With `bends` (ShapeParams::shaft_bends) the shaft is the polyline tail -> bends -> tip and the
+// bulge is ignored (clean_shape_of refuses both at once).
 inline constexpr std::size_t kShaftChords = 12;
-std::vector<PointD> shaft_path(PointD tail, PointD tip, double bulge);
+// A bent shaft has at most this many bends (ShapeParams::shaft_bends).
+inline constexpr std::size_t kMaxShaftBends = 2;
+std::vector<PointD> shaft_path(PointD tail, PointD tip, double bulge,
+                               const std::vector<PointD>& bends = {});
 // An arrow's clean path from its vertices (group_recognize.hpp, "Arrows"); throws InvalidInput
 // for the wrong vertex count.
-std::vector<PointD> arrow_path(ShapeClass shape, const std::vector<PointD>& vertices, double bulge);
+std::vector<PointD> arrow_path(ShapeClass shape, const std::vector<PointD>& vertices, double bulge,
+                               const std::vector<PointD>& bends = {});
 
 // Distance from p to a circular arc (exact formula).
 double arc_distance(PointD p, const CleanShape& circle);

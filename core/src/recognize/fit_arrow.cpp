@@ -1,7 +1,7 @@
 // Arrow fitting: the shaft from the two farthest points of the drawing (or, when a barb reaches
 // farther from the tail than the tip, to the farthest point away from that barb), a barb on each
 // side of the shaft at the head, then a minimax polish of every vertex (and of a curved shaft's
-// bulge).
+// bulge, or a bent shaft's bends).
 #include "fit_arrow.hpp"
 
 #include <algorithm>
@@ -28,8 +28,22 @@ constexpr double kStraightFraction = 0.6;
 constexpr double kSecondStartAbove = 0.4;
 // A curved shaft bows by at most this fraction of its chord.
 constexpr double kMaxBulge = 0.25;
-// Free parameters (as degrees_of_freedom() counts them): straight, curved and double arrows.
+// Free parameters (as degrees_of_freedom() counts them): straight, curved and double arrows, and
+// what each bend of a bent shaft adds.
 constexpr double kStraightParameters = 8, kCurvedParameters = 9, kDoubleParameters = 12;
+constexpr double kBendParameters = 2;
+// A bend must stand out from its neighbours' chord by this many epsilons (as a polyline's
+// corner), and the shaft may turn by at most this much at a bend: beyond a right angle (with a
+// hand's slack) it doubles back, a hook or a letter rather than a shaft that leads to its tip.
+constexpr double kMinBendOffset = 0.5;
+constexpr double kMaxBendTurn = 100.0 * kDegree;
+// The angle between a bent shaft's last piece and the head's axis (the bisector of the barbs) is
+// at most this (straight and curved shafts are not held to it: the whole drawing sets their
+// direction, not one fitted bend).
+constexpr double kMaxBentHeadSkew = 25.0 * kDegree;
+// A bent shaft's seed is polished only when it fits within this many epsilons, and polished
+// again only when it ends below this many (fits above 1.25 epsilons are not certified).
+constexpr double kSeedWithin = 2.0, kRepolishBelow = 1.25;
 
 } // namespace
 
@@ -51,26 +65,36 @@ namespace {
 
 double angle_between(PointD a, PointD b) { return std::abs(std::atan2(cross(a, b), dot(a, b))); }
 
-// The direction back along the shaft from the tip (the tangent of a curved shaft, nearly).
-PointD shaft_back(PointD tail, PointD tip, double bulge) {
-  const std::vector<PointD> shaft = shaft_path(tail, tip, bulge);
+// The direction back along the shaft from the tip (the tangent of a curved shaft, nearly; a bent
+// shaft's last piece).
+PointD shaft_back(PointD tail, PointD tip, double bulge, const std::vector<PointD>& bends) {
+  const std::vector<PointD> shaft = shaft_path(tail, tip, bulge, bends);
   return shaft[shaft.size() - 2] - tip;
+}
+
+// The same from the tail (towards the tip).
+PointD shaft_forward(PointD tail, PointD tip, double bulge, const std::vector<PointD>& bends) {
+  const std::vector<PointD> shaft = shaft_path(tail, tip, bulge, bends);
+  return shaft[1] - tail;
 }
 
 // The barb ends at `head` for a shaft from `other` to `head`: on each side, the point farthest
 // from the shaft's line among those that leave the shaft at 10..90 degrees and by more than
 // epsilon / 2. Farthest from the line rather than from the head: a bowed shaft's middle can lie
 // farther from the head than a short barb's end, but a barb always leaves the line farther.
+// Only points within `reach` of the head count (negative: 0.8 times the shaft from `other`).
 std::optional<std::pair<PointD, PointD>> find_barbs(const std::vector<PointD>& cloud, PointD head,
-                                                    PointD other, double epsilon) {
+                                                    PointD other, double epsilon,
+                                                    double reach = -1.0) {
   const PointD back = other - head;
   const double shaft = norm(back);
+  if (reach < 0) reach = kMaxBarbFraction * shaft;
   std::optional<PointD> side[2];
   double far[2] = {0.0, 0.0};
   for (const PointD& x : cloud) {
     const PointD d = x - head;
     const double r = norm(d);
-    if (r > kMaxBarbFraction * shaft || r <= 0.0) continue;
+    if (r > reach || r <= 0.0) continue;
     const double off = cross(back, d) / shaft;
     if (std::abs(off) < epsilon / 2.0) continue;
     const double a = angle_between(back, d);
@@ -85,10 +109,11 @@ std::optional<std::pair<PointD, PointD>> find_barbs(const std::vector<PointD>& c
   return std::pair{*side[0], *side[1]};
 }
 
-// The polished unknowns: the vertices and the shaft's bulge.
+// The polished unknowns: the vertices, the shaft's bulge and a bent shaft's bends.
 struct ArrowState {
   std::vector<PointD> v;
   double bulge = 0.0;
+  std::vector<PointD> bends;
 };
 
 // Where along the union a vertex was last found near it: the next search starts there, since
@@ -132,12 +157,12 @@ struct Objective {
   const UnionStroke& u;
   ShapeClass shape;
   mutable std::size_t worst_at = 0;
-  mutable PieceHint hints[6] = {};
-  mutable PieceHint shaft_hints[3] = {};
+  mutable PieceHint hints[6 + kMaxShaftBends] = {};
+  mutable PieceHint shaft_hints[3 * (kMaxShaftBends + 1)] = {};
 
   double operator()(const ArrowState& a, double limit = INFINITY) const {
     if (std::abs(a.bulge) > kMaxBulge * distance(a.v[0], a.v[1])) return INFINITY;
-    const std::vector<PointD> path = arrow_path(shape, a.v, a.bulge);
+    const std::vector<PointD> path = arrow_path(shape, a.v, a.bulge, a.bends);
     const double limit2 = limit * limit;
     double worst2 = 0.0;
     for (std::size_t k = 0; k < cloud.size(); ++k) {
@@ -161,6 +186,10 @@ struct Objective {
       worst = std::max(worst, union_distance_above(u, a.v[k], worst, hints[k % 6]));
       if (worst >= limit) return worst;
     }
+    for (std::size_t k = 0; k < a.bends.size() && k < kMaxShaftBends; ++k) {
+      worst = std::max(worst, union_distance_above(u, a.bends[k], worst, hints[6 + k]));
+      if (worst >= limit) return worst;
+    }
     // A curved shaft may bow away from the ink between its ends, which the cloud alone does not
     // see (the certificate does): its quarter points must lie near the union too (a few points:
     // the polish only needs to be steered, the certificate checks the whole shaft).
@@ -172,29 +201,50 @@ struct Objective {
         if (worst >= limit) return worst;
       }
     }
+    // So may a bent shaft's pieces (a piece can cut across a curve of the ink): their quarter
+    // points too.
+    if (!a.bends.empty()) {
+      const std::vector<PointD> shaft = shaft_path(a.v[0], a.v[1], 0.0, a.bends);
+      for (std::size_t j = 0; j + 1 < shaft.size() && j <= kMaxShaftBends; ++j) {
+        for (std::size_t k = 1; k <= 3; ++k) {
+          const PointD q = shaft[j] + (0.25 * static_cast<double>(k)) * (shaft[j + 1] - shaft[j]);
+          worst = std::max(worst, union_distance_above(u, q, worst, shaft_hints[3 * j + k - 1]));
+          if (worst >= limit) return worst;
+        }
+      }
+    }
     return worst;
   }
 };
 
-// Compass search on every coordinate of the vertices and on the bulge (as refine_minimax does
-// for one stroke).
+// The point unknown i of a state: a vertex, then a bend; null for the bulge (the last unknown).
+PointD* unknown_point(ArrowState& a, std::size_t i) {
+  if (i < a.v.size()) return &a.v[i];
+  if (i < a.v.size() + a.bends.size()) return &a.bends[i - a.v.size()];
+  return nullptr;
+}
+
+// Compass search on every coordinate of the vertices and bends and on the bulge (as
+// refine_minimax does for one stroke).
 double polish(ArrowState& a, const Objective& objective, double step, bool curved) {
   double best = objective(a);
   const double min_step = step / 32.0;
-  std::size_t budget = 60 * (a.v.size() + 1);
-  const std::size_t unknowns = a.v.size() + (curved ? 1 : 0);
+  const std::size_t points = a.v.size() + a.bends.size();
+  std::size_t budget = 60 * (points + 1);
+  const std::size_t unknowns = points + (curved ? 1 : 0);
   while (step >= min_step && budget > 0) {
     bool improved = false;
     for (std::size_t i = 0; i < unknowns && budget > 0 && !improved; ++i) {
+      PointD* point = unknown_point(a, i);
       for (const PointD dir : {PointD{1, 0}, PointD{-1, 0}, PointD{0, 1}, PointD{0, -1}}) {
-        if (i == a.v.size() && dir.y != 0) continue; // the bulge is one number
+        if (point == nullptr && dir.y != 0) continue; // the bulge is one number
         // The trial is made in place and undone from saved values (no copy per trial).
         const double old_bulge = a.bulge;
-        const PointD old_vertex = i < a.v.size() ? a.v[i] : PointD{};
-        if (i == a.v.size()) {
+        const PointD old_point = point != nullptr ? *point : PointD{};
+        if (point == nullptr) {
           a.bulge += step * dir.x;
         } else {
-          a.v[i] = a.v[i] + step * dir;
+          *point = *point + step * dir;
         }
         const double value = objective(a, best);
         --budget;
@@ -204,7 +254,7 @@ double polish(ArrowState& a, const Objective& objective, double step, bool curve
           break;
         }
         a.bulge = old_bulge;
-        if (i < a.v.size()) a.v[i] = old_vertex;
+        if (point != nullptr) *point = old_point;
       }
     }
     if (!improved) step /= 2.0;
@@ -280,28 +330,119 @@ Fit make_fit(ShapeClass shape, ArrowState a, double error) {
   Fit f;
   f.shape = shape;
   f.clean.kind = CleanShape::Kind::kPolyline;
-  f.clean.path = arrow_path(shape, a.v, a.bulge);
+  f.clean.path = arrow_path(shape, a.v, a.bulge, a.bends);
   const std::vector<PointD>& v = a.v;
   const PointD shaft = v[1] - v[0];
   f.params.center = 0.5 * (v[0] + v[1]);
   f.params.rotation = std::atan2(shaft.y, shaft.x);
-  const PointD back = shaft_back(v[0], v[1], a.bulge);
+  const PointD back = shaft_back(v[0], v[1], a.bulge, a.bends);
   f.params.head_angle = 0.5 * (angle_between(back, v[2] - v[1]) + angle_between(back, v[3] - v[1]));
   f.params.shaft_bulge = a.bulge;
+  f.params.shaft_bends = std::move(a.bends);
   f.params.vertices = std::move(a.v);
   f.fit_error = error;
   return f;
 }
 
+// How far a straight shaft strays from the union at its quarter points: the straight arrow's
+// objective measures the cloud's distance to the arrow, not the shaft's to the ink (a straight
+// shaft cuts across a bent one's corner).
+double shaft_stray(const UnionStroke& u, const ArrowState& a) {
+  double worst = 0.0;
+  PieceHint hint;
+  for (const double f : {0.25, 0.5, 0.75}) {
+    worst = std::max(worst, union_distance_above(u, a.v[0] + f * (a.v[1] - a.v[0]), worst, hint));
+  }
+  return worst;
+}
+
+// A new bend for the shaft of `a` (the Douglas-Peucker rule): among the points drawn along the
+// shaft (nearer it than every barb), the one farthest from it when farther than epsilon / 2,
+// inserted between the ends of the shaft piece it is nearest to. False when none stands out.
+bool add_bend(const std::vector<PointD>& cloud, ArrowState& a, double epsilon) {
+  const std::vector<PointD> shaft = shaft_path(a.v[0], a.v[1], 0.0, a.bends);
+  double far = epsilon / 2.0;
+  std::optional<std::pair<PointD, std::size_t>> best;
+  for (const PointD& p : cloud) {
+    double barb = INFINITY;
+    for (std::size_t k = 2; k < a.v.size(); ++k) {
+      barb = std::min(barb, segment_distance(p, a.v[k < 4 ? 1 : 0], a.v[k]));
+    }
+    std::size_t piece = 0;
+    double d = INFINITY;
+    for (std::size_t j = 0; j + 1 < shaft.size(); ++j) {
+      const double dj = segment_distance(p, shaft[j], shaft[j + 1]);
+      if (dj < d) d = dj, piece = j;
+    }
+    if (d > barb || d <= far) continue;
+    far = d;
+    best = std::pair{p, piece};
+  }
+  if (!best) return false;
+  a.bends.insert(a.bends.begin() + static_cast<std::ptrdiff_t>(best->second), best->first);
+  return true;
+}
+
+// The barbs found again against a bent shaft's end pieces: found against the chord, a head's
+// "barb" may be the shaft's own last piece (its bend leaves the chord's line farther than a barb
+// does). The reach stays 0.8 chords, as the plausibility rule measures barbs.
+void refind_barbs(const std::vector<PointD>& cloud, ArrowState& a, double epsilon) {
+  const std::vector<PointD> shaft = shaft_path(a.v[0], a.v[1], 0.0, a.bends);
+  const double reach = kMaxBarbFraction * distance(a.v[0], a.v[1]);
+  if (const auto h = find_barbs(cloud, a.v[1], shaft[shaft.size() - 2], epsilon, reach)) {
+    a.v[2] = h->first;
+    a.v[3] = h->second;
+  }
+  if (a.v.size() < 6) return;
+  if (const auto t = find_barbs(cloud, a.v[0], shaft[1], epsilon, reach)) {
+    a.v[4] = t->first;
+    a.v[5] = t->second;
+  }
+}
+
+// Bent shafts from the straight arrow `a` (the raw start: its tail and tip are ends of the
+// drawing, not pulled towards a bend by a straight polish): one bend, then a second while the
+// fit is still loose, each polished with all the vertices.
+void fit_bent(const std::vector<PointD>& cloud, const Objective& objective, ArrowState a,
+              double epsilon, double rank_to_beat, std::vector<Fit>& out) {
+  const double base =
+      objective.shape == ShapeClass::kDoubleArrow ? kDoubleParameters : kStraightParameters;
+  a.bulge = 0.0;
+  double error = INFINITY;
+  // A second bend only for a one-bend fit that is loose but near (kRepolishBelow): a bend more
+  // rarely rescues a drawing one bend does not come near.
+  for (std::size_t k = 1; k <= kMaxShaftBends && error > kSecondStartAbove * epsilon &&
+                          (k == 1 || error <= kRepolishBelow * epsilon);
+       ++k) {
+    const double parameters = base + kBendParameters * static_cast<double>(k);
+    if (kPricePerParameter * parameters >= rank_to_beat || !add_bend(cloud, a, epsilon)) return;
+    refind_barbs(cloud, a, epsilon);
+    // Every vertex of the seed lies on the ink: a drawing that is a bent arrow fits it within a
+    // few epsilons already (the polish moves vertices by about epsilon), anything else is not
+    // worth polishing.
+    if (objective(a) > kSeedWithin * epsilon) return;
+    error = polish(a, objective, epsilon / 2.0, false);
+    // A compass search stalls where two errors tie (a bend between its pieces): started again
+    // from where it stopped, with its full step, it often goes on (when it may still certify).
+    for (int again = 0;
+         again < 2 && error > kSecondStartAbove * epsilon && error <= kRepolishBelow * epsilon;
+         ++again) {
+      error = polish(a, objective, epsilon / 2.0, false);
+    }
+    out.push_back(make_fit(objective.shape, a, error));
+  }
+}
+
 // The single arrows from `tail` to `tip` with the barbs found at the tip (none when no barb
-// stands out on both sides): straight, and curved when the straight one fits too loosely.
-// Returns the straight arrow's fit error (infinite when none).
+// stands out on both sides): straight, curved when the straight one fits too loosely, and bent
+// when neither fits tightly. Returns the straight arrow's fit error (infinite when none).
 double fit_single(const std::vector<PointD>& cloud, const UnionStroke& u, PointD tail, PointD tip,
-                  double epsilon, bool try_curved, std::vector<Fit>& out) {
+                  double epsilon, double rank_to_beat, std::vector<Fit>& out) {
+  const bool try_curved = kPricePerParameter * kCurvedParameters < rank_to_beat;
   const auto head = find_barbs(cloud, tip, tail, epsilon);
   if (!head) return INFINITY;
   const double step = epsilon / 2.0;
-  const ArrowState start{{tail, tip, head->first, head->second}, 0.0};
+  const ArrowState start{{tail, tip, head->first, head->second}, 0.0, {}};
   const Objective objective{cloud, u, ShapeClass::kArrow};
   // Straight: polished from the raw start or the least-squares start, the one fitting better
   // first; the other only when the first does not fit tightly enough to pass surely.
@@ -323,15 +464,22 @@ double fit_single(const std::vector<PointD>& cloud, const UnionStroke& u, PointD
   // Curved, when the shaft bows visibly and the straight arrow fits too loosely to pass:
   // polished from the straight arrow bent to follow its shaft's points, and from the
   // least-squares start.
+  // The straight arrow's error both ways: its objective misses a shaft that cuts a corner.
+  double e_best = std::max(e_straight, shaft_stray(u, first));
   if (e_straight > kStraightFraction * epsilon && try_curved) {
-    ArrowState bent = first;
-    bent.bulge = estimate_bulge(cloud, bent);
-    for (ArrowState* c : {&bent, &curved}) {
+    ArrowState bowed = first;
+    bowed.bulge = estimate_bulge(cloud, bowed);
+    for (ArrowState* c : {&bowed, &curved}) {
       if (std::abs(c->bulge) < epsilon / 4.0) continue;
       const double e = polish(*c, objective, step, true);
+      e_best = std::min(e_best, e);
       out.push_back(make_fit(ShapeClass::kArrow, std::move(*c), e));
     }
   }
+  // Bent (a polyline shaft), when neither the straight nor the curved shaft fits tightly enough
+  // to pass surely.
+  if (e_best > kSecondStartAbove * epsilon)
+    fit_bent(cloud, objective, start, epsilon, rank_to_beat, out);
   return e_straight;
 }
 
@@ -374,11 +522,10 @@ std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon, double rank_to
   }
   if (diameter <= 2.0 * epsilon) return {};
   std::vector<Fit> out;
-  const bool curved = may_win(kCurvedParameters);
   double best = INFINITY;
   for (const bool tip_is_b : {true, false}) {
     const PointD tail = tip_is_b ? cloud[a] : cloud[b], tip = tip_is_b ? cloud[b] : cloud[a];
-    best = std::min(best, fit_single(cloud, u, tail, tip, epsilon, curved, out));
+    best = std::min(best, fit_single(cloud, u, tail, tip, epsilon, rank_to_beat, out));
   }
   // Neither end of the diameter is the tip when a barb reaches farther from the tail than the
   // tip: then no head stands out at either end, and each end is tried as the tail with the
@@ -387,20 +534,45 @@ std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon, double rank_to
     for (const bool tail_is_a : {true, false}) {
       const PointD tail = tail_is_a ? cloud[a] : cloud[b], tip = tail_is_a ? cloud[b] : cloud[a];
       if (const auto t = other_tip(cloud, tail, tip, epsilon)) {
-        fit_single(cloud, u, tail, *t, epsilon, curved, out);
+        fit_single(cloud, u, tail, *t, epsilon, rank_to_beat, out);
       }
     }
   }
   const auto at_a = find_barbs(cloud, cloud[a], cloud[b], epsilon);
   const auto at_b = find_barbs(cloud, cloud[b], cloud[a], epsilon);
   if (at_a && at_b && may_win(kDoubleParameters)) {
-    ArrowState st{{cloud[a], cloud[b], at_b->first, at_b->second, at_a->first, at_a->second}, 0.0};
-    const double e =
-        polish(st, Objective{cloud, u, ShapeClass::kDoubleArrow}, epsilon / 2.0, false);
+    const ArrowState start{
+        {cloud[a], cloud[b], at_b->first, at_b->second, at_a->first, at_a->second}, 0.0, {}};
+    ArrowState st = start;
+    const Objective objective{cloud, u, ShapeClass::kDoubleArrow};
+    const double e = polish(st, objective, epsilon / 2.0, false);
+    const double both_ways = std::max(e, shaft_stray(u, st));
     out.push_back(make_fit(ShapeClass::kDoubleArrow, std::move(st), e));
+    if (both_ways > kSecondStartAbove * epsilon) {
+      fit_bent(cloud, objective, start, epsilon, rank_to_beat, out);
+    }
   }
   return out;
 }
+
+namespace {
+
+// Why a bent shaft tail -> bends -> tip is not plausible (empty when it is).
+std::string bend_implausibility(PointD tail, PointD tip, const std::vector<PointD>& bends,
+                                double epsilon) {
+  const std::vector<PointD> shaft = shaft_path(tail, tip, 0.0, bends);
+  for (std::size_t i = 1; i + 1 < shaft.size(); ++i) {
+    if (segment_distance(shaft[i], shaft[i - 1], shaft[i + 1]) < kMinBendOffset * epsilon) {
+      return "a shaft bend is within epsilon / 2 of its neighbours' chord (not a bend)";
+    }
+    if (angle_between(shaft[i] - shaft[i - 1], shaft[i + 1] - shaft[i]) > kMaxBendTurn) {
+      return "the shaft turns by more than 100 degrees at a bend (it doubles back)";
+    }
+  }
+  return {};
+}
+
+} // namespace
 
 std::string arrow_implausibility(const Fit& f, const Certificate& c, double drawn_length) {
   const std::vector<PointD>& v = f.params.vertices;
@@ -413,11 +585,19 @@ std::string arrow_implausibility(const Fit& f, const Certificate& c, double draw
   }
   const double shaft = distance(v[0], v[1]);
   const double bulge = f.params.shaft_bulge;
+  const std::vector<PointD>& bends = f.params.shaft_bends;
+  if (std::string why = bend_implausibility(v[0], v[1], bends, eps); !why.empty()) return why;
   auto head_ok = [&](PointD head, PointD back, PointD b1, PointD b2) -> std::string {
     for (const PointD& b : {b1, b2}) {
       const double len = distance(b, head);
       if (len < eps) return "a barb is shorter than epsilon";
       if (len > kMaxBarbFraction * shaft) return "a barb is longer than 0.8 shafts";
+      // A bent shaft's end piece is fitted to the ink it follows, so ink along the shaft near
+      // the head can pass for a barb: its barbs' ends must leave the end piece's line by
+      // epsilon / 2 (as find_barbs asks of a barb, and a polyline of its corners).
+      if (!bends.empty() && std::abs(cross(back, b - head)) < kMinBendOffset * eps * norm(back)) {
+        return "a barb's end is within epsilon / 2 of a bent shaft's end piece";
+      }
       const double angle = angle_between(back, b - head);
       if (angle < kMinHeadAngle || angle > kMaxHeadAngle) {
         return "a barb leaves the shaft at less than 10 or more than 80 degrees";
@@ -426,11 +606,18 @@ std::string arrow_implausibility(const Fit& f, const Certificate& c, double draw
     if (cross(back, b1 - head) * cross(back, b2 - head) >= 0) {
       return "both barbs lie on the same side of the shaft";
     }
+    // A bent shaft's last piece turns freely with its bend: it must lead into the head, along
+    // the head's axis (the barbs' bisector), or a "barb" may be the drawing's own continuation.
+    const double skew =
+        0.5 * std::abs(angle_between(back, b1 - head) - angle_between(back, b2 - head));
+    if (!bends.empty() && skew > kMaxBentHeadSkew) {
+      return "a bent shaft's last piece is more than 25 degrees off the head's axis";
+    }
     return {};
   };
-  std::string why = head_ok(v[1], shaft_back(v[0], v[1], bulge), v[2], v[3]);
+  std::string why = head_ok(v[1], shaft_back(v[0], v[1], bulge, bends), v[2], v[3]);
   if (why.empty() && f.shape == ShapeClass::kDoubleArrow) {
-    why = head_ok(v[0], shaft_back(v[1], v[0], -bulge), v[4], v[5]);
+    why = head_ok(v[0], shaft_forward(v[0], v[1], bulge, bends), v[4], v[5]);
   }
   return why;
 }

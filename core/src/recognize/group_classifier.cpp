@@ -38,6 +38,20 @@ void sort_scored(std::vector<Scored>& scored) {
   });
 }
 
+// The tidiest shape wins: when an arrow with a straight or curved shaft is a snap, no arrow of
+// the same class with a bent shaft is one.
+void prefer_unbent_shafts(std::vector<Scored>& arrows) {
+  for (const Scored& a : arrows) {
+    if (!a.snap || !a.fit.params.shaft_bends.empty()) continue;
+    for (Scored& b : arrows) {
+      if (b.snap && b.fit.shape == a.fit.shape && !b.fit.params.shaft_bends.empty()) {
+        b.snap = false;
+        b.candidate.rejected = "a straight or curved shaft certifies (the tidier shape wins)";
+      }
+    }
+  }
+}
+
 // Arrows that might beat a snap of rank `rank_to_beat` (infinite: none).
 std::vector<Scored> score_arrows(const UnionStroke& u, const std::vector<PointD>& cloud,
                                  double drawn_length, double epsilon, double pen_radius,
@@ -63,6 +77,7 @@ std::vector<Scored> score_arrows(const UnionStroke& u, const std::vector<PointD>
     sc.fit = std::move(f);
     out.push_back(std::move(sc));
   }
+  prefer_unbent_shafts(out);
   return out;
 }
 
@@ -112,10 +127,11 @@ std::vector<Scored> score_chain(const UnionStroke& u, const PreparedStroke& s,
 }
 
 // The rank an arrow must beat to win over a snap: the snap's rank, or none at all (0) for a
-// closed shape at least 2 epsilon wide. An arrow is three straight pieces from one point (its
-// tip); drawn ink within 0.6 epsilon of them lies in three strips 1.2 epsilon wide meeting
-// there, and a closed outline in such strips either hugs one strip (narrower than 2 epsilon) or
-// crosses between strips where no ink is drawn. So such an outline never certifies as an arrow.
+// closed shape at least 2 epsilon wide. An arrow with a straight shaft is three straight pieces
+// from one point (its tip); drawn ink within 0.6 epsilon of them lies in three strips 1.2
+// epsilon wide meeting there, and a closed outline in such strips either hugs one strip
+// (narrower than 2 epsilon) or crosses between strips where no ink is drawn. So such an outline
+// never certifies as a straight arrow, and the closed reading is kept over bent or curved ones.
 double rank_for_arrows_to_beat(ShapeClass shape, const ShapeParams& params, double rank,
                                double epsilon) {
   Fit f;

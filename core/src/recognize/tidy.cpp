@@ -45,10 +45,16 @@ PointD mean_of(const std::vector<PointD>& v) {
   return (1.0 / static_cast<double>(v.size())) * s;
 }
 
-// The edges of a shape with vertices (polygons closed; an arrow's shaft only matters most).
-std::vector<std::pair<PointD, PointD>> edges_of(ShapeClass c, const std::vector<PointD>& v) {
+// The edges of a shape with vertices (polygons closed; an arrow's shaft only matters most: its
+// chord, or a bent shaft's pieces).
+std::vector<std::pair<PointD, PointD>> edges_of(ShapeClass c, const ShapeParams& p) {
+  std::vector<PointD> v = p.vertices;
   std::vector<std::pair<PointD, PointD>> out;
-  if (c == ShapeClass::kArrow || c == ShapeClass::kDoubleArrow) return {{v[0], v[1]}};
+  if (c == ShapeClass::kArrow || c == ShapeClass::kDoubleArrow) {
+    v = {v[0]};
+    v.insert(v.end(), p.shaft_bends.begin(), p.shaft_bends.end());
+    v.push_back(p.vertices[1]);
+  }
   for (std::size_t i = 0; i + 1 < v.size(); ++i) out.emplace_back(v[i], v[i + 1]);
   if (is_closed_polygon(c) && v.size() > 2) out.emplace_back(v.back(), v.front());
   return out;
@@ -59,7 +65,7 @@ std::optional<double> main_direction(ShapeClass c, const ShapeParams& p) {
   if (c == ShapeClass::kEllipse) return p.rotation;
   if (!has_vertices(c) || p.vertices.size() < 2) return std::nullopt;
   double best = -1.0, angle = 0.0;
-  for (const auto& [a, b] : edges_of(c, p.vertices)) {
+  for (const auto& [a, b] : edges_of(c, p)) {
     if (distance(a, b) > best) {
       best = distance(a, b);
       angle = std::atan2(b.y - a.y, b.x - a.x);
@@ -79,6 +85,7 @@ double turn_to(double from, double to, double period) {
 Proposal rotated(ShapeClass c, ShapeParams p, double a) {
   const PointD centre = has_vertices(c) ? mean_of(p.vertices) : p.center;
   for (PointD& v : p.vertices) v = rotate_about(v, centre, a);
+  for (PointD& v : p.shaft_bends) v = rotate_about(v, centre, a);
   p.center = rotate_about(p.center, centre, a);
   p.rotation += a;
   return {c, std::move(p)};
@@ -198,7 +205,7 @@ std::optional<Proposal> parallel_of(const Recognition& r,
   double best = INFINITY;
   for (const Recognition* n : neighbours) {
     if (!has_vertices(n->shape) || n->params.vertices.size() < 2) continue;
-    for (const auto& [a, b] : edges_of(n->shape, n->params.vertices)) {
+    for (const auto& [a, b] : edges_of(n->shape, n->params)) {
       const double d = turn_to(*dir, std::atan2(b.y - a.y, b.x - a.x), std::numbers::pi);
       if (std::abs(d) < std::abs(best)) best = d;
     }

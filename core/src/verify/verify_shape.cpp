@@ -181,7 +181,18 @@ ShapeChains arrow_chains(ShapeClass shape, const ShapeParams& p, double target) 
   if (!std::isfinite(p.shaft_bulge)) throw InvalidInput("clean shape: shaft_bulge not finite");
   ShapeChains out;
   out.chains.emplace_back();
-  out.deviation = shaft(v[0], v[1], p.shaft_bulge, target, out.chains[0]);
+  if (p.shaft_bends.empty()) {
+    out.deviation = shaft(v[0], v[1], p.shaft_bulge, target, out.chains[0]);
+  } else {
+    // A bent shaft: the exact polyline tail -> bends -> tip.
+    if (p.shaft_bulge != 0.0)
+      throw InvalidInput("clean shape: a shaft is bent or curved, not both");
+    if (p.shaft_bends.size() > 2) throw InvalidInput("clean shape: a shaft has at most 2 bends");
+    for (const PointD& b : p.shaft_bends) check_finite(b);
+    out.chains[0] = {v[0]};
+    out.chains[0].insert(out.chains[0].end(), p.shaft_bends.begin(), p.shaft_bends.end());
+    out.chains[0].push_back(v[1]);
+  }
   out.chains.push_back({v[1], v[2]});
   out.chains.push_back({v[1], v[3]});
   if (need == 6) {

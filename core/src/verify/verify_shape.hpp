@@ -1,7 +1,8 @@
 #pragma once
 // The verifier's own picture of a recognized clean shape (penshape verify, recognition answers):
 // polylines with exact (double) vertices and a deviation sigma, rounded up, with
-// H(true clean shape, polylines) <= sigma. Straight shapes are exact (sigma = 0); circles,
+// H(true clean shape, polylines) <= sigma. Straight shapes (bent arrow shafts included: the
+// polyline through ShapeParams::shaft_bends) are exact (sigma = 0); circles,
 // ellipses, arcs and curved arrow shafts are chord polylines whose sigma is derived, not chosen:
 // for a curve P(t) with |P''| <= M sampled at parameters t_k with gaps <= dt, the chord through
 // P(t_k), P(t_k+1) stays within M dt^2 / 8 of the arc between them (and the arc of it), pointwise

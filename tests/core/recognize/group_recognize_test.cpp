@@ -7,6 +7,7 @@
 
 #include "group_test_support.hpp"
 #include "penshape/core/group_recognize.hpp"
+#include "penshape/core/verify.hpp"
 
 namespace penshape {
 namespace {
@@ -196,6 +197,7 @@ void expect_arrow(const GroupedShape& g, const std::vector<StrokeInput>& s, Poin
   EXPECT_LT(std::hypot(r.params.vertices[1].x - tip.x, r.params.vertices[1].y - tip.y), 6.0);
   // Barbs 50 long at atan(30 / 40) from the shaft.
   EXPECT_NEAR(r.params.head_angle, std::atan2(30.0, 40.0), 0.12);
+  EXPECT_TRUE(r.params.shaft_bends.empty()) << "a straight shaft certifies: no bends";
   expect_independently_certified(g, s);
 }
 
@@ -251,6 +253,98 @@ TEST(GroupRecognize, DoubleArrow) {
   EXPECT_EQ(out[0].recognition.shape, ShapeClass::kDoubleArrow);
   EXPECT_EQ(out[0].recognition.params.vertices.size(), 6u);
   expect_independently_certified(out[0], s);
+}
+
+// A "hockey stick" arrow: the shaft runs 90 along the x axis, bends by atan(60 / 110) (about
+// 29 degrees) and runs on to the tip; the barbs are 45 long at 30 degrees on either side of the
+// last piece. Drawn with a known pen (radius 2, so epsilon = 5 radii = 10).
+struct HockeyStick {
+  PointD tail{0, 0}, bend{90, 0}, tip{200, -60};
+  PointD barb(double side) const {
+    const double back = std::atan2(bend.y - tip.y, bend.x - tip.x);
+    const double a = back + side * std::numbers::pi / 6;
+    return {tip.x + 45 * std::cos(a), tip.y + 45 * std::sin(a)};
+  }
+};
+
+RecognizerConfig known_pen() {
+  RecognizerConfig c;
+  c.pen_radius = 2.0;
+  return c;
+}
+
+void expect_hockey_stick(const GroupedShape& g, const std::vector<StrokeInput>& s,
+                         std::size_t strokes) {
+  const HockeyStick h;
+  const Recognition& r = g.recognition;
+  ASSERT_EQ(r.shape, ShapeClass::kArrow) << to_string(r.shape);
+  EXPECT_EQ(g.strokes.size(), strokes);
+  EXPECT_DOUBLE_EQ(r.epsilon, 10.0);
+  ASSERT_EQ(r.params.vertices.size(), 4u);
+  EXPECT_EQ(r.params.shaft_bulge, 0.0);
+  // Neither a straight nor an arc shaft is within 0.6 epsilon of this ink: one bend, near the
+  // drawn one (within 0.6 epsilon, the fit's own slack); tail and tip as well.
+  ASSERT_EQ(r.params.shaft_bends.size(), 1u);
+  const auto near = [](PointD a, PointD b) { return std::hypot(a.x - b.x, a.y - b.y); };
+  EXPECT_LT(near(r.params.shaft_bends[0], h.bend), 6.0);
+  EXPECT_LT(near(r.params.vertices[0], h.tail), 6.0);
+  EXPECT_LT(near(r.params.vertices[1], h.tip), 6.0);
+  // The barbs: each within 6 of a drawn one (either order), head angle 30 degrees.
+  for (const PointD b : {r.params.vertices[2], r.params.vertices[3]}) {
+    EXPECT_LT(std::min(near(b, h.barb(1)), near(b, h.barb(-1))), 6.0);
+  }
+  EXPECT_NEAR(r.params.head_angle, std::numbers::pi / 6, 0.12);
+  expect_independently_certified(g, s);
+}
+
+TEST(GroupRecognize, HockeyStickArrowInOneStrokeHasABentShaft) {
+  const HockeyStick h;
+  const std::vector<StrokeInput> s{
+      input(polyline({h.tail, h.bend, h.tip, h.barb(1), h.tip, h.barb(-1)}, 0))};
+  const std::vector<GroupedShape> out = recognize_strokes(s, {}, known_pen());
+  ASSERT_EQ(out.size(), 1u);
+  expect_hockey_stick(out[0], s, 1);
+  // The independent verifier (penshape verify) accepts the answer, and refutes it with the bend
+  // moved 2 epsilon away from the corner (along the outer bisector of the drawn shaft).
+  const Recognition& r = out[0].recognition;
+  ASSERT_EQ(r.params.shaft_bends.size(), 1u);
+  const std::vector<std::vector<PointD>> paths = test::paths_of(s, {0});
+  RecognitionClaim claim{r.shape, r.params, r.epsilon, r.pen_radius};
+  EXPECT_EQ(verify_recognition(paths, claim).status, VerifyStatus::kVerified);
+  const double in = std::hypot(h.tail.x - h.bend.x, h.tail.y - h.bend.y);
+  const double on = std::hypot(h.tip.x - h.bend.x, h.tip.y - h.bend.y);
+  const PointD sum{(h.tail.x - h.bend.x) / in + (h.tip.x - h.bend.x) / on,
+                   (h.tail.y - h.bend.y) / in + (h.tip.y - h.bend.y) / on};
+  const double away = -2.0 * r.epsilon / std::hypot(sum.x, sum.y);
+  claim.params.shaft_bends[0].x += away * sum.x;
+  claim.params.shaft_bends[0].y += away * sum.y;
+  EXPECT_EQ(verify_recognition(paths, claim).status, VerifyStatus::kRefuted);
+}
+
+TEST(GroupRecognize, HockeyStickShaftThenVHasABentShaft) {
+  const HockeyStick h;
+  std::vector<StrokeInput> s{input(polyline({h.tail, h.bend, h.tip}, 0))};
+  s.push_back(input(polyline({h.barb(1), h.tip, h.barb(-1)}, end_time(s) + 0.3)));
+  const std::vector<GroupedShape> out = recognize_strokes(s, {}, known_pen());
+  ASSERT_EQ(out.size(), 1u);
+  expect_hockey_stick(out[0], s, 2);
+}
+
+// A shaft that doubles back (turns by 150 degrees: a hook, not a shaft leading to its tip) is
+// not a bent arrow, even with a head drawn at its end.
+TEST(GroupRecognize, ShaftThatDoublesBackIsNoArrow) {
+  const PointD tail{0, 0}, bend{150, 0}, tip{20, 75}; // turn: 180 - atan(75 / 130) = 150 deg
+  const double back = std::atan2(bend.y - tip.y, bend.x - tip.x);
+  auto barb = [&](double side) {
+    const double a = back + side * std::numbers::pi / 6;
+    return PointD{tip.x + 40 * std::cos(a), tip.y + 40 * std::sin(a)};
+  };
+  const std::vector<StrokeInput> s{input(polyline({tail, bend, tip, barb(1), tip, barb(-1)}, 0))};
+  const std::vector<GroupedShape> out = recognize_strokes(s, {}, known_pen());
+  for (const GroupedShape& g : out) {
+    EXPECT_NE(g.recognition.shape, ShapeClass::kArrow);
+    EXPECT_NE(g.recognition.shape, ShapeClass::kDoubleArrow);
+  }
 }
 
 TEST(GroupRecognize, TidyTurnsANearlyAxisParallelRectangleOntoTheAxes) {

@@ -96,7 +96,14 @@ inline std::vector<Path> clean_paths(const Recognition& r) {
       return {v};
     case ShapeClass::kArrow:
     case ShapeClass::kDoubleArrow: {
-      std::vector<Path> out{arc_through(v[0], v[1], p.shaft_bulge), {v[1], v[2]}, {v[1], v[3]}};
+      // A bent shaft is the polyline through its bends; else the arc (or segment).
+      Path shaft = arc_through(v[0], v[1], p.shaft_bulge);
+      if (!p.shaft_bends.empty()) {
+        shaft = {v[0]};
+        shaft.insert(shaft.end(), p.shaft_bends.begin(), p.shaft_bends.end());
+        shaft.push_back(v[1]);
+      }
+      std::vector<Path> out{shaft, {v[1], v[2]}, {v[1], v[3]}};
       if (v.size() == 6) out.push_back({v[0], v[4]}), out.push_back({v[0], v[5]});
       return out;
     }

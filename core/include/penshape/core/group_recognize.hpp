@@ -33,16 +33,24 @@
 // circle, ellipse) only when it is at least 2 epsilon wide: narrower, its whole inside lies
 // within epsilon of its outline, so any strokes side by side would pass for it.
 //
-// Arrows (ShapeClass::kArrow, kDoubleArrow). A shaft segment from tail to tip and a head of two
-// barbs from the tip, drawn in any strokes: one stroke (tail, tip, barb, back to the tip, other
-// barb), a shaft and a "V", or a shaft and two barbs. A double arrow has a head at both ends.
+// Arrows (ShapeClass::kArrow, kDoubleArrow). A shaft from tail to tip and a head of two barbs
+// from the tip, drawn in any strokes: one stroke (tail, tip, barb, back to the tip, other barb),
+// a shaft and a "V", or a shaft and two barbs. A double arrow has a head at both ends. The shaft
+// is a segment; else, where that does not fit within 0.6 epsilon, a circular arc (shaft_bulge)
+// or a polyline with 1 or 2 bends (shaft_bends), whichever certifies: a straight or curved
+// shaft that is a snap wins over any bent one (the tidier shape).
 // ShapeParams: vertices = {tail, tip, barb 1, barb 2} (+ {tail barb 1, tail barb 2} for a double
 // arrow), rotation = direction of tail -> tip, head_angle = mean angle between a barb and the
-// shaft at the tip. The clean path is tail -> tip -> barb 1 -> tip -> barb 2 (a set: the retrace
-// is harmless for the Hausdorff distance). Plausible only when each barb is at least epsilon and
-// at most 0.8 shaft lengths long, the barbs lie on opposite sides of the shaft, each barb makes
-// an angle of 10..80 degrees with the shaft, and the strokes are at most 1.6 times as long as
-// the clean arrow. Arrows rank with 8 (double: 12) free parameters.
+// shaft at the tip (its last piece when bent), shaft_bulge, shaft_bends. The clean path is
+// tail -> [shaft] -> tip -> barb 1 -> tip -> barb 2 (a set: the retrace is harmless for the
+// Hausdorff distance). Plausible only when the certificate's bound is at most 0.6 epsilon, each
+// barb is at least epsilon and at most 0.8 shaft lengths (tail to tip) long, the barbs lie on
+// opposite sides of the shaft, each barb makes an angle of 10..80 degrees with the shaft's end
+// piece, and the strokes are at most 1.6 times as long as the clean arrow; a bent shaft's bends
+// each stand out from their neighbours' chord by epsilon / 2 or more, the shaft turns by at most
+// 100 degrees at each, its end pieces lie within 25 degrees of their heads' axes (the bisector
+// of the barbs), and each barb's end leaves the end piece's line by epsilon / 2 or more. Arrows
+// rank with 8 (double: 12) free parameters, one more for a curved shaft, two more per bend.
 //
 // Tidy-up (TidyConfig). The winner is then made more regular, one constraint at a time, each kept
 // only when the result is still certified on the same strokes (else that constraint is skipped):

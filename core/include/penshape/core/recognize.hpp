@@ -210,6 +210,10 @@ struct ShapeParams {
   // Arrows: the shaft is the circular arc from tail to tip whose midpoint lies this far to the
   // left of the chord tail -> tip (negative: to the right); 0 is a straight shaft.
   double shaft_bulge = 0.0;
+  // Arrows: a bent shaft, the polyline tail -> shaft_bends[0] -> ... -> tip (interior vertices
+  // from tail to tip, at most 2; group_recognize.hpp, "Arrows"). Empty for a straight or arc
+  // shaft; a bent shaft is straight between its bends (shaft_bulge is then 0).
+  std::vector<PointD> shaft_bends;
 };
 
 struct Candidate {
