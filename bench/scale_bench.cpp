@@ -6,13 +6,14 @@
 // vertical line: the former x-range sweep's O(n²) case): the Shamos–Hoey sweep inside
 // validate_region against the former test (bench/former_validation.hpp), in the same run; and
 // validation of a polygon with thousands of holes (the nesting sweep).
-//   scale_bench [--margins] [--only N] [--former-offsets]
+//   scale_bench [--margins] [--only N] [--former-offsets] [--validation]
 // --margins times the fast engine's former margin-based comparisons; --only N runs only the
 // N-vertex star's deconstruction and prints its wall and thread CPU time (the shared build
 // machine's load inflates wall time) and how many predicates needed the exact fallback, with
 // the former offsets (one Clipper sweep per offset, ClipperOffset insets) and the striped ones
 // (engine/fast/stripe_union.hpp) alternately, three times each; --former-offsets runs only the
-// former. The table's deconstruction is timed with both too.
+// former. The table's deconstruction is timed with both too. --validation prints only the
+// validation table.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -150,11 +151,13 @@ int main(int argc, char** argv) {
   // --only N: just the deconstruction of the N-vertex star (for profiling).
   int only = 0;
   bool former_only = false;
+  bool validation_only = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--margins") penshape::fast::set_certify_mode(penshape::fast::CertifyMode::kMargins);
     if (a == "--only" && i + 1 < argc) only = std::atoi(argv[++i]);
     if (a == "--former-offsets") former_only = true;
+    if (a == "--validation") validation_only = true;
   }
   if (only > 0) {
     const penshape::PolygonSet q = wavy_star(only);
@@ -181,6 +184,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   validation_table();
+  if (validation_only) return 0;
   std::printf("wavy star, r = w/30, eps = r/2, delta = eps/8 (fast engine, no simplification)\n");
   std::printf("%8s | %13s | %9s %15s %7s | %17s | %10s %9s\n", "vertices", "validation ms",
               "answer", "deconstruct ms", "target", "former offsets ms", "verify ms", "verdict");
