@@ -6,14 +6,14 @@
 // vertical line: the former x-range sweep's O(n²) case): the Shamos–Hoey sweep inside
 // validate_region against the former test (bench/former_validation.hpp), in the same run; and
 // validation of a polygon with thousands of holes (the nesting sweep).
-//   scale_bench [--margins] [--only N] [--former-offsets] [--validation]
+//   scale_bench [--margins] [--only N] [--former-offsets | --striped-offsets] [--validation]
 // --margins times the fast engine's former margin-based comparisons; --only N runs only the
 // N-vertex star's deconstruction and prints its wall and thread CPU time (the shared build
 // machine's load inflates wall time) and how many predicates needed the exact fallback, with
 // the former offsets (one Clipper sweep per offset, ClipperOffset insets) and the striped ones
-// (engine/fast/stripe_union.hpp) alternately, three times each; --former-offsets runs only the
-// former. The table's deconstruction is timed with both too. --validation prints only the
-// validation table.
+// (engine/fast/stripe_union.hpp) alternately, three times each; --former-offsets or
+// --striped-offsets runs only that one, once (for profiling). The table's deconstruction is timed
+// with both too. --validation prints only the validation table.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -151,12 +151,14 @@ int main(int argc, char** argv) {
   // --only N: just the deconstruction of the N-vertex star (for profiling).
   int only = 0;
   bool former_only = false;
+  bool striped_only = false;
   bool validation_only = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--margins") penshape::fast::set_certify_mode(penshape::fast::CertifyMode::kMargins);
     if (a == "--only" && i + 1 < argc) only = std::atoi(argv[++i]);
     if (a == "--former-offsets") former_only = true;
+    if (a == "--striped-offsets") striped_only = true;
     if (a == "--validation") validation_only = true;
   }
   if (only > 0) {
@@ -166,10 +168,10 @@ int main(int argc, char** argv) {
     penshape::validate_region(q);
     std::printf("validation alone: cpu %.1f ms\n", cpu_ms() - c0);
     using penshape::fast::OffsetMode;
-    const std::vector<OffsetMode> modes =
-        former_only ? std::vector<OffsetMode>{OffsetMode::kFormer}
-                    : std::vector<OffsetMode>{OffsetMode::kFormer, OffsetMode::kStriped};
-    for (int round = 0; round < (former_only ? 1 : 3); ++round) {
+    std::vector<OffsetMode> modes{OffsetMode::kFormer, OffsetMode::kStriped};
+    if (former_only) modes = {OffsetMode::kFormer};
+    if (striped_only) modes = {OffsetMode::kStriped};
+    for (int round = 0; round < (modes.size() == 1 ? 1 : 3); ++round) {
       for (const OffsetMode mode : modes) {
         penshape::fast::set_offset_mode(mode);
         c0 = cpu_ms();
