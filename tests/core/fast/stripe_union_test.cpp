@@ -128,6 +128,23 @@ TEST(StripeUnion, StripedUnionIsThePositiveWindingRegion) {
   }
 }
 
+// The stripes must not leave zero-width bridges along their lines: a square with a square hole
+// cut into several stripes comes back as one outer ring with one hole of the right areas (the
+// insets read the region from exactly this structure).
+TEST(StripeUnion, StripesKeepHolesAsHoles) {
+  const cl::Paths paths{{{0, 0}, {1000, 0}, {1000, 1000}, {0, 1000}},
+                        {{300, 300}, {300, 700}, {700, 700}, {700, 300}}};
+  for (const std::size_t stripe_vertices : {1, 2, 3}) {
+    cl::PolyTree tree;
+    penshape::fast::union_positive(paths, tree, stripe_vertices);
+    ASSERT_EQ(tree.ChildCount(), 1) << stripe_vertices;
+    const cl::PolyNode& outer = *tree.Childs[0];
+    EXPECT_DOUBLE_EQ(cl::Area(outer.Contour), 1e6);
+    ASSERT_EQ(outer.ChildCount(), 1) << stripe_vertices;
+    EXPECT_DOUBLE_EQ(cl::Area(outer.Childs[0]->Contour), -160000.0);
+  }
+}
+
 TEST(StripeUnion, ClampKeepsWindingStrictlyInsideTheStripe) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> coord(0.0, 1000.0);
