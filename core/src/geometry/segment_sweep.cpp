@@ -148,24 +148,8 @@ std::vector<Event> events_of(const std::vector<SweepSegment>& segments) {
     events.push_back({segments[i].a, i, forward});
     events.push_back({segments[i].b, i, !forward});
   }
-  // The doubles first (a branch-light order that decides almost every pair), then, within each
-  // run of one x double, the exact order wherever the run holds more than one vertex: this is
-  // compare_points' order, since distinct doubles already decide it.
-  std::sort(events.begin(), events.end(), [](const Event& e, const Event& f) {
-    return e.at.x < f.at.x || (e.at.x == f.at.x && e.at.y < f.at.y);
-  });
-  const auto by_point = [](const Event& e, const Event& f) {
-    return compare_points(e.at, f.at) < 0;
-  };
-  for (auto run = events.begin(); run != events.end();) {
-    auto end = run + 1;
-    bool one_vertex = true;
-    for (; end != events.end() && end->at.x == run->at.x; ++end) {
-      one_vertex = one_vertex && end->at.exact == run->at.exact;
-    }
-    if (!one_vertex) std::stable_sort(run, end, by_point);
-    run = end;
-  }
+  std::sort(events.begin(), events.end(),
+            [](const Event& e, const Event& f) { return compare_points(e.at, f.at) < 0; });
   return events;
 }
 
