@@ -6,10 +6,14 @@
 // vertical line: the former x-range sweep's O(n²) case): the Shamos–Hoey sweep inside
 // validate_region against the former test (bench/former_validation.hpp), in the same run; and
 // validation of a polygon with thousands of holes (the nesting sweep).
-//   scale_bench [--margins] [--only N]
+//   scale_bench [--margins] [--only N] [--former-offsets | --striped-offsets] [--validation]
 // --margins times the fast engine's former margin-based comparisons; --only N runs only the
 // N-vertex star's deconstruction and prints its wall and thread CPU time (the shared build
-// machine's load inflates wall time) and how many predicates needed the exact fallback.
+// machine's load inflates wall time) and how many predicates needed the exact fallback, with
+// the former offsets (one Clipper sweep per offset, ClipperOffset insets) and the striped ones
+// (engine/fast/stripe_union.hpp) alternately, three times each; --former-offsets or
+// --striped-offsets runs only that one, once (for profiling). The table's deconstruction is timed
+// with both too. --validation prints only the validation table.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -18,8 +22,10 @@
 #include <numbers>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "engine/fast/certified.hpp"
+#include "engine/fast/clipper_stage.hpp"
 #include "former_validation.hpp"
 #include "geometry/segment_sweep.hpp"
 #include "penshape/core/deconstruct.hpp"
@@ -144,10 +150,16 @@ int main(int argc, char** argv) {
   // --margins: the fast engine's former double-with-margins comparisons (before/after runs);
   // --only N: just the deconstruction of the N-vertex star (for profiling).
   int only = 0;
+  bool former_only = false;
+  bool striped_only = false;
+  bool validation_only = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--margins") penshape::fast::set_certify_mode(penshape::fast::CertifyMode::kMargins);
     if (a == "--only" && i + 1 < argc) only = std::atoi(argv[++i]);
+    if (a == "--former-offsets") former_only = true;
+    if (a == "--striped-offsets") striped_only = true;
+    if (a == "--validation") validation_only = true;
   }
   if (only > 0) {
     const penshape::PolygonSet q = wavy_star(only);
@@ -155,18 +167,33 @@ int main(int argc, char** argv) {
     double c0 = cpu_ms();
     penshape::validate_region(q);
     std::printf("validation alone: cpu %.1f ms\n", cpu_ms() - c0);
-    c0 = cpu_ms();
-    const auto t0 = std::chrono::steady_clock::now();
-    const penshape::DeconstructResult res = penshape::deconstruct(q, {r, r / 2, r / 16});
-    std::printf("%d vertices: %s in %.1f ms, cpu %.1f ms (%llu exact fallbacks)\n", only,
-                penshape::to_string(res.answer), ms_since(t0), cpu_ms() - c0,
-                static_cast<unsigned long long>(penshape::fast::exact_fallbacks()));
+    using penshape::fast::OffsetMode;
+    std::vector<OffsetMode> modes{OffsetMode::kFormer, OffsetMode::kStriped};
+    if (former_only) modes = {OffsetMode::kFormer};
+    if (striped_only) modes = {OffsetMode::kStriped};
+    for (int round = 0; round < (modes.size() == 1 ? 1 : 3); ++round) {
+      for (const OffsetMode mode : modes) {
+        penshape::fast::set_offset_mode(mode);
+        c0 = cpu_ms();
+        const auto t0 = std::chrono::steady_clock::now();
+        const penshape::DeconstructResult res = penshape::deconstruct(q, {r, r / 2, r / 16});
+        std::printf("%d vertices, %-15s: %s in %.1f ms, cpu %.1f ms (%llu exact fallbacks)\n", only,
+                    mode == OffsetMode::kFormer ? "former offsets" : "striped offsets",
+                    penshape::to_string(res.answer), ms_since(t0), cpu_ms() - c0,
+                    static_cast<unsigned long long>(penshape::fast::exact_fallbacks()));
+      }
+    }
     return 0;
   }
   validation_table();
-  std::printf("wavy star, r = w/30, eps = r/2, delta = eps/8 (fast engine, no simplification)\n");
-  std::printf("%8s | %13s | %9s %15s %7s | %10s %9s\n", "vertices", "validation ms", "answer",
-              "deconstruct ms", "target", "verify ms", "verdict");
+  if (validation_only) return 0;
+  std::printf(
+      "wavy star, r = w/30, eps = r/2, delta = eps/8 (fast engine, no simplification);\n"
+      "deconstruct: wall ms / thread CPU ms (the target is checked on CPU time: the\n"
+      "shared machine's load inflates wall time); former offsets: the same call with\n"
+      "OffsetMode::kFormer just before, in this process\n");
+  std::printf("%8s | %13s | %9s %17s %7s | %23s | %10s %9s\n", "vertices", "validation ms",
+              "answer", "deconstruct ms", "target", "former offsets ms", "verify ms", "verdict");
   for (const int n : {10'000, 50'000, 200'000}) {
     const penshape::PolygonSet q = wavy_star(n);
     auto t0 = std::chrono::steady_clock::now();
@@ -174,17 +201,27 @@ int main(int argc, char** argv) {
     const double validation = ms_since(t0);
     const penshape::Rational r(2080 / 30);
     const penshape::DeconstructParams params{r, r / 2, r / 16};
+    // The former offsets first (same process, same input), then the default striped ones.
+    penshape::fast::set_offset_mode(penshape::fast::OffsetMode::kFormer);
+    double c0 = cpu_ms();
+    t0 = std::chrono::steady_clock::now();
+    const penshape::Answer former_answer = penshape::deconstruct(q, params).answer;
+    const double former = ms_since(t0);
+    const double former_cpu = cpu_ms() - c0;
+    penshape::fast::set_offset_mode(penshape::fast::OffsetMode::kStriped);
+    c0 = cpu_ms();
     t0 = std::chrono::steady_clock::now();
     const penshape::DeconstructResult res = penshape::deconstruct(q, params);
     const double decision = ms_since(t0);
+    const double decision_cpu = cpu_ms() - c0;
     t0 = std::chrono::steady_clock::now();
     const penshape::VerifyReport rep = penshape::verify_deconstruction(
         q, {res.answer, r, r / 2, r / 16, res.solution, res.no_witness});
     const double check = ms_since(t0);
-    std::printf("%8d | %13.1f | %9s %15.1f %7s | %10.1f %9s\n", n, validation,
-                penshape::to_string(res.answer), decision,
-                n == 200'000 ? (decision <= 1000 ? "<=1 s" : ">1 s !") : "", check,
-                penshape::to_string(rep.status));
+    std::printf("%8d | %13.1f | %9s %8.1f/%8.1f %7s | %8.1f/%8.1f (%5s) | %10.1f %9s\n", n,
+                validation, penshape::to_string(res.answer), decision, decision_cpu,
+                n == 200'000 ? (decision_cpu <= 1000 ? "<=1 s" : ">1 s !") : "", former, former_cpu,
+                penshape::to_string(former_answer), check, penshape::to_string(rep.status));
   }
   return 0;
 }

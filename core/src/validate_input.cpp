@@ -51,14 +51,14 @@ double widen_up(double v) { return v + 1e-15 * std::abs(v) + std::numeric_limits
 
 // The shoelace sum in doubles decides most rings without GMP: each term carries a relative
 // error of a few ulps (conversion and product), so 1e-12 · Σ|terms| bounds the total error.
-bool surely_nonzero_area(const Ring& ring) {
+bool surely_nonzero_area(const std::vector<FilteredPoint>& ring) {
   double sum = 0;
   double magnitude = 0;
   for (std::size_t i = 0; i < ring.size(); ++i) {
-    const ExactPoint& a = ring[i];
-    const ExactPoint& b = ring[(i + 1) % ring.size()];
-    const double t1 = a.x.get_d() * b.y.get_d();
-    const double t2 = a.y.get_d() * b.x.get_d();
+    const FilteredPoint& a = ring[i];
+    const FilteredPoint& b = ring[(i + 1) % ring.size()];
+    const double t1 = a.x * b.y;
+    const double t2 = a.y * b.x;
     sum += t1 - t2;
     magnitude += std::abs(t1) + std::abs(t2);
   }
@@ -75,12 +75,15 @@ void check_ring_basics(const RingRef& r) {
   }
   for (std::size_t i = 0; i < ring.size(); ++i) {
     const std::size_t j = (i + 1) % ring.size();
-    if (ring[i] == ring[j]) {
+    // Distinct doubles mean distinct points (rounding is monotone): GMP only on a tie.
+    const FilteredPoint& a = r.points[i];
+    const FilteredPoint& b = r.points[j];
+    if (a.x == b.x && a.y == b.y && ring[i] == ring[j]) {
       throw InvalidInput(ring_name(r) + ": vertex " + std::to_string(j) + " repeats vertex " +
                          std::to_string(i) + " at " + point_text(ring[i]));
     }
   }
-  if (!surely_nonzero_area(ring) && sgn(twice_signed_area(ring)) == 0) {
+  if (!surely_nonzero_area(r.points) && sgn(twice_signed_area(ring)) == 0) {
     throw InvalidInput(ring_name(r) + " has zero area");
   }
 }
@@ -249,9 +252,9 @@ void validate_region(const PolygonSet& q, std::size_t max_vertices, const Cancel
     }
   }
   for (RingRef& r : rings) {
-    check_ring_basics(r);
     r.points.reserve(r.ring->size());
     for (const auto& v : *r.ring) r.points.push_back(detail::filtered(v));
+    check_ring_basics(r); // on the doubles converted once above, with exact ties
     r.xmin = r.ymin = std::numeric_limits<double>::infinity();
     r.xmax = r.ymax = -std::numeric_limits<double>::infinity();
     for (const auto& v : r.points) {

@@ -1,6 +1,7 @@
 #include "clipper_stage.hpp"
 
 #include "douglas_peucker.hpp"
+#include "stripe_union.hpp"
 
 #include <clipper.hpp>
 
@@ -53,6 +54,26 @@ void collect(const cl::PolyNode& node, IRegion& out) {
   }
 }
 
+// A hole node read as the outer ring of a polygon whose holes are the node's islands; the
+// islands' own holes are polygons again (the inverted reading of collect()).
+void collect_hole_as_outer(const cl::PolyNode& hole, IRegion& out) {
+  IPolygon poly;
+  poly.outer = to_ring(hole.Contour);
+  if (twice_area(poly.outer) < 0) std::reverse(poly.outer.begin(), poly.outer.end());
+  for (const cl::PolyNode* island : hole.Childs) {
+    IRing h = to_ring(island->Contour);
+    if (twice_area(h) > 0) std::reverse(h.begin(), h.end());
+    poly.holes.push_back(std::move(h));
+    for (const cl::PolyNode* inner : island->Childs) collect_hole_as_outer(*inner, out);
+  }
+  IRings one{std::move(poly.outer)};
+  clean_rings(one);
+  if (one.empty()) return;
+  poly.outer = std::move(one.front());
+  clean_rings(poly.holes);
+  out.push_back(std::move(poly));
+}
+
 } // namespace
 
 IRings flatten(const IRegion& region) {
@@ -69,17 +90,28 @@ IRings flatten(const IRegion& region) {
 // given. Asking for tolerance / kJoinDepthFactor keeps every chord within `tolerance`.
 constexpr double kJoinDepthFactor = 2.5;
 
+namespace {
+OffsetMode g_offset_mode = OffsetMode::kStriped;
+} // namespace
+
+void set_offset_mode(OffsetMode mode) { g_offset_mode = mode; }
+OffsetMode offset_mode() { return g_offset_mode; }
+
 double round_join_steps(double delta, double arc_tolerance) {
-  if (delta > 0.0) return std::numbers::pi / std::acos(std::max(-1.0, 1.0 - arc_tolerance / delta));
+  if (delta > 0.0 || g_offset_mode == OffsetMode::kStriped) {
+    const double a = std::fabs(delta);
+    return std::numbers::pi / std::acos(std::max(-1.0, 1.0 - arc_tolerance / a));
+  }
   const double y = std::min(arc_tolerance / kJoinDepthFactor, std::fabs(delta) * 0.25);
   return std::numbers::pi / std::acos(1.0 - y / std::fabs(delta));
 }
 
 namespace {
 
-// Outward offset: our own raw path (round joins with ceil'd step counts, so chords are exactly
-// as deep as asked and no deeper) and Clipper's positive-winding union, as ClipperOffset does.
-IRegion offset_outward(const IRings& rings, double delta, double arc_tolerance) {
+// The raw outward offset path of each ring: round joins with ceil'd step counts (so chords are
+// exactly as deep as asked and no deeper), a loop through the vertex at reflex corners. Its
+// positive-winding region is the offset, as in ClipperOffset.
+cl::Paths raw_outward(const IRings& rings, double delta, double arc_tolerance) {
   const double max_angle = 2.0 * std::acos(std::max(-1.0, 1.0 - arc_tolerance / delta));
   cl::Paths raw;
   raw.reserve(rings.size());
@@ -121,12 +153,50 @@ IRegion offset_outward(const IRings& rings, double delta, double arc_tolerance) 
     }
     raw.push_back(std::move(path));
   }
-  cl::Clipper c;
-  c.AddPaths(raw, cl::ptSubject, true);
+  return raw;
+}
+
+IRegion offset_outward(const IRings& rings, double delta, double arc_tolerance) {
   cl::PolyTree tree;
-  c.Execute(cl::ctUnion, tree, cl::pftPositive, cl::pftPositive);
+  if (g_offset_mode == OffsetMode::kStriped) {
+    union_positive(raw_outward(rings, delta, arc_tolerance), tree);
+  } else {
+    cl::Clipper c;
+    c.AddPaths(raw_outward(rings, delta, arc_tolerance), cl::ptSubject, true);
+    c.Execute(cl::ctUnion, tree, cl::pftPositive, cl::pftPositive);
+  }
   IRegion out;
   collect(tree, out);
+  return out;
+}
+
+// Inset by d = |delta|: the complement (within a box d + 2 units wider than the rings) offset
+// outwards by d; the inset is what that offset leaves of the box: the box's holes, with the
+// islands in them as their holes (and the islands' holes as polygons again).
+IRegion offset_inward(const IRings& rings, double d, double arc_tolerance) {
+  IRings complement;
+  complement.reserve(rings.size() + 1);
+  cl::cInt x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  bool first = true;
+  for (const IRing& ring : rings) {
+    for (const IPt& p : ring) {
+      x0 = first ? p.x : std::min<cl::cInt>(x0, p.x);
+      y0 = first ? p.y : std::min<cl::cInt>(y0, p.y);
+      x1 = first ? p.x : std::max<cl::cInt>(x1, p.x);
+      y1 = first ? p.y : std::max<cl::cInt>(y1, p.y);
+      first = false;
+    }
+  }
+  if (first) return {};
+  const auto m = static_cast<cl::cInt>(std::ceil(d)) + 2;
+  complement.push_back({{x0 - m, y0 - m}, {x1 + m, y0 - m}, {x1 + m, y1 + m}, {x0 - m, y1 + m}});
+  for (const IRing& ring : rings) complement.emplace_back(ring.rbegin(), ring.rend());
+  cl::PolyTree tree;
+  union_positive(raw_outward(complement, d, arc_tolerance), tree);
+  IRegion out;
+  for (const cl::PolyNode* box : tree.Childs) {
+    for (const cl::PolyNode* hole : box->Childs) collect_hole_as_outer(*hole, out);
+  }
   return out;
 }
 
@@ -134,6 +204,7 @@ IRegion offset_outward(const IRings& rings, double delta, double arc_tolerance) 
 
 IRegion offset_round(const IRings& rings, double delta, double arc_tolerance) {
   if (delta > 0.0) return offset_outward(rings, delta, arc_tolerance);
+  if (g_offset_mode == OffsetMode::kStriped) return offset_inward(rings, -delta, arc_tolerance);
   cl::ClipperOffset offset(2.0, arc_tolerance / kJoinDepthFactor);
   offset.AddPaths(to_paths(rings), cl::jtRound, cl::etClosedPolygon);
   cl::PolyTree tree;

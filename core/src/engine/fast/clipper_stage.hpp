@@ -19,8 +19,17 @@ IRings flatten(const IRegion& region);
 // Offset (delta > 0) or inset (delta < 0) of the region bounded by `rings` (nonzero winding)
 // with round joins: arc vertices on the circle of radius |delta|, chords at distance at least
 // |delta| - arc_tolerance (Clipper's own tolerance parameter is tightened to guarantee it).
-// Straight parts are exact up to grid rounding.
+// Straight parts are exact up to grid rounding. Insets are the outward offset of the complement
+// (OffsetMode::kStriped) or ClipperOffset's (kFormer).
 IRegion offset_round(const IRings& rings, double delta, double arc_tolerance);
+
+// How offsets are computed: kStriped (the default) builds the raw path of insets too (as the
+// outward offset of the complement) and unions large raw paths stripe by stripe
+// (stripe_union.hpp); kFormer insets with ClipperOffset and unions in one sweep. Both have the
+// bounds stated below; the bench shows them side by side.
+enum class OffsetMode { kStriped, kFormer };
+void set_offset_mode(OffsetMode mode);
+[[nodiscard]] OffsetMode offset_mode();
 
 // Vertices on a full circle of radius |delta| at this tolerance (at most; joins use fewer).
 double round_join_steps(double delta, double arc_tolerance);

@@ -9,6 +9,17 @@
 namespace penshape::fast {
 namespace {
 
+// Squared distance from p to the segment [a, b] in doubles: a proposal only (the kept vertices
+// are certified afterwards), so the plain formula serves, without the shared kernel's sqrt.
+double squared_segment_distance(DPt p, DPt a, DPt b) {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double px = p.x - a.x, py = p.y - a.y;
+  const double len2 = dx * dx + dy * dy;
+  const double t = len2 > 0.0 ? std::clamp((px * dx + py * dy) / len2, 0.0, 1.0) : 0.0;
+  const double ex = px - t * dx, ey = py - t * dy;
+  return ex * ex + ey * ey;
+}
+
 // Perpendicular-distance Douglas-Peucker on the open chain ring[i..j] (indices modulo n).
 void douglas_peucker(const IRing& ring, std::size_t i, std::size_t j, double tol,
                      std::vector<char>& keep) {
@@ -19,13 +30,14 @@ void douglas_peucker(const IRing& ring, std::size_t i, std::size_t j, double tol
   double worst = -1.0;
   std::size_t worst_k = i;
   for (std::size_t k = i + 1; k < j; ++k) {
-    const double d = point_segment_distance(to_d(ring[k % n]), a, b);
+    const double d = squared_segment_distance(to_d(ring[k % n]), a, b);
     if (d > worst) {
       worst = d;
       worst_k = k;
     }
   }
-  if (worst > tol) {
+  // A negative tolerance keeps every vertex, as the distance itself would.
+  if (worst > (tol < 0.0 ? -1.0 : tol * tol)) {
     keep[worst_k % n] = 1;
     douglas_peucker(ring, i, worst_k, tol, keep);
     douglas_peucker(ring, worst_k, j, tol, keep);
