@@ -11,7 +11,7 @@
 
 #include "clean_shape.hpp"
 #include "geometry/distance_kernel.hpp"
-#include "segment_index.hpp"
+#include "geometry.hpp"
 
 namespace penshape::recognize_detail {
 

@@ -6,7 +6,7 @@
 #include "clean_shape.hpp"
 #include "penshape/core/ink.hpp"
 #include "penshape/core/recognize.hpp"
-#include "segment_index.hpp"
+#include "geometry.hpp"
 
 namespace penshape::recognize_detail {
 
