@@ -156,9 +156,16 @@ void check_nearest(const detail::SegmentGrid<S>& grid, std::mt19937_64& rng, dou
       EXPECT_LE(got, floor + tol);
       EXPECT_NEAR(plain_d(p, end_a(segs[id]), end_b(segs[id])), got, tol);
     }
-    // distance(p, cutoff) = min(cutoff, minimum).
+    // distance(p, cutoff) = min(cutoff, minimum); nearest_closer_than names the segment.
     const double cutoff = extent / 10;
     EXPECT_NEAR(grid.distance(p, cutoff), std::min(cutoff, brute), tol);
+    constexpr auto kNone = static_cast<std::uint32_t>(-1);
+    std::uint32_t near_id = kNone;
+    const double near_d = grid.nearest_closer_than(p, cutoff, near_id);
+    EXPECT_EQ(near_id != kNone, near_d < cutoff);
+    if (near_id != kNone) {
+      EXPECT_NEAR(plain_d(p, end_a(segs[near_id]), end_b(segs[near_id])), brute, tol);
+    }
     // any_within (doubles) away from ties.
     EXPECT_TRUE(grid.any_within(p, brute * 1.001 + tol));
     EXPECT_FALSE(grid.any_within(p, brute * 0.999 - tol));

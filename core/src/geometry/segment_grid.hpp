@@ -104,15 +104,26 @@ class SegmentGrid {
     });
   }
 
-  // Doubles (proposals): the distance from p to the nearest segment, or `cutoff` when none is
-  // closer than cutoff.
+  // Doubles (proposals): the distance from p to the nearest segment closer than `cutoff`, with
+  // that segment in `id`; `cutoff` (and id untouched) when none is closer.
   template <class P>
-  [[nodiscard]] double distance(const P& point, double cutoff) const {
+  [[nodiscard]] double nearest_closer_than(const P& point, double cutoff, std::uint32_t& id) const {
     const Point2<double> p = as_point(point);
     double best2 = cutoff * cutoff;
-    for_each_near(p.x - cutoff, p.y - cutoff, p.x + cutoff, p.y + cutoff,
-                  [&](std::size_t s) { best2 = std::min(best2, squared_distance(p, s)); });
+    for_each_near(p.x - cutoff, p.y - cutoff, p.x + cutoff, p.y + cutoff, [&](std::size_t s) {
+      const double d2 = squared_distance(p, s);
+      if (d2 < best2) {
+        best2 = d2;
+        id = static_cast<std::uint32_t>(s);
+      }
+    });
     return std::min(cutoff, std::sqrt(best2));
+  }
+  // The same distance alone.
+  template <class P>
+  [[nodiscard]] double distance(const P& point, double cutoff) const {
+    std::uint32_t id = 0;
+    return nearest_closer_than(point, cutoff, id);
   }
 
   // Doubles: some segment at distance <= radius from p (up to rounding).

@@ -24,8 +24,7 @@ inline double distance(PointD a, PointD b) { return norm(a - b); }
 // instance (geometry/distance_kernel.hpp), which proposes; certificates evaluate the same formula
 // in intervals (certified_distance.hpp).
 inline double segment_distance2(PointD p, PointD a, PointD b) {
-  using P = detail::Point2<double>;
-  return *detail::squared_distance_to_segment(P{p.x, p.y}, P{a.x, a.y}, P{b.x, b.y});
+  return detail::proposed_squared_distance(p, a, b);
 }
 inline double segment_distance(PointD p, PointD a, PointD b) {
   return std::sqrt(segment_distance2(p, a, b));
