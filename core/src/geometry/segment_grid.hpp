@@ -12,6 +12,10 @@
 // lo <= query_hi and hi >= query_lo on each axis, so its cell range meets the query's. Every
 // cell computation therefore runs in the default rounding mode (the certified queries compute
 // their boxes before switching to upward rounding).
+//
+// Threads: the queries built on visit_near (any_within, maybe_within, nearest_above) only read;
+// those built on find_near (for_each_near, distance, nearest_closer_than, for_each_not_farther)
+// mark segments already reported, so one grid serves one thread at a time for them.
 #include <CGAL/FPU.h>
 
 #include <algorithm>
