@@ -32,9 +32,7 @@ struct CurveEdge {
 // Distance from p to the segment [a, a + v]: the shared kernel's double path
 // (geometry/distance_kernel.hpp); these are bounds the sweeps prune with, not certificates.
 double point_segment_distance(PointD p, PointD a, PointD v) {
-  using P = ::penshape::detail::Point2<double>;
-  const P end{a.x + v.x, a.y + v.y};
-  return std::sqrt(*::penshape::detail::squared_distance_to_segment(P{p.x, p.y}, P{a.x, a.y}, end));
+  return ::penshape::detail::proposed_distance(p, a, PointD{a.x + v.x, a.y + v.y});
 }
 
 struct RotationGeometry {

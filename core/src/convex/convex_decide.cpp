@@ -20,11 +20,6 @@ namespace {
 // The exact path brackets |n| to a relative 2^-kSqrtBits, far below any δ a caller can ask for.
 constexpr unsigned kSqrtBits = 64;
 
-// Squared distance from p to segment [s, t] in doubles (proposals only).
-double squared_distance(PointD p, PointD s, PointD t) {
-  return *detail::squared_distance_to_segment<double>({p.x, p.y}, {s.x, s.y}, {t.x, t.y});
-}
-
 // For each vertex q_i of Q (counterclockwise), is some edge of the convex ring `pi` within
 // distance R? Walks the edges from where the previous vertex found one (Lemma 23's linear scan).
 // Each comparison is certified (geometry/distance_kernel.hpp: intervals, then exact rationals).
@@ -122,7 +117,8 @@ bool certified_no(const Ring& ring, const std::vector<PointD>& qd, const detail:
     double dmin = INFINITY;
     std::size_t emin = 0;
     for (std::size_t k = 0; k < m; ++k) {
-      const double d = squared_distance(qd[i], outer.vertices[(k + m - 1) % m], outer.vertices[k]);
+      const double d = detail::proposed_squared_distance(qd[i], outer.vertices[(k + m - 1) % m],
+                                                         outer.vertices[k]);
       if (d < dmin) {
         dmin = d;
         emin = k;

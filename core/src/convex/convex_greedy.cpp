@@ -31,11 +31,7 @@ double dist(PointD a, PointD b) { return std::hypot(a.x - b.x, a.y - b.y); }
 double nearest_on_edge(const Boundary& bd, std::size_t e, PointD q) {
   const PointD a = bd.w[e];
   const PointD b = bd.w[(e + 1) % bd.size()];
-  const double dx = b.x - a.x;
-  const double dy = b.y - a.y;
-  const double len2 = dx * dx + dy * dy;
-  const double t = len2 > 0 ? ((q.x - a.x) * dx + (q.y - a.y) * dy) / len2 : 0.0;
-  return static_cast<double>(e) + std::clamp(t, 0.0, 1.0);
+  return static_cast<double>(e) + detail::proposed_foot_parameter(q, a, b);
 }
 
 // The spot of eyelet i: where the boundary arc within `reach` of q, around q's nearest boundary
@@ -89,13 +85,6 @@ struct Eyelet {
   PointD q;    // the vertex of Q
 };
 
-// Doubles choose the horizons (geometry/distance_kernel.hpp's double instance); the returned
-// polygon is checked exactly.
-double segment_distance(PointD p, PointD s, PointD t) {
-  return std::sqrt(
-      *detail::squared_distance_to_segment<double>({p.x, p.y}, {s.x, s.y}, {t.x, t.y}));
-}
-
 // Spots unwrapped into (u, u + m], sorted: the eyelets a chord from u can pass, in order.
 struct SpotsAfter {
   std::vector<double> spot;
@@ -124,7 +113,8 @@ bool good_chord(const Boundary& bd, const SpotsAfter& spots, double u, double s,
   const PointD a = bd.at(u);
   const PointD b = bd.at(s);
   for (std::size_t i = 0; i < spots.spot.size() && spots.spot[i] < s; ++i) {
-    if (segment_distance(spots.q[i], a, b) > reach) return false;
+    // Doubles choose the horizons; the returned polygon is checked exactly.
+    if (detail::proposed_distance(spots.q[i], a, b) > reach) return false;
   }
   return true;
 }

@@ -69,6 +69,28 @@ std::optional<NT> squared_distance_to_segment(const Point2<NT>& p, const Point2<
   return std::nullopt;
 }
 
+// The double instance for any point type with double x and y (PointD, the fast engine's DPt):
+// proposals only, never a certificate. The one place a proposal's distance is written.
+template <typename P>
+double proposed_squared_distance(const P& p, const P& s, const P& t) {
+  using D = Point2<double>;
+  // Doubles always decide a branch: the optional is never empty.
+  return *squared_distance_to_segment(D{p.x, p.y}, D{s.x, s.y}, D{t.x, t.y});
+}
+template <typename P>
+double proposed_distance(const P& p, const P& s, const P& t) {
+  return std::sqrt(proposed_squared_distance(p, s, t));
+}
+// The parameter u in [0, 1] of the point s + u (t - s) nearest p (0 when s == t), in doubles:
+// for callers that need the foot point itself, not only its distance.
+template <typename P>
+double proposed_foot_parameter(const P& p, const P& s, const P& t) {
+  const double dx = t.x - s.x, dy = t.y - s.y;
+  const double len2 = dx * dx + dy * dy;
+  if (!(len2 > 0)) return 0.0;
+  return std::clamp(((p.x - s.x) * dx + (p.y - s.y) * dy) / len2, 0.0, 1.0);
+}
+
 inline IPoint enclose(const ExactPoint& p) {
   return {IntervalNT(CGAL::to_interval(p.x)), IntervalNT(CGAL::to_interval(p.y))};
 }

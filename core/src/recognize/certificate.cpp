@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "certified_distance.hpp"
-#include "segment_index.hpp"
+#include "geometry.hpp"
 
 namespace penshape::recognize_detail {
 namespace {

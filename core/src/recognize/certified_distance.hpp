@@ -10,8 +10,8 @@
 #include <span>
 
 #include "clean_shape.hpp"
+#include "geometry.hpp"
 #include "geometry/distance_kernel.hpp"
-#include "segment_index.hpp"
 
 namespace penshape::recognize_detail {
 

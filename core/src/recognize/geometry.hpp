@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "geometry/distance_kernel.hpp"
+#include "geometry/segment_grid.hpp"
 #include "penshape/core/polygon_set.hpp"
 
 namespace penshape::recognize_detail {
@@ -23,12 +24,20 @@ inline double distance(PointD a, PointD b) { return norm(a - b); }
 // instance (geometry/distance_kernel.hpp), which proposes; certificates evaluate the same formula
 // in intervals (certified_distance.hpp).
 inline double segment_distance2(PointD p, PointD a, PointD b) {
-  using P = detail::Point2<double>;
-  return *detail::squared_distance_to_segment(P{p.x, p.y}, P{a.x, a.y}, P{b.x, b.y});
+  return detail::proposed_squared_distance(p, a, b);
 }
 inline double segment_distance(PointD p, PointD a, PointD b) {
   return std::sqrt(segment_distance2(p, a, b));
 }
+
+// A segment of double points, and the one segment grid (geometry/segment_grid.hpp) over them:
+// the ink certificate's index over the ink polygon's edges and a sampled ellipse, the path
+// certificates' over the stroke.
+struct Segment {
+  PointD a;
+  PointD b;
+};
+using SegmentIndex = detail::SegmentGrid<Segment>;
 
 // Distance from p to the polyline through `path` (one point: distance to it).
 inline double polyline_distance(PointD p, std::span<const PointD> path) {

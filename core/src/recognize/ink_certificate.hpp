@@ -4,9 +4,9 @@
 #include <vector>
 
 #include "clean_shape.hpp"
+#include "geometry.hpp"
 #include "penshape/core/ink.hpp"
 #include "penshape/core/recognize.hpp"
-#include "segment_index.hpp"
 
 namespace penshape::recognize_detail {
 

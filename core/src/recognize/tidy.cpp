@@ -232,10 +232,8 @@ std::optional<PointD> join_target(PointD end, double epsilon,
   for (const Recognition* n : neighbours) {
     const std::vector<PointD>& path = n->clean;
     for (std::size_t i = 0; i + 1 < path.size(); ++i) {
-      const PointD ab = path[i + 1] - path[i];
-      const double len2 = dot(ab, ab);
-      const double t = len2 > 0 ? std::clamp(dot(end - path[i], ab) / len2, 0.0, 1.0) : 0.0;
-      const PointD q = path[i] + t * ab;
+      const double t = detail::proposed_foot_parameter(end, path[i], path[i + 1]);
+      const PointD q = path[i] + t * (path[i + 1] - path[i]);
       if (distance(q, end) <= best_d) {
         best_d = distance(q, end);
         best = q;

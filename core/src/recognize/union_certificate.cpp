@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "certified_distance.hpp"
-#include "segment_index.hpp"
+#include "geometry.hpp"
 #include "thin_path.hpp"
 
 namespace penshape::recognize_detail {

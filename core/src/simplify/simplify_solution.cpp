@@ -11,12 +11,6 @@
 namespace penshape {
 namespace {
 
-// Doubles choose (geometry/distance_kernel.hpp's double instance).
-double segment_distance(PointD p, PointD s, PointD t) {
-  return std::sqrt(
-      *detail::squared_distance_to_segment<double>({p.x, p.y}, {s.x, s.y}, {t.x, t.y}));
-}
-
 // Are all vertices strictly between i and j (cyclically) within τ of chord(i, j), exactly?
 // Returns the index of the farthest offender, or n when all are within. Each vertex is cleared
 // by a certified comparison (intervals, then exact rationals); the farthest offender is chosen
@@ -125,7 +119,7 @@ std::vector<std::size_t> simplify_ring_indices(const Ring& ring, const Rational&
     std::size_t worst = i;
     double worst_d = tau_d;
     for (std::size_t k = i + 1; k < j; ++k) {
-      const double dd = segment_distance(d[k], d[i], d[j % n]);
+      const double dd = detail::proposed_distance(d[k], d[i], d[j % n]); // doubles choose
       if (dd > worst_d) {
         worst_d = dd;
         worst = k;

@@ -187,36 +187,16 @@ double sub_down(double a, double b) {
 
 namespace {
 
-// The edges of the index whose boxes are not proven farther than T along an axis from the box
-// of y0, y1 (gathered in the default rounding mode, like the index's own cells), in a buffer
-// reused by the thread (callers consume it before the next call).
+// The edges of the index whose boxes are not proven farther than T from the box of y0, y1 (the
+// grid's certified prefilter, segment_grid.hpp), in a buffer reused by the thread (callers
+// consume it before the next call).
 const std::vector<std::size_t>& edges_near(const SegmentIndex& index, const OnPiece& y0,
                                            const OnPiece& y1, double threshold) {
   const Box box = enclosing_box(y0, y1);
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  const double min_x = std::nextafter(box.lo_x - threshold, -inf);
-  const double max_x = std::nextafter(box.hi_x + threshold, inf);
-  const double min_y = std::nextafter(box.lo_y - threshold, -inf);
-  const double max_y = std::nextafter(box.hi_y + threshold, inf);
   thread_local std::vector<std::size_t> out;
   out.clear();
-  // Diagonal test: gaps rounded to nearest then one ulp down are lower bounds; the squares'
-  // sum rounded to nearest has a relative error below 2^-51, and so has T² above.
-  const double need2 = threshold * threshold * (1.0 + 0x1p-50);
-  index.for_each_near(min_x, min_y, max_x, max_y, [&](std::size_t k) {
-    const Segment& g = index.segments()[k];
-    const double gx0 = static_cast<double>(std::min(g.a.x, g.b.x));
-    const double gx1 = static_cast<double>(std::max(g.a.x, g.b.x));
-    const double gy0 = static_cast<double>(std::min(g.a.y, g.b.y));
-    const double gy1 = static_cast<double>(std::max(g.a.y, g.b.y));
-    if (gx0 > max_x || gx1 < min_x || gy0 > max_y || gy1 < min_y) return;
-    const double bx =
-        std::max({std::nextafter(gx0 - box.hi_x, -inf), std::nextafter(box.lo_x - gx1, -inf), 0.0});
-    const double by =
-        std::max({std::nextafter(gy0 - box.hi_y, -inf), std::nextafter(box.lo_y - gy1, -inf), 0.0});
-    if ((bx * bx + by * by) * (1.0 - 0x1p-50) > need2) return;
-    out.push_back(k);
-  });
+  index.grid().for_each_not_farther({box.lo_x, box.lo_y, box.hi_x, box.hi_y}, threshold,
+                                    [&](std::size_t k) { out.push_back(k); });
   return out;
 }
 

@@ -42,9 +42,7 @@ inline int orientation(IPt a, IPt b, IPt c) {
 // Distance from p to the segment [a, b] (a may equal b): the shared kernel's double path
 // (geometry/distance_kernel.hpp), for proposals only.
 inline double point_segment_distance(DPt p, DPt a, DPt b) {
-  using P = detail::Point2<double>;
-  // The double path always decides a branch: the optional is never empty.
-  return std::sqrt(*detail::squared_distance_to_segment(P{p.x, p.y}, P{a.x, a.y}, P{b.x, b.y}));
+  return detail::proposed_distance(p, a, b);
 }
 
 // Twice the signed area, exactly.

@@ -4,6 +4,7 @@
 #include <CGAL/Interval_nt.h>
 
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "certified.hpp"
@@ -90,24 +91,14 @@ class NoWitnessCheck {
     if (good(round_point(c), c, reach)) return true;
     // Proposal: the nearest point of the outer offset's boundary, pushed outwards (region on
     // the left), computed in double; good() decides.
-    double best = reach;
-    const Segment* nearest = nullptr;
-    in_.outer_offset->for_each_near(c.x - reach, c.y - reach, c.x + reach, c.y + reach,
-                                    [&](std::size_t k) {
-                                      const Segment& g = in_.outer_offset->segments()[k];
-                                      const double d = point_segment_distance(c, g.da(), g.db());
-                                      if (d < best) {
-                                        best = d;
-                                        nearest = &g;
-                                      }
-                                    });
-    if (nearest == nullptr) return false;
-    const DPt a = nearest->da(), b = nearest->db();
+    constexpr auto kNone = static_cast<std::uint32_t>(-1);
+    std::uint32_t id = kNone;
+    (void)in_.outer_offset->grid().nearest_closer_than(c, reach, id);
+    if (id == kNone) return false;
+    const DPt a = in_.outer_offset->segments()[id].da(), b = in_.outer_offset->segments()[id].db();
     const double dx = b.x - a.x, dy = b.y - a.y;
-    const double len2 = dx * dx + dy * dy;
-    double t = len2 > 0 ? ((c.x - a.x) * dx + (c.y - a.y) * dy) / len2 : 0.0;
-    t = std::fmin(1.0, std::fmax(0.0, t));
-    const double len = std::sqrt(len2);
+    const double t = detail::proposed_foot_parameter(c, a, b);
+    const double len = std::sqrt(dx * dx + dy * dy);
     const DPt z{a.x + t * dx + in_.push * dy / len, a.y + t * dy - in_.push * dx / len};
     return good(round_point(z), c, reach);
   }
