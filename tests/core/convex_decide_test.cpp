@@ -62,6 +62,32 @@ TEST(ConvexDecide, RejectsNonConvexAndSmallRadius) {
   EXPECT_FALSE(is_convex_region(cw));
 }
 
+// Convexity at exact ties: a vertex on the bottom edge at x = 1/3 (no double): exactly on it,
+// 10^-30 inside the square (a right turn) and 10^-30 outside (convex); a repeated vertex is
+// refused.
+TEST(ConvexDecide, ConvexityIsDecidedExactlyAtTies) {
+  const Rational tiny("1/1000000000000000000000000000000");
+  auto square_with_bottom_vertex = [](const Rational& y) {
+    PolygonSet q;
+    q.polygons.emplace_back();
+    Ring& r = q.polygons[0].outer;
+    r.push_back({Rational(0), Rational(0)});
+    r.push_back({Rational(1, 3), y});
+    r.push_back({Rational(1), Rational(0)});
+    r.push_back({Rational(1), Rational(1)});
+    r.push_back({Rational(0), Rational(1)});
+    return q;
+  };
+  EXPECT_TRUE(is_convex_region(square_with_bottom_vertex(Rational(0))));
+  EXPECT_FALSE(is_convex_region(square_with_bottom_vertex(Rational(tiny))));
+  EXPECT_TRUE(is_convex_region(square_with_bottom_vertex(Rational(-tiny))));
+  PolygonSet repeated = polygon({{0, 0}, {1, 0}, {1, 0}, {1, 1}, {0, 1}});
+  EXPECT_FALSE(is_convex_region(repeated));
+  // The same square, rotated so that the first vertices are not the first turn tested.
+  PolygonSet late = polygon({{1, 1}, {0, 1}, {0, 0}, {0.5, 0.5}, {1, 0}});
+  EXPECT_FALSE(is_convex_region(late));
+}
+
 // --- independent floating-point oracle --------------------------------------------------------
 
 using Poly = std::vector<PointD>;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include "convex_exact_inset.hpp"
 #include "convex_inset.hpp"
@@ -174,44 +175,62 @@ Answer exact_path(const Ring& ring, const DeconstructParams& params, const Ratio
 
 } // namespace
 
+namespace {
+
+// Encloses v in a one-ulp interval cheaply (no MPFR, no GMP arithmetic): get_d truncates towards
+// zero, so v lies between it and its neighbour away from zero.
+detail::IntervalNT enclose_truncated(const Rational& v) {
+  const double d = v.get_d();
+  const double away = std::nextafter(d, sgn(v) < 0 ? -HUGE_VAL : HUGE_VAL);
+  return d < away ? detail::IntervalNT(d, away) : detail::IntervalNT(away, d);
+}
+
+detail::IPoint enclose_truncated(const ExactPoint& p) {
+  return {enclose_truncated(p.x), enclose_truncated(p.y)};
+}
+
+// The turn a -> b -> c: intervals decide when they can (a repeated vertex never can: its
+// enclosures coincide), exact rationals otherwise; nullopt for a repeated vertex.
+std::optional<int> certified_turn(const detail::IPoint& u, const detail::IPoint& v,
+                                  const detail::IPoint& w, const ExactPoint& a, const ExactPoint& b,
+                                  const ExactPoint& c) {
+  const detail::IntervalNT det = (v.x - u.x) * (w.y - v.y) - (v.y - u.y) * (w.x - v.x);
+  if (det.inf() > 0) return 1;
+  if (det.sup() < 0) return -1;
+  if (a == b || b == c) return std::nullopt;
+  return detail::orientation(a, b, c);
+}
+
+} // namespace
+
+// One pass that stops at the first right turn (most inputs are not convex: the 200,000-vertex
+// star stops after a few vertices), converting each vertex once, when the pass reaches it.
 bool is_convex_region(const PolygonSet& q) {
   if (q.polygons.size() != 1 || !q.polygons[0].holes.empty()) return false;
   const Ring& ring = q.polygons[0].outer;
   const std::size_t n = ring.size();
   if (n < 3) return false;
-  std::vector<PointD> d;
-  d.reserve(n);
-  for (const auto& p : ring) d.push_back(to_double(p));
+  const CGAL::Protect_FPU_rounding<true> rounding;
+  const detail::IPoint first = enclose_truncated(ring[0]);
+  const detail::IPoint second = enclose_truncated(ring[1]);
+  detail::IPoint u = first, v = second;
   bool any_turn = false;
-  double twice_area = 0;
-  double area_magnitude = 0;
+  detail::IntervalNT twice_area(0);
   for (std::size_t i = 0; i < n; ++i) {
-    const ExactPoint& a = ring[i];
-    const ExactPoint& b = ring[(i + 1) % n];
-    if (a == b) return false;
-    // Doubles decide the turn when it is clear by far more than their rounding (inputs are
-    // rounded to doubles too: 1e-10 relative covers both); exact rationals decide the rest.
-    const PointD u = d[i];
-    const PointD v = d[(i + 1) % n];
-    const PointD w = d[(i + 2) % n];
-    const double det = (v.x - u.x) * (w.y - v.y) - (v.y - u.y) * (w.x - v.x);
-    const double mag =
-        (std::abs(v.x - u.x) + std::abs(v.y - u.y)) * (std::abs(w.x - v.x) + std::abs(w.y - v.y));
-    int turn = 0;
-    if (std::abs(det) > 1e-10 * mag + 1e-300) {
-      turn = det > 0 ? 1 : -1;
-    } else {
-      turn = detail::orientation(a, b, ring[(i + 2) % n]);
-    }
-    if (turn < 0) return false;
-    any_turn |= turn > 0;
+    const std::size_t k = i + 2;
+    const detail::IPoint w = k < n ? enclose_truncated(ring[k]) : (k == n ? first : second);
+    const auto turn = certified_turn(u, v, w, ring[i], ring[(i + 1) % n], ring[k % n]);
+    if (!turn || *turn < 0) return false;
+    any_turn |= *turn > 0;
     twice_area += u.x * v.y - u.y * v.x;
-    area_magnitude += std::abs(u.x * v.y) + std::abs(u.y * v.x);
+    u = v;
+    v = w;
   }
   if (!any_turn) return false;
   // Left turns everywhere and a simple ring (validated by the caller) make a convex region;
   // the orientation rules out a clockwise ring that "turns right" as left.
-  if (std::abs(twice_area) > 1e-10 * area_magnitude) return twice_area > 0;
+  if (twice_area.inf() > 0) return true;
+  if (twice_area.sup() < 0) return false;
   return sgn(twice_signed_area(ring)) > 0;
 }
 
