@@ -92,4 +92,30 @@ grpc::Status run_on_pool(WorkerPool& pool, grpc::ServerContext* context, const L
   return result.get();
 }
 
+grpc::Status run_timed_on_pool(WorkerPool& pool, grpc::ServerContext* context, const Limits& limits,
+                               std::chrono::steady_clock::time_point arrived,
+                               const std::function<void(const StopCondition&)>& work,
+                               v1::Timings* timings) {
+  using Clock = std::chrono::steady_clock;
+  const auto micros_since = [](Clock::time_point t) {
+    return static_cast<std::uint64_t>(
+        std::chrono::duration_cast<std::chrono::microseconds>(Clock::now() - t).count());
+  };
+  std::uint64_t queued_us = 0;
+  std::uint64_t compute_us = 0;
+  const grpc::Status status = run_on_pool(
+      pool, context, limits,
+      [&](const StopCondition& stop) {
+        const auto started = Clock::now();
+        work(stop);
+        compute_us = micros_since(started);
+        return grpc::Status::OK;
+      },
+      &queued_us);
+  timings->set_queued_us(queued_us);
+  timings->set_compute_us(compute_us);
+  timings->set_total_us(micros_since(arrived));
+  return status;
+}
+
 } // namespace penshape::daemon

@@ -4,11 +4,13 @@
 // call's deadline (the client's, cut to limits.max_call_seconds), so long work stops promptly.
 #include <grpcpp/grpcpp.h>
 
+#include <chrono>
 #include <functional>
 
 #include "penshape/core/deconstruct.hpp"
 #include "penshape/daemon/limits.hpp"
 #include "penshape/daemon/worker_pool.hpp"
+#include "penshape/v1/types.pb.h"
 
 namespace penshape::daemon {
 
@@ -26,6 +28,13 @@ CancelHook cancel_hook(const StopCondition& stop);
 grpc::Status run_on_pool(WorkerPool& pool, grpc::ServerContext* context, const Limits& limits,
                          const std::function<grpc::Status(const StopCondition&)>& work,
                          std::uint64_t* queued_us = nullptr);
+
+// run_on_pool for work that cannot fail other than by throwing, filling `timings`: the time
+// queued, the work's own time and the total since `arrived` (when the call came in).
+grpc::Status run_timed_on_pool(WorkerPool& pool, grpc::ServerContext* context, const Limits& limits,
+                               std::chrono::steady_clock::time_point arrived,
+                               const std::function<void(const StopCondition&)>& work,
+                               v1::Timings* timings);
 
 // The same mapping for exceptions thrown on the handler thread itself.
 grpc::Status status_from_current_exception(const StopCondition* stop);

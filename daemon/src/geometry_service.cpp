@@ -50,26 +50,15 @@ grpc::Status GeometryServiceImpl::Deconstruct(grpc::ServerContext* context,
         "Deconstruct: this server was built without the deconstruction engine "
         "(PENSHAPE_DAEMON_WITH_ENGINE=OFF)");
   }
-  std::uint64_t queued_us = 0;
-  std::uint64_t compute_us = 0;
-  status = run_on_pool(
-      state_.pool, context, state_.limits,
+  return run_timed_on_pool(
+      state_.pool, context, state_.limits, arrived,
       [&](const StopCondition& stop) {
-        const auto started = Clock::now();
         deconstruct_into(
             *state_.geometry, q, params,
             {.simplify = request->simplify(), .include_offset = request->include_offset()},
             cancel_hook(stop), core_limits(state_.limits), response);
-        compute_us = micros_since(started);
-        return grpc::Status::OK;
       },
-      &queued_us);
-  if (!status.ok()) return status;
-  v1::Timings* timings = response->mutable_timings();
-  timings->set_queued_us(queued_us);
-  timings->set_compute_us(compute_us);
-  timings->set_total_us(micros_since(arrived));
-  return grpc::Status::OK;
+      response->mutable_timings());
 }
 
 namespace {
@@ -326,22 +315,12 @@ grpc::Status analyze_stroke(DaemonState& state, grpc::ServerContext* context, co
     return not_in_this_build(
         "stroke analysis: this server was built without the ink-polygon engine and recognizer");
   }
-  const auto arrived = Clock::now();
-  std::uint64_t queued_us = 0;
-  std::uint64_t compute_us = 0;
-  const grpc::Status status = run_on_pool(
-      state.stroke_pool, context, state.limits,
+  return run_timed_on_pool(
+      state.stroke_pool, context, state.limits, Clock::now(),
       [&](const StopCondition& stop) {
-        const auto started = Clock::now();
         *analysis = state.analyzer->analyze(stroke, settings, cancel_hook(stop));
-        compute_us = micros_since(started);
-        return grpc::Status::OK;
       },
-      &queued_us);
-  timings->set_queued_us(queued_us);
-  timings->set_compute_us(compute_us);
-  timings->set_total_us(micros_since(arrived));
-  return status;
+      timings);
 }
 
 namespace {

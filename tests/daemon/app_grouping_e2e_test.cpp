@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "drawn_rectangle.hpp"
 #include "fakes.hpp"
 #include "penshape/daemon/config.hpp"
 #include "penshape/daemon/proto_convert.hpp"
@@ -26,24 +27,13 @@ namespace {
 
 namespace v1 = penshape::v1;
 using penshape::PointD;
-
-// A hand-drawn straight side from a to b (mm): 40 samples, a small wobble across it.
-std::vector<PointD> side(PointD a, PointD b) {
-  std::vector<PointD> out;
-  const double len = std::hypot(b.x - a.x, b.y - a.y);
-  const PointD n{-(b.y - a.y) / len, (b.x - a.x) / len};
-  for (int i = 0; i <= 40; ++i) {
-    const double f = i / 40.0;
-    const double w = 0.25 * std::sin(9.0 * f);
-    out.push_back({a.x + f * (b.x - a.x) + w * n.x, a.y + f * (b.y - a.y) + w * n.y});
-  }
-  return out;
-}
+using penshape::daemon_test::ids_of;
+using penshape::daemon_test::is_rectangle;
+using penshape::daemon_test::side;
 
 // The four sides of the rectangle (20, 20)-(80, 60) mm, small gaps and overshoots at corners.
 std::vector<std::vector<PointD>> rectangle_sides() {
-  return {side({19.7, 20}, {80.4, 20.2}), side({80, 20.5}, {80.2, 59.7}),
-          side({80.3, 60}, {19.8, 60.2}), side({20, 60.4}, {20.2, 20.3})};
+  return penshape::daemon_test::rectangle_sides(20, 20, 80, 60);
 }
 
 // Samples of a stroke along `mm` on the test tablet (100 units per mm), 5 ms apart from
@@ -102,15 +92,6 @@ struct Daemon {
   std::unique_ptr<v1::Live::Stub> live;
   std::map<std::string, std::int64_t> clock_us;
 };
-
-bool is_rectangle(v1::ShapeKind k) {
-  return k == v1::SHAPE_KIND_RECTANGLE || k == v1::SHAPE_KIND_SQUARE ||
-         k == v1::SHAPE_KIND_QUADRILATERAL;
-}
-
-std::vector<std::uint64_t> ids_of(const google::protobuf::RepeatedField<std::uint64_t>& f) {
-  return {f.begin(), f.end()};
-}
 
 // The corners of the answer are the corners drawn (within the wobble and the corner gaps), and
 // its certificate holds.

@@ -22,6 +22,7 @@
 #include <thread>
 #include <vector>
 
+#include "drawn_rectangle.hpp"
 #include "fakes.hpp"
 #include "penshape/daemon/config.hpp"
 #include "penshape/daemon/recognizing_analyzer.hpp"
@@ -34,6 +35,10 @@ namespace {
 
 namespace v1 = penshape::v1;
 using penshape::PointD;
+using penshape::daemon_test::ids_of;
+using penshape::daemon_test::is_rectangle;
+using penshape::daemon_test::rectangle_sides;
+using penshape::daemon_test::side;
 using namespace std::chrono_literals;
 
 // Draws strokes given in millimetres on attached test tablets (100 units per mm), with device
@@ -84,25 +89,6 @@ class ScriptedSource final : public penshape::daemon::SampleSource {
   std::uint64_t next_id_ = 0;
   std::map<std::string, std::int64_t> clock_us_;
 };
-
-// A hand-drawn straight side from a to b: 40 samples with a small wobble across it.
-std::vector<PointD> side(PointD a, PointD b) {
-  std::vector<PointD> out;
-  const double len = std::hypot(b.x - a.x, b.y - a.y);
-  const PointD n{-(b.y - a.y) / len, (b.x - a.x) / len};
-  for (int i = 0; i <= 40; ++i) {
-    const double f = i / 40.0;
-    const double w = 0.25 * std::sin(9.0 * f);
-    out.push_back({a.x + f * (b.x - a.x) + w * n.x, a.y + f * (b.y - a.y) + w * n.y});
-  }
-  return out;
-}
-
-// The four sides of the rectangle (x0, y0)-(x1, y1), with a small gap or overshoot at corners.
-std::vector<std::vector<PointD>> rectangle_sides(double x0, double y0, double x1, double y1) {
-  return {side({x0 - 0.3, y0}, {x1 + 0.4, y0 + 0.2}), side({x1, y0 + 0.5}, {x1 + 0.2, y1 - 0.3}),
-          side({x1 + 0.3, y1}, {x0 - 0.2, y1 + 0.2}), side({x0, y1 + 0.4}, {x0 + 0.2, y0 + 0.3})};
-}
 
 // Every ShapeRecognized (and group preview) the subscriber reads, with its LiveEvent sequence.
 class Collector {
@@ -187,19 +173,10 @@ struct Daemon {
   std::unique_ptr<Collector> collector;
 };
 
-std::vector<std::uint64_t> ids_of(const google::protobuf::RepeatedField<std::uint64_t>& f) {
-  return {f.begin(), f.end()};
-}
-
 // The strokes an answer covers: the ink it replaces, or just its own stroke when it is freeform.
 std::set<std::uint64_t> covered(const v1::ShapeRecognized& s) {
   if (s.replaced_stroke_ids_size() == 0) return {s.stroke_id()};
   return {s.replaced_stroke_ids().begin(), s.replaced_stroke_ids().end()};
-}
-
-bool is_rectangle(v1::ShapeKind k) {
-  return k == v1::SHAPE_KIND_RECTANGLE || k == v1::SHAPE_KIND_SQUARE ||
-         k == v1::SHAPE_KIND_QUADRILATERAL;
 }
 
 // Each answer's superseded answers are earlier answers of the same device, named by their

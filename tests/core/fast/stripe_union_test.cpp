@@ -134,7 +134,7 @@ TEST(StripeUnion, StripedUnionIsThePositiveWindingRegion) {
 TEST(StripeUnion, StripesKeepHolesAsHoles) {
   const cl::Paths paths{{{0, 0}, {1000, 0}, {1000, 1000}, {0, 1000}},
                         {{300, 300}, {300, 700}, {700, 700}, {700, 300}}};
-  for (const std::size_t stripe_vertices : {1, 2, 3}) {
+  for (const std::size_t stripe_vertices : {std::size_t{1}, std::size_t{2}, std::size_t{3}}) {
     cl::PolyTree tree;
     penshape::fast::union_positive(paths, tree, stripe_vertices);
     ASSERT_EQ(tree.ChildCount(), 1) << stripe_vertices;
