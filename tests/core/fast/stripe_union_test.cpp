@@ -195,7 +195,7 @@ bool in_rings(P p, const IRings& rings) {
 void check_offset(const IRings& rings, double delta, double tol) {
   const IRegion result = penshape::fast::offset_round(rings, delta, tol);
   ASSERT_FALSE(result.empty());
-  std::mt19937 rng(static_cast<unsigned>(delta));
+  std::mt19937 rng(static_cast<unsigned>(std::llround(std::fabs(delta)) * 2 + (delta < 0 ? 1 : 0)));
   std::uniform_real_distribution<double> coord(0.0, 10000.0);
   const double d = std::fabs(delta);
   int inside = 0, outside = 0;
