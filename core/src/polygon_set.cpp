@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/exact_double.hpp"
+
 namespace penshape {
 
 std::size_t PolygonSet::vertex_count() const {
@@ -24,6 +26,7 @@ Rational exact(double v) {
 ExactPoint exact(PointD p) { return {exact(p.x), exact(p.y)}; }
 
 double to_double(const Rational& v) {
+  if (detail::is_double_exactly(v)) return v.get_d(); // grid coordinates: no rounding to decide
   // get_d truncates towards zero; step to the neighbour when that one is nearer.
   const double d = v.get_d();
   const double away = std::nextafter(d, sgn(v) < 0 ? -HUGE_VAL : HUGE_VAL);

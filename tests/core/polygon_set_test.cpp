@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
+#include <random>
 
 namespace penshape {
 namespace {
@@ -22,6 +24,36 @@ TEST(PolygonSet, DoublesConvertExactly) {
   Rational tiny = exact(std::numeric_limits<double>::denorm_min());
   mpq_mul_2exp(tiny.get_mpq_t(), tiny.get_mpq_t(), 1074);
   EXPECT_EQ(tiny, Rational(1));
+}
+
+// to_double is the nearest double, checked against both neighbours with exact arithmetic, on
+// grid coordinates (n * 2^-m, the fast path), numerators wider than a double, values below the
+// normal range and non-dyadic rationals.
+TEST(PolygonSet, ToDoubleIsTheNearestDouble) {
+  std::mt19937_64 rng(12345);
+  auto nearest = [](const Rational& v, double d) {
+    const Rational gap = abs(v - exact(d));
+    for (const double side : {-HUGE_VAL, HUGE_VAL}) {
+      const double neighbour = std::nextafter(d, side);
+      if (std::isfinite(neighbour) && abs(v - exact(neighbour)) < gap) return false;
+    }
+    return true;
+  };
+  for (int i = 0; i < 4000; ++i) {
+    const int bits = 1 + static_cast<int>(rng() % 80); // up to 80-bit numerators
+    mpz_class n = 0;
+    for (int b = 0; b < bits; ++b) n = 2 * n + static_cast<long>(rng() % 2);
+    if (rng() % 2 == 0) n = -n;
+    Rational v(n);
+    const unsigned k = static_cast<unsigned>(rng() % 1100); // past 1000: near the subnormals
+    mpq_div_2exp(v.get_mpq_t(), v.get_mpq_t(), k);
+    if (i % 4 == 3) v /= 3 + static_cast<long>(rng() % 1000) * 2; // not dyadic
+    const double d = to_double(v);
+    ASSERT_TRUE(nearest(v, d)) << v.get_str() << " -> " << d;
+    if (bits <= 53 && k < 1000 && i % 4 != 3) {
+      EXPECT_EQ(exact(d), v) << v.get_str();
+    }
+  }
 }
 
 TEST(PolygonSet, AreaSubtractsHoles) {

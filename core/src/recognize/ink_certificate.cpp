@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "certified_distance.hpp"
+#include "geometry/exact_double.hpp"
 
 namespace penshape::recognize_detail {
 namespace {
@@ -192,6 +193,7 @@ int parity(const std::vector<RowCrossing>& xs, double widest, double x, std::siz
 
 // The rounding of Q's vertices: sup |v - to_double(v)| over the vertices, rounded up.
 double vertex_rounding(const ExactPoint& v, PointD d) {
+  if (detail::is_double_exactly(v.x) && detail::is_double_exactly(v.y)) return 0.0; // d is v
   const std::pair<double, double> x = CGAL::to_interval(v.x), y = CGAL::to_interval(v.y);
   const Guard rounding;
   const IntervalNT dx = CGAL::abs(IntervalNT(x.first, x.second) - IntervalNT(d.x));
@@ -211,15 +213,20 @@ InkRegion prepare_ink(const InkPolygon& ink, double epsilon) {
   std::vector<Segment> edges;
   q.lo = {INFINITY, INFINITY};
   q.hi = {-INFINITY, -INFINITY};
+  std::vector<PointD> corners; // each vertex converted once
   auto add_ring = [&](const Ring& ring) {
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-      const PointD a = to_double(ring[i]);
-      const PointD b = to_double(ring[(i + 1) % ring.size()]);
+    corners.clear();
+    for (const ExactPoint& v : ring) {
+      const PointD a = to_double(v);
       if (!std::isfinite(a.x) || !std::isfinite(a.y)) {
         throw InvalidInput("ink certificate: an ink polygon coordinate is not finite");
       }
-      q.rounding = std::max(q.rounding, vertex_rounding(ring[i], a));
-      edges.push_back({a, b});
+      q.rounding = std::max(q.rounding, vertex_rounding(v, a));
+      corners.push_back(a);
+    }
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+      const PointD a = corners[i];
+      edges.push_back({a, corners[(i + 1) % corners.size()]});
       q.lo = {std::min(q.lo.x, a.x), std::min(q.lo.y, a.y)};
       q.hi = {std::max(q.hi.x, a.x), std::max(q.hi.y, a.y)};
       q.magnitude = std::max({q.magnitude, std::abs(a.x), std::abs(a.y)});
