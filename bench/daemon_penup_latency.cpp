@@ -333,7 +333,14 @@ PhaseResult run_phase(const std::string& dir, const StrokeSet& decoded,
   } else {
     child.emplace(options.address, phase.previews, expected);
   }
-  while (server.hub().subscriber_count() < 1) std::this_thread::sleep_for(1ms);
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+  while (server.hub().subscriber_count() < 1) {
+    if (std::chrono::steady_clock::now() > give_up) {
+      std::fprintf(stderr, "daemon_penup_latency: the subscriber did not subscribe within 20 s\n");
+      std::_Exit(1); // a reader thread may still wait on its stream
+    }
+    std::this_thread::sleep_for(1ms);
+  }
   std::this_thread::sleep_for(100ms);
   const double cpu0 = penshape::bench::process_usage().cpu_seconds;
   const auto wall0 = std::chrono::steady_clock::now();
