@@ -249,6 +249,7 @@ class SubscriberProcess {
     std::vector<std::string> args = {"daemon_penup_latency", "--subscribe", address,
                                      previews ? "1" : "0", std::to_string(expected)};
     std::vector<char*> argv;
+    argv.reserve(args.size() + 1);
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
     const int failed =
