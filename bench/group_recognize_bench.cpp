@@ -54,7 +54,7 @@ struct Rate {
 
 std::vector<StrokeInput> inputs_of(const std::vector<Points>& strokes) {
   std::vector<StrokeInput> in;
-  for (const Points& p : strokes) in.push_back({p, nullptr, nullptr, 0.0});
+  for (const Points& p : strokes) in.push_back({p, nullptr, nullptr, 0.0, {}});
   return in;
 }
 
@@ -247,7 +247,7 @@ int main(int argc, char** argv) {
         penshape::StrokeGrouper grouper;
         for (const Points& p : cut) {
           const double s0 = now();
-          grouper.add({p, nullptr, nullptr, 0.0});
+          grouper.add({p, nullptr, nullptr, 0.0, {}});
           t_group.push_back(now() - s0);
         }
         const bool ok = one_group_of(grouper.shapes(), cut.size(), kTargets.at(g.kind));

@@ -51,7 +51,8 @@ std::vector<RecognizeRow> recognize_batch(const std::vector<FileStroke>& batch,
   for (const FileStroke& s : batch) {
     if (options.pressure && s.pressure.empty()) refuse(s, "--pressure: the stroke has no pressure");
     const auto t0 = std::chrono::steady_clock::now();
-    StrokeInput input{s.points, nullptr, nullptr, 0.0};
+    StrokeInput input;
+    input.samples = s.points;
     std::optional<InkPolygon> ink;
     try {
       if (options.on_ink) {

@@ -20,7 +20,7 @@ grpc::Status analyze_grouped(DaemonState& state, grpc::ServerContext* context,
       state.stroke_pool, context, state.limits, std::chrono::steady_clock::now(),
       [&](const StopCondition& stop) {
         if (history.ensure(*state.analyzer, settings, state.grouping.get())) {
-          *out = history.add(stroke, true, cancel_hook(stop));
+          *out = history.add(stroke, true, cancel_hook(stop), ink_offload(state.stroke_pool));
         } else {
           out->analysis = state.analyzer->analyze(stroke, settings, cancel_hook(stop));
           out->grouped = false;

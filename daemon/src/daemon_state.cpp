@@ -87,6 +87,14 @@ std::uint64_t publish_stroke(ShapeHub& hub, const std::string& device_id, const 
   return hub.publish(std::move(shape));
 }
 
+InkOffload ink_offload(WorkerPool& pool) {
+  InkOffload offload;
+  offload.run_elsewhere = [&pool](std::function<void()> job) {
+    return pool.submit([job = std::move(job)](const StopCondition& /*unused*/) { job(); });
+  };
+  return offload;
+}
+
 void publish_raw_report(ShapeHub& hub, const std::string& device_id,
                         std::span<const std::uint8_t> bytes, std::int64_t time_us) {
   v1::LiveEvent event;

@@ -95,6 +95,10 @@ std::uint64_t publish_stroke(ShapeHub& hub, const std::string& device_id, const 
                              const v1::Timings& timings,
                              const std::function<void(v1::ShapeRecognized&)>& decorate);
 
+// A stroke analysis's side jobs (its ink polygon, built while the path is fitted) on the other
+// workers of `pool`, the stroke lane: a job no worker takes in time is done by the analysis itself.
+InkOffload ink_offload(WorkerPool& pool);
+
 // Publishes one raw input report (RawReport). The caller checks hub.wants_raw_reports() first.
 void publish_raw_report(ShapeHub& hub, const std::string& device_id,
                         std::span<const std::uint8_t> bytes, std::int64_t time_us);

@@ -16,8 +16,8 @@ bool GroupHistory::ensure(StrokeAnalyzer& analyzer, const PenSettings& settings,
 }
 
 GroupedStrokeAnalysis GroupHistory::add(const Stroke& stroke, bool with_ink,
-                                        const CancelHook& cancel) {
-  return session_->add(stroke, with_ink, cancel);
+                                        const CancelHook& cancel, const InkOffload& offload) {
+  return session_->add(stroke, with_ink, cancel, offload);
 }
 
 GroupAnswer GroupHistory::take(const GroupedStrokeAnalysis& r, std::uint64_t stroke_id) {

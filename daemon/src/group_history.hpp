@@ -34,7 +34,8 @@ class GroupHistory {
   bool ensure(StrokeAnalyzer& analyzer, const PenSettings& settings,
               const GroupingConfig& grouping);
   // The stroke added to the session (ensure() first). Throws as StrokeGroupSession::add.
-  GroupedStrokeAnalysis add(const Stroke& stroke, bool with_ink, const CancelHook& cancel);
+  GroupedStrokeAnalysis add(const Stroke& stroke, bool with_ink, const CancelHook& cancel,
+                            const InkOffload& offload = {});
   // After add(), before r's shape is moved out (it reads its kind): the strokes and earlier
   // answers `r` replaces (those answers are then forgotten: never superseded twice).
   GroupAnswer take(const GroupedStrokeAnalysis& r, std::uint64_t stroke_id);

@@ -88,7 +88,8 @@ void LiveGrouping::process(Lane& lane, const std::string& device_id, Pending pen
   h.ensure(*state_.analyzer, settings, state_.grouping.get());
   const StopCondition stop(started + std::chrono::seconds(state_.limits.max_call_seconds), {});
   try {
-    GroupedStrokeAnalysis result = h.add(stroke, true, cancel_hook(stop));
+    GroupedStrokeAnalysis result =
+        h.add(stroke, true, cancel_hook(stop), ink_offload(state_.stroke_pool));
     const auto now = std::chrono::steady_clock::now();
     timings.set_compute_us(micros(now - started));
     timings.set_total_us(micros(now - pending.submitted));

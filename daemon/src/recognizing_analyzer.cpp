@@ -8,6 +8,7 @@
 
 #include "penshape/core/ink.hpp"
 #include "penshape/core/live_recognizer.hpp"
+#include "penshape/daemon/build_once.hpp"
 #include "penshape/daemon/ink_analyzer.hpp"
 #include "penshape/daemon/proto_convert.hpp"
 
@@ -96,6 +97,17 @@ void add_alternatives(const Recognition& r, std::vector<v1::Shape>* out) {
 // One tablet's live grouping: core's StrokeGrouper on the strokes' paths in mm; a lone stroke is
 // certified on its ink polygon (as analyze() does), a group on the union of its strokes' paths.
 class GroupSession final : public StrokeGroupSession {
+  // A stroke's ink polygon and its proto form, built together (on whichever thread builds Q).
+  struct BuiltInk {
+    InkPolygon ink;
+    v1::PolygonSet proto;
+  };
+  static BuiltInk build_ink(const std::vector<InkSample>& samples, const InkOptions& options) {
+    BuiltInk out{ink_polygon(samples, options), {}};
+    to_proto(out.ink.region, &out.proto);
+    return out;
+  }
+
  public:
   // `finished` is told each finished stroke's id (the analyzer drops its preview state).
   GroupSession(const PenSettings& settings, const GroupingConfig& grouping,
@@ -104,25 +116,39 @@ class GroupSession final : public StrokeGroupSession {
         grouper_(grouping, config_for(settings)),
         finished_(std::move(finished)) {}
 
-  GroupedStrokeAnalysis add(const Stroke& stroke, bool with_ink,
-                            const CancelHook& cancel) override {
+  using StrokeGroupSession::add;
+  GroupedStrokeAnalysis add(const Stroke& stroke, bool with_ink, const CancelHook& cancel,
+                            const InkOffload& offload) override {
     GroupedStrokeAnalysis out;
-    std::optional<InkPolygon> ink;
-    if (with_ink) {
-      if (finished_) finished_(stroke.id);
-      ink = ink_polygon(stroke, ink_options_for(settings_));
-      to_proto(ink->region, &out.analysis.ink_polygon);
-    }
-    if (cancel && cancel()) throw Cancelled();
+    if (with_ink && finished_) finished_(stroke.id);
     StrokeInput input;
     input.samples = path_mm(stroke);
+    input.pen_radius = settings_.pen_radius_mm;
     if (input.samples.size() < 2 || !has_distinct_points(input.samples)) {
+      if (with_ink) {
+        const InkOptions options = ink_options_for(settings_);
+        out.analysis.ink_polygon = build_ink(ink_samples(stroke, options), options).proto;
+      }
+      if (cancel && cancel()) throw Cancelled();
       out.analysis.shape.set_kind(v1::SHAPE_KIND_NONE); // a dot: nothing to snap to, not grouped
       return out;
     }
-    input.ink = ink ? &*ink : nullptr;
-    input.pen_radius = settings_.pen_radius_mm;
+    if (cancel && cancel()) throw Cancelled();
+    // Q is built on another worker while the path is fitted, or here once the recognizer needs it.
+    std::shared_ptr<BuildOnce<BuiltInk>> ink;
+    if (with_ink) {
+      // The job owns what it reads: a helper may start it after this session is gone.
+      const InkOptions options = ink_options_for(settings_);
+      ink =
+          std::make_shared<BuildOnce<BuiltInk>>([options, samples = ink_samples(stroke, options)] {
+            return build_ink(samples, options);
+          });
+      if (offload.run_elsewhere)
+        (void)offload.run_elsewhere([ink] { ink->build_if_not_started(); });
+      input.ink_when_needed = [&ink] { return &ink->get().ink; };
+    }
     const GroupUpdate u = grouper_.add(input);
+    if (ink) out.analysis.ink_polygon = std::move(ink->get().proto);
     grouper_.forget_unreachable(); // memory follows the grouping window, however long the session
     const Recognition& r = u.shape.recognition;
     out.analysis.shape = to_proto_shape(r.shape, r.params, r.clean, r.certificate, r.confidence);

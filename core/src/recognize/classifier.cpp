@@ -361,9 +361,8 @@ Recognition recognize(const StrokeInput& stroke, const RecognizerConfig& config_
   RecognizerConfig config = config_in;
   if (stroke.pen_radius > 0) config.pen_radius = stroke.pen_radius;
   recognize_detail::validate_samples(stroke.samples, config);
-  if (stroke.ink && stroke.ink->region.empty()) {
-    throw InvalidInput("recognize: the ink polygon is empty");
-  }
+  // A given ink is checked at once; one still being built once the path is fitted.
+  if (stroke.ink != nullptr) (void)recognize_detail::given_ink(stroke);
   const ToleranceChoice tol = choose_tolerance(stroke.samples, config);
   const PreparedStroke s = recognize_detail::prepare(
       stroke.samples, recognize_detail::thinning_tolerance(config, tol.epsilon));
@@ -376,12 +375,15 @@ Recognition recognize(const StrokeInput& stroke, const RecognizerConfig& config_
   if (!scored.empty() && scored.front().snap) {
     recognize_detail::polish_with_annulus(s, scored.front(), config);
   }
-  if (stroke.ink && !scored.empty() && scored.front().snap) {
-    const recognize_detail::InkRegion q = recognize_detail::prepare_ink(*stroke.ink, tol.epsilon);
+  const InkPolygon* ink =
+      recognize_detail::has_ink(stroke) ? recognize_detail::given_ink(stroke) : nullptr;
+  if (ink != nullptr && !scored.empty() && scored.front().snap) {
+    const recognize_detail::InkRegion q = recognize_detail::prepare_ink(*ink, tol.epsilon);
     recognize_detail::confirm_on_ink(q, scored);
   }
   Recognition out = recognize_detail::choose(std::move(scored), tol.epsilon, tol.pen_radius);
-  if (stroke.ink) out.certificate.method = "ink"; // freeform too: the ink decided (or screening)
+  if (ink != nullptr)
+    out.certificate.method = "ink"; // freeform too: the ink decided (or screening)
   return out;
 }
 

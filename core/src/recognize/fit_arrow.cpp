@@ -159,6 +159,30 @@ struct Objective {
   mutable std::size_t worst_at = 0;
   mutable PieceHint hints[6 + kMaxShaftBends] = {};
   mutable PieceHint shaft_hints[3 * (kMaxShaftBends + 1)] = {};
+  // Per cloud point, the path segment found nearest last time: tried first, since a trial moves
+  // one vertex a little.
+  mutable std::vector<std::size_t> nearest = std::vector<std::size_t>(cloud.size(), 0);
+
+  // The squared distance from cloud point i to the path, or any value <= floor2 when it is not
+  // above floor2 (such a point cannot raise the maximum): the scan stops at the first segment
+  // within floor2, starting from the point's last nearest segment.
+  double distance2_above(std::size_t i, const std::vector<PointD>& path, double floor2) const {
+    const std::size_t segments = path.size() - 1;
+    const std::size_t from = nearest[i] < segments ? nearest[i] : 0;
+    double d2 = INFINITY;
+    for (std::size_t s = 0; s < segments; ++s) {
+      const std::size_t j = (from + s) % segments;
+      // The path retraces each barb (tip, barb, tip): the way back is the same segment.
+      if (j > 0 && path[j + 1] == path[j - 1]) continue;
+      const double dj = segment_distance2(cloud[i], path[j], path[j + 1]);
+      if (dj < d2) {
+        d2 = dj;
+        nearest[i] = j;
+        if (d2 <= floor2) break;
+      }
+    }
+    return d2;
+  }
 
   double operator()(const ArrowState& a, double limit = INFINITY) const {
     if (std::abs(a.bulge) > kMaxBulge * distance(a.v[0], a.v[1])) return INFINITY;
@@ -167,12 +191,7 @@ struct Objective {
     double worst2 = 0.0;
     for (std::size_t k = 0; k < cloud.size(); ++k) {
       const std::size_t i = (worst_at + k) % cloud.size();
-      double d2 = INFINITY;
-      for (std::size_t j = 0; j + 1 < path.size(); ++j) {
-        // The path retraces each barb (tip, barb, tip): the way back is the same segment.
-        if (j > 0 && path[j + 1] == path[j - 1]) continue;
-        d2 = std::min(d2, segment_distance2(cloud[i], path[j], path[j + 1]));
-      }
+      const double d2 = distance2_above(i, path, worst2);
       if (d2 > worst2) {
         worst2 = d2;
         if (worst2 >= limit2) {

@@ -36,6 +36,23 @@ std::vector<PointD> resample(std::span<const PointD> path, std::size_t count) {
   return out;
 }
 
+const InkPolygon* given_ink(const StrokeInput& stroke) {
+  const InkPolygon* ink = stroke.ink;
+  if (ink == nullptr && stroke.ink_when_needed) {
+    ink = stroke.ink_when_needed();
+    if (ink == nullptr)
+      throw InvalidInput("recognize: the ink polygon was announced but not given");
+  }
+  if (ink != nullptr && ink->region.empty()) {
+    throw InvalidInput("recognize: the ink polygon is empty");
+  }
+  return ink;
+}
+
+bool has_ink(const StrokeInput& stroke) {
+  return stroke.ink != nullptr || static_cast<bool>(stroke.ink_when_needed);
+}
+
 void validate_samples(const std::vector<StrokePoint>& samples, const RecognizerConfig& config) {
   auto finite_non_negative = [](double v) { return std::isfinite(v) && v >= 0.0; };
   auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };

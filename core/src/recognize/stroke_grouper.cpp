@@ -65,6 +65,14 @@ bool connected(const std::vector<const Touch*>& t, double join) {
 
 bool snaps(const Recognition& r) { return r.shape != ShapeClass::kFreeform; }
 
+// The stroke's path and pen radius only: what unions and the kept strokes need (no ink).
+StrokeInput path_only(const StrokeInput& stroke) {
+  StrokeInput out;
+  out.samples = stroke.samples;
+  out.pen_radius = stroke.pen_radius;
+  return out;
+}
+
 // Every non-empty subset of the recent groups (bit k: recent[k]), most strokes first: once a
 // union of n strokes snaps, smaller unions cannot win and are not recognized at all.
 template <typename Entries>
@@ -192,7 +200,7 @@ GroupUpdate StrokeGrouper::add(const StrokeInput& stroke) {
       all.insert(all.end(), kept.samples.begin(), kept.samples.end());
       t.push_back(&touch_of(s));
     }
-    inputs.push_back({stroke.samples, nullptr, nullptr, stroke.pen_radius});
+    inputs.push_back(path_only(stroke));
     all.insert(all.end(), stroke.samples.begin(), stroke.samples.end());
     t.push_back(&own);
     const ToleranceChoice tol = choose_tolerance(all, config);
@@ -206,6 +214,12 @@ GroupUpdate StrokeGrouper::add(const StrokeInput& stroke) {
       best_groups = std::move(groups);
     }
   }
+
+  // The new stroke alone (ink certificate when its ink is given), arrows included.
+  if (!best) best = recognize_detail::recognize_union_detail({&stroke, 1}, recognizer_);
+  // Obtained before anything changes (when still being built, its errors refuse the stroke).
+  const InkPolygon* stroke_ink =
+      recognize_detail::has_ink(stroke) ? recognize_detail::given_ink(stroke) : nullptr;
 
   GroupUpdate update;
   GroupedShape& shape = update.shape;
@@ -226,12 +240,10 @@ GroupUpdate StrokeGrouper::add(const StrokeInput& stroke) {
   for (std::size_t g = groups_.size(); g-- > 0 && neighbours.size() < grouping_.max_strokes;) {
     if (snaps(groups_[g].shape.recognition)) neighbours.push_back(&groups_[g].shape.recognition);
   }
-  // The new stroke alone (ink certificate when its ink is given), arrows included.
-  if (!best) best = recognize_detail::recognize_union_detail({&stroke, 1}, recognizer_);
   shape.recognition = std::move(best->recognition);
   // A lone stroke recognized on its ink keeps being certified on it.
   const InkPolygon* ink = shape.strokes.size() == 1 && shape.recognition.certificate.method == "ink"
-                              ? stroke.ink
+                              ? stroke_ink
                               : nullptr;
   shape.tidy =
       recognize_detail::tidy_up(shape.recognition, best->strokes, grouping_.tidy, neighbours, ink);
@@ -243,7 +255,7 @@ GroupUpdate StrokeGrouper::add(const StrokeInput& stroke) {
     e.joinable = false;
     for (const std::size_t i : e.shape.strokes) strokes_.erase(i);
   }
-  strokes_[index] = {stroke.samples, nullptr, nullptr, stroke.pen_radius};
+  strokes_[index] = path_only(stroke);
   ++added_;
   groups_.push_back({shape, stroke.samples.back().t, true});
   return update;

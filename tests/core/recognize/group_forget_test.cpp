@@ -32,12 +32,12 @@ std::vector<StrokeInput> long_session() {
   for (int i = 0; i < 300; ++i) {
     const PointD o{100.0 * (i % 20), 100.0 * (i / 20)};
     const PointD d = i % 3 == 0 ? PointD{40, 0} : (i % 3 == 1 ? PointD{0, 40} : PointD{28, 28});
-    out.push_back({line(o, {o.x + d.x, o.y + d.y}, t), nullptr, nullptr, 0.0});
+    out.push_back({line(o, {o.x + d.x, o.y + d.y}, t), nullptr, nullptr, 0.0, {}});
     t = out.back().samples.back().t + (i % 25 == 24 ? 3.0 : 0.1);
   }
   const std::vector<PointD> c{{3000, 0}, {3200, 0}, {3200, 120}, {3000, 120}};
   for (std::size_t k = 0; k < 4; ++k) {
-    out.push_back({line(c[k], c[(k + 1) % 4], t), nullptr, nullptr, 0.0});
+    out.push_back({line(c[k], c[(k + 1) % 4], t), nullptr, nullptr, 0.0, {}});
     t = out.back().samples.back().t + 0.3;
   }
   return out;

@@ -41,7 +41,11 @@ std::vector<StrokePoint> polyline(const std::vector<PointD>& v, double t0) {
   return out;
 }
 
-StrokeInput input(std::vector<StrokePoint> s) { return {std::move(s), nullptr, nullptr, 0.0}; }
+StrokeInput input(std::vector<StrokePoint> s) {
+  StrokeInput in;
+  in.samples = std::move(s);
+  return in;
+}
 
 double end_time(const std::vector<StrokeInput>& s) { return s.back().samples.back().t; }
 

@@ -122,8 +122,9 @@ class StrokeGrouper {
   explicit StrokeGrouper(GroupingConfig grouping = {}, RecognizerConfig recognizer = {});
 
   // Adds the next stroke in drawing order (its index is the number of strokes added before).
-  // stroke.ink and stroke.skeleton need only stay valid during the call. Throws InvalidInput as
-  // recognize() does; a refused stroke is not added.
+  // stroke.ink and stroke.skeleton need only stay valid during the call; stroke.ink_when_needed
+  // is called after the unions with recent groups are tried (none of them needs the ink). Throws
+  // InvalidInput as recognize() does; a refused stroke is not added.
   GroupUpdate add(const StrokeInput& stroke);
 
   // The current answers (superseded ones removed), ordered by their first stroke.

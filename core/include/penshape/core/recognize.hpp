@@ -112,6 +112,7 @@
 // from a deconstruction with eps < r: with eps >= r the answer is P = Q, whose vertices are not
 // corners. The plausibility rules (straight_fraction) read the path bound in both entries.
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -243,7 +244,8 @@ struct Recognition {
 Recognition recognize(const std::vector<StrokePoint>& samples, const RecognizerConfig& config = {});
 
 // The whole stroke, as the engine knows it (see "Two entries" above). The pointers are not
-// owned and must stay valid during the call; null means "not given".
+// owned and must stay valid during the call; null means "not given". The ink is given when
+// `ink` or `ink_when_needed` is set.
 struct StrokeInput {
   std::vector<StrokePoint> samples; // the pen path (as for recognize(samples))
   const InkPolygon* ink = nullptr;  // Q of these samples, in the samples' unit
@@ -252,6 +254,13 @@ struct StrokeInput {
   // The clean ink's pen radius (with pressure: the radius the clean shape is drawn with, e.g.
   // the stroke's typical radius); <= 0 uses RecognizerConfig::pen_radius and its default rule.
   double pen_radius = 0.0;
+  // Q while it is still being built (say on another thread, so that building Q overlaps fitting
+  // the path): used only when `ink` is null. recognize() and StrokeGrouper::add() call it when
+  // they first need Q (after the path is fitted), and always before they return, so that its
+  // errors are theirs (an exception from it propagates; a stroke refused so is not added). It must
+  // return Q of these samples (non-null), the same one on every call, valid until the call that
+  // asked for it returns.
+  std::function<const InkPolygon*()> ink_when_needed;
 };
 
 // Throws InvalidInput as recognize(samples) does, and for an empty ink polygon.

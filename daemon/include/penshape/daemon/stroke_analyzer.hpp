@@ -4,6 +4,7 @@
 // its results to the penshape.v1 messages; the daemon runs it on the geometry workers for live
 // strokes, SubmitStroke, StreamSamples and Geometry.Recognize, and asks it for previews while a
 // live stroke is drawn.
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -38,6 +39,14 @@ struct GroupedStrokeAnalysis {
   std::vector<std::string> tidy;       // tidy-up constraints applied
 };
 
+// Where StrokeGroupSession::add() may build the new stroke's ink polygon while it fits the
+// stroke's path (the recognizer needs Q only to certify, after fitting).
+struct InkOffload {
+  // Runs a job on another worker; false when none takes it. Empty, or a job not started by the
+  // time Q is needed: add() builds Q itself.
+  std::function<bool(std::function<void()>)> run_elsewhere;
+};
+
 // One tablet's grouping of recent strokes (core's StrokeGrouper): strokes are added in drawing
 // order, one at a time; a session is not thread-safe (the pipeline runs one device's strokes in
 // order on one worker at a time). Stroke indices count the strokes added (dots are not added).
@@ -45,9 +54,13 @@ class StrokeGroupSession {
  public:
   virtual ~StrokeGroupSession() = default;
   // The stroke's ink polygon (when `with_ink`: previews skip it) and its grouped answer. Throws
-  // Cancelled when `cancel` asks to stop (the stroke is then not added).
-  virtual GroupedStrokeAnalysis add(const Stroke& stroke, bool with_ink,
-                                    const CancelHook& cancel) = 0;
+  // Cancelled when `cancel` asks to stop (the stroke is then not added). `offload` may build the
+  // ink polygon on another worker meanwhile.
+  virtual GroupedStrokeAnalysis add(const Stroke& stroke, bool with_ink, const CancelHook& cancel,
+                                    const InkOffload& offload) = 0;
+  GroupedStrokeAnalysis add(const Stroke& stroke, bool with_ink, const CancelHook& cancel) {
+    return add(stroke, with_ink, cancel, {});
+  }
   // An independent copy (a preview adds the stroke in progress to a copy).
   [[nodiscard]] virtual std::unique_ptr<StrokeGroupSession> clone() const = 0;
   [[nodiscard]] virtual std::size_t stroke_count() const = 0;

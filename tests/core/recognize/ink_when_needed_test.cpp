@@ -1,0 +1,94 @@
+// StrokeInput::ink_when_needed: an ink polygon still being built when recognition starts. It must
+// be used exactly as a given ink (a bulging ink refuses the circle its path certifies), its
+// errors must be recognize()'s and StrokeGrouper::add()'s, and a refused stroke is not added.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <vector>
+
+#include "penshape/core/group_recognize.hpp"
+#include "penshape/core/ink.hpp"
+#include "penshape/core/recognize.hpp"
+
+namespace penshape {
+namespace {
+
+// A circle of radius 60 drawn with a pen of radius 2, pressed hard (radius `bulge`) over a
+// quarter of it when bulge > 0.
+std::vector<InkSample> circle_stroke(double bulge) {
+  std::vector<InkSample> s;
+  const int n = 400;
+  for (int k = 0; k <= n; ++k) {
+    const double t = 2 * std::numbers::pi * k / n;
+    const double r = bulge > 0 && std::abs(t - 1.0) < 0.25 ? bulge : 2.0;
+    s.push_back({100 + 60 * std::cos(t), 80 + 60 * std::sin(t), r});
+  }
+  return s;
+}
+
+StrokeInput path_of(const std::vector<InkSample>& s, double t0 = 0) {
+  StrokeInput input;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    input.samples.push_back({s[i].x, s[i].y, t0 + 0.002 * static_cast<double>(i)});
+  }
+  input.pen_radius = 2.0;
+  return input;
+}
+
+TEST(InkWhenNeeded, CertifiesOnTheInkAsAGivenInkDoes) {
+  for (const double bulge : {0.0, 14.0}) {
+    const std::vector<InkSample> s = circle_stroke(bulge);
+    const InkPolygon ink = ink_polygon(s, InkOptions{.radius_mm = bulge > 0 ? bulge : 2.0});
+    StrokeInput given = path_of(s);
+    given.ink = &ink;
+    StrokeInput later = path_of(s);
+    int calls = 0;
+    later.ink_when_needed = [&] {
+      ++calls;
+      return &ink;
+    };
+    const Recognition a = recognize(given);
+    const Recognition b = recognize(later);
+    EXPECT_GE(calls, 1);
+    EXPECT_EQ(b.certificate.method, "ink");
+    EXPECT_EQ(a.shape, b.shape);
+    EXPECT_EQ(a.certificate.bound, b.certificate.bound);
+    // The independent fact: the hard-pressed quarter bulges 12 beyond the circle's ink, so only
+    // an ink that was really looked at refuses the circle the path alone certifies.
+    EXPECT_EQ(b.shape == ShapeClass::kCircle, bulge == 0.0) << "bulge " << bulge;
+  }
+}
+
+TEST(InkWhenNeeded, ItsErrorsAreRecognitionErrors) {
+  StrokeInput input = path_of(circle_stroke(0));
+  input.ink_when_needed = []() -> const InkPolygon* { throw InvalidInput("no ink after all"); };
+  EXPECT_THROW((void)recognize(input), InvalidInput);
+  input.ink_when_needed = []() -> const InkPolygon* { return nullptr; };
+  EXPECT_THROW((void)recognize(input), InvalidInput);
+  const InkPolygon empty;
+  input.ink_when_needed = [&] { return &empty; };
+  EXPECT_THROW((void)recognize(input), InvalidInput);
+}
+
+TEST(InkWhenNeeded, AStrokeWhoseInkFailsIsNotAddedToItsGroup) {
+  const std::vector<InkSample> s = circle_stroke(0);
+  const InkPolygon ink = ink_polygon(s, InkOptions{.radius_mm = 2.0});
+  StrokeGrouper grouper;
+  StrokeInput first = path_of(s);
+  first.ink_when_needed = [&] { return &ink; };
+  const GroupUpdate u = grouper.add(first);
+  EXPECT_EQ(u.shape.recognition.shape, ShapeClass::kCircle);
+  EXPECT_EQ(u.shape.recognition.certificate.method, "ink");
+
+  StrokeInput refused = path_of(s, 1.0);
+  refused.ink_when_needed = []() -> const InkPolygon* { throw std::runtime_error("ink failed"); };
+  EXPECT_THROW(grouper.add(refused), std::runtime_error);
+  EXPECT_EQ(grouper.stroke_count(), 1U);
+  ASSERT_EQ(grouper.shapes().size(), 1U);
+  EXPECT_EQ(grouper.shapes().front().id, u.shape.id);
+}
+
+} // namespace
+} // namespace penshape
