@@ -124,16 +124,15 @@ class GroupSession final : public StrokeGroupSession {
     StrokeInput input;
     input.samples = path_mm(stroke);
     input.pen_radius = settings_.pen_radius_mm;
+    if (cancel && cancel()) throw Cancelled();
     if (input.samples.size() < 2 || !has_distinct_points(input.samples)) {
       if (with_ink) {
         const InkOptions options = ink_options_for(settings_);
         out.analysis.ink_polygon = build_ink(ink_samples(stroke, options), options).proto;
       }
-      if (cancel && cancel()) throw Cancelled();
       out.analysis.shape.set_kind(v1::SHAPE_KIND_NONE); // a dot: nothing to snap to, not grouped
       return out;
     }
-    if (cancel && cancel()) throw Cancelled();
     // Q is built on another worker while the path is fitted, or here once the recognizer needs it.
     std::shared_ptr<BuildOnce<BuiltInk>> ink;
     if (with_ink) {

@@ -375,8 +375,7 @@ Recognition recognize(const StrokeInput& stroke, const RecognizerConfig& config_
   if (!scored.empty() && scored.front().snap) {
     recognize_detail::polish_with_annulus(s, scored.front(), config);
   }
-  const InkPolygon* ink =
-      recognize_detail::has_ink(stroke) ? recognize_detail::given_ink(stroke) : nullptr;
+  const InkPolygon* ink = recognize_detail::given_ink(stroke);
   if (ink != nullptr && !scored.empty() && scored.front().snap) {
     const recognize_detail::InkRegion q = recognize_detail::prepare_ink(*ink, tol.epsilon);
     recognize_detail::confirm_on_ink(q, scored);

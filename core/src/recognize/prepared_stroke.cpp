@@ -49,10 +49,6 @@ const InkPolygon* given_ink(const StrokeInput& stroke) {
   return ink;
 }
 
-bool has_ink(const StrokeInput& stroke) {
-  return stroke.ink != nullptr || static_cast<bool>(stroke.ink_when_needed);
-}
-
 void validate_samples(const std::vector<StrokePoint>& samples, const RecognizerConfig& config) {
   auto finite_non_negative = [](double v) { return std::isfinite(v) && v >= 0.0; };
   auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };

@@ -31,7 +31,6 @@ void validate_samples(const std::vector<StrokePoint>& samples, const RecognizerC
 // returns: obtained here, so call it only once Q is needed), else null. Throws InvalidInput for an
 // empty one, and whatever ink_when_needed throws.
 const InkPolygon* given_ink(const StrokeInput& stroke);
-bool has_ink(const StrokeInput& stroke); // whether given_ink() will return Q
 
 // The thinning tolerance tau for a stroke checked against epsilon (RecognizerConfig::
 // thin_tolerance_fraction * epsilon; 0 turns thinning off).

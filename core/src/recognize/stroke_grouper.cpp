@@ -218,8 +218,7 @@ GroupUpdate StrokeGrouper::add(const StrokeInput& stroke) {
   // The new stroke alone (ink certificate when its ink is given), arrows included.
   if (!best) best = recognize_detail::recognize_union_detail({&stroke, 1}, recognizer_);
   // Obtained before anything changes (when still being built, its errors refuse the stroke).
-  const InkPolygon* stroke_ink =
-      recognize_detail::has_ink(stroke) ? recognize_detail::given_ink(stroke) : nullptr;
+  const InkPolygon* stroke_ink = recognize_detail::given_ink(stroke);
 
   GroupUpdate update;
   GroupedShape& shape = update.shape;
