@@ -1,10 +1,10 @@
 // Micro-benchmark of the fast deconstruction engine alone: kazakhstan_paper1881, eps = r/2,
 // delta = eps/8, r = w/10, w/30, w/50, w/100 (w = bounding-box width). Prints a table of the
 // median time per decision, the answer and |P|; `--json` prints one object per case.
-// `--certify both` (the default) times each case with the certified predicates (interval
-// arithmetic with an exact fallback) and with the former double-with-margins comparisons, in
-// the same run, and prints the ratio; `--certify interval` or `--certify margins` runs one.
-// The side-by-side comparison with the reference engine lives in the main deconstruct bench.
+// `--engines both` also times the reference engine on each case, interleaved in the same run,
+// and prints each engine's CPU time against the fast engine's (the baseline; the former
+// double-with-margins comparisons are gone from the engine, issue 22). The default,
+// `--engines fast`, times the fast engine alone; deconstruct_bench has the full comparison.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -17,7 +17,6 @@
 #include <vector>
 
 #include "engine/engines.hpp"
-#include "engine/fast/certified.hpp"
 
 namespace {
 
@@ -64,12 +63,12 @@ const char* answer_name(penshape::Answer a) {
 int main(int argc, char** argv) {
   bool json = false;
   int repeats = 9;
-  std::string certify = "both";
+  std::string engines = "fast";
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--json") json = true;
     if (a == "--repeats" && i + 1 < argc) repeats = std::max(1, std::atoi(argv[++i]));
-    if (a == "--certify" && i + 1 < argc) certify = argv[++i];
+    if (a == "--engines" && i + 1 < argc) engines = argv[++i];
   }
   const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR");
   const std::string dir = env != nullptr ? env : PENSHAPE_SHARED_DATA_DIR;
@@ -80,12 +79,18 @@ int main(int argc, char** argv) {
     max_x = std::max(max_x, p.x);
   }
   const penshape::Rational w = max_x - min_x;
-  std::vector<std::pair<const char*, penshape::fast::CertifyMode>> modes;
-  if (certify != "margins") modes.push_back({"interval", penshape::fast::CertifyMode::kInterval});
-  if (certify != "interval") modes.push_back({"margins", penshape::fast::CertifyMode::kMargins});
+  using Decide = penshape::DeconstructResult (*)(
+      const penshape::PolygonSet&, const penshape::DeconstructParams&, const penshape::CancelHook&,
+      const penshape::DeconstructLimits&);
+  const Decide fast = [](const penshape::PolygonSet& set, const penshape::DeconstructParams& p,
+                         const penshape::CancelHook& c, const penshape::DeconstructLimits& l) {
+    return penshape::detail::decide_fast(set, p, c, l);
+  };
+  std::vector<std::pair<const char*, Decide>> modes{{"fast", fast}};
+  if (engines == "both") modes.push_back({"reference", &penshape::detail::decide_reference});
   if (!json) {
-    std::printf("%-8s %-9s %-10s %12s %12s %12s %8s %6s %8s\n", "r", "certify", "answer",
-                "median_ms", "min_ms", "cpu_med_ms", "|P|", "disk", "cpu/marg");
+    std::printf("%-8s %-9s %-10s %12s %12s %12s %8s %6s %8s\n", "r", "engine", "answer",
+                "median_ms", "min_ms", "cpu_med_ms", "|P|", "disk", "cpu/fast");
   }
   for (const int div : {10, 30, 50, 100}) {
     penshape::DeconstructParams params;
@@ -93,21 +98,19 @@ int main(int argc, char** argv) {
     params.tolerance = params.radius / 2;
     params.precision = params.tolerance / 8;
     const std::string r = "w/" + std::to_string(div);
-    // Interleaved repeats, so that load on the shared machine hits both modes alike.
+    // Interleaved repeats, so that load on the shared machine hits both engines alike.
     std::vector<std::vector<double>> ms(modes.size()), cpu(modes.size());
     std::vector<penshape::DeconstructResult> last(modes.size());
     for (int k = 0; k < repeats; ++k) {
       for (std::size_t m = 0; m < modes.size(); ++m) {
-        penshape::fast::set_certify_mode(modes[m].second);
         const double c0 = cpu_ms();
         const auto t0 = std::chrono::steady_clock::now();
-        last[m] = penshape::detail::decide_fast(q, params, {}, {});
+        last[m] = modes[m].second(q, params, {}, {});
         const auto t1 = std::chrono::steady_clock::now();
         cpu[m].push_back(cpu_ms() - c0);
         ms[m].push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
       }
     }
-    penshape::fast::set_certify_mode(penshape::fast::CertifyMode::kInterval);
     std::vector<double> cpu_median(modes.size());
     for (std::size_t m = 0; m < modes.size(); ++m) {
       std::sort(ms[m].begin(), ms[m].end());
@@ -116,11 +119,11 @@ int main(int argc, char** argv) {
     }
     for (std::size_t m = 0; m < modes.size(); ++m) {
       const double median = ms[m][ms[m].size() / 2];
-      const double ratio = cpu_median[m] / cpu_median.back();
+      const double ratio = cpu_median[m] / cpu_median.front();
       if (json) {
         std::printf(
-            "{\"case\":\"kazakhstan_paper1881\",\"r\":\"%s\",\"engine\":\"fast\","
-            "\"certify\":\"%s\",\"answer\":\"%s\",\"median_ms\":%.3f,\"min_ms\":%.3f,"
+            "{\"case\":\"kazakhstan_paper1881\",\"r\":\"%s\",\"engine\":\"%s\",\"answer\":\"%s\","
+            "\"median_ms\":%.3f,\"min_ms\":%.3f,"
             "\"cpu_median_ms\":%.3f,\"solution_vertices\":%zu,\"disk_vertices\":%zu}\n",
             r.c_str(), modes[m].first, answer_name(last[m].answer), median, ms[m].front(),
             cpu_median[m], last[m].solution.vertex_count(), last[m].disk_vertices);

@@ -6,8 +6,8 @@
 // vertical line: the former x-range sweep's O(n²) case): the Shamos–Hoey sweep inside
 // validate_region against the former test (bench/former_validation.hpp), in the same run; and
 // validation of a polygon with thousands of holes (the nesting sweep).
-//   scale_bench [--margins] [--only N] [--former-offsets | --striped-offsets] [--validation]
-// --margins times the fast engine's former margin-based comparisons; --only N runs only the
+//   scale_bench [--only N] [--former-offsets | --striped-offsets] [--validation]
+// --only N runs only the
 // N-vertex star's deconstruction and prints its wall and thread CPU time (the shared build
 // machine's load inflates wall time) and how many predicates needed the exact fallback, with
 // the former offsets (one Clipper sweep per offset, ClipperOffset insets) and the striped ones
@@ -147,7 +147,6 @@ void validation_table() {
 }
 
 int main(int argc, char** argv) {
-  // --margins: the fast engine's former double-with-margins comparisons (before/after runs);
   // --only N: just the deconstruction of the N-vertex star (for profiling).
   int only = 0;
   bool former_only = false;
@@ -155,7 +154,6 @@ int main(int argc, char** argv) {
   bool validation_only = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--margins") penshape::fast::set_certify_mode(penshape::fast::CertifyMode::kMargins);
     if (a == "--only" && i + 1 < argc) only = std::atoi(argv[++i]);
     if (a == "--former-offsets") former_only = true;
     if (a == "--striped-offsets") striped_only = true;

@@ -24,6 +24,39 @@ const char* to_string(Answer a) {
 
 const char* to_string(EngineKind e) { return e == EngineKind::kFast ? "fast" : "reference"; }
 
+namespace {
+
+// The fast engine, and the reference engine when the fast one stayed UNDECIDED because its grid
+// lost a feature thinner than a grid unit. The result's `engine` names the one that answered.
+DeconstructResult decide_default(const PolygonSet& q, const DeconstructParams& params,
+                                 const CancelHook& cancel, const DeconstructLimits& limits) {
+  bool lost = false;
+  DeconstructResult result = detail::decide_fast(q, params, cancel, limits, &lost);
+  if (result.answer != Answer::kUndecided || !lost) return result;
+  DeconstructResult exact = detail::decide_reference(q, params, cancel, limits);
+  exact.engine = EngineKind::kReference;
+  return exact;
+}
+
+// Dispatch on oriented input with r > eps.
+DeconstructResult decide(const PolygonSet& q, const DeconstructParams& params,
+                         const CancelHook& cancel, const DeconstructLimits& limits) {
+  if (params.engine == EngineKind::kReference) {
+    DeconstructResult result = detail::decide_reference(q, params, cancel, limits);
+    result.engine = EngineKind::kReference;
+    return result;
+  }
+  if (is_convex_region(q)) {
+    // Convex input: CONVEXDECIDE's linear path (Section 5), on the exact input.
+    DeconstructResult result = convex_decide_simplified(q, params, cancel);
+    result.engine = EngineKind::kFast;
+    if (result.answer != Answer::kUndecided) return result;
+  }
+  return decide_default(q, params, cancel, limits);
+}
+
+} // namespace
+
 DeconstructResult deconstruct(const PolygonSet& q, const DeconstructParams& params,
                               const CancelHook& cancel, const DeconstructLimits& limits) {
   const auto start = std::chrono::steady_clock::now();
@@ -46,18 +79,7 @@ DeconstructResult deconstruct(const PolygonSet& q, const DeconstructParams& para
       normalize_orientation(reoriented);
     }
     const PolygonSet& oriented = needs_fix ? reoriented : q;
-    if (params.engine == EngineKind::kReference) {
-      result = detail::decide_reference(oriented, params, cancel, limits);
-    } else if (is_convex_region(oriented)) {
-      // Convex input: CONVEXDECIDE's linear path (Section 5), on the exact input.
-      result = convex_decide_simplified(oriented, params, cancel);
-      if (result.answer == Answer::kUndecided) {
-        result = detail::decide_fast(oriented, params, cancel, limits);
-      }
-    } else {
-      result = detail::decide_fast(oriented, params, cancel, limits);
-    }
-    result.engine = params.engine;
+    result = decide(oriented, params, cancel, limits);
     result.params = params;
   }
   result.elapsed = std::chrono::duration_cast<std::chrono::nanoseconds>(

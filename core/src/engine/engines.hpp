@@ -14,9 +14,13 @@ namespace penshape::detail {
 DeconstructResult decide_reference(const PolygonSet& q, const DeconstructParams& params,
                                    const CancelHook& cancel, const DeconstructLimits& limits);
 
-// The default engine: the same certified answers, much faster.
+// The default engine: the same certified answers, much faster. `lost_features` (optional) is set
+// when its integer grid could not represent all of Q for the YES certificate (a feature thinner
+// than a grid unit, so a sliver ring or a non-simple rounding): its UNDECIDED may then be one
+// the reference engine settles, and deconstruct() asks it.
 DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& params,
-                              const CancelHook& cancel, const DeconstructLimits& limits);
+                              const CancelHook& cancel, const DeconstructLimits& limits,
+                              bool* lost_features = nullptr);
 
 // Fewer vertices for a YES solution of decide_fast (same q and params): indented caps removed
 // (Theorem 5) and coarser simplification, each candidate certified by the fast engine's

@@ -1,8 +1,8 @@
 // The fast engine's certified predicates and the level-set walk at the edge of their bounds
 // (issue 15): distances exactly at a threshold and one ulp away, decided against closed-form
 // geometry; cases only the exact fallback can decide; a level set one 2^-20 unit inside or
-// outside the clearance, where the former 1/4-unit margins could not decide; and the arc
-// chords' derived sagitta bound, which a walk that ignored it would get wrong.
+// outside the clearance (the former 1/4-unit margins could not decide it); and the arc chords'
+// derived sagitta bound, which a walk that ignored it would get wrong.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,11 +16,6 @@ namespace penshape::fast {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// Restores the default mode after a test that selects the former margins.
-struct ModeGuard {
-  ~ModeGuard() { set_certify_mode(CertifyMode::kInterval); }
-};
 
 // The point (5, h) is at distance exactly h from the segment [(0, 0), (10, 0)].
 TEST(FastCertified, DistanceAtTheThresholdNeedsAndGetsTheExactFallback) {
@@ -36,14 +31,6 @@ TEST(FastCertified, DistanceAtTheThresholdNeedsAndGetsTheExactFallback) {
     EXPECT_TRUE(farther_than(y, a, b, std::nextafter(h, 0.0))) << h;
     EXPECT_TRUE(closer_than(y, a, b, std::nextafter(h, kInf))) << h;
   }
-}
-
-TEST(FastCertified, FormerMarginsCannotDecideOneUlpAway) {
-  const ModeGuard guard;
-  set_certify_mode(CertifyMode::kMargins);
-  const OnPiece y = at_point(DPt{5.0, 1000.1});
-  EXPECT_EQ(compare_distance(y, {0, 0}, {10, 0}, std::nextafter(1000.1, 0.0)), 0);
-  EXPECT_EQ(compare_distance(y, {0, 0}, {10, 0}, 1000.1 - 0.2), 0);
 }
 
 // A point of a piece is p + t (q - p) exactly, not its double rounding: here the double
@@ -91,10 +78,6 @@ TEST(FastCertified, LevelSetDecidedOneUnitFractionFromTheClearance) {
   EXPECT_TRUE(level_set_avoids({&a, 149.0 - tiny, &b, 1.0, 2.0}, {})) << "1 + 2^-20 > 1";
   EXPECT_FALSE(level_set_avoids({&a, 149.0 + tiny, &b, 1.0, 2.0}, {})) << "1 - 2^-20 < 1";
   EXPECT_FALSE(level_set_avoids({&a, 149.0, &b, 1.0, 2.0}, {})) << "exactly 1 is not > 1";
-  // The former margins cannot tell the first case (they need 1/4 unit of room).
-  const ModeGuard guard;
-  set_certify_mode(CertifyMode::kMargins);
-  EXPECT_FALSE(level_set_avoids({&a, 149.0 - tiny, &b, 1.0, 2.0}, {}));
 }
 
 // The arc around the convex corner (1000, 1000) of A = [0, 1000]² is walked as chords, which lie

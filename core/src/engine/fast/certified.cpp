@@ -1,12 +1,10 @@
 // Certified predicates of the fast engine: intervals first, exact rationals when the interval
-// cannot decide (certified.hpp). The kMargins branch is the former double-with-slack arithmetic,
-// reachable only from the bench.
+// cannot decide (certified.hpp).
 #include "certified.hpp"
 
 #include <CGAL/FPU.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -22,14 +20,7 @@ using detail::Point2;
 using ExactPt = Point2<Rational>;
 using IntervalPt = Point2<IntervalNT>;
 
-std::atomic<CertifyMode> g_mode{CertifyMode::kInterval};
-
-// The former margin of every double distance comparison (kMargins only).
-constexpr double kFormerDistanceSlack = 0.25;
-
 thread_local std::uint64_t t_exact_fallbacks = 0;
-
-bool margins() { return g_mode.load(std::memory_order_relaxed) == CertifyMode::kMargins; }
 
 template <typename NT>
 Point2<NT> eval(const OnPiece& y) {
@@ -44,6 +35,7 @@ Point2<NT> eval(IPt p) {
   return {NT(static_cast<double>(p.x)), NT(static_cast<double>(p.y))};
 }
 
+// The point in doubles: for proposals only.
 DPt eval_double(const OnPiece& y) {
   if (y.t == 0.0) return y.p;
   return {y.p.x + y.t * (y.q.x - y.p.x), y.p.y + y.t * (y.q.y - y.p.y)};
@@ -96,30 +88,11 @@ int separated_and_far(const Point2<NT>& y0, const Point2<NT>& y1, const Point2<N
   return result;
 }
 
-// Former robust_side: the double sign with a hand-chosen error threshold (kMargins only).
-int former_side(DPt a, DPt b, DPt c) {
-  const double ux = b.x - a.x, uy = b.y - a.y, vx = c.x - a.x, vy = c.y - a.y;
-  const double cr = ux * vy - uy * vx;
-  const double bound = 1e-12 * (std::fabs(ux * vy) + std::fabs(uy * vx)) + 1e-9;
-  return cr > bound ? 1 : (cr < -bound ? -1 : 0);
-}
-
-int former_compare(double d, double threshold) {
-  if (d < threshold - kFormerDistanceSlack) return -1;
-  if (d > threshold + kFormerDistanceSlack) return 1;
-  return 0;
-}
-
 } // namespace
 
-void set_certify_mode(CertifyMode mode) { g_mode.store(mode, std::memory_order_relaxed); }
-CertifyMode certify_mode() { return g_mode.load(std::memory_order_relaxed); }
 std::uint64_t exact_fallbacks() { return t_exact_fallbacks; }
 
 int compare_distance(const OnPiece& y, IPt a, IPt b, double threshold) {
-  if (margins()) {
-    return former_compare(point_segment_distance(eval_double(y), to_d(a), to_d(b)), threshold);
-  }
   {
     const UpwardRounding rounding;
     const int s =
@@ -130,12 +103,6 @@ int compare_distance(const OnPiece& y, IPt a, IPt b, double threshold) {
 }
 
 int compare_point_distance(const OnPiece& y, const OnPiece& z, double threshold) {
-  if (margins()) {
-    // The former code compared point distances plainly (its slack sat in the thresholds).
-    const DPt u = eval_double(y), v = eval_double(z);
-    const double d = std::hypot(u.x - v.x, u.y - v.y);
-    return (d > threshold) - (d < threshold);
-  }
   {
     const UpwardRounding rounding;
     const IntervalPt u = eval<IntervalNT>(y);
@@ -147,15 +114,6 @@ int compare_point_distance(const OnPiece& y, const OnPiece& z, double threshold)
 }
 
 bool segments_farther_than(const OnPiece& y0, const OnPiece& y1, IPt a, IPt b, double threshold) {
-  if (margins()) {
-    const DPt p = eval_double(y0), q = eval_double(y1), da = to_d(a), db = to_d(b);
-    const int s1 = former_side(da, db, p), s2 = former_side(da, db, q);
-    const int s3 = former_side(p, q, da), s4 = former_side(p, q, db);
-    if (!(s1 * s2 > 0 || s3 * s4 > 0)) return false;
-    const double d = std::min({point_segment_distance(p, da, db), point_segment_distance(q, da, db),
-                               point_segment_distance(da, p, q), point_segment_distance(db, p, q)});
-    return d >= threshold + kFormerDistanceSlack;
-  }
   {
     const UpwardRounding rounding;
     const int s = separated_and_far(eval<IntervalNT>(y0), eval<IntervalNT>(y1), eval<IntervalNT>(a),
@@ -205,13 +163,6 @@ const std::vector<std::size_t>& edges_near(const SegmentIndex& index, const OnPi
 bool piece_farther_than(const SegmentIndex& index, const OnPiece& y0, const OnPiece& y1,
                         double threshold) {
   const std::vector<std::size_t>& near = edges_near(index, y0, y1, threshold);
-  if (margins()) {
-    for (const std::size_t k : near) {
-      const Segment& g = index.segments()[k];
-      if (!segments_farther_than(y0, y1, g.a, g.b, threshold)) return false;
-    }
-    return true;
-  }
   // One rounding-mode switch for all the intervals; the exact fallback after it.
   std::vector<std::size_t> undecided;
   {
@@ -238,13 +189,6 @@ bool piece_farther_than(const SegmentIndex& index, const OnPiece& y0, const OnPi
 
 bool all_edges_farther(const SegmentIndex& index, const OnPiece& y, double threshold) {
   const std::vector<std::size_t>& near = edges_near(index, y, y, threshold);
-  if (margins()) {
-    for (const std::size_t k : near) {
-      const Segment& g = index.segments()[k];
-      if (!farther_than(y, g.a, g.b, threshold)) return false;
-    }
-    return true;
-  }
   std::vector<std::size_t> undecided;
   {
     const UpwardRounding rounding;

@@ -16,13 +16,6 @@
 
 namespace penshape::fast {
 
-// How the certificates compare. kInterval (the default) is the certified arithmetic above;
-// kMargins is the former double comparison with a fixed slack of 1/4 grid unit, kept only so
-// that bench/fast_engine_bench.cpp can time both in one run. Nothing else may select it.
-enum class CertifyMode { kInterval, kMargins };
-void set_certify_mode(CertifyMode mode);
-[[nodiscard]] CertifyMode certify_mode();
-
 // Rounding towards +infinity, what CGAL::Interval_nt<false> needs, for this scope. On x86-64
 // every double operation is SSE, so one MXCSR write does it (CGAL's Protect_FPU_rounding goes
 // through fesetround, which also sets the unused x87 unit and costs several times more; the
@@ -64,7 +57,7 @@ struct OnPiece {
 inline OnPiece at_point(DPt p) { return {p, p, 0.0}; }
 inline OnPiece at_point(IPt p) { return at_point(to_d(p)); }
 
-// sign(d(y, [a, b]) - T) for T >= 0, certified (0 only when equal, or undecided in kMargins).
+// sign(d(y, [a, b]) - T) for T >= 0, certified (0 only when equal).
 [[nodiscard]] int compare_distance(const OnPiece& y, IPt a, IPt b, double threshold);
 // sign(|y - z| - T) for T >= 0, certified.
 [[nodiscard]] int compare_point_distance(const OnPiece& y, const OnPiece& z, double threshold);

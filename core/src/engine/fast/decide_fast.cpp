@@ -125,6 +125,30 @@ std::vector<IPt> witness_candidates(const IRegion& diff, const SegmentIndex& q_i
   return out;
 }
 
+// Vertices of Q that lie outside Q̂', farthest first: exact points of Q for
+// verify_no_vertex_witness (slivers thinner than a few grid units have no grid point deep inside
+// Q̃ to serve as a witness).
+std::vector<const ExactPoint*> vertex_candidates(const PolygonSet& q, const GridFrame& frame,
+                                                 const SegmentIndex& q_hat_prime) {
+  std::vector<std::pair<double, const ExactPoint*>> scored;
+  auto consider = [&](const Ring& ring) {
+    for (const ExactPoint& v : ring) {
+      const IPt g = frame.round(v);
+      if (q_hat_prime.winding(g) > 0) continue;
+      scored.push_back({q_hat_prime.distance(to_d(g), 1e18), &v});
+    }
+  };
+  for (const PolygonWithHoles& poly : q.polygons) {
+    consider(poly.outer);
+    for (const Ring& hole : poly.holes) consider(hole);
+  }
+  std::sort(scored.begin(), scored.end(),
+            [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::vector<const ExactPoint*> out;
+  for (std::size_t i = 0; i < scored.size() && out.size() < 6; ++i) out.push_back(scored[i].second);
+  return out;
+}
+
 // Q_s: a Douglas-Peucker copy of Q̃ with a checked distance (H(Q, Q_s) <= eta), simple and
 // consistently nested, or Q̃ itself; empty index when not even Q̃ is (then YES cannot be
 // certified: a finer precision gives a finer grid).
@@ -135,6 +159,7 @@ struct CertifiedInput {
 
 CertifiedInput certified_input(const IRings& q_grid, double tolerance, double cell) {
   CertifiedInput out;
+  if (q_grid.empty()) return out;
   // Narrow features can make a coarse simplification cross itself: retry finer.
   for (double tol = tolerance; tol >= tolerance / 8.0 && !out.index; tol /= 2.0) {
     if (auto q_dp = simplify_rings_checked(q_grid, tol)) {
@@ -151,93 +176,151 @@ CertifiedInput certified_input(const IRings& q_grid, double tolerance, double ce
   return out;
 }
 
+// One decision: the grid, Q̃ and its solid part, then the YES and NO attempts.
+class FastDecision {
+ public:
+  FastDecision(const PolygonSet& q, const DeconstructParams& params, const CancelHook& cancel,
+               const DeconstructLimits& limits, DeconstructResult& result)
+      : q_(q),
+        params_(params),
+        cancel_(cancel),
+        limits_(limits),
+        result_(result),
+        frame_(q, params),
+        r_(frame_.units(params.radius)),
+        eps_(frame_.units(params.tolerance)),
+        unit_(frame_.units(Rational(1))),
+        b_(budget(frame_.units(params.precision))),
+        grid_(frame_.round(q)),
+        q_index_(grid_.rings, eps_ / 2.0),
+        input_(certified_input(grid_.solid_rings(left_out_), b_.input, eps_ / 2.0)),
+        // Without a certifiable Q_s the chains still run on the solid rings (for NO), but YES
+        // cannot be certified.
+        q_simple_(input_.index ? input_.index->rings() : grid_.solid_rings(left_out_dummy_)),
+        sigma_(input_.eta - kInputRounding) {}
+
+  // Whether the grid lost part of Q for the certificates: polygons left out of the solid region,
+  // a solid region that is not simple, or a ring within the rounding's reach of collapsing.
+  [[nodiscard]] bool lost_features() const {
+    return !left_out_.empty() || !input_.index || grid_.has_thin_ring();
+  }
+
+  // Interior chain (Algorithm 2 with margins) on Q_s: P ⊆ inset(offset(Q_s, eps - 2m - σ),
+  // r + 2m), then the certificate of yes_certificate.hpp.
+  bool try_yes() {
+    if (!input_.index) return false;
+    const IRegion q_eps = offset_stepped(q_simple_, eps_ - 2 * b_.margin - sigma_, b_.arc_tolerance,
+                                         limits_, unit_, result_.disk_vertices);
+    check_cancel(cancel_);
+    const IRegion pi_hat = offset_stepped(flatten(q_eps), -(r_ + 2 * b_.margin + b_.arc_tolerance),
+                                          b_.arc_tolerance, limits_, unit_, result_.disk_vertices);
+    check_cancel(cancel_);
+    if (pi_hat.empty()) return false;
+    // Ring-wise simplification is usually still a valid region; otherwise let Clipper union it.
+    IRegion p = simplify_rings_only(pi_hat, b_.simplify);
+    if (p.empty() || !is_certifiable_region(SegmentIndex(flatten(p), r_ / 2.0))) {
+      p = simplify(pi_hat, b_.simplify);
+    }
+    std::vector<IPt> q_vertices;
+    for (const auto& poly : q_.polygons) q_vertices.push_back(frame_.round(poly.outer.front()));
+    const YesCheckInput in{&*input_.index,
+                           input_.eta,
+                           &q_index_,
+                           q_vertices,
+                           frame_.bounds(params_.radius),
+                           frame_.bounds(params_.tolerance),
+                           b_.margin};
+    if (!verify_yes(in, p, cancel_)) return false;
+    result_.answer = Answer::kYes;
+    result_.solution = to_polygon_set(frame_, p);
+    result_.hausdorff_bound = params_.tolerance;
+    return true;
+  }
+
+  // Exterior chain (Algorithm 3 with margins): Q̂' ⊇ offset(Π, r + eps) with room to spare; NO
+  // witnesses are proposed outside it and verified (no_certificate.hpp).
+  bool try_no() {
+    const double eps_out = eps_ + 2 * b_.margin + sigma_ + b_.arc_tolerance;
+    const IRegion q_eps_out =
+        offset_stepped(q_simple_, eps_out, b_.arc_tolerance, limits_, unit_, result_.disk_vertices);
+    check_cancel(cancel_);
+    const IRegion pi_out = offset_stepped(flatten(q_eps_out), -(r_ - 2 * b_.margin),
+                                          b_.arc_tolerance, limits_, unit_, result_.disk_vertices);
+    check_cancel(cancel_);
+    const IRegion q_prime_out =
+        offset_stepped(flatten(pi_out), r_ + eps_ + 2 * b_.margin + b_.arc_tolerance,
+                       b_.arc_tolerance, limits_, unit_, result_.disk_vertices);
+    check_cancel(cancel_);
+    const IRegion diff = difference(grid_.rings, flatten(q_prime_out));
+
+    const SegmentIndex outer_index(flatten(q_eps_out), r_ / 2.0);
+    const SegmentIndex q_prime_index(flatten(q_prime_out), r_ / 2.0);
+    const NoCheckInput no{&q_index_,
+                          &outer_index,
+                          frame_.bounds(params_.radius),
+                          frame_.bounds(params_.tolerance),
+                          b_.margin / 2.0,
+                          b_.margin / 4.0};
+    for (const IPt& w : witness_candidates(diff, q_index_, q_prime_index)) {
+      if (verify_no_witness(no, w, cancel_)) {
+        result_.answer = Answer::kNo;
+        result_.no_witness = frame_.exact(w); // a grid point of Q̃ deep enough to be in Q
+        return true;
+      }
+    }
+    for (const ExactPoint* v : vertex_candidates(q_, frame_, q_prime_index)) {
+      if (verify_no_vertex_witness(no, frame_.round(*v), cancel_)) {
+        result_.answer = Answer::kNo;
+        result_.no_witness = *v; // a vertex of Q: in Q, which is closed
+        return true;
+      }
+    }
+    return false;
+  }
+
+ private:
+  const PolygonSet& q_;
+  const DeconstructParams& params_;
+  const CancelHook& cancel_;
+  const DeconstructLimits& limits_;
+  DeconstructResult& result_;
+  const GridFrame frame_;
+  const double r_, eps_, unit_;
+  const Budget b_;
+  const GridInput grid_;
+  const SegmentIndex q_index_;
+  std::vector<std::size_t> left_out_, left_out_dummy_;
+  const CertifiedInput input_;
+  const IRings q_simple_;
+  const double sigma_;
+};
+
 } // namespace
 
-DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& params,
-                              const CancelHook& cancel, const DeconstructLimits& limits) {
+DeconstructResult decide_fast(const PolygonSet& q_any, const DeconstructParams& params,
+                              const CancelHook& cancel, const DeconstructLimits& limits,
+                              bool* lost_features) {
   const auto start = std::chrono::steady_clock::now();
   DeconstructResult result;
   result.engine = EngineKind::kFast;
   result.params = params;
-  auto finish = [&]() {
-    result.elapsed = std::chrono::duration_cast<std::chrono::nanoseconds>(
-        std::chrono::steady_clock::now() - start);
-    return result;
-  };
-
-  const GridFrame frame(q, params);
-  const double r = frame.units(params.radius);
-  const double eps = frame.units(params.tolerance);
-  const double d = frame.units(params.precision);
-  const double unit = frame.units(Rational(1));
-  const Bounds r_bounds = frame.bounds(params.radius);
-  const Bounds eps_bounds = frame.bounds(params.tolerance);
-
-  const IRings q_grid = frame.round(q);
-  if (q_grid.empty()) return finish();
-  const SegmentIndex q_index(q_grid, eps / 2.0);
-  std::vector<IPt> q_vertices;
-  for (const auto& poly : q.polygons) q_vertices.push_back(frame.round(poly.outer.front()));
-  check_cancel(cancel);
-
-  // Interior chain (Algorithm 2 with margins) on Q_s: P ⊆ inset(offset(Q_s, eps - 2m - σ), r + 2m),
-  // then the certificate of yes_certificate.hpp.
-  const Budget b = budget(d);
-  const CertifiedInput input = certified_input(q_grid, b.input, eps / 2.0);
-  // Without a certifiable Q_s the chains still run on Q̃ (for NO), but YES cannot be certified.
-  const IRings& q_simple = input.index ? input.index->rings() : q_grid;
-  const double sigma = input.eta - kInputRounding;
-  if (input.index) {
-    const IRegion q_eps = offset_stepped(q_simple, eps - 2 * b.margin - sigma, b.arc_tolerance,
-                                         limits, unit, result.disk_vertices);
-    check_cancel(cancel);
-    const IRegion pi_hat = offset_stepped(flatten(q_eps), -(r + 2 * b.margin + b.arc_tolerance),
-                                          b.arc_tolerance, limits, unit, result.disk_vertices);
-    check_cancel(cancel);
-    if (!pi_hat.empty()) {
-      // Ring-wise simplification is usually still a valid region; otherwise let Clipper union it.
-      IRegion p = simplify_rings_only(pi_hat, b.simplify);
-      if (p.empty() || !is_certifiable_region(SegmentIndex(flatten(p), r / 2.0))) {
-        p = simplify(pi_hat, b.simplify);
-      }
-      const YesCheckInput in{&*input.index, input.eta,  &q_index, q_vertices,
-                             r_bounds,      eps_bounds, b.margin};
-      if (verify_yes(in, p, cancel)) {
-        result.answer = Answer::kYes;
-        result.solution = to_polygon_set(frame, p);
-        result.hausdorff_bound = params.tolerance;
-        return finish();
-      }
-    }
-    check_cancel(cancel);
+  // The grid keeps each ring's vertex order: orient Q exactly first (deconstruct() already has).
+  PolygonSet fixed;
+  const bool needs_fix = !has_normalized_orientation(q_any);
+  if (needs_fix) {
+    fixed = q_any;
+    normalize_orientation(fixed);
   }
-
-  // Exterior chain (Algorithm 3 with margins): Q̂' ⊇ offset(Π, r + eps) with room to spare.
-  const IRegion q_eps_out = offset_stepped(q_simple, eps + 2 * b.margin + sigma + b.arc_tolerance,
-                                           b.arc_tolerance, limits, unit, result.disk_vertices);
+  FastDecision decision(needs_fix ? fixed : q_any, params, cancel, limits, result);
+  if (lost_features != nullptr) *lost_features = decision.lost_features();
   check_cancel(cancel);
-  const IRegion pi_out = offset_stepped(flatten(q_eps_out), -(r - 2 * b.margin), b.arc_tolerance,
-                                        limits, unit, result.disk_vertices);
-  check_cancel(cancel);
-  const IRegion q_prime_out =
-      offset_stepped(flatten(pi_out), r + eps + 2 * b.margin + b.arc_tolerance, b.arc_tolerance,
-                     limits, unit, result.disk_vertices);
-  check_cancel(cancel);
-  const IRegion diff = difference(q_grid, flatten(q_prime_out));
-  if (diff.empty()) return finish();
-
-  const SegmentIndex outer_index(flatten(q_eps_out), r / 2.0);
-  const SegmentIndex q_prime_index(flatten(q_prime_out), r / 2.0);
-  const NoCheckInput no{&q_index,   &outer_index,   r_bounds,
-                        eps_bounds, b.margin / 2.0, b.margin / 4.0};
-  for (const IPt& w : witness_candidates(diff, q_index, q_prime_index)) {
-    if (verify_no_witness(no, w, cancel)) {
-      result.answer = Answer::kNo;
-      result.no_witness = frame.exact(w); // a grid point of Q̃ deep enough to be in Q
-      return finish();
-    }
+  if (!decision.try_yes()) {
+    check_cancel(cancel);
+    decision.try_no();
   }
-  return finish();
+  result.elapsed = std::chrono::duration_cast<std::chrono::nanoseconds>(
+      std::chrono::steady_clock::now() - start);
+  return result;
 }
 
 } // namespace penshape::detail

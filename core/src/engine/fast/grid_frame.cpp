@@ -123,22 +123,53 @@ IPt GridFrame::round(const ExactPoint& p) const {
   return {round_scaled(p.x, k_, tx_, num, den), round_scaled(p.y, k_, ty_, num, den)};
 }
 
-IRings GridFrame::round(const PolygonSet& q) const {
-  IRings rings;
-  auto add = [&](const Ring& ring, bool outer) {
+GridInput GridFrame::round(const PolygonSet& q) const {
+  GridInput out;
+  auto add = [&](const Ring& ring) {
     IRing r;
     r.reserve(ring.size());
     for (const auto& p : ring) r.push_back(round(p));
-    // Region on the left: outers counterclockwise, holes clockwise.
-    if ((twice_area(r) > 0) != outer) std::reverse(r.begin(), r.end());
-    rings.push_back(std::move(r));
+    out.rings.push_back(std::move(r));
   };
   for (const auto& poly : q.polygons) {
-    add(poly.outer, true);
-    for (const auto& hole : poly.holes) add(hole, false);
+    out.first_ring.push_back(out.rings.size());
+    add(poly.outer);
+    for (const auto& hole : poly.holes) add(hole);
   }
-  clean_rings(rings);
-  return rings;
+  out.first_ring.push_back(out.rings.size());
+  remove_repeats(out.rings);
+  return out;
+}
+
+IRings GridInput::solid_rings(std::vector<std::size_t>& left_out) const {
+  IRings out;
+  for (std::size_t k = 0; k + 1 < first_ring.size(); ++k) {
+    bool solid = true;
+    for (std::size_t i = first_ring[k]; i < first_ring[k + 1] && solid; ++i) {
+      // Exact: the rounded ring keeps the sign of its ring in Q (outer positive, holes negative).
+      const Int128 area = rings[i].size() < 3 ? 0 : twice_area(rings[i]);
+      solid = i == first_ring[k] ? area > 0 : area < 0;
+    }
+    if (!solid) {
+      left_out.push_back(k);
+      continue;
+    }
+    for (std::size_t i = first_ring[k]; i < first_ring[k + 1]; ++i) out.push_back(rings[i]);
+  }
+  return out;
+}
+
+bool GridInput::has_thin_ring() const {
+  for (const IRing& ring : rings) {
+    double perimeter = 0.0;
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const DPt a = to_d(ring[i]), b = to_d(ring[(i + 1) % ring.size()]);
+      perimeter += std::hypot(b.x - a.x, b.y - a.y);
+    }
+    const Int128 area = ring.size() < 3 ? 0 : twice_area(ring);
+    if (std::fabs(static_cast<double>(area)) <= 4.0 * kInputRounding * perimeter) return true;
+  }
+  return false;
 }
 
 ExactPoint GridFrame::exact(IPt p) const {

@@ -31,7 +31,7 @@ int winding_number(const IRings& rings, IPt p) {
   return w;
 }
 
-void clean_rings(IRings& rings) {
+void remove_repeats(IRings& rings) {
   for (IRing& ring : rings) {
     IRing out;
     out.reserve(ring.size());
@@ -41,6 +41,10 @@ void clean_rings(IRings& rings) {
     while (out.size() > 1 && out.front() == out.back()) out.pop_back();
     ring = std::move(out);
   }
+}
+
+void clean_rings(IRings& rings) {
+  remove_repeats(rings);
   std::erase_if(rings, [](const IRing& r) { return r.size() < 3 || twice_area(r) == 0; });
 }
 

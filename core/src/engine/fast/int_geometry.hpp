@@ -52,7 +52,13 @@ Int128 twice_area(const IRing& ring);
 // gets an unspecified value: callers only ask about points away from every edge.
 int winding_number(const IRings& rings, IPt p);
 
-// Drops repeated consecutive vertices and rings with fewer than three vertices or zero area.
+// Drops repeated consecutive vertices and rings with fewer than three vertices or zero area
+// (for Clipper's candidates; the rounded input keeps every ring, see remove_repeats).
 void clean_rings(IRings& rings);
+
+// Drops repeated consecutive vertices (and a last vertex equal to the first) and keeps every
+// ring, even one that collapsed to a segment or a point: a ring thinner than a grid unit is
+// still part of Q, and its edges must stay in Q̃ (README.md, "Input rounding").
+void remove_repeats(IRings& rings);
 
 } // namespace penshape::fast

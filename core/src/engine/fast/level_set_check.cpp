@@ -97,14 +97,17 @@ bool stadium_interval(const Piece& s, DPt a, DPt b, double radius, Interval& out
 
 IPt round_point(DPt p) { return {std::llround(p.x), std::llround(p.y)}; }
 
-// The exact point c + L u / |u| enclosed in intervals (requires upward rounding).
 // sqrt of an interval under upward rounding without switching modes (CGAL::sqrt switches to
 // downward and back for the lower end): the upward-rounded root of the upper end bounds it
 // from above; the upward-rounded root of the lower end exceeds the true one by less than an
-// ulp, so one ulp down bounds it from below.
+// ulp, so one ulp down bounds it from below. The roots' operands and results pass through
+// CGAL's opaque barrier (as every Interval_nt operation does), so the compiler cannot move the
+// square roots out of the caller's UpwardRounding scope.
 IntervalNT sqrt_upward(const IntervalNT& v) {
-  const double lo = v.inf() > 0 ? std::nextafter(std::sqrt(v.inf()), 0.0) : 0.0;
-  return {lo, std::sqrt(v.sup())};
+  const double lo =
+      v.inf() > 0 ? std::nextafter(CGAL::IA_opacify(std::sqrt(CGAL::IA_opacify(v.inf()))), 0.0)
+                  : 0.0;
+  return {lo, CGAL::IA_opacify(std::sqrt(CGAL::IA_opacify(v.sup())))};
 }
 
 // The exact unit vector u / |u| enclosed in intervals (requires upward rounding).
@@ -122,11 +125,12 @@ detail::IPoint on_circle(IPt c, const detail::IPoint& n, double level) {
 }
 
 // A double inside the enclosure and an upper bound on its distance to every point of it
-// (requires upward rounding, so each operation below rounds up).
+// (requires upward rounding: interval operations, which the compiler keeps inside the scope).
 DPt represent(const detail::IPoint& e, double& deviation) {
   const DPt p{e.x.inf(), e.y.inf()};
-  const double dx = e.x.sup() - p.x, dy = e.y.sup() - p.y;
-  deviation = std::sqrt(dx * dx + dy * dy);
+  const IntervalNT dx = IntervalNT(e.x.sup()) - IntervalNT(p.x);
+  const IntervalNT dy = IntervalNT(e.y.sup()) - IntervalNT(p.y);
+  deviation = sqrt_upward(dx * dx + dy * dy).sup();
   return p;
 }
 
@@ -278,7 +282,7 @@ class Walker {
       piece.p = from.rep.p;
       piece.q = to.rep.p;
       sagitta = sagitta_bound(from.u, to.u, q_.level);
-      piece.error = sagitta + std::max(from.rep.dev, to.rep.dev);
+      piece.error = (IntervalNT(sagitta) + IntervalNT(std::max(from.rep.dev, to.rep.dev))).sup();
     }
     if (check(piece)) return true;
     if (sagitta < kMinSagitta) return false;

@@ -22,10 +22,12 @@ struct Cell {
 };
 
 // half · sqrt(2), rounded up: the cell's radius around its centre (the double nearest sqrt(2),
-// 1.4142135623730951, lies above it: its square exceeds 2 exactly).
+// 1.4142135623730951, lies above it: its square exceeds 2 exactly). An interval product: CGAL
+// keeps its operands and result behind an opaque barrier, so the multiplication cannot move out
+// of the upward-rounding scope (a plain product could, and would then round to nearest).
 double cell_radius(double half) {
   const UpwardRounding rounding;
-  return half * 1.4142135623730951;
+  return (detail::IntervalNT(half) * detail::IntervalNT(1.4142135623730951)).sup();
 }
 
 // x + d when that sum is exact in double (Fast2Sum: the rounding error of x + d is recovered
@@ -52,10 +54,13 @@ class NoWitnessCheck {
     // q ∈ Q: inside Q̃ and farther than η0 from its boundary (H(Q, Q̃) <= η0).
     if (in_.q->winding(q) <= 0) return false;
     if (!all_edges_farther(*in_.q, at_point(q), kInputRounding)) return false;
+    // disk >= r + eps.
+    return covers(q, add_up(in_.radius.hi, in_.tolerance.hi));
+  }
 
-    // disk >= r + eps: every point of D_{r+eps}(q) lies in a cell that is dropped for missing
-    // the disk or that has a witness.
-    const double disk = add_up(in_.radius.hi, in_.tolerance.hi);
+  // Every point of D_disk(q) lies in a cell that is dropped for missing the disk or that has a
+  // witness.
+  bool covers(IPt q, double disk) {
     std::vector<Cell> stack{{to_d(q), short_dyadic_at_least(disk)}};
     std::size_t visited = 0;
     while (!stack.empty()) {
@@ -115,6 +120,12 @@ class NoWitnessCheck {
 };
 
 } // namespace
+
+bool verify_no_vertex_witness(const NoCheckInput& in, IPt rounded, const CancelHook& cancel) {
+  // D_{r+eps}(v) ⊆ D_{r+eps+η0}(ṽ), as |v - ṽ| <= η0.
+  NoWitnessCheck check(in, cancel);
+  return check.covers(rounded, add_up(add_up(in.radius.hi, in.tolerance.hi), kInputRounding));
+}
 
 bool verify_no_witness(const NoCheckInput& in, IPt q, const CancelHook& cancel) {
   NoWitnessCheck check(in, cancel);

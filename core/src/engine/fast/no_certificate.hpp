@@ -27,4 +27,10 @@ struct NoCheckInput {
 // Whether q (a grid point) is a verified NO witness.
 bool verify_no_witness(const NoCheckInput& in, IPt q, const CancelHook& cancel);
 
+// Whether an exact vertex v of Q (a point of Q, which is closed, whatever Q̃ looks like near it:
+// a sliver thinner than a grid unit has no grid point inside) is a verified NO witness, given
+// its grid point ṽ = `rounded`: the disk of radius r + eps + η0 around ṽ, which contains
+// D_{r+eps}(v), is covered as above.
+bool verify_no_vertex_witness(const NoCheckInput& in, IPt rounded, const CancelHook& cancel);
+
 } // namespace penshape::fast

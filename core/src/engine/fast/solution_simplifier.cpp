@@ -110,22 +110,28 @@ std::size_t vertex_count(const IRegion& region) {
 
 } // namespace
 
-std::optional<PolygonSet> simplify_fast_solution(const PolygonSet& q,
+std::optional<PolygonSet> simplify_fast_solution(const PolygonSet& q_any,
                                                  const DeconstructParams& params,
                                                  const PolygonSet& solution,
                                                  const CancelHook& cancel) {
+  // The grid keeps each ring's vertex order: orient Q exactly first.
+  PolygonSet q = q_any;
+  normalize_orientation(q);
   const GridFrame frame(q, params);
   const double eps = frame.units(params.tolerance);
   const double d = frame.units(params.precision);
-  const IRings q_grid = frame.round(q);
-  if (q_grid.empty()) return std::nullopt;
-  // The certificate runs on Q̃ itself (η = input rounding): slower than decide_fast's simplified
-  // copy, but there is only a handful of candidates.
-  const SegmentIndex q_index(q_grid, eps / 2.0);
-  if (!is_certifiable_region(q_index)) return std::nullopt;
+  const GridInput grid = frame.round(q);
+  // The certificate's region A is the solid part of Q̃ itself (η = input rounding): slower than
+  // decide_fast's simplified copy, but there is only a handful of candidates. B is all of Q̃.
+  std::vector<std::size_t> left_out;
+  const IRings solid = grid.solid_rings(left_out);
+  if (solid.empty()) return std::nullopt;
+  const SegmentIndex a_index(solid, eps / 2.0);
+  if (!is_certifiable_region(a_index)) return std::nullopt;
+  const SegmentIndex q_index(grid.rings, eps / 2.0);
   std::vector<IPt> q_vertices;
   for (const auto& poly : q.polygons) q_vertices.push_back(frame.round(poly.outer.front()));
-  const YesCheckInput in{&q_index,
+  const YesCheckInput in{&a_index,
                          kInputRounding,
                          &q_index,
                          q_vertices,
