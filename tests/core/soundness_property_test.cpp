@@ -118,8 +118,8 @@ TEST(SoundnessProperty, DefaultEngineAgreesWithReferenceAndVerifier) {
   EXPECT_GE(both * 10, ref_dec * 9) << "the default engine must decide >= 90% of these";
 }
 
-// The ε̂ search on a sample of the cases: its solution is verified, and its lower end is not
-// contradicted by a YES of the reference engine there.
+// The ε̂ and radius searches on a sample of the cases: their solutions are verified, and the
+// reference engine gives no YES where their NO answers put the other end of the bracket.
 TEST(SoundnessProperty, ToleranceSearchBracketsConsistently) {
   const std::uint64_t n = std::max<std::uint64_t>(case_count() / 50, 6);
   for (std::uint64_t k = 0; k < n; ++k) {
@@ -140,6 +140,21 @@ TEST(SoundnessProperty, ToleranceSearchBracketsConsistently) {
       const DeconstructResult low =
           deconstruct(c.q, {r, s.eps_low, s.eps_low / 8, EngineKind::kReference});
       EXPECT_NE(low.answer, Answer::kYes) << "reference YES below eps_low, " << describe(seed, c);
+    }
+    // The radius search at this case's eps: its YES at r_low is verified, and the reference
+    // engine gives no YES at r_high when a NO (not the a-priori bound) put it there.
+    const Rational eps = c.params.tolerance;
+    const Rational bound = enclosing_radius_bound(c.q) + eps;
+    const RadiusSearchResult rs =
+        search_radius(make_decider(c.q, EngineKind::kFast), eps, bound, {r / 16, 40, 6});
+    EXPECT_LE(rs.r_low, rs.r_high) << describe(seed, c);
+    if (rs.solution_at_low.answer == Answer::kYes) {
+      EXPECT_EQ(refusal(c.q, rs.solution_at_low), "") << describe(seed, c);
+    }
+    if (rs.r_high < bound && rs.r_high > eps) {
+      const DeconstructResult high =
+          deconstruct(c.q, {rs.r_high, eps, eps / 8, EngineKind::kReference});
+      EXPECT_NE(high.answer, Answer::kYes) << "reference YES at r_high, " << describe(seed, c);
     }
   }
 }

@@ -99,13 +99,35 @@ class NoWitnessCheck {
     constexpr auto kNone = static_cast<std::uint32_t>(-1);
     std::uint32_t id = kNone;
     (void)in_.outer_offset->grid().nearest_closer_than(c, reach, id);
-    if (id == kNone) return false;
-    const DPt a = in_.outer_offset->segments()[id].da(), b = in_.outer_offset->segments()[id].db();
-    const double dx = b.x - a.x, dy = b.y - a.y;
+    if (id != kNone) {
+      const Segment& g = in_.outer_offset->segments()[id];
+      const DPt a = g.da(), b = g.db();
+      const double dx = b.x - a.x, dy = b.y - a.y;
+      const double t = detail::proposed_foot_parameter(c, a, b);
+      const double len = std::sqrt(dx * dx + dy * dy);
+      const DPt z{a.x + t * dx + in_.push * dy / len, a.y + t * dy - in_.push * dx / len};
+      if (good(round_point(z), c, reach)) return true;
+    }
+    return good(round_point(away_from_q(c)), c, reach);
+  }
+
+  // Proposal near Q̃ itself (a sliver thinner than a grid unit, which the offsets were computed
+  // without): c moved straight away from the nearest edge of Q̃ until it clears eps + η0.
+  DPt away_from_q(DPt c) const {
+    const double clear = in_.tolerance.hi + kInputRounding + in_.push;
+    constexpr auto kNone = static_cast<std::uint32_t>(-1);
+    std::uint32_t id = kNone;
+    (void)in_.q->grid().nearest_closer_than(c, clear, id);
+    if (id == kNone) return c;
+    const Segment& g = in_.q->segments()[id];
+    const DPt a = g.da(), b = g.db();
     const double t = detail::proposed_foot_parameter(c, a, b);
-    const double len = std::sqrt(dx * dx + dy * dy);
-    const DPt z{a.x + t * dx + in_.push * dy / len, a.y + t * dy - in_.push * dx / len};
-    return good(round_point(z), c, reach);
+    const DPt foot{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+    DPt dir{c.x - foot.x, c.y - foot.y};
+    if (dir.x == 0.0 && dir.y == 0.0) dir = {b.y - a.y, a.x - b.x}; // on the edge: its normal
+    const double len = std::hypot(dir.x, dir.y);
+    if (!(len > 0.0)) return c;
+    return {foot.x + dir.x / len * clear, foot.y + dir.y / len * clear};
   }
 
   bool good(IPt z, DPt c, double reach) const {
