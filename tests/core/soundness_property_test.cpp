@@ -17,6 +17,7 @@
 #include "penshape/core/search.hpp"
 #include "penshape/core/verify.hpp"
 #include "soundness_generator.hpp"
+#include "test_data.hpp"
 
 namespace penshape {
 namespace {
@@ -116,6 +117,27 @@ TEST(SoundnessProperty, DefaultEngineAgreesWithReferenceAndVerifier) {
               total, invalid, both, ref_dec);
   EXPECT_GT(total, static_cast<int>(n * 8 / 10)) << "the generator makes too many invalid cases";
   EXPECT_GE(both * 10, ref_dec * 9) << "the default engine must decide >= 90% of these";
+}
+
+// The two inputs of issue 22 (tests/data/adversarial): the former fast engine answered a false
+// YES and a false NO. Now the fast engine proves the NO itself (an exact vertex of the sliver is
+// the witness), and the YES, which needs the sliver's share of Π, comes from the reference
+// engine; each answer names its engine and is verified.
+TEST(SoundnessProperty, IssueInputsAnswerRightAndNameTheEngine) {
+  const auto dir = test::bundled_data_dir() / "adversarial";
+  const DeconstructParams params{1, Rational(1, 2), Rational(1, 16), EngineKind::kFast};
+  const PolygonSet square_and_triangle =
+      read_polygon_text(test::read_file(dir / "sliver_false_yes.txt"));
+  const DeconstructResult no = deconstruct(square_and_triangle, params);
+  EXPECT_EQ(no.answer, Answer::kNo);
+  EXPECT_EQ(no.engine, EngineKind::kFast);
+  EXPECT_EQ(refusal(square_and_triangle, no), "");
+  const PolygonSet strip_and_needle =
+      read_polygon_text(test::read_file(dir / "sliver_false_no.txt"));
+  const DeconstructResult yes = deconstruct(strip_and_needle, params);
+  EXPECT_EQ(yes.answer, Answer::kYes);
+  EXPECT_EQ(yes.engine, EngineKind::kReference);
+  EXPECT_EQ(refusal(strip_and_needle, yes), "");
 }
 
 // The ε̂ and radius searches on a sample of the cases: their solutions are verified, and the

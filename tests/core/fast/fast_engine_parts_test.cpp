@@ -55,6 +55,40 @@ TEST(FastEngineParts, GridFrameRoundTripsExactly) {
   EXPECT_LT(frame.units(p.precision), 2048.0);
 }
 
+// Issue 22: rounding keeps every ring, in the input's vertex order, even a thin triangle whose
+// rounded area has the opposite sign and one that collapses to a single grid point; only the
+// YES certificate's solid region leaves such polygons out.
+TEST(FastEngineParts, GridKeepsEveryRingInItsExactOrientation) {
+  const DeconstructParams p = params_of(1, Rational(1, 2), Rational(1, 16));
+  const Rational u(1, 1 << 14); // the grid unit for delta = 1/16 (2^10 units per delta)
+  auto at = [&](const Rational& x0, const Rational& y0, double gx, double gy) {
+    return ExactPoint{x0 + Rational(gx) * u, y0 + Rational(gy) * u};
+  };
+  PolygonSet q;
+  q.polygons.push_back({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {}});
+  // Counterclockwise exactly (cross = 200 * 0.46875 - 0.875 * 100 > 0); rounded, (0, 0),
+  // (200, 1), (100, 0) is clockwise.
+  q.polygons.push_back({{at(20, 5, 0, 0), at(20, 5, 200, 0.875), at(20, 5, 100, 0.46875)}, {}});
+  // A triangle a tenth of a unit wide: every vertex rounds to the same grid point.
+  q.polygons.push_back({{at(30, 5, 0, 0), at(30, 5, 0.125, 0), at(30, 5, 0, 0.125)}, {}});
+  ASSERT_TRUE(has_normalized_orientation(q));
+  const fast::GridFrame frame(q, p);
+  ASSERT_EQ(frame.scale_exponent(), 14);
+  const fast::GridInput grid = frame.round(q);
+  ASSERT_EQ(grid.rings.size(), 3U);
+  EXPECT_EQ(grid.first_ring, (std::vector<std::size_t>{0, 1, 2, 3}));
+  const IRing& thin = grid.rings[1];
+  ASSERT_EQ(thin.size(), 3U);
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(thin[i], frame.round(q.polygons[1].outer[i]));
+  EXPECT_LT(fast::twice_area(thin), 0) << "the rounding flips this ring; it must not be reversed";
+  EXPECT_EQ(grid.rings[2].size(), 1U) << "a ring that collapses to a point is kept";
+  std::vector<std::size_t> left_out;
+  const IRings solid = grid.solid_rings(left_out);
+  EXPECT_EQ(solid.size(), 1U);
+  EXPECT_EQ(left_out, (std::vector<std::size_t>{1, 2}));
+  EXPECT_TRUE(grid.has_thin_ring());
+}
+
 TEST(FastEngineParts, CheckedSimplificationStaysWithinTolerance) {
   std::mt19937 rng(7);
   std::uniform_int_distribution<int> jitter(-40, 40);
