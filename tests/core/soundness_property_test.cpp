@@ -124,20 +124,21 @@ TEST(SoundnessProperty, DefaultEngineAgreesWithReferenceAndVerifier) {
 // the witness), and the YES, which needs the sliver's share of Π, comes from the reference
 // engine; each answer names its engine and is verified.
 TEST(SoundnessProperty, IssueInputsAnswerRightAndNameTheEngine) {
-  const auto dir = test::bundled_data_dir() / "adversarial";
   const DeconstructParams params{1, Rational(1, 2), Rational(1, 16), EngineKind::kFast};
-  const PolygonSet square_and_triangle =
-      read_polygon_text(test::read_file(dir / "sliver_false_yes.txt"));
-  const DeconstructResult no = deconstruct(square_and_triangle, params);
-  EXPECT_EQ(no.answer, Answer::kNo);
-  EXPECT_EQ(no.engine, EngineKind::kFast);
-  EXPECT_EQ(refusal(square_and_triangle, no), "");
-  const PolygonSet strip_and_needle =
-      read_polygon_text(test::read_file(dir / "sliver_false_no.txt"));
-  const DeconstructResult yes = deconstruct(strip_and_needle, params);
-  EXPECT_EQ(yes.answer, Answer::kYes);
-  EXPECT_EQ(yes.engine, EngineKind::kReference);
-  EXPECT_EQ(refusal(strip_and_needle, yes), "");
+  const struct {
+    const char* file;
+    Answer answer;
+    EngineKind engine;
+  } cases[] = {{"sliver_false_yes.txt", Answer::kNo, EngineKind::kFast},
+               {"sliver_false_no.txt", Answer::kYes, EngineKind::kReference}};
+  for (const auto& c : cases) {
+    const PolygonSet q =
+        read_polygon_text(test::read_file(test::bundled_data_dir() / "adversarial" / c.file));
+    const DeconstructResult res = deconstruct(q, params);
+    EXPECT_EQ(res.answer, c.answer) << c.file;
+    EXPECT_EQ(res.engine, c.engine) << c.file;
+    EXPECT_EQ(refusal(q, res), "") << c.file;
+  }
 }
 
 // The ε̂ and radius searches on a sample of the cases: their solutions are verified, and the

@@ -193,10 +193,8 @@ class FastDecision {
         b_(budget(frame_.units(params.precision))),
         grid_(frame_.round(q)),
         q_index_(grid_.rings, eps_ / 2.0),
-        input_(certified_input(grid_.solid_rings(left_out_), b_.input, eps_ / 2.0)),
-        // Without a certifiable Q_s the chains still run on the solid rings (for NO), but YES
-        // cannot be certified.
-        q_simple_(input_.index ? input_.index->rings() : grid_.solid_rings(left_out_dummy_)),
+        solid_(grid_.solid_rings(left_out_)),
+        input_(certified_input(solid_, b_.input, eps_ / 2.0)),
         sigma_(input_.eta - kInputRounding) {}
 
   // Whether the grid lost part of Q for the certificates: polygons left out of the solid region,
@@ -209,8 +207,8 @@ class FastDecision {
   // r + 2m), then the certificate of yes_certificate.hpp.
   bool try_yes() {
     if (!input_.index) return false;
-    const IRegion q_eps = offset_stepped(q_simple_, eps_ - 2 * b_.margin - sigma_, b_.arc_tolerance,
-                                         limits_, unit_, result_.disk_vertices);
+    const IRegion q_eps = offset_stepped(q_simple(), eps_ - 2 * b_.margin - sigma_,
+                                         b_.arc_tolerance, limits_, unit_, result_.disk_vertices);
     check_cancel(cancel_);
     const IRegion pi_hat = offset_stepped(flatten(q_eps), -(r_ + 2 * b_.margin + b_.arc_tolerance),
                                           b_.arc_tolerance, limits_, unit_, result_.disk_vertices);
@@ -241,8 +239,8 @@ class FastDecision {
   // witnesses are proposed outside it and verified (no_certificate.hpp).
   bool try_no() {
     const double eps_out = eps_ + 2 * b_.margin + sigma_ + b_.arc_tolerance;
-    const IRegion q_eps_out =
-        offset_stepped(q_simple_, eps_out, b_.arc_tolerance, limits_, unit_, result_.disk_vertices);
+    const IRegion q_eps_out = offset_stepped(q_simple(), eps_out, b_.arc_tolerance, limits_, unit_,
+                                             result_.disk_vertices);
     check_cancel(cancel_);
     const IRegion pi_out = offset_stepped(flatten(q_eps_out), -(r_ - 2 * b_.margin),
                                           b_.arc_tolerance, limits_, unit_, result_.disk_vertices);
@@ -289,10 +287,16 @@ class FastDecision {
   const Budget b_;
   const GridInput grid_;
   const SegmentIndex q_index_;
-  std::vector<std::size_t> left_out_, left_out_dummy_;
+  std::vector<std::size_t> left_out_;
+  const IRings solid_;
   const CertifiedInput input_;
-  const IRings q_simple_;
   const double sigma_;
+
+  // Q_s, the region the chains offset; without a certifiable Q_s the chains still run on the
+  // solid rings (for NO), but YES cannot be certified.
+  [[nodiscard]] const IRings& q_simple() const {
+    return input_.index ? input_.index->rings() : solid_;
+  }
 };
 
 } // namespace
