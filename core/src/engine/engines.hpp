@@ -15,9 +15,10 @@ DeconstructResult decide_reference(const PolygonSet& q, const DeconstructParams&
                                    const CancelHook& cancel, const DeconstructLimits& limits);
 
 // The default engine: the same certified answers, much faster. `lost_features` (optional) is set
-// when its integer grid could not represent all of Q for the YES certificate (a feature thinner
-// than a grid unit, so a sliver ring or a non-simple rounding): its UNDECIDED may then be one
-// the reference engine settles, and deconstruct() asks it.
+// when the answer is UNDECIDED and the integer grid could not represent all of Q for the
+// certificates (a feature thinner than a grid unit: a sliver ring, a non-simple rounding, a ring
+// the rounding nearly collapses): that UNDECIDED may be one the reference engine settles, and
+// deconstruct() asks it.
 DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& params,
                               const CancelHook& cancel, const DeconstructLimits& limits,
                               bool* lost_features = nullptr);

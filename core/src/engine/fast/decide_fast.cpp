@@ -316,11 +316,14 @@ DeconstructResult decide_fast(const PolygonSet& q_any, const DeconstructParams& 
     normalize_orientation(fixed);
   }
   FastDecision decision(needs_fix ? fixed : q_any, params, cancel, limits, result);
-  if (lost_features != nullptr) *lost_features = decision.lost_features();
   check_cancel(cancel);
   if (!decision.try_yes()) {
     check_cancel(cancel);
     decision.try_no();
+  }
+  // Only an UNDECIDED answer needs to know (the thin-ring scan is not free).
+  if (lost_features != nullptr) {
+    *lost_features = result.answer == Answer::kUndecided && decision.lost_features();
   }
   result.elapsed = std::chrono::duration_cast<std::chrono::nanoseconds>(
       std::chrono::steady_clock::now() - start);
