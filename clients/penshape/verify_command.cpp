@@ -37,11 +37,13 @@ constexpr const char* kHelp =
     "Exit codes: 0 every answer verified, 1 some answer not verified, 2 bad input.\n\n"
     "Recognition answers: FILE is the stroke file `penshape recognize FILE --json` read and\n"
     "ANSWER.json what it printed (one object per shape or group; the strokes are found by\n"
-    "\"lines\"). eps and r come from each answer's certificate. The clean shape is rebuilt from\n"
-    "its class and params (curves as chord polylines with a derived deviation) and the paths are\n"
-    "proven within eps of each other (which bounds the inks, r-disks on both, by the same):\n"
-    "refuted names a point of one ink farther than eps from the other; unproven says where the\n"
-    "paths are not within eps. Freeform answers claim nothing and are accepted.";
+    "\"lines\"). eps, r and the bound come from each answer's certificate: the claim is\n"
+    "H(inks) <= bound <= eps, so a bound above eps is refuted. The clean shape is rebuilt from\n"
+    "its class and params (curves as chord polylines with a derived deviation; a curved arrow\n"
+    "shaft as the 12 chords that were certified) and the paths are proven within the bound of\n"
+    "each other (which bounds the inks, r-disks on both, by the same): refuted names a point of\n"
+    "one ink farther than the bound from the other; unproven says where the paths are not within\n"
+    "it. Freeform answers claim nothing and are accepted.";
 
 std::string read_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

@@ -104,6 +104,8 @@ RecognitionAnswer recognition_from_json(const JsonValue& answer) {
   out.claim.epsilon = number(answer_field(cert, "epsilon", "certificate."), "certificate.epsilon");
   out.claim.pen_radius =
       number(answer_field(cert, "pen_radius", "certificate."), "certificate.pen_radius");
+  // The claim is H <= bound <= eps: the bound is checked, not only eps.
+  out.claim.bound = number(answer_field(cert, "bound", "certificate."), "certificate.bound");
   return out;
 }
 

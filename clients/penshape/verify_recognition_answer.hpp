@@ -1,7 +1,7 @@
 #pragma once
 // Reading a `recognize --json` answer back for the verifier: the class, the shape's parameters
-// (printed as shortest round-trip decimals, so read back to the same doubles), epsilon and the
-// pen radius from its certificate, and the stroke lines it covers.
+// (printed as shortest round-trip decimals, so read back to the same doubles), epsilon, the pen
+// radius and the bound from its certificate, and the stroke lines it covers.
 #include <cstddef>
 #include <vector>
 

@@ -64,6 +64,21 @@ std::size_t polygon_vertices(double r, double allowed) {
   return k;
 }
 
+// Clipper's own arithmetic in a round join or end (ClipperOffset::DoRound): the unit vector is
+// turned step by step by multiplying with the step's double cos and sin, so each step errs by a
+// few ulps in its length and direction (16 ulps, 16 * 2^-53, is generous: two products and a
+// sum per coordinate, the step's sin and cos within 2 ulps). After n steps an arc vertex is off
+// the true circle by at most 16 n 2^-53 r, and the last chord, spanning that much more angle,
+// gains as much sagitta again: 32 n 2^-53 r. A join or end turns at most half a turn, so
+// n <= steps / 2 + 1 with Clipper's steps per turn pi / acos(1 - y / r), y = min(arc tolerance,
+// r / 4) (both in the same unit; Clipper caps steps lower still for tiny radii). +2 covers the
+// rounding of this estimate.
+double clipper_turning(double r, double arc_tolerance) {
+  const double ratio = std::min(arc_tolerance / r, 0.25);
+  const double steps = std::numbers::pi / std::acos(1.0 - ratio);
+  return up(up(up(steps / 2 + 2) * 32.0 * 0x1p-53) * r);
+}
+
 // Largest power of two <= v (v > 0), as 2^exponent.
 int floor_log2(double v) { return static_cast<int>(std::floor(std::log2(v))); }
 
@@ -234,9 +249,13 @@ InkPolygon ink_polygon(const std::vector<std::vector<InkSample>>& strokes,
   InkPolygon result;
   const std::size_t k = polygon_vertices(r_max, max_error / 2);
   const double tau = max_error / 4;
-  // Rounding: up to three times half a grid diagonal (input points, offset vertices, union
-  // intersections), so 1.5·sqrt(2)·grid <= max_error / 4.
-  result.grid = std::ldexp(1.0, floor_log2(max_error / 4 / (1.5 * std::numbers::sqrt2)));
+  // Rounding onto the grid moves a boundary by at most half a grid diagonal each time: a
+  // stroke offset by Clipper is rounded as input points, as offset vertices and in the offset's
+  // own union of its outlines; the union of several strokes then rounds its new intersections
+  // once more. So three roundings for one stroke, four for several (a stroke of hulls has two:
+  // disk vertices and the union), and halves·sqrt(2)·grid <= max_error / 4.
+  const double halves = strokes.size() > 1 ? 4.0 : 3.0;
+  result.grid = std::ldexp(1.0, floor_log2(max_error / 4 / (halves / 2 * std::numbers::sqrt2)));
   const Grid grid{1.0 / result.grid};
   if ((extent + r_max) * grid.scale > kMaxGridUnits) {
     throw InvalidInput("coordinates too large for the requested precision (more than 10^18 " +
@@ -253,7 +272,8 @@ InkPolygon ink_polygon(const std::vector<std::vector<InkSample>>& strokes,
   // Clipper rounds the number of arc steps, so a last chord may span 1.5 nominal steps: its
   // sagitta is at most 2.25 times the arc tolerance.
   const double arc_tolerance = max_error / 2 / 2.25;
-  const double offset_bound = sum_up({max_error / 2, tau, up(1.5 * diagonal), arithmetic});
+  const double offset_bound = sum_up({max_error / 2, tau, up(halves / 2 * diagonal), arithmetic,
+                                      clipper_turning(r_max, arc_tolerance)});
 
   std::vector<double> cos_k(k);
   std::vector<double> sin_k(k);

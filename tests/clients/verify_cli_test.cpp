@@ -185,6 +185,17 @@ TEST(VerifyCli, CorruptedRecognitionsFail) {
                    "\"params\":{", "\"params\":{\"vertices\":[[90,191],[182,191]],"));
   EXPECT_EQ(swapped.exit_code, 1) << swapped.out;
   EXPECT_NE(swapped.out.find("segment refuted"), std::string::npos) << swapped.out;
+  // The certificate's bound lowered to a quarter (issue #22: verify checked only eps): the claim
+  // H <= bound is what is verified, so this fails; a bound raised above eps is refuted.
+  const auto b = answer.find("\"bound\":", answer.find("\"certificate\":{")) + 8;
+  const auto b_end = answer.find(',', b);
+  const double bound = std::stod(answer.substr(b, b_end - b));
+  const Result lowered =
+      run(answer.substr(0, b) + std::to_string(bound / 4) + answer.substr(b_end));
+  EXPECT_EQ(lowered.exit_code, 1) << lowered.out;
+  const Result raised = run(answer.substr(0, b) + "1000" + answer.substr(b_end));
+  EXPECT_EQ(raised.exit_code, 1) << raised.out;
+  EXPECT_NE(raised.out.find("exceeds eps"), std::string::npos) << raised.out;
   // Bad input: no certificate, an unknown class, a line with no stroke.
   EXPECT_EQ(run(replaced(answer, "\"certificate\":{", "\"certificat\":{")).exit_code, 2);
   EXPECT_EQ(run(replaced(answer, "\"class\":\"circle\"", "\"class\":\"blob\"")).exit_code, 2);

@@ -189,6 +189,24 @@ TEST(InkPolygon, SeveralStrokesGiveSeveralComponents) {
   }
 }
 
+// The grid roundings counted in the bound (issue #22): one stroke offset by Clipper is rounded
+// three times (input, offset vertices, the offset's own union), a union of crossing strokes a
+// fourth time (the union's intersections). Each counts half a grid diagonal, on top of the
+// disk's max_error / 2 and the simplification's max_error / 4; the total stays <= max_error.
+TEST(InkPolygon, BoundCountsEveryGridRounding) {
+  const double me = 0.02; // the default max_error for radius 1
+  const std::vector<PointD> a{{0, 0}, {20, 3}, {40, 0}}, b{{10, -10}, {12, 10}};
+  const InkPolygon one = ink_polygon(with_radius(a, 1.0), {.radius_mm = 1.0});
+  const InkPolygon both =
+      ink_polygon(std::vector{with_radius(a, 1.0), with_radius(b, 1.0)}, {.radius_mm = 1.0});
+  ASSERT_EQ(both.region.polygons.size(), 1U); // they cross
+  const double half_diagonal = std::numbers::sqrt2 / 2;
+  EXPECT_GE(one.hausdorff_bound, me / 2 + me / 4 + 3 * half_diagonal * one.grid);
+  EXPECT_GE(both.hausdorff_bound, me / 2 + me / 4 + 4 * half_diagonal * both.grid);
+  EXPECT_LE(one.hausdorff_bound, me);
+  EXPECT_LE(both.hausdorff_bound, me);
+}
+
 // Signed distance to the region swept by disks of linearly varying radius: the union over t of
 // D_{r(t)}(p(t)) is exactly the hull of the end disks, and |y - p(t)| - r(t) is convex in t, so
 // a ternary search finds its minimum per segment.

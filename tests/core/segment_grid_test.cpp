@@ -289,6 +289,40 @@ TEST(SegmentGrid, EmptyAndSinglePoint) {
   EXPECT_FALSE(dot.maybe_within(Plain{5, 7}, std::nextafter(5.0, 0.0)));
 }
 
+// A vertical segment x = b and a point just under `radius` to its right, in a grid anchored at
+// `origin` (a point segment there, another 10 beyond b) with cells of `cell`: maybe_within must say
+// "maybe". Returns false when the grid missed it (the exact distance is checked to be below the
+// radius).
+bool finds_near_tie(double origin, double cell, double b, double radius) {
+  double px = std::nextafter(b + radius, -INFINITY);
+  while (Rational(px) - Rational(b) >= Rational(radius)) px = std::nextafter(px, -INFINITY);
+  const std::vector<DoubleSeg> segs{
+      {{origin, 0}, {origin, 0}}, {{b, 0}, {b, 1}}, {{b + 10, 2}, {b + 10, 2}}};
+  const detail::SegmentGrid<DoubleSeg> grid(segs, cell, std::size_t{1} << 24);
+  return grid.maybe_within(Plain{px, 0.5}, radius);
+}
+
+// Segments on the edge of a cell: maybe_within rounds upwards while the segments were filed to
+// nearest, so a cell computed for the query box could start past the segment's cell (issue #22:
+// a segment at 0.49999999999994 < 0.5 was reported farther). The reported case, then random
+// ones a few ulps around cell lines.
+TEST(SegmentGrid, MaybeWithinNeverMissesASegmentOnACellLine) {
+  EXPECT_TRUE(finds_near_tie(-401.42944180423063, 0.37566325981756155, 438.55360714783694, 0.5));
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int missed = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const double origin = -1000.0 * u(rng), cell = 0.3 + u(rng);
+    const int k = 1 + static_cast<int>(u(rng) * 1e5);
+    double b = origin + k * cell; // a cell line, then a few ulps either side
+    const int jitter = static_cast<int>(u(rng) * 8) - 4;
+    for (int j = 0; j < std::abs(jitter); ++j)
+      b = std::nextafter(b, jitter < 0 ? -INFINITY : INFINITY);
+    if (!finds_near_tie(origin, cell, b, 0.5)) ++missed;
+  }
+  EXPECT_EQ(missed, 0);
+}
+
 // The fast engine's layer: winding numbers by the grid's row slabs against the plain count over
 // every edge (int_geometry's winding_number).
 TEST(SegmentGrid, FastWindingSlabsMatchAllEdges) {

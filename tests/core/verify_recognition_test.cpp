@@ -142,11 +142,71 @@ TEST(VerifyRecognition, ArrowWithCurvedShaft) {
   ShapeParams p;
   p.vertices = {{0, 0}, {100, 0}, {90, 8}, {90, -8}};
   p.shaft_bulge = 10;
-  EXPECT_EQ(status(stroke, claim(ShapeClass::kArrow, p, 0.05)), VerifyStatus::kVerified);
+  // The clean shaft is its 12 chords (what the recognizer certifies): the arc strays up to
+  // 130 (1 - cos(0.033)) = 0.07 from them.
+  EXPECT_EQ(status(stroke, claim(ShapeClass::kArrow, p, 0.1)), VerifyStatus::kVerified);
+  EXPECT_NE(status(stroke, claim(ShapeClass::kArrow, p, 0.05)), VerifyStatus::kVerified);
   p.shaft_bulge = -10; // bent the other way: 20 off at the middle
-  EXPECT_EQ(status(stroke, claim(ShapeClass::kArrow, p, 0.05)), VerifyStatus::kRefuted);
+  EXPECT_EQ(status(stroke, claim(ShapeClass::kArrow, p, 0.1)), VerifyStatus::kRefuted);
   p.shaft_bulge = 0; // straight: 10 off
   EXPECT_NE(status(stroke, claim(ShapeClass::kArrow, p, 5.0)), VerifyStatus::kVerified);
+}
+
+// The same shaft drawn along its 12 chords (vertices at equal angle steps on the arc, computed
+// here): that is the clean shape the recognizer certified, so it verifies with a tiny eps, where
+// a check against the exact arc (0.07 away at the chords' middles) cannot (issue #22).
+TEST(VerifyRecognition, CurvedShaftIsCheckedAsItsCertifiedChords) {
+  const double a0 = std::atan2(120.0, -50.0), a1 = std::atan2(120.0, 50.0);
+  std::vector<PointD> chords;
+  for (int k = 0; k <= 12; ++k) {
+    const double t = a0 + (a1 - a0) * k / 12.0;
+    chords.push_back({50 + 130 * std::cos(t), -120 + 130 * std::sin(t)});
+  }
+  chords.front() = {0, 0};
+  chords.back() = {100, 0};
+  std::vector<PointD> stroke;
+  for (std::size_t i = 0; i + 1 < chords.size(); ++i) {
+    for (int k = 0; k < 20; ++k) {
+      const double f = k / 20.0;
+      stroke.push_back({chords[i].x + f * (chords[i + 1].x - chords[i].x),
+                        chords[i].y + f * (chords[i + 1].y - chords[i].y)});
+    }
+  }
+  stroke.push_back({100, 0});
+  for (const PointD& v : std::vector<PointD>{{90, 8}, {100, 0}, {90, -8}}) stroke.push_back(v);
+  ShapeParams p;
+  p.vertices = {{0, 0}, {100, 0}, {90, 8}, {90, -8}};
+  p.shaft_bulge = 10;
+  EXPECT_EQ(status(stroke, claim(ShapeClass::kArrow, p, 0.01)), VerifyStatus::kVerified);
+}
+
+// The answer's own bound is the claim: H <= bound <= eps (issue #22). A stroke 1 from the
+// circle verifies with bound 1.2 under eps 2; a bound of 0.8 is refuted (a stroke point is 1
+// from the circle, beyond 0.8 + r = 0.9), one of 0.95 is not verified, and a bound above eps is
+// refuted outright.
+TEST(VerifyRecognition, TheAnswersBoundIsChecked) {
+  const PointD c{100, 50};
+  const auto stroke = ellipse_stroke(c, 40, 40, 0, 0, 2 * kPi, 400, 1.0);
+  RecognitionClaim ok = claim(ShapeClass::kCircle, circle_params(c, 40), 2.0, 0.1);
+  ok.bound = 1.2;
+  EXPECT_EQ(status(stroke, ok), VerifyStatus::kVerified);
+  RecognitionClaim low = ok;
+  low.bound = 0.8;
+  EXPECT_EQ(status(stroke, low), VerifyStatus::kRefuted);
+  RecognitionClaim tight = ok;
+  tight.bound = 0.95; // within r of the truth: the paths are not within it, the inks may be
+  EXPECT_NE(status(stroke, tight), VerifyStatus::kVerified);
+  RecognitionClaim above = ok;
+  above.bound = 2.5;
+  const VerifyReport r = verify_recognition({stroke}, above);
+  EXPECT_EQ(r.status, VerifyStatus::kRefuted);
+  EXPECT_NE(r.message.find("exceeds eps"), std::string::npos) << r.message;
+  RecognitionClaim negative = ok;
+  negative.bound = -0.1;
+  EXPECT_EQ(status(stroke, negative), VerifyStatus::kRefuted);
+  RecognitionClaim nan = ok;
+  nan.bound = std::nan("");
+  EXPECT_THROW(status(stroke, nan), InvalidInput);
 }
 
 // Points every `step` along the polyline v (its vertices included).

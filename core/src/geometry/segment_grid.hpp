@@ -7,11 +7,16 @@
 // ones (maybe_within, for_each_not_farther) with outward rounding and intervals. Header-only so
 // that the engines' hot loops inline. Internal to core.
 //
-// Why no cell is ever missed: a coordinate's cell is floor((v - origin) / cell), a monotone
-// function of v in any one rounding mode. A segment whose box meets the query box has
-// lo <= query_hi and hi >= query_lo on each axis, so its cell range meets the query's. Every
-// cell computation therefore runs in the default rounding mode (the certified queries compute
-// their boxes before switching to upward rounding).
+// Why no cell is ever missed: the exact cell of a coordinate, k(v) = floor((v - origin) / cell)
+// in real arithmetic (clamped into the grid), is monotone in v. Doubles compute (v - origin) /
+// cell with some rounding mode that the caller chose (the certified queries run under upward
+// rounding, everything else to nearest), so they can land on either side of a cell line; instead
+// of trusting one mode, every coordinate is given the span of cells [k_lo(v), k_hi(v)] that
+// holds k(v) in every rounding mode (cell_span, the error bound derived there). A segment is
+// filed in the spans of its box and a query scans the spans of its box. A segment whose box
+// meets the query box has a coordinate v in both on each axis; k(v) lies between k(lo) and
+// k(hi) for both boxes, hence in both spans: a segment is never missed, whatever the modes of
+// filing and query.
 //
 // Threads: the queries built on visit_near (any_within, maybe_within, nearest_above) only read;
 // those built on find_near (for_each_near, distance, nearest_closer_than, for_each_not_farther)
@@ -73,8 +78,10 @@ class SegmentGrid {
   template <class F>
   bool visit_near(const GridBox& box, F&& f) const {
     if (segments_.empty() || !(box.lo_x <= box.hi_x) || !(box.lo_y <= box.hi_y)) return false;
-    const int x0 = clamp_cell(box.lo_x, origin_x_, nx_), x1 = clamp_cell(box.hi_x, origin_x_, nx_);
-    const int y0 = clamp_cell(box.lo_y, origin_y_, ny_), y1 = clamp_cell(box.hi_y, origin_y_, ny_);
+    const int x0 = cell_span(box.lo_x, origin_x_, nx_).lo;
+    const int x1 = cell_span(box.hi_x, origin_x_, nx_).hi;
+    const int y0 = cell_span(box.lo_y, origin_y_, ny_).lo;
+    const int y1 = cell_span(box.hi_y, origin_y_, ny_).hi;
     for (int gy = y0; gy <= y1; ++gy) {
       const std::size_t base = static_cast<std::size_t>(gy) * static_cast<std::size_t>(nx_);
       for (int gx = x0; gx <= x1; ++gx) {
@@ -221,6 +228,30 @@ class SegmentGrid {
     const double c = std::floor((v - origin) / cell_);
     return static_cast<std::int64_t>(std::clamp(c, -1e15, 1e15));
   }
+  // Cells [lo, hi], clamped into [0, n - 1], holding the exact cell floor((v - origin) / cell)
+  // of v in every rounding mode. In any IEEE mode each of the two operations returns its exact
+  // value times (1 + d) with |d| < 2^-52 (a subnormal difference is exact; a quotient that
+  // underflows is off by less than 2^-1074), so the computed q and the exact t satisfy
+  // |q - t| <= 2^-50 |t| + 2^-1074 <= 2^-49 |q| + 2^-1073. The slack |q| 2^-48 + 2^-1000 exceeds
+  // that by more than the rounding of q -/+ slack (below 2^-51 |q| + 2^-1074 in any mode), so
+  // floor(q - slack) <= floor(t) <= floor(q + slack). Clamping is monotone. A v whose q
+  // overflows is beyond the grid's last cell (or before its first) in every mode.
+  struct Span {
+    int lo, hi;
+  };
+  [[nodiscard]] Span cell_span(double v, double origin, int n) const {
+    const double q = (v - origin) / cell_;
+    if (std::isnan(q)) return {0, n - 1}; // not a coordinate: every cell
+    if (std::isinf(q)) return q > 0 ? Span{n - 1, n - 1} : Span{0, 0};
+    const double slack = std::abs(q) * 0x1p-48 + 0x1p-1000;
+    return {clamp_index(q - slack, n), clamp_index(q + slack, n)};
+  }
+  static int clamp_index(double q, int n) {
+    if (!(q < static_cast<double>(n - 1))) return n - 1;
+    return q > 0 ? static_cast<int>(std::floor(q)) : 0;
+  }
+  // The same cell to nearest (the fast engine's winding slabs, whose rows are filed and queried
+  // with it in the default rounding mode).
   [[nodiscard]] int clamp_cell(double v, double origin, int n) const {
     const double c = std::floor((v - origin) / cell_);
     return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(n - 1)));
@@ -265,10 +296,10 @@ void SegmentGrid<Segment, Traits>::build(double cell, std::size_t max_cells) {
   auto visit = [&](auto&& on_cell) {
     for (std::size_t s = 0; s < segments_.size(); ++s) {
       const Point2<double> a = source(segments_[s]), b = target(segments_[s]);
-      const int x0 = clamp_cell(std::min(a.x, b.x), origin_x_, nx_);
-      const int x1 = clamp_cell(std::max(a.x, b.x), origin_x_, nx_);
-      const int y0 = clamp_cell(std::min(a.y, b.y), origin_y_, ny_);
-      const int y1 = clamp_cell(std::max(a.y, b.y), origin_y_, ny_);
+      const int x0 = cell_span(std::min(a.x, b.x), origin_x_, nx_).lo;
+      const int x1 = cell_span(std::max(a.x, b.x), origin_x_, nx_).hi;
+      const int y0 = cell_span(std::min(a.y, b.y), origin_y_, ny_).lo;
+      const int y1 = cell_span(std::max(a.y, b.y), origin_y_, ny_).hi;
       for (int gy = y0; gy <= y1; ++gy) {
         const std::size_t base = static_cast<std::size_t>(gy) * static_cast<std::size_t>(nx_);
         for (int gx = x0; gx <= x1; ++gx) on_cell(base + static_cast<std::size_t>(gx), s);

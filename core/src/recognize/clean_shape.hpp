@@ -22,9 +22,12 @@ struct CleanShape {
   double t0 = 0.0;                       // parameter range [t0, t0 + sweep]; sweep
   double sweep = 2.0 * std::numbers::pi; // may be negative; |sweep| = 2 pi: full curve
 
-  [[nodiscard]] bool full_curve() const {
-    return std::abs(std::abs(sweep) - 2.0 * std::numbers::pi) < 1e-12;
-  }
+  // The whole curve, decided exactly: 2 pi is irrational, the double D nearest it lies below it
+  // and the next double above it. So |sweep| > D covers a full turn exactly; |sweep| == D (how
+  // every full circle and ellipse is written) misses an arc of 2 pi - D < 2.5e-16 rad, less than
+  // the end rounding CertifiedShape::end_slack already adds for a full curve (speed times
+  // ulp(D), about 8.9e-16), so it is taken as the whole curve. Anything shorter is an arc.
+  [[nodiscard]] bool full_curve() const { return std::abs(sweep) >= 2.0 * std::numbers::pi; }
   [[nodiscard]] PointD at(double t) const; // curve point at parameter t (not for kPolyline)
   // The path sampled with arc-length steps <= h (polyline vertices always included).
   [[nodiscard]] std::vector<PointD> sample(double h) const;

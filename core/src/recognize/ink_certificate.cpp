@@ -57,8 +57,10 @@ class ShapeDistance {
     sin_ = detail::enclose_sin(shape.rotation);
   }
 
-  // >= d(g, C).
+  // >= d(g, C'), C' the curve with its end parameter rounded (the foot proposed lies on C').
   [[nodiscard]] double upper(PointD g) const { return certified_.upper(enclose(g), g); }
+  // >= H(C, C'): d(g, C) <= upper(g) + end_slack().
+  [[nodiscard]] double end_slack() const { return certified_.end_slack(); }
 
   // False only when d(g, C) > rho, certainly.
   [[nodiscard]] bool maybe_within(PointD g, double rho) const {
@@ -201,7 +203,46 @@ double vertex_rounding(const ExactPoint& v, PointD d) {
   return CGAL::sqrt(CGAL::square(dx) + CGAL::square(dy)).sup();
 }
 
+// One axis of the grid: the coordinates o + i h over i0..i1 (i0 lowered and i1 raised until
+// they cover [lo, hi] exactly), and the widest gap between neighbours, rounded up.
+std::vector<double> axis_lines(double o, double h, double lo, double hi, std::int64_t& first,
+                               double& widest) {
+  const auto line = [&](std::int64_t i) { return o + static_cast<double>(i) * h; };
+  auto i0 = static_cast<std::int64_t>(std::floor((lo - o) / h));
+  auto i1 = static_cast<std::int64_t>(std::ceil((hi - o) / h));
+  while (line(i0) > lo) --i0;
+  while (line(i1) < hi) ++i1;
+  first = i0;
+  std::vector<double> out;
+  out.reserve(static_cast<std::size_t>(i1 - i0 + 1));
+  for (std::int64_t i = i0; i <= i1; ++i) out.push_back(line(i));
+  const Guard rounding;
+  for (std::size_t k = 1; k < out.size(); ++k) {
+    widest = std::max(widest, (IntervalNT(out[k]) - IntervalNT(out[k - 1])).sup());
+  }
+  return out;
+}
+
 } // namespace
+
+// The grid points are o + i h rounded (twice: the product, then the sum), so the gaps between
+// neighbours are h only up to rounding, and how far they stray depends on the magnitudes of
+// both i h and the sum (a bound from the largest coordinate alone fell short of the true gap).
+// Instead of bounding the rounding, the gaps are measured: with the lines x_0 <= ... <= x_m and
+// y_0 <= ... <= y_n (rounding is monotone), every point z of [x_0, x_m] x [y_0, y_n] lies in a
+// cell [x_i, x_i+1] x [y_j, y_j+1] of sides a <= A and b <= B (A, B the widest gaps), and the
+// nearest of that cell's corners is within sqrt(a^2 + b^2) / 2 <= sqrt(A^2 + B^2) / 2 of z.
+GridLines grid_lines(PointD origin, double h, PointD lo, PointD hi) {
+  GridLines g;
+  double wx = 0.0, wy = 0.0;
+  g.x = axis_lines(origin.x, h, lo.x, hi.x, g.first_i, wx);
+  g.y = axis_lines(origin.y, h, lo.y, hi.y, g.first_j, wy);
+  const Guard rounding;
+  g.reach =
+      (CGAL::sqrt(CGAL::square(IntervalNT(wx)) + CGAL::square(IntervalNT(wy))) / IntervalNT(2.0))
+          .sup();
+  return g;
+}
 
 InkRegion prepare_ink(const InkPolygon& ink, double epsilon) {
   if (ink.region.empty()) throw InvalidInput("ink certificate: the ink polygon is empty");
@@ -313,42 +354,23 @@ Certificate certify_ink(const InkRegion& q, const CleanShape& shape, double epsi
   }
 
   const ShapeDistance to_shape(shape, h);
-  // Grid points within h/sqrt(2) of every point of the union box.
-  const auto i0 = static_cast<std::int64_t>(std::floor((ulo.x - q.origin.x) / h));
-  const auto i1 = static_cast<std::int64_t>(std::ceil((uhi.x - q.origin.x) / h));
-  const auto j0 = static_cast<std::int64_t>(std::floor((ulo.y - q.origin.y) / h));
-  const auto j1 = static_cast<std::int64_t>(std::ceil((uhi.y - q.origin.y) / h));
-  // The grid is origin + (i h, j h) in doubles: its points are exact, but their spacing is h up
-  // to rounding; the half-diagonal of the largest cell actually used bounds the reach. Every
-  // cell's side is at most h + (rounding of origin + i h), enclosed below.
-  double half_diag = 0.0;
-  {
-    const Guard rounding;
-    const auto at = [&](std::int64_t i, double o) {
-      return IntervalNT(o) + IntervalNT(static_cast<double>(i)) * IntervalNT(h);
-    };
-    // origin + i h rounds within half an ulp of the largest coordinate: twice that per side.
-    const double ulp =
-        std::max({CGAL::abs(at(i0, q.origin.x)).sup(), CGAL::abs(at(i1, q.origin.x)).sup(),
-                  CGAL::abs(at(j0, q.origin.y)).sup(), CGAL::abs(at(j1, q.origin.y)).sup()}) *
-        std::numeric_limits<double>::epsilon();
-    const IntervalNT side = IntervalNT(h) + IntervalNT(ulp);
-    half_diag = (side * CGAL::sqrt(IntervalNT(2.0)) / IntervalNT(2.0)).sup();
-  }
+  // Grid points within half_diag of every point of the union box (grid_lines).
+  const GridLines grid = grid_lines(q.origin, h, ulo, uhi);
+  const double half_diag = grid.reach;
   const double rho = sum_up({r, half_diag}); // grid points that can stand for the clean ink
   const double near_q = sum_up({half_diag, q.rounding}); // grid points that can stand for Q
   double worst_clean = 0.0; // >= max d(g, Q') over grid points standing for the clean ink
-  double worst_ink = 0.0;   // >= max (d(g, C) - r) over grid points standing for Q
+  double worst_ink = 0.0;   // >= max (d(g, C') - r) over grid points standing for Q
   static const std::vector<RowCrossing> kNoCrossings;
-  for (std::int64_t j = j0; j <= j1; ++j) {
-    const double y = q.origin.y + static_cast<double>(j) * h;
-    const std::int64_t k = j - q.first_row;
+  for (std::size_t row = 0; row < grid.y.size(); ++row) {
+    // Q's crossings were computed on the same rows o.y + j h (prepare_ink).
+    const std::int64_t k = grid.first_j + static_cast<std::int64_t>(row) - q.first_row;
     const std::vector<RowCrossing>& xs = k >= 0 && k < static_cast<std::int64_t>(q.rows.size())
                                              ? q.rows[static_cast<std::size_t>(k)]
                                              : kNoCrossings;
     std::size_t crossed = 0;
-    for (std::int64_t i = i0; i <= i1; ++i) {
-      const PointD g{q.origin.x + static_cast<double>(i) * h, y};
+    for (const double x : grid.x) {
+      const PointD g{x, grid.y[row]};
       const int inside = parity(xs, q.widest, g.x, crossed);
       // Clean-ink side: d(g, Q') = 0 inside; else an interval upper bound to the proposed edge.
       if (inside != 1 && to_shape.maybe_within(g, rho)) {
@@ -366,8 +388,10 @@ Certificate certify_ink(const InkRegion& q, const CleanShape& shape, double epsi
       }
     }
   }
+  // S2 was measured against C' (the curve's rounded end): H(C, C') <= end_slack is added.
+  const double s2 = sum_up({worst_ink, to_shape.end_slack()});
   // H(C ⊕ D_r, T) <= H(C ⊕ D_r, Q') + H(Q', Q) + H(Q, T).
-  cert.bound = sum_up({std::max(worst_clean, worst_ink), half_diag, q.rounding, q.hausdorff_bound});
+  cert.bound = sum_up({std::max(worst_clean, s2), half_diag, q.rounding, q.hausdorff_bound});
   cert.certified = std::isfinite(cert.bound) && cert.bound <= epsilon;
   return cert;
 }

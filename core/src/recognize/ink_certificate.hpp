@@ -1,6 +1,7 @@
 #pragma once
 // The ink-level certificate (argument in penshape/core/ink_certificate.hpp): the stroke's ink
 // polygon prepared once per stroke for grid sampling, and the bound for one clean shape.
+#include <cstdint>
 #include <vector>
 
 #include "clean_shape.hpp"
@@ -36,6 +37,17 @@ struct InkRegion {
   std::vector<std::vector<RowCrossing>> rows;
   SegmentIndex edges{{}, 1.0};
 };
+
+// The sampling grid's lines over a box: the coordinates o + i h (i = first..last) as doubles,
+// nondecreasing, and `reach`, rounded up, >= the distance from any point of the box they span to
+// the nearest grid point (half the diagonal of the widest cell actually used).
+struct GridLines {
+  std::vector<double> x, y;
+  std::int64_t first_i = 0, first_j = 0; // x[k] = o.x + (first_i + k) h, the same for y
+  double reach = 0.0;
+};
+// The lines covering [lo, hi] (lo <= hi, finite) on the grid origin + (i h, j h).
+GridLines grid_lines(PointD origin, double h, PointD lo, PointD hi);
 
 // Throws InvalidInput when Q is empty or has non-finite coordinates.
 InkRegion prepare_ink(const InkPolygon& ink, double epsilon);

@@ -178,6 +178,9 @@ void check_claim(const std::vector<std::vector<PointD>>& strokes, const Recognit
   if (!(c.epsilon > 0) || !std::isfinite(c.epsilon)) {
     throw InvalidInput("recognition answer: epsilon must be positive and finite");
   }
+  if (c.bound && !std::isfinite(*c.bound)) {
+    throw InvalidInput("recognition answer: the bound must be finite");
+  }
   if (!(c.pen_radius >= 0) || !std::isfinite(c.pen_radius)) {
     throw InvalidInput("recognition answer: the pen radius must be finite and >= 0");
   }
@@ -204,16 +207,25 @@ VerifyReport verify_recognition(const std::vector<std::vector<PointD>>& strokes,
   }
   check_claim(strokes, claim);
   const double eps = claim.epsilon;
+  if (claim.bound && !(*claim.bound >= 0 && *claim.bound <= eps)) {
+    rep.status = VerifyStatus::kRefuted;
+    rep.message = "the answer's bound " + number_text(*claim.bound) +
+                  (*claim.bound < 0 ? " is negative" : " exceeds eps = " + number_text(eps));
+    return rep;
+  }
+  // What the answer claims of H: its bound, else eps.
+  const double claimed = claim.bound ? *claim.bound : eps;
+  const std::string name = claim.bound ? "the bound" : "eps";
   const verify::ShapeChains shape = verify::shape_chains(claim.shape, claim.params, eps / 1024.0);
   const CGAL::Protect_FPU_rounding<true> rounding;
-  // Both directions against the chord polylines: sup d <= eps - sigma there gives <= eps on the
-  // true shape. A point farther than eps + sigma + r from the other side refutes even the inks:
-  // it is a point of one ink at distance > eps from the other ink.
-  const double budget = -(Iv(-eps) + Iv(shape.deviation)).sup(); // eps - sigma, rounded down
-  const double refute = (Iv(eps) + Iv(shape.deviation) + Iv(claim.pen_radius)).sup();
+  // Both directions against the chord polylines: sup d <= claimed - sigma there gives <= claimed
+  // on the true shape. A point farther than claimed + sigma + r from the other side refutes even
+  // the inks: it is a point of one ink at distance > claimed from the other ink.
+  const double budget = -(Iv(-claimed) + Iv(shape.deviation)).sup(); // rounded down
+  const double refute = (Iv(claimed) + Iv(shape.deviation) + Iv(claim.pen_radius)).sup();
   if (!(budget > 0)) {
     rep.message = "the clean shape's chord deviation " + number_text(shape.deviation) +
-                  " leaves nothing of eps";
+                  " leaves nothing of " + name + " = " + number_text(claimed);
     return rep;
   }
   const std::vector<Seg> stroke_segs = segments_of(strokes);
@@ -230,14 +242,15 @@ VerifyReport verify_recognition(const std::vector<std::vector<PointD>>& strokes,
       const std::string other = side == 0 ? "the clean shape" : "the strokes";
       if (f.outcome == Outcome::kRefuted) {
         rep.status = VerifyStatus::kRefuted;
-        rep.message = what + point_text(f.at) + " is " + number_text(f.lower) + " from " + other +
-                      ": farther than eps + r = " + number_text(eps + claim.pen_radius) +
-                      ", so the inks are farther than eps = " + number_text(eps) + " apart";
+        rep.message =
+            what + point_text(f.at) + " is " + number_text(f.lower) + " from " + other +
+            ": farther than " + name + " + r = " + number_text(claimed + claim.pen_radius) +
+            ", so the inks are farther than " + name + " = " + number_text(claimed) + " apart";
       } else {
         rep.status = VerifyStatus::kUnproven;
-        rep.message = "the paths are not proven within eps = " + number_text(eps) + " near " +
-                      what + point_text(f.at) + " (at least " + number_text(f.lower) + " from " +
-                      other + ")";
+        rep.message = "the paths are not proven within " + name + " = " + number_text(claimed) +
+                      " near " + what + point_text(f.at) + " (at least " + number_text(f.lower) +
+                      " from " + other + ")";
       }
       return rep;
     }

@@ -83,11 +83,22 @@ double chords(const Curve& p, double t0, const I& end, double target, std::vecto
   return up(sag + I(reach) + I(m) * (I(end.sup()) - I(end.inf())));
 }
 
-// The minor circular arc of circle c from x to y (both on it in exact arithmetic; boxes here):
-// chords from x to y. Returns sigma including the ends' angle uncertainty: an end point at
-// distance e from the true end along a circle is within an arc of pi/2 e of it.
-double minor_arc(const Curve& c, const IPoint& x, const IPoint& y, double target,
-                 std::vector<PointD>& out) {
+// A curved arrow shaft is certified as a polyline of 12 chords, not as its arc: the vertices
+// are the arc's points at 12 equal angle steps from tail to tip, the ends being tail and tip
+// (recognize.hpp, ShapeParams::shaft_bulge; the recognizer's clean path). The arc's midpoint is
+// the 6th vertex, so each half (tail to midpoint, midpoint to tip) has 6 chords.
+constexpr std::size_t kShaftHalfChords = 6;
+
+// The chords of circle c from x to y (both on it in exact arithmetic; boxes here) at m equal
+// angle steps: the vertex k is c.at(t_k), t_k = ax + (ay - ax) k / m with double angles ax, ay
+// of x and y. Returns sigma, the farthest a vertex strays from the exact one at angle
+// alpha + (beta - alpha) k / m (alpha, beta the exact angles of x and y): c.at(ax) is within e
+// of x, so |ax - alpha| <= (pi / 2) e / R (a chord is at least 2 / pi of its arc below a half
+// turn), the same for ay; t_k errs from its real formula by under 2^-47 (|angles| < 4 pi); so
+// each vertex is within (pi / 2) e + R 2^-47 of the exact one along the circle, plus its box.
+// Corresponding vertices that close keep the chords (pointwise) that close.
+double equal_chords(const Curve& c, const IPoint& x, const IPoint& y, std::size_t m,
+                    std::vector<PointD>& out) {
   double ignore = 0.0;
   const PointD cm = centre_of(c.c, ignore);
   const PointD xm = centre_of(x, ignore), ym = centre_of(y, ignore);
@@ -98,16 +109,15 @@ double minor_arc(const Curve& c, const IPoint& x, const IPoint& y, double target
   if (std::abs(s) > 3.0)
     throw InvalidInput("clean shape: the shaft arc is too close to a half circle");
   const double ay = ax + s;
-  std::vector<PointD> piece;
-  const double sigma = chords(c, ax, I(ay), target, piece);
-  const double ex = reach_to(c.at(ax), piece.front()) + reach_to(x, piece.front());
-  const double ey = reach_to(c.at(ay), piece.back()) + reach_to(y, piece.back());
-  // pi / 2 enclosed; the extra e: the end vertex is then replaced by the exact end itself.
+  double reach = 0.0;
+  for (std::size_t k = 0; k <= m; ++k) {
+    const double t = k == m ? ay : ax + (ay - ax) * static_cast<double>(k) / static_cast<double>(m);
+    out.push_back(centre_of(c.at(t), reach));
+  }
+  const double e =
+      std::max(reach_to(c.at(ax), xm) + reach_to(x, xm), reach_to(c.at(ay), ym) + reach_to(y, ym));
   const I half_pi(std::numbers::pi / 2.0, std::nextafter(std::numbers::pi / 2.0, INFINITY));
-  const double e = std::max(ex, ey);
-  const double ends = up(half_pi * I(e) + I(e));
-  out.insert(out.end(), piece.begin(), piece.end());
-  return up(I(sigma) + I(ends));
+  return up(I(reach) + half_pi * I(e) + c.a * I(0x1p-47));
 }
 
 void check_finite(PointD p) {
@@ -116,9 +126,10 @@ void check_finite(PointD p) {
   }
 }
 
-// tail -> tip along the shaft: straight, or the circular arc through the point `bulge` to the
-// left of the chord's midpoint (two minor arcs: each is half of an arc shorter than a circle).
-double shaft(PointD tail, PointD tip, double bulge, double target, std::vector<PointD>& out) {
+// tail -> tip along the shaft: straight, or the 12 chords of the circular arc through the point
+// `bulge` to the left of the chord's midpoint (two halves: each is half of an arc shorter than a
+// circle).
+double shaft(PointD tail, PointD tip, double bulge, std::vector<PointD>& out) {
   if (bulge == 0.0 || (tail.x == tip.x && tail.y == tip.y)) {
     out = {tail, tip};
     return 0.0;
@@ -134,9 +145,9 @@ double shaft(PointD tail, PointD tip, double bulge, double target, std::vector<P
   const I off = bulge > 0 ? b - r : b + r;
   Curve circle{{(t.x + p.x) / I(2.0) + off * n.x, (t.y + p.y) / I(2.0) + off * n.y}, r, r};
   std::vector<PointD> first, second;
-  const double s1 = minor_arc(circle, t, mid, target, first);
-  const double s2 = minor_arc(circle, mid, p, target, second);
-  first.front() = tail;
+  const double s1 = equal_chords(circle, t, mid, kShaftHalfChords, first);
+  const double s2 = equal_chords(circle, mid, p, kShaftHalfChords, second);
+  first.front() = tail; // the exact ends (within sigma of the vertices replaced)
   second.back() = tip;
   out = first;
   out.insert(out.end(), second.begin() + 1, second.end());
@@ -172,7 +183,7 @@ ShapeChains curve_chains(ShapeClass shape, const ShapeParams& p, double target) 
   return out;
 }
 
-ShapeChains arrow_chains(ShapeClass shape, const ShapeParams& p, double target) {
+ShapeChains arrow_chains(ShapeClass shape, const ShapeParams& p) {
   const std::vector<PointD>& v = p.vertices;
   const std::size_t need = shape == ShapeClass::kDoubleArrow ? 6 : 4;
   if (v.size() != need) {
@@ -182,7 +193,7 @@ ShapeChains arrow_chains(ShapeClass shape, const ShapeParams& p, double target) 
   ShapeChains out;
   out.chains.emplace_back();
   if (p.shaft_bends.empty()) {
-    out.deviation = shaft(v[0], v[1], p.shaft_bulge, target, out.chains[0]);
+    out.deviation = shaft(v[0], v[1], p.shaft_bulge, out.chains[0]);
   } else {
     // A bent shaft: the exact polyline tail -> bends -> tip.
     if (p.shaft_bulge != 0.0)
@@ -218,7 +229,7 @@ ShapeChains shape_chains(ShapeClass shape, const ShapeParams& params, double tar
       return curve_chains(shape, params, target);
     case ShapeClass::kArrow:
     case ShapeClass::kDoubleArrow:
-      return arrow_chains(shape, params, target);
+      return arrow_chains(shape, params);
     case ShapeClass::kSegment:
     case ShapeClass::kPolyline:
       if (params.vertices.size() < 2) throw InvalidInput("clean shape: needs 2 or more vertices");

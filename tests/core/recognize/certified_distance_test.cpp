@@ -134,6 +134,27 @@ TEST(CertifiedDistance, CircleSideCoversTheWholeCircle) {
   EXPECT_LE(bound, sagitta + h);
 }
 
+// "Closed" is decided exactly (issue #22: a hand-chosen 1e-12 took arcs up to 1e-12 rad short of
+// a turn for the whole circle). The double nearest 2 pi is a full curve (its missing sliver is
+// covered by end_slack), anything below it an arc; and a point in the gap of an arc that misses
+// 5e-13 rad of a circle of radius 10^6 is about 2.5e-7 from it, which the bound must see.
+TEST(CertifiedDistance, NearlyFullArcIsAnArc) {
+  const double d = 2 * kPi;
+  EXPECT_TRUE(circle({0, 0}, 1).full_curve());
+  EXPECT_TRUE(circle({0, 0}, 1, 0, -d).full_curve());
+  EXPECT_TRUE(circle({0, 0}, 1, 0, std::nextafter(d, 7.0)).full_curve());
+  EXPECT_FALSE(circle({0, 0}, 1, 0, std::nextafter(d, 0.0)).full_curve());
+  EXPECT_FALSE(circle({0, 0}, 1, 0, d - 1e-13).full_curve());
+  const double radius = 1e6, gap = 5e-13;
+  const CleanShape arc = circle({0, 0}, radius, 0, d - gap);
+  const CertifiedShape certified(arc);
+  const PointD p{radius * std::cos(gap / 2), -radius * std::sin(gap / 2)}; // mid-gap
+  // The arc's points have angles in [0, 2 pi - gap]: the nearest is an end, at least the chord
+  // of half the gap (minus the rounding of p, far below 1e-9).
+  const double truth = 2 * radius * std::sin(gap / 4) - 1e-9;
+  EXPECT_GE(certified.upper(detail::enclose(p), p) + certified.end_slack(), truth);
+}
+
 TEST(CertifiedThinning, ExactlyTauIsWithinOneUlpFartherIsNot) {
   // d((5, 0.1), chord (0,0)-(10,0)) is exactly the double 0.1 = tau: intervals cannot tell,
   // rationals decide "within".

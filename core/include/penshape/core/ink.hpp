@@ -18,10 +18,13 @@
 //      tolerance, as it rounds the step count);
 //   2. the simplification: error <= tau;
 //   3. coordinates are rounded to a grid of 2^-m mm (Clipper's integers): at most three
-//      roundings of half a grid diagonal (input, offset vertices, union intersections), so
-//      error <= 1.5·sqrt(2)·grid.
+//      roundings of half a grid diagonal for one stroke (input, offset vertices, the offset's
+//      own union), four for several strokes (their union's intersections on top), so error <=
+//      1.5·sqrt(2)·grid or 2·sqrt(2)·grid, the grid chosen so that this is <= max_error / 4.
 // The sum is computed with outward rounding, plus 16 ulps of (extent + radius) for the double
-// arithmetic that places the vertices and measures the simplification's distances.
+// arithmetic that places the vertices and measures the simplification's distances, plus
+// Clipper's own arithmetic in round joins and ends (it turns a unit vector step by step in
+// doubles: 32 ulps of the radius per step, ink.cpp clipper_turning).
 // max_error splits as 1/2 (disk), 1/4 (simplification), 1/4 (grid). The disk polygon may have at
 // most 4096 vertices (a smaller max_error relative to the radius is InvalidInput). Q's coordinates
 // are exact dyadic rationals (integers times the grid).

@@ -48,8 +48,12 @@
 // the nearest edge is then bounded, not assumed 0). Q's vertices are rounded to doubles (Q');
 // H(Q, Q') is at most the largest vertex rounding (a winding-number argument: a point of the
 // symmetric difference is passed by the boundary moving from Q to Q'), computed rounded up and
-// added. h/sqrt(2) is computed rounded up from the largest spacing of the double grid points.
-// The curve's end parameter t0 + sweep is rounded: the speed times that rounding is added.
+// added. The grid points are the doubles o + i h (the product and the sum rounded), so their
+// gaps are measured, not assumed: h/sqrt(2) stands for sqrt(A^2 + B^2)/2 rounded up, A and B the
+// widest gaps between neighbouring grid lines actually used (every point of the box is within
+// half its cell's diagonal of a corner). The curve's end parameter t0 + sweep is rounded, so
+// the curve C' sampled may run past the true C by H(C, C') <= the speed times that rounding: it
+// widens the selection of G1 and is added to the S2 estimate (measured against C').
 // No margin decides anything. Q.hausdorff_bound (ink.hpp) is taken as the ink module gives it.
 // Hence
 //     bound = max(S1 estimate, S2 estimate) + h/sqrt(2) + H(Q, Q') + Q.hausdorff_bound

@@ -64,17 +64,19 @@ VerifyReport verify_deconstruction(const PolygonSet& q, const DeconstructionClai
 } // namespace penshape
 
 // ---- Recognition answers (penshape verify with a stroke file) ----
-// A recognition claims H(C ⊕ D_r, A ⊕ D_r) <= eps for the clean shape C its class and params
-// describe (recognize.hpp, group_recognize.hpp), the union A of the strokes' paths and the pen
-// radius r. The verifier proves the stronger H(C, A) <= eps (a common pen disk never increases
-// the Hausdorff distance): both directions by subdividing each side's segments until
-// d(midpoint, other side) + half the piece <= eps, every comparison an interval evaluation with
-// directed rounding (an inconclusive one subdivides further). Curves are replaced by chord
-// polylines with a derived deviation sigma (verify/verify_shape.hpp), so the budget is
-// eps - sigma. Refuted: a point of one path farther than eps + r + sigma from the other, which
-// is a point of one ink farther than eps from the other ink. Unproven: the paths are not within
-// eps there; an answer certified on inks (method "ink", variable radius) may be correct and
-// still end here, as the check is on paths. Freeform claims nothing and is accepted.
+// A recognition claims H(C ⊕ D_r, A ⊕ D_r) <= bound <= eps for the clean shape C its class and
+// params describe (recognize.hpp, group_recognize.hpp; a curved arrow shaft is the 12 chords
+// that were certified), the union A of the strokes' paths, the pen radius r and the bound its
+// certificate states. A bound above eps is refuted outright. Otherwise the verifier proves the
+// stronger H(C, A) <= bound (a common pen disk never increases the Hausdorff distance): both
+// directions by subdividing each side's segments until d(midpoint, other side) + half the piece
+// <= bound, every comparison an interval evaluation with directed rounding (an inconclusive one
+// subdivides further). Curves are replaced by chord polylines with a derived deviation sigma
+// (verify/verify_shape.hpp), so the budget is bound - sigma. Refuted: a point of one path
+// farther than bound + r + sigma from the other, which is a point of one ink farther than bound
+// from the other ink. Unproven: the paths are not within the bound there; an answer certified on
+// inks (method "ink", variable radius) may be correct and still end here, as the check is on
+// paths. Without a bound the claim is H <= eps. Freeform claims nothing and is accepted.
 namespace penshape {
 
 struct RecognitionClaim {
@@ -82,6 +84,7 @@ struct RecognitionClaim {
   ShapeParams params;
   double epsilon = 0.0;
   double pen_radius = 0.0;
+  std::optional<double> bound = std::nullopt; // the certificate's bound; absent: the claim is eps
 };
 
 // `strokes`: each stroke's positions in drawing order (>= 1 each). Throws InvalidInput for
