@@ -12,8 +12,8 @@ namespace penshape {
 namespace {
 
 std::vector<StrokePoint> dot_at(double x, double y, int samples) {
-  std::vector<StrokePoint> out;
-  for (int i = 0; i < samples; ++i) out.push_back({x, y, 0.01 * i});
+  std::vector<StrokePoint> out(static_cast<std::size_t>(samples), StrokePoint{x, y, 0.0});
+  for (std::size_t i = 0; i < out.size(); ++i) out[i].t = 0.01 * static_cast<double>(i);
   return out;
 }
 
