@@ -11,6 +11,9 @@
 //                             recognize() on the same strokes, thread CPU time p50/p99/max;
 //                             and the whole $1 arrows through recognize_strokes (bent shafts
 //                             are fitted there).
+//   other people's drawings   the gestures corpus (group_gesture_figures.hpp): squares and
+//                             arrows in several strokes, non-shape drawings of several strokes,
+//                             by writers the rules were never tuned on (the held-out figures).
 // Usage: group_recognize_bench [--json] [--svg-dir DIR]   (data dir: $PENSHAPE_SHARED_DATA_DIR)
 //   --svg-dir: every arrow missed is drawn to DIR (strokes, and the best arrow candidate with why
 //              it was refused), to look at the failures.
@@ -26,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "group_gesture_figures.hpp"
 #include "multi_stroke_cases.hpp"
 #include "penshape/core/group_recognize.hpp"
 
@@ -331,6 +335,8 @@ int main(int argc, char** argv) {
   times("recognize(), one stroke (today)", t_today);
   times("StrokeGrouper::add, multi-stroke polygons", t_group);
   times("recognize_strokes, one arrow stroke", t_arrows);
+  // Writers never tuned on: the held-out figures beside the $1 ones above.
+  penshape::bench::print_group_gesture_figures(root.parent_path() / "gestures", json);
   if (!json && !polygon_misses.empty()) {
     std::printf("\nmisses:\n");
     for (const auto& [k, n] : polygon_misses) std::printf("  %4d  %s\n", n, k.c_str());

@@ -22,7 +22,13 @@
 // Each time is measured twice: wall clock and the thread's CPU time (the machine is shared, so
 // wall-clock tails include time the thread was not running). Target: p99 <= 5 ms per stroke.
 //
-// Usage: recognize_bench [--json] [--repeat N] [--khz-stride K]
+// Accuracy (recognize_accuracy.hpp), printed first: shapes named right and non-shapes snapped on
+// every labelled single-stroke drawing of ../shared/data/strokes (the $1 logs and the gestures of
+// other people), all subjects beside leave-one-subject-out, the size x pen table beside the
+// former rule, and the derivation of the default tolerance's fractions.
+//
+// Usage: recognize_bench [--json] [--repeat N] [--khz-stride K] [--accuracy-only |
+//                         --timing-only | --derive-tolerance]
 //        (data dir: $PENSHAPE_SHARED_DATA_DIR)
 #include <time.h>
 
@@ -41,6 +47,8 @@
 #include "penshape/core/ink.hpp"
 #include "penshape/core/live_recognizer.hpp"
 #include "penshape/core/recognize.hpp"
+#include "recognize_accuracy.hpp"
+#include "stroke_corpora.hpp"
 
 namespace {
 
@@ -177,10 +185,24 @@ Density run(const std::string& name, const std::vector<std::vector<StrokePoint>>
   return d;
 }
 
+// Every corpus together: the rule derived on all of their writers, figures per corpus.
+void print_accuracy_figures(const std::filesystem::path& strokes, bool derive_only) {
+  std::vector<penshape::bench::Drawing> all = penshape::bench::load_dollar1(strokes / "dollar1");
+  const std::size_t dollar = all.size();
+  const std::vector<penshape::bench::Drawing> gestures =
+      penshape::bench::load_gestures(strokes / "gestures");
+  all.insert(all.end(), gestures.begin(), gestures.end());
+  std::printf("== accuracy: %zu $1 logs, %zu gesture drawings (single strokes) ==\n", dollar,
+              gestures.size());
+  penshape::bench::print_accuracy(all, {derive_only});
+  std::fflush(stdout);
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
   bool json = false;
+  bool timing = true, accuracy = true, derive_only = false;
   int repeat = 1;
   std::size_t khz_stride = 4;
   for (int i = 1; i < argc; ++i) {
@@ -190,13 +212,23 @@ int main(int argc, char** argv) {
       repeat = std::max(1, std::atoi(argv[++i]));
     } else if (std::strcmp(argv[i], "--khz-stride") == 0 && i + 1 < argc) {
       khz_stride = static_cast<std::size_t>(std::max(1, std::atoi(argv[++i])));
+    } else if (std::strcmp(argv[i], "--accuracy-only") == 0) {
+      timing = false;
+    } else if (std::strcmp(argv[i], "--timing-only") == 0) {
+      accuracy = false;
+    } else if (std::strcmp(argv[i], "--derive-tolerance") == 0) {
+      timing = false, derive_only = true;
     } else {
-      std::fprintf(stderr, "usage: recognize_bench [--json] [--repeat N] [--khz-stride K]\n");
+      std::fprintf(stderr,
+                   "usage: recognize_bench [--json] [--repeat N] [--khz-stride K] "
+                   "[--accuracy-only | --timing-only | --derive-tolerance]\n");
       return 2;
     }
   }
   const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR");
   const std::filesystem::path data = env ? env : PENSHAPE_SHARED_DATA_DIR;
+  if (accuracy) print_accuracy_figures(data / "strokes", derive_only);
+  if (!timing) return 0;
   const auto strokes = load_strokes(data / "strokes" / "dollar1");
   if (strokes.empty()) {
     std::fprintf(stderr, "recognize_bench: no $1 logs under %s\n", data.string().c_str());

@@ -125,6 +125,8 @@ std::string shape_kind_name(v1::ShapeKind kind) {
       return "arrow";
     case v1::SHAPE_KIND_DOUBLE_ARROW:
       return "double_arrow";
+    case v1::SHAPE_KIND_DOT:
+      return "dot";
     default:
       return "unspecified";
   }

@@ -102,6 +102,12 @@ std::optional<render::ShapeOutline> outline_of(const Recognition& r) {
       o.start_rad = r.params.start_angle;
       o.sweep_rad = r.params.sweep_angle;
       break;
+    case ShapeClass::kDot: // drawn as a disk of the pen's radius (none when it has no size)
+      if (!(r.pen_radius > 0)) return std::nullopt;
+      o.kind = render::ShapeOutline::Kind::kCircle;
+      o.center = r.params.center;
+      o.radius = r.pen_radius;
+      break;
     case ShapeClass::kSegment:
     case ShapeClass::kPolyline:
       o.kind = render::ShapeOutline::Kind::kPolyline;

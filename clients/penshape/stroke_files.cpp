@@ -173,11 +173,7 @@ FileStroke json_stroke(const std::string& path, std::size_t line, const std::str
   for (std::size_t i = 0; i < points->size(); ++i) {
     out.points.push_back(json_point((*points)[i], i, out));
   }
-  if (out.points.size() < 2) {
-    fail(path, line,
-         "the stroke has " + std::to_string(out.points.size()) +
-             " point(s); it needs at least two distinct positions");
-  }
+  if (out.points.empty()) fail(path, line, "the stroke has no points (a dot has one)");
   check_times(out);
   return out;
 }

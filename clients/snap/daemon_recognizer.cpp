@@ -44,6 +44,8 @@ ShapeClass class_of(v1::ShapeKind k) {
       return ShapeClass::kArrow;
     case v1::SHAPE_KIND_DOUBLE_ARROW:
       return ShapeClass::kDoubleArrow;
+    case v1::SHAPE_KIND_DOT:
+      return ShapeClass::kDot;
     default:
       return ShapeClass::kFreeform;
   }

@@ -45,6 +45,8 @@ v1::ShapeKind kind_of(ShapeClass c) {
       return v1::SHAPE_KIND_ARROW;
     case ShapeClass::kDoubleArrow:
       return v1::SHAPE_KIND_DOUBLE_ARROW;
+    case ShapeClass::kDot:
+      return v1::SHAPE_KIND_DOT;
   }
   return v1::SHAPE_KIND_UNSPECIFIED;
 }
@@ -75,13 +77,6 @@ RecognizerConfig config_for(const PenSettings& settings) {
   RecognizerConfig config;
   config.pen_radius = settings.pen_radius_mm;
   return config;
-}
-
-bool has_distinct_points(const std::vector<StrokePoint>& pts) {
-  for (const auto& p : pts) {
-    if (p.x != pts.front().x || p.y != pts.front().y) return true;
-  }
-  return false;
 }
 
 // The proto form of a recognition's certified alternatives (runner-ups), best first.
@@ -125,12 +120,12 @@ class GroupSession final : public StrokeGroupSession {
     input.samples = path_mm(stroke);
     input.pen_radius = settings_.pen_radius_mm;
     if (cancel && cancel()) throw Cancelled();
-    if (input.samples.size() < 2 || !has_distinct_points(input.samples)) {
+    if (input.samples.empty()) { // no tip-down sample: nothing to recognize (a dot is a shape)
       if (with_ink) {
         const InkOptions options = ink_options_for(settings_);
         out.analysis.ink_polygon = build_ink(ink_samples(stroke, options), options).proto;
       }
-      out.analysis.shape.set_kind(v1::SHAPE_KIND_NONE); // a dot: nothing to snap to, not grouped
+      out.analysis.shape.set_kind(v1::SHAPE_KIND_NONE);
       return out;
     }
     // Q is built on another worker while the path is fitted, or here once the recognizer needs it.
@@ -191,8 +186,8 @@ class RecognizingAnalyzer final : public StrokeAnalyzer,
 
     StrokeInput input;
     input.samples = path_mm(stroke);
-    if (input.samples.size() < 2 || !has_distinct_points(input.samples)) {
-      analysis.shape.set_kind(v1::SHAPE_KIND_NONE); // a dot: nothing to snap to
+    if (input.samples.empty()) { // no tip-down sample (a dot is recognized as SHAPE_KIND_DOT)
+      analysis.shape.set_kind(v1::SHAPE_KIND_NONE);
       return analysis;
     }
     // The clean shape is drawn with the settings' pen radius; the snap is decided by the
@@ -221,9 +216,8 @@ class RecognizingAnalyzer final : public StrokeAnalyzer,
     for (std::size_t i = 0; i < strokes.size(); ++i) {
       StrokeInput in;
       in.samples = path_mm(strokes[i]);
-      if (in.samples.size() < 2 || !has_distinct_points(in.samples)) {
-        throw InvalidInput("strokes[" + std::to_string(i) +
-                           "]: a stroke needs at least two distinct tip-down positions");
+      if (in.samples.empty()) {
+        throw InvalidInput("strokes[" + std::to_string(i) + "]: the stroke has no tip-down sample");
       }
       in.pen_radius = settings.pen_radius_mm;
       inputs.push_back(std::move(in));

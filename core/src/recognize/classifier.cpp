@@ -7,6 +7,7 @@
 
 #include "annulus_polish.hpp"
 #include "certificate.hpp"
+#include "dot.hpp"
 #include "ink_certificate.hpp"
 #include "skeleton_seeds.hpp"
 
@@ -172,6 +173,7 @@ double degrees_of_freedom(const Fit& fit) {
              2.0 * static_cast<double>(fit.params.shaft_bends.size());
     }
     case ShapeClass::kFreeform:
+    case ShapeClass::kDot: // never fitted (dot.hpp)
       break;
   }
   return 0;
@@ -346,7 +348,8 @@ ToleranceChoice choose_tolerance(const std::vector<StrokePoint>& samples,
   t.pen_radius =
       config.pen_radius > 0 ? config.pen_radius : config.default_pen_radius_fraction * t.size;
   t.epsilon = config.tolerance > 0 ? config.tolerance
-                                   : std::min(config.tolerance_pen_radii * t.pen_radius,
+                                   : std::min(config.tolerance_size_fraction * t.size +
+                                                  config.tolerance_pen_radii * t.pen_radius,
                                               config.max_tolerance_fraction * t.size);
   return t;
 }
@@ -364,6 +367,10 @@ Recognition recognize(const StrokeInput& stroke, const RecognizerConfig& config_
   // A given ink is checked at once; one still being built once the path is fitted.
   if (stroke.ink != nullptr) (void)recognize_detail::given_ink(stroke);
   const ToleranceChoice tol = choose_tolerance(stroke.samples, config);
+  if (recognize_detail::is_dot(stroke.samples)) {
+    (void)recognize_detail::given_ink(stroke); // its errors are this call's
+    return recognize_detail::dot_recognition(stroke.samples, tol);
+  }
   const PreparedStroke s = recognize_detail::prepare(
       stroke.samples, recognize_detail::thinning_tolerance(config, tol.epsilon));
   std::vector<recognize_detail::Fit> fits = recognize_detail::fit_all(s, config, tol.epsilon);

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "classifier.hpp"
+#include "dot.hpp"
 #include "fit_arrow.hpp"
 #include "live_candidate.hpp"
 #include "stroke_chain.hpp"
@@ -151,6 +152,24 @@ double recognition_rank(const Recognition& r) {
          kPricePerParameter * degrees_of_freedom(f);
 }
 
+// A dot alone is a dot; a dot is never part of a shape of several strokes (freeform).
+UnionRecognition dot_union(std::span<const StrokeInput> strokes, const RecognizerConfig& config,
+                           const ToleranceChoice& tol) {
+  UnionRecognition out;
+  out.rank = INFINITY;
+  if (strokes.size() == 1) {
+    out.recognition = recognize(strokes.front(), config);
+    out.strokes.pieces = {{out.recognition.params.center}};
+    out.rank = 0.0;
+    return out;
+  }
+  out.recognition.epsilon = tol.epsilon;
+  out.recognition.pen_radius = tol.pen_radius;
+  out.recognition.certificate.epsilon = tol.epsilon;
+  out.recognition.certificate.pen_radius = tol.pen_radius;
+  return out;
+}
+
 } // namespace
 
 UnionRecognition recognize_union_detail(std::span<const StrokeInput> strokes,
@@ -170,6 +189,10 @@ UnionRecognition recognize_union_detail(std::span<const StrokeInput> strokes,
   const ToleranceChoice tol = choose_tolerance(all, config);
   const double tau = thinning_tolerance(config, tol.epsilon);
   UnionRecognition out;
+  if (std::any_of(strokes.begin(), strokes.end(),
+                  [](const StrokeInput& st) { return is_dot(st.samples); })) {
+    return dot_union(strokes, config, tol);
+  }
   out.strokes = prepare_union(paths, tau);
   const std::vector<PointD> cloud = cloud_of(out.strokes);
   if (strokes.size() == 1) {

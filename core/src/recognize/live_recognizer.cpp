@@ -9,6 +9,7 @@
 
 #include "annulus_polish.hpp"
 #include "classifier.hpp"
+#include "dot.hpp"
 #include "live_candidate.hpp"
 #include "live_path.hpp"
 #include "live_round.hpp"
@@ -285,6 +286,11 @@ Recognition LiveRecognizer::finish() {
   State& st = *state_;
   recognize_detail::validate_samples(st.samples, st.config);
   const ToleranceChoice tol = choose_tolerance(st.samples, st.config);
+  if (recognize_detail::is_dot(st.samples)) {
+    Recognition dot = recognize_detail::dot_recognition(st.samples, tol);
+    reset();
+    return dot;
+  }
   const PreparedStroke s = recognize_detail::prepare_points(
       st.path.points(), recognize_detail::thinning_tolerance(st.config, tol.epsilon));
   const bool closed = recognize_detail::is_closed(s, tol.epsilon);

@@ -55,7 +55,8 @@ void validate_samples(const std::vector<StrokePoint>& samples, const RecognizerC
   if (!finite_non_negative(config.pen_radius) || !finite_non_negative(config.tolerance)) {
     throw InvalidInput("recognize: pen radius and tolerance must be finite and >= 0 (0 = default)");
   }
-  if (!positive(config.default_pen_radius_fraction) || !positive(config.tolerance_pen_radii) ||
+  if (!positive(config.default_pen_radius_fraction) || !positive(config.tolerance_size_fraction) ||
+      !finite_non_negative(config.tolerance_pen_radii) ||
       !positive(config.max_tolerance_fraction) || !positive(config.straight_fraction) ||
       !std::isfinite(config.arc_monotone_turning)) {
     throw InvalidInput("recognize: the configuration's fractions must be finite and positive");
@@ -78,10 +79,6 @@ void validate_samples(const std::vector<StrokePoint>& samples, const RecognizerC
                          " has a coordinate beyond the limit |x|, |y| <= 1e9");
     }
   }
-  for (const StrokePoint& s : samples) {
-    if (s.x != samples.front().x || s.y != samples.front().y) return;
-  }
-  throw InvalidInput("recognize: the stroke needs at least two distinct positions");
 }
 
 double thinning_tolerance(const RecognizerConfig& config, double epsilon) {

@@ -23,8 +23,8 @@ struct PreparedStroke {
   double gap = 0.0;               // distance from the last point to the first
 };
 
-// Throws InvalidInput for non-finite or too large coordinates, too many samples, fewer than two
-// distinct positions.
+// Throws InvalidInput for no samples, non-finite or too large coordinates, too many samples. One
+// distinct position is valid: a dot (dot.hpp), which the callers answer before preparing.
 void validate_samples(const std::vector<StrokePoint>& samples, const RecognizerConfig& config);
 
 // The stroke's ink polygon when one is given (StrokeInput::ink, else the one ink_when_needed
@@ -36,7 +36,8 @@ const InkPolygon* given_ink(const StrokeInput& stroke);
 // thin_tolerance_fraction * epsilon; 0 turns thinning off).
 double thinning_tolerance(const RecognizerConfig& config, double epsilon);
 
-// Assumes validate_samples passed. `tau` as thinning_tolerance() gives it.
+// Assumes validate_samples passed and the samples are not a dot. `tau` as thinning_tolerance()
+// gives it.
 PreparedStroke prepare(const std::vector<StrokePoint>& samples, double tau);
 PreparedStroke prepare_points(std::vector<PointD> points, double tau); // already deduplicated
 

@@ -6,7 +6,7 @@
 
 namespace penshape {
 namespace {
-constexpr std::array<std::pair<ShapeClass, const char*>, 14> kNames{{
+constexpr std::array<std::pair<ShapeClass, const char*>, 15> kNames{{
     {ShapeClass::kFreeform, "freeform"},
     {ShapeClass::kSegment, "segment"},
     {ShapeClass::kPolyline, "polyline"},
@@ -21,6 +21,7 @@ constexpr std::array<std::pair<ShapeClass, const char*>, 14> kNames{{
     {ShapeClass::kArc, "arc"},
     {ShapeClass::kArrow, "arrow"},
     {ShapeClass::kDoubleArrow, "double_arrow"},
+    {ShapeClass::kDot, "dot"},
 }};
 } // namespace
 

@@ -5,6 +5,7 @@
 #include <map>
 #include <optional>
 
+#include "dot.hpp"
 #include "group_classifier.hpp"
 #include "penshape/core/group_recognize.hpp"
 #include "prepared_stroke.hpp"
@@ -164,7 +165,8 @@ GroupUpdate StrokeGrouper::add(const StrokeInput& stroke) {
 
   // Recent groups that may still grow.
   std::vector<std::size_t> recent;
-  if (grouping_.enabled) {
+  const bool dot = recognize_detail::is_dot(stroke.samples); // never joins other strokes
+  if (grouping_.enabled && !dot) {
     for (std::size_t g = groups_.size(); g-- > 0 && recent.size() < kMaxRecentGroups;) {
       const Entry& e = groups_[g];
       if (!e.joinable || start - e.end_time > grouping_.max_pause_seconds) continue;
@@ -237,7 +239,8 @@ GroupUpdate StrokeGrouper::add(const StrokeInput& stroke) {
   // Recent shapes other than this one: what connection and parallelism refer to.
   std::vector<const Recognition*> neighbours;
   for (std::size_t g = groups_.size(); g-- > 0 && neighbours.size() < grouping_.max_strokes;) {
-    if (snaps(groups_[g].shape.recognition)) neighbours.push_back(&groups_[g].shape.recognition);
+    const Recognition& n = groups_[g].shape.recognition;
+    if (snaps(n) && n.shape != ShapeClass::kDot) neighbours.push_back(&n); // a dot aligns nothing
   }
   shape.recognition = std::move(best->recognition);
   // A lone stroke recognized on its ink keeps being certified on it.
@@ -254,9 +257,9 @@ GroupUpdate StrokeGrouper::add(const StrokeInput& stroke) {
     e.joinable = false;
     for (const std::size_t i : e.shape.strokes) strokes_.erase(i);
   }
-  strokes_[index] = path_only(stroke);
+  if (!dot) strokes_[index] = path_only(stroke); // a dot's group is never joined
   ++added_;
-  groups_.push_back({shape, stroke.samples.back().t, true});
+  groups_.push_back({shape, stroke.samples.back().t, !dot});
   return update;
 }
 

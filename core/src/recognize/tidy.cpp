@@ -297,7 +297,7 @@ std::vector<std::string> tidy_up(Recognition& r, const UnionStroke& u, const Tid
                                  const std::vector<const Recognition*>& neighbours,
                                  const InkPolygon* ink) {
   std::vector<std::string> applied;
-  if (r.shape == ShapeClass::kFreeform) return applied;
+  if (r.shape == ShapeClass::kFreeform || r.shape == ShapeClass::kDot) return applied;
   std::optional<InkRegion> region;
   if (ink != nullptr) region = prepare_ink(*ink, r.epsilon);
   const InkRegion* q = region ? &*region : nullptr;

@@ -215,7 +215,7 @@ TEST(LiveRecognizer, BadInput) {
   EXPECT_THROW(live.add({NAN, 0, 0}), InvalidInput);
   EXPECT_THROW((void)live.finish(), InvalidInput); // no samples
   live.add({1, 1, 0});
-  EXPECT_THROW((void)live.finish(), InvalidInput); // a single point
+  EXPECT_EQ(live.finish().shape, ShapeClass::kDot); // a single point: a dot (issue 23)
   RecognizerConfig small;
   small.max_samples = 2;
   LiveRecognizer bounded(small);

@@ -1,8 +1,9 @@
 #pragma once
 // The daemon's stroke analyzer: the ink polygon (penshape::ink_polygon) and the certified shape
 // (penshape::recognize, annulus fits), both in millimetres. The pen radius comes from the
-// settings; the recognition tolerance follows the recognizer's documented rule (a multiple of
-// the pen radius, bounded by the drawing size: core/include/penshape/core/recognize.hpp).
+// settings; the recognition tolerance follows the recognizer's documented rule (a fraction of
+// the drawing's size plus the pen radius, bounded by a fraction of the size:
+// choose_tolerance, core/include/penshape/core/recognize.hpp).
 // Previews run the live recognizer on the samples so far, one per stroke in progress.
 #include <memory>
 
