@@ -81,6 +81,7 @@ std::vector<Page> read_pages(const fs::path& dir, const std::string& set, std::s
   std::sort(files.begin(), files.end());
   if (files.size() > limit) files.resize(limit);
   std::vector<Page> pages;
+  pages.reserve(files.size());
   for (const fs::path& f : files) pages.push_back(read_page(f, set));
   return pages;
 }
@@ -199,6 +200,7 @@ void tally_page(const Page& page, const std::vector<Intent>& intents, bool snap_
 
 std::vector<Intent> intents_of(const std::vector<IntentDecision>& d) {
   std::vector<Intent> out;
+  out.reserve(d.size());
   for (const auto& x : d) out.push_back(x.intent);
   return out;
 }
@@ -242,6 +244,7 @@ struct Inputs {
   fs::path pages;
   fs::path logo;
   std::size_t limit = SIZE_MAX;
+  bool made_pages = false; // composed here: removed at the end
 };
 
 // The pages and leave-one-group-out scores: given, or made now by the committed scripts.
@@ -258,6 +261,7 @@ bool prepare(Inputs& in, const char* self) {
       return false;
     }
     in.pages = fs::temp_directory_path() / ("intent_bench_" + std::to_string(::getpid()));
+    in.made_pages = true;
     if (run_command("/usr/bin/python3 " + (scripts / "intent_pages.py").string() + " " +
                     shared.string() + " " + in.pages.string()) != 0) {
       return false;
@@ -307,13 +311,13 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--features" && i + 1 < argc) return print_features(argv[i + 1]);
-    if (a == "--pages" && i + 1 < argc)
+    if (a == "--pages" && i + 1 < argc) {
       in.pages = argv[++i];
-    else if (a == "--logo-scores" && i + 1 < argc)
+    } else if (a == "--logo-scores" && i + 1 < argc) {
       in.logo = argv[++i];
-    else if (a == "--quick")
+    } else if (a == "--quick") {
       in.limit = 40;
-    else {
+    } else {
       std::fprintf(stderr,
                    "usage: intent_bench [--pages DIR] [--logo-scores FILE] [--quick] | "
                    "--features DIR\n");
@@ -325,7 +329,9 @@ int main(int argc, char** argv) {
   Tally off, on, logo;
   std::vector<double> ms;
   for (const std::string set : {"items", "mixed"}) {
-    for (const Page& page : read_pages(in.pages, set, in.limit)) {
+    const std::vector<Page> pages = read_pages(in.pages, set, in.limit);
+    std::fprintf(stderr, "intent_bench: recognizing %zu %s pages\n", pages.size(), set.c_str());
+    for (const Page& page : pages) {
       const auto spans = spans_of(page);
       const std::vector<Intent> intents = intents_of(penshape::decide_intent(spans));
       tally_page(page, intents, true, off);
@@ -335,5 +341,6 @@ int main(int argc, char** argv) {
     }
   }
   print_table(off, on, logo, penshape::bench::percentiles(ms));
+  if (in.made_pages) fs::remove_all(in.pages);
   return 0;
 }

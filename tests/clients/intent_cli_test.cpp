@@ -38,8 +38,8 @@ Result run(const std::string& args) {
 // Two lines of cursive words with t-bars (dots left out: the file format wants 2 points), and
 // the five generated shapes below the second line. Returns the file.
 std::filesystem::path write_page() {
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("penshape_intent_cli_" + std::to_string(::getpid()) + ".jsonl");
+  auto path = std::filesystem::temp_directory_path() /
+              ("penshape_intent_cli_" + std::to_string(::getpid()) + ".jsonl");
   std::ofstream out(path);
   for (const auto& s : penshape::test::ink::note_page(2, true)) {
     if (s.points.size() < 2) continue;

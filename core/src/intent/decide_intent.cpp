@@ -1,4 +1,4 @@
-// The writing/drawing decision: the learned logistic model over the page's features
+// The writing/drawing decision: the learned model (one hidden layer) over the page's features
 // (intent.hpp; weights from scripts/intent_learn.py in intent_weights.hpp).
 #include <cmath>
 
@@ -15,14 +15,19 @@ constexpr std::size_t kTimed = 17;
 constexpr bool is_timing(std::size_t k) { return k >= kTimed && k <= kTimed + 2; }
 
 double writing_score(const IntentFeatures& f) {
+  namespace w = intent::weights;
   const bool timed = f[kTimed] > 0.5;
-  double z = intent::weights::kBias;
+  IntentFeatures z{};
   for (std::size_t k = 0; k < kIntentFeatureCount; ++k) {
-    if (!timed && is_timing(k)) continue;
-    z += intent::weights::kWeight[k] * (f[k] - intent::weights::kMean[k]) /
-         intent::weights::kScale[k];
+    z[k] = !timed && is_timing(k) ? 0.0 : (f[k] - w::kMean[k]) / w::kScale[k];
   }
-  return 1.0 / (1.0 + std::exp(-z));
+  double out = w::kOutputBias;
+  for (std::size_t j = 0; j < w::kHidden; ++j) {
+    double h = w::kHiddenBias[j];
+    for (std::size_t k = 0; k < kIntentFeatureCount; ++k) h += w::kHiddenWeight[j][k] * z[k];
+    out += w::kOutputWeight[j] * std::tanh(h);
+  }
+  return 1.0 / (1.0 + std::exp(-out));
 }
 
 // One distinct point (or none): an i-dot, a full stop, a decimal point.

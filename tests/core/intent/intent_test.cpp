@@ -1,8 +1,10 @@
 // The writing/drawing decision (core intent.hpp): generated writing and shapes (a bare clone),
-// dots, bad input, units, the grouper that leaves writing alone; real UNIPEN handwriting and $1
-// shapes under the shared-data skip.
+// dots, untimed strokes, bad input, units, the grouper that leaves writing alone; real UNIPEN
+// handwriting and $1 shapes (alone, untimed) under the shared-data skip.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -14,6 +16,7 @@
 #include "penshape/core/deconstruct.hpp"
 #include "penshape/core/intent.hpp"
 #include "penshape/core/intent_grouper.hpp"
+#include "support/dollar1.hpp"
 #include "test_data.hpp"
 
 namespace {
@@ -70,6 +73,17 @@ TEST(Intent, ShapesAloneAreDrawing) {
     const auto d = penshape::decide_intent(std::vector<Points>{shape});
     EXPECT_EQ(d.front().intent, Intent::kDrawing) << "P(writing) " << d.front().writing_score;
   }
+}
+
+// Without times (t all 0) the decision rests on the geometry and the page alone.
+TEST(Intent, UntimedStrokesAreDecidedToo) {
+  auto page = penshape::test::ink::note_page(6, true);
+  for (PageStroke& s : page) {
+    for (StrokePoint& p : s.points) p.t = 0;
+  }
+  const Errors e = errors_on(page);
+  EXPECT_EQ(e.drawing_as_writing, 0);
+  EXPECT_EQ(e.writing_as_drawing, 0) << "of " << e.writing;
 }
 
 TEST(Intent, UnitsFollowMmPerUnit) {
@@ -183,6 +197,37 @@ TEST(IntentRealData, UnipenHandwritingIsWriting) {
   }
   EXPECT_GT(strokes, 3000);
   EXPECT_LT(drawing, strokes / 50) << drawing << " of " << strokes << " decided drawing";
+}
+
+// Real shapes ($1 logs: triangles, circles, rectangles, arrows of subjects s02-s11, untimed
+// here), each alone on its page at 20-60 mm: drawing.
+TEST(IntentRealData, DollarShapesAloneAreDrawing) {
+  PENSHAPE_SHARED_OR_SKIP(dir, "strokes/dollar1");
+  int shapes = 0, writing = 0;
+  for (const char* name : {"triangle", "circle", "rectangle", "arrow"}) {
+    for (int subject = 2; subject <= 11; ++subject) {
+      for (int k = 1; k <= 10; ++k) {
+        char file[64];
+        std::snprintf(file, sizeof file, "s%02d/medium/%s%02d.xml", subject, name, k);
+        if (!std::filesystem::exists(dir / file)) continue;
+        const auto pts = penshape::test::read_dollar1((dir / file).string());
+        double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+        for (const auto& p : pts) {
+          x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y),
+          y1 = std::max(y1, p.y);
+        }
+        const double scale = (20.0 + 4.0 * (k - 1)) / std::max(x1 - x0, y1 - y0);
+        Points stroke;
+        for (const auto& p : pts) stroke.push_back({p.x * scale, p.y * scale, 0.0});
+        ++shapes;
+        const auto d = penshape::decide_intent(std::vector<Points>{stroke});
+        writing += d.front().intent == Intent::kWriting ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_GT(shapes, 150);
+  EXPECT_LT(writing, shapes / 50) << writing << " of " << shapes << " decided writing";
+  std::printf("%d of %d lone untimed $1 shapes decided writing\n", writing, shapes);
 }
 
 } // namespace
