@@ -2,11 +2,8 @@
 // and text, writing strokes are freeform answers of their own, and --snap-writing turns the
 // filter off. On a generated page of notes (tests/core/intent/generated_ink.hpp).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -15,24 +12,12 @@
 #include <nlohmann/json.hpp>
 
 #include "core/intent/generated_ink.hpp"
+#include "run_command.hpp"
 
 namespace {
 
-struct Result {
-  int exit_code = -1;
-  std::string out;
-};
-
-Result run(const std::string& args) {
-  const std::string cmd = std::string(PENSHAPE_CLI) + " recognize " + args + " 2>&1";
-  Result r;
-  FILE* pipe = ::popen(cmd.c_str(), "r");
-  if (pipe == nullptr) return r;
-  std::array<char, 4096> buf{};
-  while (std::fgets(buf.data(), static_cast<int>(buf.size()), pipe) != nullptr) r.out += buf.data();
-  const int status = ::pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+penshape::test::CommandResult run(const std::string& args) {
+  return penshape::test::run_command(std::string(PENSHAPE_CLI) + " recognize " + args);
 }
 
 // Two lines of cursive words with t-bars (dots left out: the file format wants 2 points), and
@@ -75,20 +60,20 @@ Counts count(const std::string& out) {
 
 TEST(RecognizeIntentCli, WritingIsNeverSnappedAndEveryAnswerSaysItsIntent) {
   const auto file = write_page();
-  const Result r = run("--json --pen-radius 0.35 " + file.string());
+  const auto r = run("--json --pen-radius 0.35 " + file.string());
   ASSERT_EQ(r.exit_code, 0) << r.out;
   const Counts c = count(r.out);
   EXPECT_GT(c.writing, 20);
   EXPECT_EQ(c.writing_snapped, 0);
   EXPECT_GE(c.drawing_snapped, 4) << r.out; // the shapes still snap
-  const Result text = run("--pen-radius 0.35 " + file.string());
+  const auto text = run("--pen-radius 0.35 " + file.string());
   EXPECT_NE(text.out.find("-> freeform (writing)"), std::string::npos) << text.out;
   std::filesystem::remove(file);
 }
 
 TEST(RecognizeIntentCli, SnapWritingTurnsTheFilterOff) {
   const auto file = write_page();
-  const Result r = run("--json --snap-writing --pen-radius 0.35 " + file.string());
+  const auto r = run("--json --snap-writing --pen-radius 0.35 " + file.string());
   ASSERT_EQ(r.exit_code, 0) << r.out;
   const Counts c = count(r.out);
   EXPECT_GT(c.writing_snapped, 0) << "the t-bars are clean segments"; // as before the filter
