@@ -9,7 +9,8 @@
 //   mixed pages                     writing strokes snapped; shapes right (classes the
 //                                   recognizer names); shape strokes kept as drawing
 //   decision time per stroke        decide_intent on the stroke and the 24 before it (a live
-//                                   pen-up), thread CPU time p50/p99/max
+//                                   pen-up), thread CPU time p50/p99/max, and how often that
+//                                   live decision (no strokes after it) is right
 // Usage: intent_bench [--pages DIR] [--logo-scores FILE] [--quick]
 //        intent_bench --features DIR   (the model's inputs, one TSV row per stroke, for
 //                                       scripts/intent_learn.py)
@@ -222,8 +223,9 @@ double thread_seconds() {
 
 volatile double g_sink = 0; // keeps the timed call
 
-// decide_intent as at a live pen-up: the stroke and the 24 strokes before it.
-void time_decisions(const Page& page, std::vector<double>& ms) {
+// decide_intent as at a live pen-up: the stroke and the 24 strokes before it (no strokes after
+// it); its time, and how often it is right that way (all-data weights).
+void time_decisions(const Page& page, std::vector<double>& ms, Tally& live) {
   const auto spans = spans_of(page);
   for (std::size_t i = 0; i < spans.size(); ++i) {
     const std::size_t lo = i > 24 ? i - 24 : 0;
@@ -232,6 +234,12 @@ void time_decisions(const Page& page, std::vector<double>& ms) {
     const auto d = penshape::decide_intent(recent);
     ms.push_back(1e3 * (thread_seconds() - t0));
     g_sink = d.back().writing_score;
+    const bool writing = d.back().intent == Intent::kWriting;
+    if (page.strokes[i].writing) {
+      live.rows["live (strokes before only): writing decided drawing"].add(!writing);
+    } else {
+      live.rows["live (strokes before only): shape strokes decided drawing"].add(!writing);
+    }
   }
 }
 
@@ -337,7 +345,7 @@ int main(int argc, char** argv) {
       tally_page(page, intents, true, off);
       tally_page(page, intents, false, on);
       tally_page(page, logo_intents(page, scores), false, logo);
-      time_decisions(page, ms);
+      time_decisions(page, ms, on);
     }
   }
   print_table(off, on, logo, penshape::bench::percentiles(ms));

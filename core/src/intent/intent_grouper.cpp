@@ -36,6 +36,11 @@ GroupUpdate IntentGrouper::add(const StrokeInput& stroke, Intent intent) {
   return update;
 }
 
+void IntentGrouper::forget_unreachable() {
+  grouper_.forget_unreachable();
+  writing_.clear();
+}
+
 std::vector<GroupedShape> IntentGrouper::shapes() const {
   std::vector<GroupedShape> out = writing_;
   for (GroupedShape g : grouper_.shapes()) {

@@ -169,6 +169,19 @@ TEST(IntentGrouper, DrawingStrokesKeepTheirPageIndices) {
   EXPECT_EQ(shapes[1].strokes, std::vector<std::size_t>{1});
 }
 
+TEST(IntentGrouper, ForgetsWritingAnswersAndKeepsCounting) {
+  double t = 0;
+  penshape::IntentGrouper grouper;
+  penshape::StrokeInput input;
+  input.samples = penshape::test::ink::traced({{0, 0}, {2, 0}}, t);
+  grouper.add(input, Intent::kWriting);
+  grouper.forget_unreachable();
+  EXPECT_TRUE(grouper.shapes().empty());
+  const auto update = grouper.add(input, Intent::kWriting);
+  EXPECT_EQ(update.shape.strokes, std::vector<std::size_t>{1});
+  EXPECT_EQ(grouper.shapes().size(), 1U);
+}
+
 std::vector<Points> read_jsonl(const std::filesystem::path& file) {
   std::vector<Points> strokes;
   std::ifstream in(file);

@@ -27,6 +27,10 @@ class IntentGrouper {
   // unique within it (writing answers and grouped answers never share one).
   [[nodiscard]] std::vector<GroupedShape> shapes() const;
 
+  // StrokeGrouper::forget_unreachable (a long live session's memory stays bounded); writing
+  // answers, which no later stroke can join, are forgotten too. Indices keep counting.
+  void forget_unreachable();
+
  private:
   StrokeGrouper grouper_;
   bool snap_writing_;
