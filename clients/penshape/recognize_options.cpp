@@ -7,7 +7,8 @@ namespace penshape::cli {
 
 const char* const kRecognizeHelp =
     "usage: penshape recognize [--pen-radius R] [--tolerance E] [--ink [--pressure]] [--json]\n"
-    "                          [--labels] [--no-group] [--svg-dir DIR] FILE|DIR...\n"
+    "                          [--labels] [--no-group] [--snap-writing] [--svg-dir DIR] "
+    "FILE|DIR...\n"
     "\n"
     "Names the shape each stroke, or each group of strokes, was meant to be (segment,\n"
     "polyline, triangle, quadrilateral, rectangle, square, diamond, regular_polygon, circle,\n"
@@ -25,6 +26,11 @@ const char* const kRecognizeHelp =
     "certifies as one shape (a rectangle drawn side by side, an arrow's shaft and head).\n"
     "Directories are searched recursively.\n"
     "\n"
+    "Writing is not a shape: every stroke is first decided writing or drawing, the file's\n"
+    "strokes being the page (size against the page's writing height, neighbours on a text line,\n"
+    "turning, speed; coordinates taken as millimetres). Writing strokes are never snapped nor\n"
+    "grouped: each is a `freeform` answer with intent \"writing\".\n"
+    "\n"
     "  --pen-radius R  pen radius in the file's unit (default: 2.5% of each drawing's size)\n"
     "  --tolerance E   Hausdorff tolerance (default: it follows the drawing, not the pen:\n"
     "                  min(0.115 S + R, 0.125 S), S the diagonal of the stroke's or group's\n"
@@ -37,8 +43,12 @@ const char* const kRecognizeHelp =
     "                  R (0.25 + 0.75 p); the clean shape is drawn with the stroke's median\n"
     "                  radius. Needs pressure in the file (JSON lines; $1 XML has none)\n"
     "  --no-group      recognize every stroke alone\n"
+    "  --snap-writing  recognize writing strokes too (the filter off: a page of drawings whose\n"
+    "                  small strokes are shapes, e.g. a diagram of tiny boxes)\n"
     "  --json          one object per answer: file, line (its first stroke), lines (1-based\n"
-    "                  line numbers of every stroke it covers), name, class, confidence, params,\n"
+    "                  line numbers of every stroke it covers), name, class, intent "
+    "(writing|drawing),\n"
+    "                  writing_score (mean P(writing) of its strokes), confidence, params,\n"
     "                  tidy, alternatives, certified, certificate, certificate_method, seconds\n"
     "                  (and label with --labels); with --labels a final {\"summary\": ...}\n"
     "  --labels        expected class from the gesture name (triangle03 -> triangle, circle ->\n"
@@ -52,9 +62,9 @@ const char* const kRecognizeHelp =
     "Exit codes: 0 ok, 2 bad input (message names file and line), 1 internal failure.";
 
 RecognizeOptions parse_recognize_options(std::span<const std::string_view> args) {
-  const ParsedArgs parsed(
-      args, {.flags = {"--json", "--labels", "--ink", "--pressure", "--no-group", "--help"},
-             .options = {"--pen-radius", "--tolerance", "--svg-dir"}});
+  const ParsedArgs parsed(args, {.flags = {"--json", "--labels", "--ink", "--pressure",
+                                           "--no-group", "--snap-writing", "--help"},
+                                 .options = {"--pen-radius", "--tolerance", "--svg-dir"}});
   RecognizeOptions o;
   o.help = parsed.flag("--help");
   if (o.help) return o;
@@ -74,6 +84,7 @@ RecognizeOptions parse_recognize_options(std::span<const std::string_view> args)
   o.json = parsed.flag("--json");
   o.labels = parsed.flag("--labels");
   o.grouping.enabled = !parsed.flag("--no-group");
+  o.snap_writing = parsed.flag("--snap-writing");
   o.svg_dir = parsed.value("--svg-dir");
   return o;
 }

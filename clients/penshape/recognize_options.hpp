@@ -12,12 +12,13 @@ namespace penshape::cli {
 
 struct RecognizeOptions {
   RecognizerConfig recognizer;
-  GroupingConfig grouping; // enabled unless --no-group
-  bool on_ink = false;     // --ink
-  bool pressure = false;   // --pressure
-  bool json = false;       // --json
-  bool labels = false;     // --labels
-  bool help = false;       // --help
+  GroupingConfig grouping;   // enabled unless --no-group
+  bool on_ink = false;       // --ink
+  bool pressure = false;     // --pressure
+  bool json = false;         // --json
+  bool labels = false;       // --labels
+  bool snap_writing = false; // --snap-writing: writing strokes are recognized too
+  bool help = false;         // --help
   std::optional<std::string> svg_dir;
   std::vector<std::string> inputs; // FILE|DIR arguments
 };

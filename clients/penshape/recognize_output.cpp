@@ -157,6 +157,8 @@ void write_json_row(const RecognizeRow& row, const std::string* label) {
   json.key("name").string(first.name);
   if (label) json.key("label").string(*label);
   json.key("class").string(to_string(r.shape));
+  json.key("intent").string(std::string(to_string(row.intent.intent)));
+  json.key("writing_score").number(row.intent.writing_score);
   json.key("confidence").number(r.confidence);
   json.key("bound").number(r.certificate.bound);
   json.key("rms").number(r.rms);
@@ -192,6 +194,7 @@ void write_text_row(const RecognizeRow& row, const std::string* label) {
   std::printf("%s:%zu", first.file.c_str(), first.line);
   for (std::size_t i = 1; i < row.strokes.size(); ++i) std::printf(",%zu", row.strokes[i]->line);
   std::printf(" %s -> %s", first.name.c_str(), got.c_str());
+  if (row.intent.intent == Intent::kWriting) std::printf(" (writing)");
   if (r.certificate.certified) {
     std::printf(" (confidence %.2f, bound %.3g <= eps %.3g)", r.confidence, r.certificate.bound,
                 r.epsilon);

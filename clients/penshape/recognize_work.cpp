@@ -7,6 +7,8 @@
 #include <optional>
 
 #include "penshape/core/ink.hpp"
+#include "penshape/core/intent_grouper.hpp"
+#include "recognize_intent.hpp"
 
 namespace penshape::cli {
 namespace {
@@ -46,9 +48,11 @@ std::optional<InkPolygon> ink_of(const FileStroke& s, const RecognizerConfig& co
 
 std::vector<RecognizeRow> recognize_batch(const std::vector<FileStroke>& batch,
                                           const RecognizeOptions& options) {
-  StrokeGrouper grouper(options.grouping, options.recognizer);
+  const std::vector<IntentDecision> intents = intents_of(batch);
+  IntentGrouper grouper(options.grouping, options.recognizer, options.snap_writing);
   std::vector<double> seconds;
-  for (const FileStroke& s : batch) {
+  for (std::size_t k = 0; k < batch.size(); ++k) {
+    const FileStroke& s = batch[k];
     if (options.pressure && s.pressure.empty()) refuse(s, "--pressure: the stroke has no pressure");
     const auto t0 = std::chrono::steady_clock::now();
     StrokeInput input;
@@ -59,7 +63,7 @@ std::vector<RecognizeRow> recognize_batch(const std::vector<FileStroke>& batch,
         ink = ink_of(s, options.recognizer, options.pressure, input.pen_radius);
         if (ink) input.ink = &*ink;
       }
-      grouper.add(input);
+      grouper.add(input, intents[k].intent);
     } catch (const InvalidInput& e) {
       refuse(s, e.what());
     }
@@ -72,6 +76,7 @@ std::vector<RecognizeRow> recognize_batch(const std::vector<FileStroke>& batch,
       row.strokes.push_back(&batch[i]);
       row.seconds += seconds[i];
     }
+    row.intent = intent_of_answer(intents, g.strokes);
     row.shape = std::move(g);
     rows.push_back(std::move(row));
   }
