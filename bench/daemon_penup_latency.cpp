@@ -46,6 +46,7 @@
 #include <vector>
 
 #include "bench_support.hpp"
+#include "bench_tablet.hpp"
 #include "penshape/daemon/recognizing_analyzer.hpp"
 #include "penshape/daemon/sample_source.hpp"
 #include "penshape/daemon/server.hpp"
@@ -62,20 +63,9 @@ using penshape::daemon::monotonic_us;
 namespace v1 = penshape::v1;
 
 // Replays decoded strokes at 1 kHz, stamping every sample with the time it is "read".
-class StrokeSource final : public penshape::daemon::SampleSource {
+class StrokeSource final : public penshape::bench::BenchTablet {
  public:
-  explicit StrokeSource(penshape::TabletInfo tablet) : tablet_(std::move(tablet)) {}
-  void start(penshape::daemon::SampleSink& sink) override {
-    sink_ = &sink;
-    penshape::daemon::DeviceDescriptor d;
-    d.id = "bench";
-    d.tablet = tablet_;
-    sink.device_attached(d);
-  }
-  void stop() override {}
-  [[nodiscard]] std::vector<penshape::daemon::DeviceDescriptor> devices() const override {
-    return {};
-  }
+  using BenchTablet::BenchTablet;
   // Plays one stroke; returns the pen-up time (monotonic µs) handed to the pipeline.
   std::int64_t play(std::uint64_t id, const penshape::Stroke& stroke) {
     penshape::Stroke out;
@@ -94,10 +84,6 @@ class StrokeSource final : public penshape::daemon::SampleSource {
     sink_->stroke_finished("bench", std::move(out));
     return up;
   }
-
- private:
-  penshape::TabletInfo tablet_;
-  penshape::daemon::SampleSink* sink_ = nullptr;
 };
 
 using penshape::bench::Percentiles;
