@@ -246,12 +246,13 @@ TEST_P(HoldSnapDrawn, HeldStrokesSnapBeforePenUpInEveryMode) {
 
 INSTANTIATE_TEST_SUITE_P(Rates, HoldSnapDrawn, ::testing::Values(200, 1000));
 
-// An app's StreamSamples stream with snap_trigger = hold (its StreamStart settings), at 500 Hz: a
-// held circle dragged outwards snaps at the hold, follows the pen (updates at most one per 8 ms)
-// and is released with the radius grown by the drag; a circle drawn without a hold gets no shape.
-TEST(HoldSnapStream, AnAppsStreamHoldsFollowsAndReleases) {
+// The events a StreamSamples stream (snap_trigger = hold in its StreamStart) sends back for
+// `paths` (mm, seconds; one stroke each, a second apart), on a tablet of 100 units per mm.
+std::vector<v1::LiveEvent> stream_strokes(const std::vector<TimedPath>& paths) {
+  static int streams = 0;
   d::ServerOptions options;
-  options.address = "unix-abstract:penshape-hold-stream-" + std::to_string(::getpid());
+  options.address = "unix-abstract:penshape-hold-stream-" + std::to_string(::getpid()) + "-" +
+                    std::to_string(++streams);
   d::PenshapeServer server(options, {nullptr, nullptr, d::make_recognizing_analyzer()});
   auto live =
       v1::Live::NewStub(grpc::CreateChannel(options.address, grpc::InsecureChannelCredentials()));
@@ -265,15 +266,11 @@ TEST(HoldSnapStream, AnAppsStreamHoldsFollowsAndReleases) {
   tablet->set_x_max(100000);
   tablet->set_y_max(100000);
   start.mutable_start()->mutable_settings()->set_snap_trigger(v1::SNAP_TRIGGER_HOLD);
-  ASSERT_TRUE(stream->Write(start));
-  TimedPath held = drawn_circle(15, 1.0);
-  then_hold(held, 0.8, 0.15);
-  then_move(held, 6, 0, 0.3);
-  const TimedPath plain = drawn_circle(15, 1.0);
+  EXPECT_TRUE(stream->Write(start));
   double t0 = 0;
-  for (const TimedPath* path : {static_cast<const TimedPath*>(&held), &plain}) {
+  for (const TimedPath& path : paths) {
     v1::StreamSamplesRequest batch;
-    for (const TimedPoint& p : *path) {
+    for (const TimedPoint& p : path) {
       v1::PenSample* s = batch.mutable_samples()->add_samples();
       s->set_x(static_cast<std::int32_t>(std::lround((p.x + 50) * 100)));
       s->set_y(static_cast<std::int32_t>(std::lround((p.y + 50) * 100)));
@@ -285,13 +282,24 @@ TEST(HoldSnapStream, AnAppsStreamHoldsFollowsAndReleases) {
     up.set_tip(false);
     up.set_time_us(up.time_us() + 2000);
     *batch.mutable_samples()->add_samples() = up;
-    ASSERT_TRUE(stream->Write(batch));
-    t0 += path->back().t + 1;
+    EXPECT_TRUE(stream->Write(batch));
+    t0 += path.back().t + 0.3;
   }
   stream->WritesDone();
   std::vector<v1::LiveEvent> events;
   for (v1::LiveEvent e; stream->Read(&e);) events.push_back(e);
-  ASSERT_TRUE(stream->Finish().ok());
+  EXPECT_TRUE(stream->Finish().ok());
+  return events;
+}
+
+// An app's StreamSamples stream with snap_trigger = hold, at 500 Hz: a held circle dragged
+// outwards snaps at the hold, follows the pen (updates at most one per 8 ms) and is released with
+// the radius grown by the drag; a circle drawn without a hold gets no shape.
+TEST(HoldSnapStream, AnAppsStreamHoldsFollowsAndReleases) {
+  TimedPath held = drawn_circle(15, 1.0);
+  then_hold(held, 0.8, 0.15);
+  then_move(held, 6, 0, 0.3);
+  const std::vector<v1::LiveEvent> events = stream_strokes({held, drawn_circle(15, 1.0)});
   std::vector<std::uint64_t> finished;
   std::vector<v1::ShapeRecognized> shapes;
   std::size_t hold_at = 0, first_finish_at = 0;
@@ -326,6 +334,58 @@ TEST(HoldSnapStream, AnAppsStreamHoldsFollowsAndReleases) {
   EXPECT_EQ(release.supersedes_shape_ids(0), hold.shape_id());
   if (hold.shape().has_circle() && release.shape().has_circle()) {
     EXPECT_NEAR(release.shape().circle().radius() - hold.shape().circle().radius(), 6, 0.5);
+  }
+}
+
+// Grouping included: three sides of a rectangle drawn without a hold (snap_trigger = hold: no
+// shape for them), the fourth held: the hold snaps the rectangle of all four strokes at once.
+TEST(HoldSnapStream, AHoldCompletesAShapeWithTheStrokesBeforeIt) {
+  std::vector<TimedPath> sides;
+  const std::vector<std::pair<double, double>> corners{{0, 0}, {40, 0}, {40, 25}, {0, 25}, {0, 0}};
+  for (std::size_t k = 0; k + 1 < corners.size(); ++k) {
+    sides.push_back(drawn_through({corners[k], corners[k + 1]}, 150));
+  }
+  then_hold(sides.back(), 0.8, 0.15);
+  const std::vector<v1::LiveEvent> events = stream_strokes(sides);
+  std::vector<std::uint64_t> finished;
+  std::vector<v1::ShapeRecognized> shapes;
+  for (const v1::LiveEvent& e : events) {
+    if (e.has_stroke_finished()) finished.push_back(e.stroke_finished().stroke().id());
+    if (e.has_shape()) shapes.push_back(e.shape());
+  }
+  ASSERT_EQ(finished.size(), 4U);
+  ASSERT_EQ(shapes.size(), 2U) << "a HOLD and its RELEASE, nothing for the sides without a hold";
+  EXPECT_EQ(shapes[0].trigger(), v1::SHAPE_TRIGGER_HOLD);
+  EXPECT_TRUE(is_box(shapes[0].shape().kind())) << v1::ShapeKind_Name(shapes[0].shape().kind());
+  EXPECT_EQ(std::vector<std::uint64_t>(shapes[0].replaced_stroke_ids().begin(),
+                                       shapes[0].replaced_stroke_ids().end()),
+            finished);
+  EXPECT_EQ(shapes[1].trigger(), v1::SHAPE_TRIGGER_RELEASE);
+  EXPECT_EQ(shapes[1].shape_id(), shapes[0].shape_id());
+}
+
+// At the tablet's own pace (a recording replayed as recorded, 1 kHz): after the hold the shape
+// follows the pen while it is still down, FOLLOW updates between the HOLD and pen-up with the
+// HOLD's shape_id, no more than one per 8 ms.
+TEST(HoldSnapDrawnLive, TheHeldShapeFollowsThePenBeforePenUp) {
+  std::vector<DrawnStroke> plans;
+  for (const DrawnStroke& s : drawn_strokes()) {
+    if (s.plan == Plan::kHoldDrag && plans.size() < 2) plans.push_back(s);
+  }
+  std::vector<TimedPath> paths;
+  for (const DrawnStroke& s : plans) paths.push_back(s.path);
+  const fs::path dir = temp_dir();
+  write_strokes(dir / "follow.jsonl", paths);
+  synthesize(dir / "follow.jsonl", dir / "follow.hidrec", 1000, 1.0);
+  const auto got = replay(dir / "follow.hidrec", d::SnapTrigger::kBoth, plans.size(),
+                          penshape::drivers::ReplaySpeed::kOriginal);
+  for (std::size_t i = 0; i < plans.size(); ++i) {
+    SCOPED_TRACE("stroke " + std::to_string(i));
+    check_held(plans[i], got[i]);
+    std::size_t follows = 0;
+    for (const auto& e : got[i].before) follows += e.trigger() == v1::SHAPE_TRIGGER_FOLLOW ? 1 : 0;
+    EXPECT_GE(follows, 5U);
+    EXPECT_LE(follows, 300U / 8 + 2);
   }
 }
 
