@@ -23,6 +23,7 @@
 #include "penshape/daemon/server.hpp"
 #include "penshape/daemon/shape_hub.hpp"
 #include "penshape/drivers/recording.hpp"
+#include "penshape/v1/config.grpc.pb.h"
 #include "penshape/v1/live.grpc.pb.h"
 #include "test_data.hpp"
 
@@ -387,6 +388,65 @@ TEST(HoldSnapDrawnLive, TheHeldShapeFollowsThePenBeforePenUp) {
     EXPECT_GE(follows, 5U);
     EXPECT_LE(follows, 300U / 8 + 2);
   }
+}
+
+// The Config RPC reads and changes the hold settings per device model; a bad value is
+// INVALID_ARGUMENT naming the field, and changes nothing.
+TEST(HoldConfigRpc, PerDeviceSettingsAndBadValues) {
+  d::ServerOptions options;
+  options.address = "unix-abstract:penshape-hold-config-" + std::to_string(::getpid());
+  d::PenshapeServer server(options, {nullptr, nullptr, d::make_recognizing_analyzer()});
+  auto config =
+      v1::Config::NewStub(grpc::CreateChannel(options.address, grpc::InsecureChannelCredentials()));
+  auto set = [&](const v1::SetSettingsRequest& request, v1::SettingsResponse* out) {
+    grpc::ClientContext ctx;
+    return config->SetSettings(&ctx, request, out);
+  };
+  v1::SetSettingsRequest request;
+  request.set_device_key("28bd:0905");
+  request.mutable_settings()->set_snap_trigger(v1::SNAP_TRIGGER_HOLD);
+  request.mutable_settings()->set_hold_ms(800);
+  request.mutable_settings()->set_hold_radius_mm(0.5);
+  v1::SettingsResponse response;
+  ASSERT_TRUE(set(request, &response).ok());
+  EXPECT_EQ(response.effective().snap_trigger(), v1::SNAP_TRIGGER_HOLD);
+  EXPECT_EQ(response.effective().hold_ms(), 800U);
+  EXPECT_EQ(response.effective().hold_radius_mm(), 0.5);
+  v1::GetSettingsRequest defaults;
+  grpc::ClientContext get_ctx;
+  ASSERT_TRUE(config->GetSettings(&get_ctx, defaults, &response).ok());
+  EXPECT_EQ(response.effective().snap_trigger(), v1::SNAP_TRIGGER_BOTH) << "the defaults stay";
+  EXPECT_EQ(response.effective().hold_ms(), 500U);
+  for (const auto& [field, bad] : std::vector<std::pair<std::string, v1::PenSettings>>{
+           {"settings.snap_trigger",
+            [] {
+              v1::PenSettings p;
+              p.set_snap_trigger(v1::SNAP_TRIGGER_UNSPECIFIED);
+              return p;
+            }()},
+           {"settings.hold_ms",
+            [] {
+              v1::PenSettings p;
+              p.set_hold_ms(20);
+              return p;
+            }()},
+           {"settings.hold_radius_mm", [] {
+              v1::PenSettings p;
+              p.set_hold_radius_mm(-1);
+              return p;
+            }()}}) {
+    v1::SetSettingsRequest wrong;
+    wrong.set_device_key("28bd:0905");
+    *wrong.mutable_settings() = bad;
+    const grpc::Status status = set(wrong, &response);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT) << field;
+    EXPECT_NE(status.error_message().find(field), std::string::npos) << status.error_message();
+  }
+  v1::GetSettingsRequest device;
+  device.set_device_key("28bd:0905");
+  grpc::ClientContext again;
+  ASSERT_TRUE(config->GetSettings(&again, device, &response).ok());
+  EXPECT_EQ(response.effective().hold_ms(), 800U) << "a refused change changes nothing";
 }
 
 // A $1 gesture log's points (pixels, milliseconds) as a path from t = 0 (seconds).
