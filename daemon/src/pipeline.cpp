@@ -125,7 +125,8 @@ Pipeline::HoldWork Pipeline::on_hold_sample(const std::string& device_id, Drawin
     work.hold = drawing.hold;
     return work;
   }
-  HoldState& hold = *drawing.hold;
+  const std::shared_ptr<HoldState> held = drawing.hold; // outlives the reset below
+  HoldState& hold = *held;
   drawing.gate.see(hold, tip);
   {
     std::lock_guard lock(hold.mutex);
