@@ -64,21 +64,7 @@ class HoldPlayer final : public penshape::bench::BenchTablet {
         path.back().x = rest.x + static_cast<std::int32_t>(std::lround(units * i / 200));
       }
     }
-    penshape::Stroke out;
-    out.id = id;
-    out.tablet = tablet_;
-    auto next = std::chrono::steady_clock::now();
-    sink_->stroke_started("bench", id);
-    for (penshape::PenSample s : path) {
-      std::this_thread::sleep_until(next);
-      next += 1ms;
-      s.time_us = monotonic_us();
-      sink_->sample("bench", id, s);
-      out.samples.push_back(s);
-    }
-    const std::int64_t up = monotonic_us();
-    sink_->stroke_finished("bench", std::move(out));
-    return up;
+    return play_samples(id, path);
   }
 };
 
@@ -120,18 +106,6 @@ void print_row(bool json, const char* name, const std::vector<double>& ms, const
   } else {
     std::printf("%-44s %6zu %9.3f %9.3f %9.3f ms  %s\n", name, p.n, p.p50, p.p99, p.max, target);
   }
-}
-
-std::vector<double> wakeup_lateness_ms(int n) {
-  std::vector<double> late;
-  auto next = std::chrono::steady_clock::now();
-  for (int i = 0; i < n; ++i) {
-    next += 1ms;
-    std::this_thread::sleep_until(next);
-    late.push_back(
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - next).count());
-  }
-  return late;
 }
 
 } // namespace
@@ -204,7 +178,10 @@ int main(int argc, char** argv) {
                 decoded.strokes.size(), rounds);
     std::printf("%-44s %6s %9s %9s %9s\n", "case", "n", "p50", "p99", "max");
   }
-  print_row(json, "baseline: this machine's 1 ms wake-up lateness", wakeup_lateness_ms(3000),
+  std::vector<double> lateness_ms;
+  for (const double us : penshape::bench::wakeup_lateness_us(3000))
+    lateness_ms.push_back(us / 1000);
+  print_row(json, "baseline: this machine's 1 ms wake-up lateness", lateness_ms,
             "(no delivery beats it)");
   print_row(json, "baseline: pen-up -> shape (no hold)", penup_ms, "target p99 <= 8");
   print_row(json, "hold satisfied -> HOLD shape", hold_ms, "target p99 <= 8");
