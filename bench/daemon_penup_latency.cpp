@@ -46,6 +46,7 @@
 #include <vector>
 
 #include "bench_support.hpp"
+#include "bench_tablet.hpp"
 #include "penshape/daemon/recognizing_analyzer.hpp"
 #include "penshape/daemon/sample_source.hpp"
 #include "penshape/daemon/server.hpp"
@@ -62,42 +63,13 @@ using penshape::daemon::monotonic_us;
 namespace v1 = penshape::v1;
 
 // Replays decoded strokes at 1 kHz, stamping every sample with the time it is "read".
-class StrokeSource final : public penshape::daemon::SampleSource {
+class StrokeSource final : public penshape::bench::BenchTablet {
  public:
-  explicit StrokeSource(penshape::TabletInfo tablet) : tablet_(std::move(tablet)) {}
-  void start(penshape::daemon::SampleSink& sink) override {
-    sink_ = &sink;
-    penshape::daemon::DeviceDescriptor d;
-    d.id = "bench";
-    d.tablet = tablet_;
-    sink.device_attached(d);
-  }
-  void stop() override {}
-  [[nodiscard]] std::vector<penshape::daemon::DeviceDescriptor> devices() const override {
-    return {};
-  }
+  using BenchTablet::BenchTablet;
   // Plays one stroke; returns the pen-up time (monotonic µs) handed to the pipeline.
   std::int64_t play(std::uint64_t id, const penshape::Stroke& stroke) {
-    penshape::Stroke out;
-    out.id = id;
-    out.tablet = tablet_;
-    auto next = std::chrono::steady_clock::now();
-    sink_->stroke_started("bench", id);
-    for (penshape::PenSample s : stroke.samples) {
-      std::this_thread::sleep_until(next);
-      next += 1ms;
-      s.time_us = monotonic_us();
-      sink_->sample("bench", id, s);
-      out.samples.push_back(s);
-    }
-    const std::int64_t up = monotonic_us();
-    sink_->stroke_finished("bench", std::move(out));
-    return up;
+    return play_samples(id, stroke.samples);
   }
-
- private:
-  penshape::TabletInfo tablet_;
-  penshape::daemon::SampleSink* sink_ = nullptr;
 };
 
 using penshape::bench::Percentiles;
@@ -382,20 +354,6 @@ PhaseResult run_phase(const std::string& dir, const StrokeSet& decoded,
   return result;
 }
 
-// The machine's own wake-up jitter: a thread sleeping to each millisecond for `n` ms, nothing else
-// running; how late it wakes, in µs.
-std::vector<double> wakeup_jitter_us(int n) {
-  std::vector<double> late;
-  auto next = std::chrono::steady_clock::now();
-  for (int i = 0; i < n; ++i) {
-    next += 1ms;
-    std::this_thread::sleep_until(next);
-    late.push_back(
-        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - next).count());
-  }
-  return late;
-}
-
 // A tablet's grouping session called directly (no daemon, no gRPC): the strokes added in order,
 // back to back in time as the phases play them; the time of each add(), in ms.
 std::vector<double> grouping_session_ms(penshape::daemon::StrokeAnalyzer& analyzer,
@@ -473,7 +431,7 @@ int main(int argc, char** argv) {
   const std::string dir = penshape::bench::make_scratch_dir();
   if (!json) std::printf("%-48s %6s %10s %10s %10s\n", "case", "n", "p50", "p99", "max");
   print_row(json, "baseline: this machine's 1 ms wake-up lateness",
-            percentiles(wakeup_jitter_us(5000)), "us", "(no delivery beats it)");
+            percentiles(penshape::bench::wakeup_lateness_us(5000)), "us", "(no delivery beats it)");
   for (const StrokeSet* set : {&recorded, &dense}) {
     // Baseline: the analyzer alone, on the same strokes.
     std::vector<double> direct_ms;

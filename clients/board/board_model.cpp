@@ -39,12 +39,21 @@ int BoardModel::server_shape(std::uint64_t server_id, const v1::Shape& shape) {
   BoardStroke* s = find(server_id);
   if (s == nullptr) return -1;
   s->answered = true;
+  s->held.reset();
   if (shape.kind() == v1::SHAPE_KIND_NONE || shape.kind() == v1::SHAPE_KIND_UNSPECIFIED) {
     s->note = "no shape";
   } else {
     s->shape = shape;
     s->snapped = true;
   }
+  return static_cast<int>(s - strokes_.data());
+}
+
+int BoardModel::server_held(std::uint64_t server_id, const v1::Shape& shape) {
+  BoardStroke* s = find(server_id);
+  if (s == nullptr || s->answered) return -1; // the pen-up answer rules
+  s->held = shape;
+  s->preview.reset();
   return static_cast<int>(s - strokes_.data());
 }
 

@@ -21,6 +21,8 @@ struct BoardStroke {
   std::uint64_t server_id = 0;      // the daemon's stroke id (0 until StrokeStarted arrives)
   std::optional<v1::Shape> shape;   // a certified shape (never SHAPE_KIND_NONE)
   std::optional<v1::Shape> preview; // while drawing: what it would snap to now (a hint)
+  std::optional<v1::Shape> held;    // hold to snap: the certified shape shown while the pen is
+                                    // still down (it follows the pen), until pen-up commits
   bool snapped = false;             // shape shown instead of the raw stroke
   bool finished = false;            // StrokeFinished arrived (a shape may follow)
   bool answered = false;            // the daemon has answered (shape, none, or not analysed)
@@ -39,6 +41,9 @@ class BoardModel {
   // The result for a server stroke; returns the stroke's index, or -1 when unknown.
   int server_shape(std::uint64_t server_id, const v1::Shape& shape);
   int server_not_analysed(std::uint64_t server_id, const std::string& why);
+  // Hold to snap: the shape the stroke snapped to while the pen is still down, or its update as
+  // it follows the pen (HOLD, FOLLOW); the pen-up answer (server_shape) commits or replaces it.
+  int server_held(std::uint64_t server_id, const v1::Shape& shape);
   // A preview of a stroke still being drawn (the best candidate; none clears it).
   int server_preview(std::uint64_t server_id, const v1::Shape* best);
   // StrokeFinished with its analysis done: a ShapeRecognized, when the daemon recognizes shapes,

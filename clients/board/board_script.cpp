@@ -29,13 +29,20 @@ std::vector<ScriptCommand> read_script(const std::string& path) {
     } else if (op == "key") {
       c.op = ScriptCommand::Op::kKey;
       if (!(words >> c.text)) throw ScriptError(where + "key needs a key name");
-    } else if (op == "wait-answers") {
-      c.op = ScriptCommand::Op::kWaitAnswers;
+    } else if (op == "wait-answers" || op == "wait-held") {
+      c.op = op == "wait-held" ? ScriptCommand::Op::kWaitHeld : ScriptCommand::Op::kWaitAnswers;
       if (words >> c.seconds) {
         if (!std::isfinite(c.seconds) || c.seconds <= 0 || c.seconds > 3600) {
-          throw ScriptError(where + "wait-answers needs seconds in (0, 3600]");
+          throw ScriptError(where + op + " needs seconds in (0, 3600]");
         }
       }
+    } else if (op == "hold") {
+      c.op = ScriptCommand::Op::kHold;
+      double ms = 0;
+      if (!(words >> ms) || !std::isfinite(ms) || ms <= 0 || ms > 60000) {
+        throw ScriptError(where + "hold needs milliseconds in (0, 60000]");
+      }
+      c.seconds = ms / 1000;
     } else if (op == "screenshot") {
       c.op = ScriptCommand::Op::kScreenshot;
       if (!(words >> c.text)) throw ScriptError(where + "screenshot needs a file name");

@@ -5,6 +5,10 @@
 //   key NAME                        a key press, by SDL key name ("u", "=", "-", "[", "]", "c")
 //   wait-answers [SECONDS]          until the daemon has answered every stroke (default 20 s;
 //                                   past it the board exits with code 1)
+//   hold MS                         the pen stays down where it is for MS milliseconds (the board
+//                                   repeats its position meanwhile, as a tablet does)
+//   wait-held [SECONDS]             until the stroke being drawn shows a hold snap (default 20 s;
+//                                   past it the board exits with code 1)
 //   screenshot FILE                 the window's picture as a 24-bit BMP
 //   quit
 #include <stdexcept>
@@ -14,7 +18,7 @@
 namespace penshape::board {
 
 struct ScriptCommand {
-  enum class Op { kDown, kMove, kUp, kKey, kWaitAnswers, kScreenshot, kQuit };
+  enum class Op { kDown, kMove, kUp, kKey, kWaitAnswers, kHold, kWaitHeld, kScreenshot, kQuit };
   Op op = Op::kQuit;
   int x = 0;
   int y = 0;

@@ -110,6 +110,9 @@ void draw_board(SDL_Renderer* renderer, const BoardModel& model) {
     if (s.snapped && s.shape) {
       faint.ink(s.points, s.pen_radius_px);
       shapes.ink(shape_polyline(*s.shape), s.pen_radius_px);
+    } else if (s.held) { // held while the pen is down: the shape, following the pen
+      faint.ink(s.points, s.pen_radius_px);
+      shapes.ink(shape_polyline(*s.held), s.pen_radius_px);
     } else {
       raw.ink(s.points, s.pen_radius_px);
     }

@@ -219,6 +219,13 @@ class Board {
                                   p.candidates_size() > 0 ? &p.candidates(0) : nullptr) >= 0) {
           dirty_ = true;
         }
+      } else if (e.has_shape() && (e.shape().trigger() == v1::SHAPE_TRIGGER_HOLD ||
+                                   e.shape().trigger() == v1::SHAPE_TRIGGER_FOLLOW)) {
+        const int i = model_.server_held(e.shape().stroke_id(), e.shape().shape());
+        if (i >= 0 && e.shape().trigger() == v1::SHAPE_TRIGGER_HOLD) {
+          say("stroke " + std::to_string(i + 1) + " held: " + describe_shape(e.shape().shape()));
+        }
+        dirty_ = dirty_ || i >= 0;
       } else if (e.has_shape()) {
         const int i = model_.server_shape(e.shape().stroke_id(), e.shape().shape());
         if (i >= 0) {
@@ -268,6 +275,16 @@ class Board {
     }
   }
 
+  // While the pen is down and still, its position is sent again every kKeepAlive, as a tablet
+  // keeps reporting: the daemon's hold to snap decides on the samples it gets.
+  static constexpr std::chrono::milliseconds kKeepAlive{10};
+  void keep_alive() {
+    if (!model_.drawing() || model_.strokes().empty()) return;
+    if (std::chrono::steady_clock::now() - last_sent_ < kKeepAlive) return;
+    const PointPx p = model_.strokes().back().points.back();
+    send(p, true);
+  }
+
   [[nodiscard]] bool running() const { return running_; }
   void stop() { running_ = false; }
   [[nodiscard]] const BoardModel& model() const { return model_; }
@@ -275,10 +292,6 @@ class Board {
  private:
   void pointer(int x, int y, bool tip, bool continuing) {
     const PointPx p{static_cast<float>(x), static_cast<float>(y)};
-    // Sample times from a steady clock: they must never go back.
-    const auto now = std::chrono::steady_clock::now().time_since_epoch();
-    time_us_ =
-        std::max(time_us_ + 1, std::chrono::duration_cast<std::chrono::microseconds>(now).count());
     if (tip && !continuing) {
       model_.begin_stroke(p, static_cast<float>(radius_ * kPixelsPerMm));
     } else if (tip) {
@@ -286,11 +299,21 @@ class Board {
     } else {
       model_.end_stroke(p);
     }
+    send(p, tip);
+    dirty_ = true;
+  }
+
+  void send(PointPx p, bool tip) {
+    // Sample times from a steady clock: they must never go back.
+    const auto now = std::chrono::steady_clock::now();
+    last_sent_ = now;
+    time_us_ = std::max(
+        time_us_ + 1,
+        std::chrono::duration_cast<std::chrono::microseconds>(now.time_since_epoch()).count());
     if (!link_.send(p.x, p.y, tip, time_us_) && disconnected_.empty()) {
       disconnected_ = "the daemon's stream is closed";
       update_title();
     }
-    dirty_ = true;
   }
 
   void key(SDL_Keycode k, bool ctrl) {
@@ -337,6 +360,7 @@ class Board {
   double radius_ = options_.radius;
   double tolerance_ = options_.tolerance;
   std::int64_t time_us_ = 0;
+  std::chrono::steady_clock::time_point last_sent_;
   bool running_ = true;
   bool dirty_ = true;
   std::string last_ = "-";
@@ -402,6 +426,10 @@ class ScriptRunner {
         }
         return true; // try again next turn
       }
+      case ScriptCommand::Op::kHold:
+      case ScriptCommand::Op::kWaitHeld:
+        if (!waited(board, c)) return c.op == ScriptCommand::Op::kHold || !timed_out();
+        break;
       case ScriptCommand::Op::kScreenshot:
         if (!board.screenshot(c.text)) return false;
         break;
@@ -414,6 +442,27 @@ class ScriptRunner {
   }
 
  private:
+  // hold: its time has passed; wait-held: the stroke being drawn shows a hold snap. Starts the
+  // command's clock on its first turn and stops it when done.
+  bool waited(const Board& board, const ScriptCommand& c) {
+    if (!waiting_) {
+      waiting_ = true;
+      deadline_ = std::chrono::steady_clock::now() +
+                  std::chrono::milliseconds(static_cast<long>(c.seconds * 1000));
+    }
+    const auto& strokes = board.model().strokes();
+    const bool done = c.op == ScriptCommand::Op::kHold
+                          ? std::chrono::steady_clock::now() >= deadline_
+                          : !strokes.empty() && strokes.back().held.has_value();
+    if (done) waiting_ = false;
+    return done;
+  }
+  bool timed_out() {
+    if (std::chrono::steady_clock::now() <= deadline_) return false;
+    say("script: no hold snap in time");
+    return true;
+  }
+
   std::vector<ScriptCommand> commands_;
   std::size_t next_ = 0;
   bool waiting_ = false;
@@ -455,11 +504,13 @@ int run(const Options& o) {
         break;
       }
       SDL_Event e;
-      // Sleep until something happens (a script turn does not wait long).
-      if (SDL_WaitEventTimeout(&e, script ? 5 : 250) != 0) {
+      // Sleep until something happens (a script turn, or a pen resting down, does not wait long).
+      const int timeout_ms = board.model().drawing() ? 5 : script ? 5 : 250;
+      if (SDL_WaitEventTimeout(&e, timeout_ms) != 0) {
         board.handle(e);
         while (SDL_PollEvent(&e) != 0) board.handle(e);
       }
+      board.keep_alive();
       board.poll_daemon();
       board.render_if_needed();
     }

@@ -245,6 +245,9 @@ void write_shape_json(JsonWriter& json, const v1::Shape& shape) {
     json.key("tolerance").string(shape.certificate().tolerance().rational());
     json.key("pen_radius").string(shape.certificate().pen_radius().rational());
     json.key("method").string(shape.certificate().method());
+    if (!shape.certificate().scope().empty()) {
+      json.key("scope").string(shape.certificate().scope());
+    }
   }
   json.end_object();
 }
@@ -267,6 +270,51 @@ std::string millimetres(double v) {
   std::snprintf(buf, sizeof buf, "%.3g mm", v);
   return buf;
 }
+
+namespace {
+
+// The trigger of a ShapeRecognized as a word ("pen_up" for daemons older than hold to snap).
+std::string trigger_name(v1::ShapeTrigger trigger) {
+  switch (trigger) {
+    case v1::SHAPE_TRIGGER_HOLD:
+      return "hold";
+    case v1::SHAPE_TRIGGER_FOLLOW:
+      return "follow";
+    case v1::SHAPE_TRIGGER_RELEASE:
+      return "release";
+    default:
+      return "pen_up";
+  }
+}
+
+// "hold":{"certified_samples","hold_point":[x,y],"pen_point":[x,y],"adjusted","held_shape_id"}
+void write_hold_json(JsonWriter& json, const v1::HoldSnap& h) {
+  json.key("hold").begin_object();
+  json.key("certified_samples").integer(h.certified_samples());
+  json.key("hold_point");
+  write_point(json, h.hold_point());
+  json.key("pen_point");
+  write_point(json, h.pen_point());
+  json.key("adjusted").boolean(h.adjusted());
+  json.key("held_shape_id").integer(static_cast<std::int64_t>(h.held_shape_id()));
+  json.end_object();
+}
+
+// " (hold)", " (follows the pen)", " (released, adjusted)": "" for a pen-up snap.
+std::string hold_text(const v1::ShapeRecognized& r) {
+  switch (r.trigger()) {
+    case v1::SHAPE_TRIGGER_HOLD:
+      return " (held, pen down)";
+    case v1::SHAPE_TRIGGER_FOLLOW:
+      return " (follows the pen)";
+    case v1::SHAPE_TRIGGER_RELEASE:
+      return r.hold().adjusted() ? " (released, adjusted by the drag)" : " (released)";
+    default:
+      return "";
+  }
+}
+
+} // namespace
 
 std::string event_json(const v1::LiveEvent& event) {
   JsonWriter json;
@@ -340,6 +388,8 @@ std::string event_json(const v1::LiveEvent& event) {
       write_ids(json, "supersedes_shape_ids", event.shape().supersedes_shape_ids());
       write_ids(json, "supersedes_sequences", event.shape().supersedes_sequences());
       write_tidy(json, event.shape().tidy());
+      json.key("trigger").string(trigger_name(event.shape().trigger()));
+      if (event.shape().has_hold()) write_hold_json(json, event.shape().hold());
       break;
     case v1::LiveEvent::kDeconstructed: {
       const auto& d = event.deconstructed();
@@ -417,7 +467,7 @@ std::string event_line(const v1::LiveEvent& event) {
       const v1::ShapeRecognized& r = event.shape();
       std::string out = who + "stroke " + std::to_string(r.stroke_id());
       if (r.shape_id() != 0) out += " (shape " + std::to_string(r.shape_id()) + ")";
-      return out + (r.shape().kind() == v1::SHAPE_KIND_NONE ? " is " : " is a ") +
+      return out + hold_text(r) + (r.shape().kind() == v1::SHAPE_KIND_NONE ? " is " : " is a ") +
              shape_summary(r.shape()) +
              grouping_text(r.replaced_stroke_ids(), r.supersedes_shape_ids(), r.tidy());
     }

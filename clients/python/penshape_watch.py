@@ -7,7 +7,9 @@ proto/penshape/v1/*.proto:
     PYTHONPATH=build/release/clients/python/gen /usr/bin/python3 clients/python/penshape_watch.py
 
 Options: --socket PATH or --address ADDR (default: unix:$XDG_RUNTIME_DIR/penshape.sock),
---count N (stop after N shapes), --json (one JSON object per shape).
+--count N (stop after N shapes), --json (one JSON object per shape). With hold to snap
+(penshaped's snap_trigger hold or both) it also prints each hold snap ("held, pen down"), the
+updates as the shape follows the pen ("follows the pen") and the final shape ("released").
 Exit codes: 0 ok (also on Ctrl-C), 2 bad usage, 1 daemon not running or failed.
 """
 import argparse
@@ -70,8 +72,29 @@ def add_grouping(record, recognized):
     record["tidy"] = list(recognized.tidy)
 
 
+TRIGGERS = {live_pb2.SHAPE_TRIGGER_HOLD: "hold", live_pb2.SHAPE_TRIGGER_FOLLOW: "follow",
+            live_pb2.SHAPE_TRIGGER_RELEASE: "release"}
+
+
+def add_hold(record, recognized):
+    """Hold to snap: "hold" while the pen is still down, "follow" as the shape follows the pen
+    after the hold, "release" for the final shape at pen-up ("pen_up": a snap without a hold)."""
+    record["trigger"] = TRIGGERS.get(recognized.trigger, "pen_up")
+    if recognized.HasField("hold"):
+        record["hold_point"] = [recognized.hold.hold_point.x, recognized.hold.hold_point.y]
+        record["pen_point"] = [recognized.hold.pen_point.x, recognized.hold.pen_point.y]
+        record["adjusted"] = recognized.hold.adjusted
+
+
 def describe(record):
     text = "stroke %d on %s: %s" % (record["stroke_id"], record["device_id"], record["kind"])
+    trigger = record.get("trigger", "pen_up")
+    if trigger == "hold":
+        text = "held, pen down: " + text
+    elif trigger == "follow":
+        text = "follows the pen: " + text
+    elif trigger == "release":
+        text = ("released, adjusted: " if record.get("adjusted") else "released: ") + text
     if "vertices" in record:
         text += " " + " ".join("(%.2f, %.2f)" % tuple(v) for v in record["vertices"])
     if "radius" in record:
@@ -122,6 +145,7 @@ def main():
             elif kind == "shape":
                 record = shape_record(event.device_id, event.shape.stroke_id, event.shape.shape)
                 add_grouping(record, event.shape)
+                add_hold(record, event.shape)
                 print(json.dumps(record) if args.json else describe(record), flush=True)
                 shapes += 1
                 if args.count and shapes >= args.count:

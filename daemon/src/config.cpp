@@ -71,16 +71,26 @@ bool parse_bool(const LineContext& at, const std::string& key, std::string_view 
 // Applies one pen-settings key to `update`; false when `key` is not a pen-settings key.
 bool apply_settings_key(const LineContext& at, const std::string& key, std::string_view value,
                         PenSettingsUpdate& update) {
-  std::optional<double>* slot = nullptr;
-  if (key == "pen_radius_mm") slot = &update.pen_radius_mm;
-  if (key == "tolerance_fraction") slot = &update.tolerance_fraction;
-  if (key == "precision_fraction") slot = &update.precision_fraction;
-  if (slot == nullptr) return false;
-  *slot = parse_double(at, key, value);
+  if (key == "snap_trigger") {
+    update.snap_trigger = parse_snap_trigger(std::string(value));
+    if (!update.snap_trigger) {
+      at.fail(key, "expected pen_up, hold or both, got '" + std::string(value) + "'");
+    }
+    return true;
+  }
+  using Field = std::optional<double> PenSettingsUpdate::*;
+  const std::map<std::string, Field> fields = {
+      {"pen_radius_mm", &PenSettingsUpdate::pen_radius_mm},
+      {"tolerance_fraction", &PenSettingsUpdate::tolerance_fraction},
+      {"precision_fraction", &PenSettingsUpdate::precision_fraction},
+      {"hold_ms", &PenSettingsUpdate::hold_ms},
+      {"hold_radius_mm", &PenSettingsUpdate::hold_radius_mm}};
+  const auto field = fields.find(key);
+  if (field == fields.end()) return false;
+  const double parsed = parse_double(at, key, value);
+  update.*(field->second) = parsed;
   PenSettingsUpdate single;
-  if (key == "pen_radius_mm") single.pen_radius_mm = *slot;
-  if (key == "tolerance_fraction") single.tolerance_fraction = *slot;
-  if (key == "precision_fraction") single.precision_fraction = *slot;
+  single.*(field->second) = parsed;
   try {
     validate(single, "");
   } catch (const SettingsError& e) {
@@ -219,7 +229,7 @@ DaemonConfig parse_config(std::string_view text, const std::string& origin) {
     } else if (!apply_settings_key(at, key, value, config.device_settings[section])) {
       at.fail(key,
               "unknown key in a [device] section (pen_radius_mm, tolerance_fraction, "
-              "precision_fraction, width_mm, height_mm)");
+              "precision_fraction, snap_trigger, hold_ms, hold_radius_mm, width_mm, height_mm)");
     }
   }
   for (const auto& [key, size] : sizes) {

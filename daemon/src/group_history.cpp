@@ -49,6 +49,11 @@ void GroupHistory::remember(const GroupedStrokeAnalysis& r, std::uint64_t shape_
   }
 }
 
+void GroupHistory::rename(std::size_t answer, std::uint64_t shape_id, std::uint64_t sequence) {
+  const auto it = answers_.find(answer);
+  if (it != answers_.end()) it->second = {shape_id, sequence};
+}
+
 GroupHistory GroupHistory::copy() const {
   GroupHistory out;
   out.session_ = session_ ? session_->clone() : nullptr;

@@ -42,6 +42,8 @@ class GroupHistory {
   // After take(): the answer's published id and hub sequence (0 when not published), so a later
   // answer can name it; ids of strokes the session forgot are dropped.
   void remember(const GroupedStrokeAnalysis& r, std::uint64_t shape_id, std::uint64_t sequence);
+  // A remembered answer now published under another id (a hold's final shape after a drag).
+  void rename(std::size_t answer, std::uint64_t shape_id, std::uint64_t sequence);
 
   // For previews: a copy whose session is independent, and what its indices stand for.
   [[nodiscard]] GroupHistory copy() const;

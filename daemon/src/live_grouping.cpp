@@ -26,7 +26,19 @@ bool LiveGrouping::groups() {
   return known == 1;
 }
 
-void LiveGrouping::finish(const std::string& device_id, Stroke stroke) {
+void LiveGrouping::finish(const std::string& device_id, Stroke stroke,
+                          std::shared_ptr<HoldState> hold, bool hold_only) {
+  enqueue(device_id,
+          {std::move(stroke), std::chrono::steady_clock::now(), std::move(hold), false, hold_only});
+}
+
+void LiveGrouping::hold(const std::string& device_id, Stroke partial,
+                        std::shared_ptr<HoldState> hold) {
+  enqueue(device_id,
+          {std::move(partial), std::chrono::steady_clock::now(), std::move(hold), true, false});
+}
+
+void LiveGrouping::enqueue(const std::string& device_id, Pending pending) {
   std::shared_ptr<Lane> lane;
   {
     std::lock_guard lock(mutex_);
@@ -36,7 +48,7 @@ void LiveGrouping::finish(const std::string& device_id, Stroke stroke) {
   }
   {
     std::lock_guard lock(lane->mutex);
-    lane->queue.push_back({std::move(stroke), std::chrono::steady_clock::now()});
+    lane->queue.push_back(std::move(pending));
     if (lane->running) return; // the strand takes it after the strokes before it
     lane->running = true;
   }
@@ -55,6 +67,11 @@ void LiveGrouping::finish(const std::string& device_id, Stroke stroke) {
     lane->running = false;
   }
   for (const Pending& p : refused) {
+    if (p.is_hold) {
+      std::lock_guard hold_lock(p.hold->mutex);
+      p.hold->phase = HoldState::Phase::kNothing; // not snapped: the stroke goes on
+      continue;
+    }
     publish_stroke(state_.hub, device_id, p.stroke, nullptr,
                    "the geometry queue was full; the stroke was not analysed", {});
   }
@@ -72,12 +89,34 @@ void LiveGrouping::run_strand(const std::shared_ptr<Lane>& lane, const std::stri
       next = std::move(lane->queue.front());
       lane->queue.pop_front();
     }
-    process(*lane, device_id, std::move(next));
+    process(*lane, device_id, next);
   }
   job_done_();
 }
 
-void LiveGrouping::process(Lane& lane, const std::string& device_id, Pending pending) {
+void LiveGrouping::process(Lane& lane, const std::string& device_id, const Pending& pending) {
+  bool snapped_hold = false;
+  if (pending.hold) {
+    std::lock_guard lock(pending.hold->mutex);
+    snapped_hold = pending.hold->phase == HoldState::Phase::kSnapped;
+  }
+  if (pending.is_hold) {
+    snap_hold(lane, device_id, pending);
+  } else if (snapped_hold) {
+    release(lane, device_id, pending);
+  } else {
+    analyse(lane, device_id, pending);
+  }
+  // After the shape is out: the copy a preview of the next stroke starts from.
+  std::shared_ptr<const GroupHistory> snapshot;
+  if (state_.hub.wants_previews()) {
+    snapshot = std::make_shared<const GroupHistory>(lane.history.copy());
+  }
+  std::lock_guard lock(lane.mutex);
+  lane.snapshot = std::move(snapshot);
+}
+
+void LiveGrouping::analyse(Lane& lane, const std::string& device_id, const Pending& pending) {
   const auto started = std::chrono::steady_clock::now();
   v1::Timings timings;
   timings.set_queued_us(micros(started - pending.submitted));
@@ -93,7 +132,7 @@ void LiveGrouping::process(Lane& lane, const std::string& device_id, Pending pen
     const auto now = std::chrono::steady_clock::now();
     timings.set_compute_us(micros(now - started));
     timings.set_total_us(micros(now - pending.submitted));
-    publish(device_id, stroke, result, timings, h);
+    publish(device_id, stroke, result, timings, h, !pending.hold_only);
     if (published_) published_(device_id, stroke.id, result.analysis.ink_polygon, settings);
   } catch (const std::exception& e) {
     publish_stroke(state_.hub, device_id, stroke, nullptr,
@@ -101,16 +140,74 @@ void LiveGrouping::process(Lane& lane, const std::string& device_id, Pending pen
   } catch (...) {
     publish_stroke(state_.hub, device_id, stroke, nullptr, "analysis failed", timings);
   }
-  // After the shape is out: the copy a preview of the next stroke starts from.
-  std::shared_ptr<const GroupHistory> snapshot;
-  if (state_.hub.wants_previews()) snapshot = std::make_shared<const GroupHistory>(h.copy());
-  std::lock_guard lock(lane.mutex);
-  lane.snapshot = std::move(snapshot);
+}
+
+// The stroke so far is added to a copy of the grouping; only a certified shape makes the copy
+// the device's grouping (the stroke then counts as drawn up to the hold), else nothing changed.
+void LiveGrouping::snap_hold(Lane& lane, const std::string& device_id, const Pending& pending) {
+  const auto started = std::chrono::steady_clock::now();
+  HoldState& hold = *pending.hold;
+  GroupHistory& h = lane.history;
+  h.ensure(*state_.analyzer, settings_for(state_, pending.stroke.tablet), state_.grouping.get());
+  const StopCondition stop(started + std::chrono::seconds(state_.limits.max_call_seconds), {});
+  std::optional<v1::LiveEvent> event;
+  try {
+    event = snap_at_hold(h, pending.stroke, hold, state_.next_shape_id, cancel_hook(stop),
+                         ink_offload(state_.stroke_pool));
+  } catch (...) {
+    event.reset(); // cancelled or refused: as if the pen had not held
+  }
+  const bool snapped = event.has_value();
+  if (snapped) {
+    event->set_device_id(device_id);
+    v1::Timings* t = event->mutable_shape()->mutable_timings();
+    const auto now = std::chrono::steady_clock::now();
+    t->set_queued_us(micros(started - pending.submitted));
+    t->set_compute_us(micros(now - started));
+    t->set_total_us(micros(now - pending.submitted));
+    hold.sequence = state_.hub.publish(std::move(*event));
+    h.rename(hold.answer, hold.shape_id, hold.sequence);
+  }
+  std::lock_guard lock(hold.mutex);
+  hold.phase = snapped ? HoldState::Phase::kSnapped : HoldState::Phase::kNothing;
+}
+
+// Pen-up after a snapped hold: the final shape is the held one moved by the drag, if any.
+void LiveGrouping::release(Lane& lane, const std::string& device_id, const Pending& pending) {
+  const auto started = std::chrono::steady_clock::now();
+  const HoldState& hold = *pending.hold;
+  const Stroke& stroke = pending.stroke;
+  v1::LiveEvent finished;
+  finished.set_device_id(device_id);
+  v1::StrokeFinished* f = finished.mutable_stroke_finished();
+  to_proto(stroke, f->mutable_stroke());
+  *f->mutable_ink_polygon() = hold.ink; // the ink the shape certifies: drawn up to the hold
+  state_.hub.publish(std::move(finished));
+
+  const Drag drag = drag_after_hold(stroke, hold);
+  v1::LiveEvent event = hold_event(device_id, stroke.id, hold, drag, v1::SHAPE_TRIGGER_RELEASE);
+  v1::ShapeRecognized* s = event.mutable_shape();
+  std::uint64_t shape_id = hold.shape_id;
+  if (drag.dragged) { // a new answer, superseding the hold's
+    shape_id = ++state_.next_shape_id;
+    s->set_shape_id(shape_id);
+    s->add_supersedes_shape_ids(hold.shape_id);
+    s->add_supersedes_sequences(hold.sequence);
+  }
+  const auto now = std::chrono::steady_clock::now();
+  s->mutable_timings()->set_queued_us(micros(started - pending.submitted));
+  s->mutable_timings()->set_compute_us(micros(now - started));
+  s->mutable_timings()->set_total_us(micros(now - pending.submitted));
+  const std::uint64_t sequence = state_.hub.publish(std::move(event));
+  if (drag.dragged && hold.grouped) lane.history.rename(hold.answer, shape_id, sequence);
+  if (published_) {
+    published_(device_id, stroke.id, hold.ink, settings_for(state_, stroke.tablet));
+  }
 }
 
 void LiveGrouping::publish(const std::string& device_id, const Stroke& stroke,
                            GroupedStrokeAnalysis& result, const v1::Timings& timings,
-                           GroupHistory& history) {
+                           GroupHistory& history, bool publish_shape) {
   v1::LiveEvent finished;
   finished.set_device_id(device_id);
   v1::StrokeFinished* f = finished.mutable_stroke_finished();
@@ -129,7 +226,9 @@ void LiveGrouping::publish(const std::string& device_id, const Stroke& stroke,
   const std::uint64_t shape_id = ++state_.next_shape_id;
   set_group_fields(answer, result.tidy, shape_id, s);
   for (const std::uint64_t q : answer.supersedes_sequences) s->add_supersedes_sequences(q);
-  const std::uint64_t sequence = state_.hub.publish(std::move(event));
+  s->set_trigger(v1::SHAPE_TRIGGER_PEN_UP);
+  // snap_trigger = hold: grouped (a later held stroke may complete a shape with it), not snapped.
+  const std::uint64_t sequence = publish_shape ? state_.hub.publish(std::move(event)) : 0;
   history.remember(result, shape_id, sequence);
 }
 

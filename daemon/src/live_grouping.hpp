@@ -12,6 +12,10 @@
 // answers it supersedes. While previews are wanted, a copy of each device's grouping is kept
 // after every stroke, so a preview can add the stroke in progress to a copy of its own (on the
 // preview lane, without touching the strand's state).
+//
+// Hold to snap runs on the same strand: the stroke so far of a hold is queued after the strokes
+// finished before it and recognized with the grouping (hold_snap.hpp), its HOLD shape published at
+// once; at pen-up the stroke's final shape (RELEASE) replaces its analysis (live.proto's HoldSnap).
 #include <atomic>
 #include <cstdint>
 #include <deque>
@@ -25,6 +29,8 @@
 
 #include "daemon_state.hpp"
 #include "group_history.hpp"
+#include "hold_snap.hpp"
+#include "hold_state.hpp"
 #include "penshape/v1/live.pb.h"
 
 namespace penshape::daemon {
@@ -44,8 +50,16 @@ class LiveGrouping {
 
   // The analyzer groups strokes (else each live stroke is analysed alone, concurrently).
   bool groups();
-  // Queues a finished stroke for its device's strand (call only when groups()).
-  void finish(const std::string& device_id, Stroke stroke);
+  // Queues a finished stroke for its device's strand (call only when groups()). `hold`: the
+  // stroke's hold (hold to snap), if it had one: when it snapped, pen-up publishes its final shape
+  // (RELEASE) instead of analysing the stroke. `hold_only` (snap_trigger = hold): a stroke whose
+  // hold snapped nothing is still grouped, but gets no ShapeRecognized.
+  void finish(const std::string& device_id, Stroke stroke,
+              std::shared_ptr<HoldState> hold = nullptr, bool hold_only = false);
+  // Queues the stroke so far of a hold (hold to snap) for its device's strand, after the strokes
+  // finished before it: its grouped, certified shape is published at once (HOLD) and `hold`
+  // told what it snapped (HoldState::Phase).
+  void hold(const std::string& device_id, Stroke partial, std::shared_ptr<HoldState> hold);
   // The device is gone: its grouping is forgotten (unless its strand still runs).
   void forget_device(const std::string& device_id);
   // The certified group the stroke in progress would complete with its device's recent strokes
@@ -57,6 +71,9 @@ class LiveGrouping {
   struct Pending {
     Stroke stroke;
     std::chrono::steady_clock::time_point submitted;
+    std::shared_ptr<HoldState> hold; // the stroke's hold, if any
+    bool is_hold = false;            // the stroke so far of `hold` (else a finished stroke)
+    bool hold_only = false;          // snap_trigger = hold
   };
   struct Lane {
     std::mutex mutex;
@@ -68,10 +85,15 @@ class LiveGrouping {
     std::shared_ptr<const GroupHistory> snapshot; // for previews, guarded by mutex
   };
 
+  void enqueue(const std::string& device_id, Pending pending);
   void run_strand(const std::shared_ptr<Lane>& lane, const std::string& device_id);
-  void process(Lane& lane, const std::string& device_id, Pending pending);
+  void process(Lane& lane, const std::string& device_id, const Pending& pending);
+  void analyse(Lane& lane, const std::string& device_id, const Pending& pending);
+  void snap_hold(Lane& lane, const std::string& device_id, const Pending& pending);
+  void release(Lane& lane, const std::string& device_id, const Pending& pending);
+  // Publishes StrokeFinished, then (unless `publish_shape` is false) the ShapeRecognized.
   void publish(const std::string& device_id, const Stroke& stroke, GroupedStrokeAnalysis& result,
-               const v1::Timings& timings, GroupHistory& history);
+               const v1::Timings& timings, GroupHistory& history, bool publish_shape);
 
   DaemonState& state_;
   std::function<void()> job_started_;

@@ -9,6 +9,7 @@
 #include "geometry_service.hpp"
 #include "penshape/daemon/proto_convert.hpp"
 #include "pipeline.hpp"
+#include "stream_hold.hpp"
 #include "thread_scheduling.hpp"
 
 namespace penshape::daemon {
@@ -235,9 +236,16 @@ grpc::Status LiveServiceImpl::StreamSamples(
   };
   // The stream's own grouping: its strokes group with each other only.
   GroupHistory grouping;
+  StreamHold hold(settings, state_.analyzer != nullptr); // hold to snap (StreamStart settings)
   auto finish_stroke = [&]() -> grpc::Status {
     Stroke stroke = std::move(*current);
     current.reset();
+    // A stroke that snapped at a hold: its final shape stands for the analysis.
+    std::vector<v1::LiveEvent> released = hold.release(stroke, grouping, state_.next_shape_id);
+    for (auto& e : released) {
+      if (!write_event(std::move(e))) return grpc::Status::CANCELLED;
+    }
+    if (!released.empty()) return grpc::Status::OK;
     GroupedStrokeAnalysis result;
     StrokeAnalysis& analysis = result.analysis;
     v1::Timings timings;
@@ -268,8 +276,10 @@ grpc::Status LiveServiceImpl::StreamSamples(
       for (std::size_t i = 0; i < answer.supersedes_shape_ids.size(); ++i) {
         r->add_supersedes_sequences(0); // the stream's events are not published
       }
+      r->set_trigger(v1::SHAPE_TRIGGER_PEN_UP);
       grouping.remember(result, shape_id, 0);
-      if (!write_event(std::move(shape))) return grpc::Status::CANCELLED;
+      // snap_trigger = hold: grouped (a later held stroke may complete a shape), not snapped.
+      if (!hold.hold_only() && !write_event(std::move(shape))) return grpc::Status::CANCELLED;
     }
     return grpc::Status::OK;
   };
@@ -314,6 +324,7 @@ grpc::Status LiveServiceImpl::StreamSamples(
         current.emplace();
         current->id = state_.next_stroke_id.fetch_add(1);
         current->tablet = tablet;
+        hold.start(tablet);
         v1::LiveEvent started;
         started.mutable_stroke_started()->set_stroke_id(current->id);
         to_proto(tablet, started.mutable_stroke_started()->mutable_tablet());
@@ -326,6 +337,12 @@ grpc::Status LiveServiceImpl::StreamSamples(
                     std::to_string(state_.limits.max_stroke_samples)};
       }
       current->samples.push_back(sample);
+      if (sample.tip && state_.analyzer &&
+          grouping.ensure(*state_.analyzer, settings, state_.grouping.get())) {
+        std::optional<v1::LiveEvent> held = hold.on_sample(
+            *current, grouping, state_.next_shape_id, [context] { return context->IsCancelled(); });
+        if (held && !write_event(std::move(*held))) return grpc::Status::CANCELLED;
+      }
       if (!sample.tip) {
         if (grpc::Status s = finish_stroke(); !s.ok()) return s;
       }

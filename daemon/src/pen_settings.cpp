@@ -29,12 +29,17 @@ void validate(const PenSettingsUpdate& update, const std::string& field_prefix) 
   check_range(update.tolerance_fraction, 0.01, 4.0, join(field_prefix, "tolerance_fraction"));
   check_range(update.precision_fraction, 1.0 / 1024.0, 0.5,
               join(field_prefix, "precision_fraction"));
+  check_range(update.hold_ms, 100, 10000, join(field_prefix, "hold_ms"));
+  check_range(update.hold_radius_mm, 0.01, 10, join(field_prefix, "hold_radius_mm"));
 }
 
 PenSettings apply(PenSettings base, const PenSettingsUpdate& update) {
   if (update.pen_radius_mm) base.pen_radius_mm = *update.pen_radius_mm;
   if (update.tolerance_fraction) base.tolerance_fraction = *update.tolerance_fraction;
   if (update.precision_fraction) base.precision_fraction = *update.precision_fraction;
+  if (update.snap_trigger) base.snap_trigger = *update.snap_trigger;
+  if (update.hold_ms) base.hold_ms = *update.hold_ms;
+  if (update.hold_radius_mm) base.hold_radius_mm = *update.hold_radius_mm;
   return base;
 }
 
@@ -53,6 +58,25 @@ std::string device_key(unsigned vendor_id, unsigned product_id) {
   char text[16];
   std::snprintf(text, sizeof text, "%04x:%04x", vendor_id & 0xffffU, product_id & 0xffffU);
   return text;
+}
+
+const char* snap_trigger_name(SnapTrigger trigger) {
+  switch (trigger) {
+    case SnapTrigger::kPenUp:
+      return "pen_up";
+    case SnapTrigger::kHold:
+      return "hold";
+    case SnapTrigger::kBoth:
+      return "both";
+  }
+  return "both";
+}
+
+std::optional<SnapTrigger> parse_snap_trigger(const std::string& word) {
+  for (const SnapTrigger t : {SnapTrigger::kPenUp, SnapTrigger::kHold, SnapTrigger::kBoth}) {
+    if (word == snap_trigger_name(t)) return t;
+  }
+  return std::nullopt;
 }
 
 SettingsStore::SettingsStore(PenSettings defaults,
@@ -82,6 +106,9 @@ PenSettings SettingsStore::update(const std::string& key, const PenSettingsUpdat
   if (update.pen_radius_mm) own.pen_radius_mm = update.pen_radius_mm;
   if (update.tolerance_fraction) own.tolerance_fraction = update.tolerance_fraction;
   if (update.precision_fraction) own.precision_fraction = update.precision_fraction;
+  if (update.snap_trigger) own.snap_trigger = update.snap_trigger;
+  if (update.hold_ms) own.hold_ms = update.hold_ms;
+  if (update.hold_radius_mm) own.hold_radius_mm = update.hold_radius_mm;
   return apply(defaults_, own);
 }
 

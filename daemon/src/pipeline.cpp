@@ -1,6 +1,7 @@
 #include "pipeline.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <optional>
 #include <utility>
 
@@ -48,8 +49,31 @@ void Pipeline::stroke_started(const std::string& device_id, std::uint64_t stroke
     drawing.ended->store(true); // a stroke that never finished (device reset): its preview stops
     drawing.ended = std::make_shared<std::atomic<bool>>(false);
     drawing.restart(stroke_id, known ? device.tablet : TabletInfo{});
+    const PenSettings settings = settings_for(state_, drawing.tablet);
+    if (settings.snap_trigger != SnapTrigger::kPenUp && grouping_.groups()) {
+      drawing.detector.emplace(settings, drawing.tablet);
+      drawing.hold_only = settings.snap_trigger == SnapTrigger::kHold;
+      drawing.hold_radius_mm = settings.hold_radius_mm;
+    }
   }
 }
+
+namespace {
+
+// The samples of blocks, as one stroke.
+Stroke assemble(std::uint64_t id, const TabletInfo& tablet,
+                const std::vector<std::shared_ptr<const std::vector<PenSample>>>& blocks,
+                std::size_t count) {
+  Stroke out;
+  out.id = id;
+  out.tablet = tablet;
+  out.samples.reserve(count);
+  for (const auto& block : blocks)
+    out.samples.insert(out.samples.end(), block->begin(), block->end());
+  return out;
+}
+
+} // namespace
 
 void Pipeline::sample(const std::string& device_id, std::uint64_t stroke_id,
                       const PenSample& sample) {
@@ -61,13 +85,67 @@ void Pipeline::sample(const std::string& device_id, std::uint64_t stroke_id,
   to_proto(sample, batch->add_samples());
   state_.hub.publish(std::move(event));
   if (!state_.analyzer || stroke_id == 0) return;
-  std::lock_guard lock(mutex_);
-  const auto it = drawing_.find(device_id);
-  if (it == drawing_.end() || it->second.stroke_id != stroke_id) return;
-  if (it->second.samples >= state_.limits.max_stroke_samples) return;
-  it->second.open.push_back(sample);
-  ++it->second.samples;
-  maybe_preview(device_id, it->second);
+  HoldWork work;
+  {
+    std::lock_guard lock(mutex_);
+    const auto it = drawing_.find(device_id);
+    if (it == drawing_.end() || it->second.stroke_id != stroke_id) return;
+    if (it->second.samples >= state_.limits.max_stroke_samples) return;
+    it->second.open.push_back(sample);
+    ++it->second.samples;
+    maybe_preview(device_id, it->second);
+    work = on_hold_sample(device_id, it->second, sample);
+  }
+  // Outside mutex_: the strand's accounting takes it (job_started).
+  if (work.snap) grouping_.hold(device_id, std::move(*work.snap), std::move(work.hold));
+  if (work.follow) state_.hub.publish(std::move(*work.follow));
+}
+
+// Called with mutex_ held, for each sample kept. Before the hold: is it satisfied now? After a
+// snapped hold: the shape follows the pen once it leaves the hold radius, one update per
+// kFollowIntervalUs of the tablet's clock at most.
+Pipeline::HoldWork Pipeline::on_hold_sample(const std::string& device_id, Drawing& drawing,
+                                            const PenSample& sample) {
+  HoldWork work;
+  if (!drawing.detector || !sample.tip) return work;
+  const PointMm tip = sample_mm(sample, drawing.tablet);
+  if (!drawing.hold) {
+    if (!drawing.detector->add(sample)) return work;
+    drawing.hold = std::make_shared<HoldState>();
+    drawing.hold->time_us = sample.time_us;
+    drawing.hold->point = tip;
+    drawing.hold->radius_mm = drawing.hold_radius_mm;
+    drawing.gate = {};
+    work.snap = assemble(drawing.stroke_id, drawing.tablet, drawing.seal(), drawing.samples);
+    // The stroke drawn is what came before the pen rested (its tremor while held is not drawing).
+    std::vector<PenSample>& drawn = work.snap->samples;
+    const std::int64_t rest = drawing.detector->held_since_us();
+    while (drawn.size() > 2 && drawn.back().time_us > rest) drawn.pop_back();
+    drawing.hold->samples = drawn.size();
+    work.hold = drawing.hold;
+    return work;
+  }
+  const std::shared_ptr<HoldState> held = drawing.hold; // outlives the reset below
+  HoldState& hold = *held;
+  drawing.gate.see(hold, tip);
+  {
+    std::lock_guard lock(hold.mutex);
+    if (hold.phase == HoldState::Phase::kNothing) { // nothing snapped: the stroke goes on
+      drawing.hold.reset();
+      drawing.detector->add(sample);
+      return work;
+    }
+    if (hold.phase == HoldState::Phase::kPending) return work;
+  } // snapped: the hold's fields no longer change
+  if (!drawing.gate.due(sample.time_us)) return work;
+  const auto started = std::chrono::steady_clock::now();
+  work.follow = hold_event(device_id, drawing.stroke_id, hold, {true, tip, sample.time_us},
+                           v1::SHAPE_TRIGGER_FOLLOW);
+  work.follow->mutable_shape()->mutable_timings()->set_compute_us(
+      static_cast<std::uint64_t>(std::chrono::duration_cast<std::chrono::microseconds>(
+                                     std::chrono::steady_clock::now() - started)
+                                     .count()));
+  return work;
 }
 
 // Called with mutex_ held.
@@ -78,21 +156,11 @@ void Pipeline::maybe_preview(const std::string& device_id, Drawing& drawing) {
   drawing.preview_running = true;
   drawing.last_preview = now;
   const PenSettings settings = settings_for(state_, drawing.tablet);
-  if (!drawing.open.empty()) {
-    drawing.sealed.push_back(
-        std::make_shared<const std::vector<PenSample>>(std::exchange(drawing.open, {})));
-  }
   auto job = [this, device_id, id = drawing.stroke_id, tablet = drawing.tablet,
-              blocks = drawing.sealed, count = drawing.samples,
+              blocks = drawing.seal(), count = drawing.samples,
               settings](const StopCondition& stop) {
     try {
-      Stroke partial; // assembled here, on the preview lane
-      partial.id = id;
-      partial.tablet = tablet;
-      partial.samples.reserve(count);
-      for (const auto& block : blocks) {
-        partial.samples.insert(partial.samples.end(), block->begin(), block->end());
-      }
+      const Stroke partial = assemble(id, tablet, blocks, count); // here, on the preview lane
       std::vector<v1::Shape> candidates =
           state_.analyzer->preview(partial, settings, cancel_hook(stop));
       // The group the stroke would complete with the device's recent strokes (certified).
@@ -129,9 +197,15 @@ void Pipeline::maybe_preview(const std::string& device_id, Drawing& drawing) {
 }
 
 void Pipeline::stroke_finished(const std::string& device_id, Stroke stroke) {
+  std::shared_ptr<HoldState> hold; // hold to snap: the stroke's hold, if any
+  bool hold_only = false;
   if (state_.analyzer) {
     std::lock_guard lock(mutex_);
     const auto it = drawing_.find(device_id);
+    if (it != drawing_.end() && it->second.stroke_id == stroke.id) {
+      hold = it->second.hold;
+      hold_only = it->second.hold_only;
+    }
     if (it != drawing_.end()) it->second.ended->store(true);
     if (it != drawing_.end() && !it->second.preview_running)
       drawing_.erase(it);
@@ -146,7 +220,7 @@ void Pipeline::stroke_finished(const std::string& device_id, Stroke stroke) {
     return;
   }
   if (grouping_.groups()) { // grouped in order on its device's strand
-    grouping_.finish(device_id, std::move(stroke));
+    grouping_.finish(device_id, std::move(stroke), std::move(hold), hold_only);
     return;
   }
   const PenSettings settings = settings_for(state_, stroke.tablet);

@@ -6,15 +6,22 @@
 // their deconstruction (StrokeDeconstructed); strokes in progress get previews on the idle-priority
 // preview lane now and then, only while some subscriber asks for previews. A preview still queued
 // or running when its stroke ends is cancelled: the stroke's final shape supersedes it.
+// Hold to snap (snap_trigger hold or both): the reader thread tells from each sample when the pen
+// held still, hands the stroke so far to the device's strand, and once it snapped makes the shape
+// follow the pen (FOLLOW events, published like samples).
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "daemon_state.hpp"
+#include "hold_snap.hpp"
+#include "hold_state.hpp"
 #include "live_grouping.hpp"
 
 namespace penshape::daemon {
@@ -62,6 +69,12 @@ class Pipeline final : public SampleSink {
     bool preview_running = false;
     // Set when the stroke ends: its preview job (if any) stops.
     std::shared_ptr<std::atomic<bool>> ended = std::make_shared<std::atomic<bool>>(false);
+    // Hold to snap (snap_trigger hold or both, and an analyzer that groups).
+    std::optional<HoldDetector> detector;
+    std::shared_ptr<HoldState> hold; // the stroke's hold being snapped, or snapped
+    bool hold_only = false;          // snap_trigger = hold
+    double hold_radius_mm = 0;
+    FollowGate gate; // the shape's updates as it follows the pen after the hold
 
     void restart(std::uint64_t id, const TabletInfo& t) {
       stroke_id = id;
@@ -69,8 +82,26 @@ class Pipeline final : public SampleSink {
       sealed.clear();
       open.clear();
       samples = 0;
+      detector.reset();
+      hold.reset();
+      hold_only = false;
+      gate = {};
+    }
+    // The samples so far in one block (the open tail sealed); returns every block.
+    const std::vector<std::shared_ptr<const std::vector<PenSample>>>& seal() {
+      if (!open.empty()) {
+        sealed.push_back(std::make_shared<const std::vector<PenSample>>(std::exchange(open, {})));
+      }
+      return sealed;
     }
   };
+  // What a sample of a stroke with hold to snap asks for, done once mutex_ is released.
+  struct HoldWork {
+    std::optional<v1::LiveEvent> follow; // a FOLLOW update to publish
+    std::optional<Stroke> snap;          // the stroke so far to snap (the hold is satisfied)
+    std::shared_ptr<HoldState> hold;
+  };
+  HoldWork on_hold_sample(const std::string& device_id, Drawing& drawing, const PenSample& sample);
   void job_started();
   void job_done();
   void maybe_preview(const std::string& device_id, Drawing& drawing);

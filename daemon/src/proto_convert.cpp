@@ -257,12 +257,46 @@ Stroke stroke_from_proto(const v1::Stroke& message, const std::string& field, co
   return stroke;
 }
 
+namespace {
+
+SnapTrigger snap_trigger_from_proto(const v1::PenSettings& message, const std::string& field) {
+  switch (message.snap_trigger()) {
+    case v1::SNAP_TRIGGER_PEN_UP:
+      return SnapTrigger::kPenUp;
+    case v1::SNAP_TRIGGER_HOLD:
+      return SnapTrigger::kHold;
+    case v1::SNAP_TRIGGER_BOTH:
+      return SnapTrigger::kBoth;
+    default:
+      throw FieldError((field.empty() ? "" : field + ".") + "snap_trigger is " +
+                       std::to_string(static_cast<int>(message.snap_trigger())) +
+                       "; expected SNAP_TRIGGER_PEN_UP, SNAP_TRIGGER_HOLD or SNAP_TRIGGER_BOTH");
+  }
+}
+
+v1::SnapTrigger to_proto(SnapTrigger trigger) {
+  switch (trigger) {
+    case SnapTrigger::kPenUp:
+      return v1::SNAP_TRIGGER_PEN_UP;
+    case SnapTrigger::kHold:
+      return v1::SNAP_TRIGGER_HOLD;
+    case SnapTrigger::kBoth:
+      return v1::SNAP_TRIGGER_BOTH;
+  }
+  return v1::SNAP_TRIGGER_BOTH;
+}
+
+} // namespace
+
 PenSettingsUpdate settings_update_from_proto(const v1::PenSettings& message,
                                              const std::string& field) {
   PenSettingsUpdate update;
   if (message.has_pen_radius_mm()) update.pen_radius_mm = message.pen_radius_mm();
   if (message.has_tolerance_fraction()) update.tolerance_fraction = message.tolerance_fraction();
   if (message.has_precision_fraction()) update.precision_fraction = message.precision_fraction();
+  if (message.has_snap_trigger()) update.snap_trigger = snap_trigger_from_proto(message, field);
+  if (message.has_hold_ms()) update.hold_ms = message.hold_ms();
+  if (message.has_hold_radius_mm()) update.hold_radius_mm = message.hold_radius_mm();
   try {
     validate(update, field);
   } catch (const SettingsError& e) {
@@ -332,6 +366,9 @@ void to_proto(const PenSettings& settings, v1::PenSettings* out) {
   out->set_pen_radius_mm(settings.pen_radius_mm);
   out->set_tolerance_fraction(settings.tolerance_fraction);
   out->set_precision_fraction(settings.precision_fraction);
+  out->set_snap_trigger(to_proto(settings.snap_trigger));
+  out->set_hold_ms(static_cast<std::uint32_t>(settings.hold_ms));
+  out->set_hold_radius_mm(settings.hold_radius_mm);
 }
 
 v1::Answer to_proto(Answer answer) {

@@ -288,6 +288,58 @@ TEST_F(Board, RealDaemonSnapsTheHandDrawnRectangle) {
   expect_raw_stroke(run);
 }
 
+// Hold to snap on the board, against the real penshaped (snap_trigger both, the default): the $1
+// rectangle is drawn, the pen rests at its end (the board repeats its position, as a tablet does),
+// and the daemon's HOLD snap shows while the pen is still down; the pen then drags the corner out
+// and lifts, and the final shape is committed. Screenshots of both moments.
+TEST_F(Board, HoldSnapsWhileThePenIsDownThenFollowsAndCommitsAtPenUp) {
+  const std::string address = unique_test_address("board-hold");
+  ChildProcess daemon({PENSHAPED, "--listen", address});
+  ASSERT_TRUE(daemon.wait_for_output("listening on")) << daemon.output();
+  const auto dir = temp_dir("hold");
+  const std::string held = (dir / "held.bmp").string();
+  const std::string released = (dir / "released.bmp").string();
+  ScriptedStroke stroke = rectangle_script("unused", "unused", "");
+  // The drawn rectangle without its "up" and what follows it: hold, drag, lift.
+  std::string script = stroke.script_text.substr(0, stroke.script_text.find("up "));
+  const auto [ex, ey] = stroke.points.back();
+  script += "hold 900\nwait-held 20\nscreenshot " + held + "\n";
+  for (int i = 1; i <= 10; ++i) {
+    script += "move " + std::to_string(ex - 4 * i) + " " + std::to_string(ey - 3 * i) + "\n";
+  }
+  script += "hold 50\nup " + std::to_string(ex - 40) + " " + std::to_string(ey - 30) +
+            "\nwait-answers 30\nscreenshot " + released + "\nquit\n";
+  std::ofstream(dir / "script.txt") << script;
+  auto [code, out] =
+      run_program({PENSHAPE_BOARD, "--address", address, "--script", (dir / "script.txt").string()},
+                  {{"DISPLAY", xvfb_->display()},
+                   {"SDL_VIDEODRIVER", "x11"},
+                   {"ASAN_OPTIONS", board_asan_options()}});
+  daemon.signal(SIGTERM);
+  EXPECT_EQ(daemon.wait(), 0) << daemon.output();
+  ASSERT_EQ(code, 0) << out;
+  EXPECT_NE(out.find("stroke 1 held: "), std::string::npos) << out;
+  EXPECT_NE(out.find("stroke 1 is a "), std::string::npos) << out;
+  // While the pen was down: the held shape drawn in the shape's colour, over the faint ink.
+  const Image at_hold = read_bmp(held);
+  ASSERT_EQ(at_hold.width, 800) << out;
+  EXPECT_GT(at_hold.count(kShapeInk), 1000U);
+  EXPECT_EQ(at_hold.count(kRawInk), 0U) << "the held shape replaces the raw ink";
+  // After pen-up: the committed shape, dragged out: it reaches beyond the drawn rectangle's
+  // corner where the pen lifted.
+  const Image at_release = read_bmp(released);
+  ASSERT_EQ(at_release.width, 800) << out;
+  EXPECT_GT(at_release.count(kShapeInk), 1000U);
+  EXPECT_EQ(at_release.count(kRawInk), 0U);
+  std::size_t beyond = 0;
+  for (int y = 0; y < at_release.height; ++y) {
+    for (int x = 0; x < at_release.width; ++x) {
+      if (at_release.at(x, y) == kShapeInk && x < ex - 20 && y < ey - 15) ++beyond;
+    }
+  }
+  EXPECT_GT(beyond, 0U) << "the drag moved the shape";
+}
+
 TEST(BoardCli, RefusesBadUsageAndAMissingDaemon) {
   auto [code, out] = run_program({PENSHAPE_BOARD, "--radius", "0"});
   EXPECT_EQ(code, 2) << out;

@@ -91,3 +91,38 @@ TEST(LiveEventText, ArrowJsonHasItsShaftBends) {
 }
 
 } // namespace
+
+namespace {
+
+// Hold to snap: a HOLD, FOLLOW or RELEASE shape names its trigger and hold in JSON and text.
+TEST(LiveEventText, HoldSnapsNameTheirTriggerAndHold) {
+  v1::LiveEvent event = rectangle_upgrade();
+  v1::ShapeRecognized* s = event.mutable_shape();
+  s->set_trigger(v1::SHAPE_TRIGGER_HOLD);
+  s->mutable_shape()->mutable_certificate()->set_scope("drawn_part");
+  s->mutable_hold()->set_certified_samples(120);
+  s->mutable_hold()->mutable_hold_point()->set_x(10);
+  s->mutable_hold()->set_held_shape_id(9);
+  std::string json = penshape::cli::event_json(event);
+  EXPECT_NE(json.find("\"type\":\"shape\""), std::string::npos) << json;
+  EXPECT_NE(json.find("\"trigger\":\"hold\""), std::string::npos) << json;
+  EXPECT_NE(json.find("\"hold\":{\"certified_samples\":120,\"hold_point\":[10,0]"),
+            std::string::npos)
+      << json;
+  EXPECT_NE(json.find("\"scope\":\"drawn_part\""), std::string::npos) << json;
+  EXPECT_NE(penshape::cli::event_line(event).find("(held, pen down) is a rectangle"),
+            std::string::npos)
+      << penshape::cli::event_line(event);
+  s->set_trigger(v1::SHAPE_TRIGGER_RELEASE);
+  s->mutable_hold()->set_adjusted(true);
+  EXPECT_NE(penshape::cli::event_json(event).find("\"trigger\":\"release\""), std::string::npos);
+  EXPECT_NE(penshape::cli::event_line(event).find("(released, adjusted by the drag)"),
+            std::string::npos);
+  s->clear_hold();
+  s->set_trigger(v1::SHAPE_TRIGGER_UNSPECIFIED); // an older daemon: pen-up
+  json = penshape::cli::event_json(event);
+  EXPECT_NE(json.find("\"trigger\":\"pen_up\""), std::string::npos) << json;
+  EXPECT_EQ(json.find("\"hold\""), std::string::npos) << json;
+}
+
+} // namespace

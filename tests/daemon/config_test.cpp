@@ -76,7 +76,8 @@ TEST(Config, ErrorsNameTheLineAndTheKey) {
             "test.conf:1: unknown section '[printer]' (expected [device vvvv:pppp])");
   EXPECT_EQ(error_of("[device 056a:0010]\nmax_subscribers = 3"),
             "test.conf:2: max_subscribers: unknown key in a [device] section (pen_radius_mm, "
-            "tolerance_fraction, precision_fraction, width_mm, height_mm)");
+            "tolerance_fraction, precision_fraction, snap_trigger, hold_ms, hold_radius_mm, "
+            "width_mm, height_mm)");
   EXPECT_EQ(error_of("tcp_allow_non_loopback = yes"),
             "test.conf:1: tcp_allow_non_loopback: expected true or false, got 'yes'");
 }
@@ -172,5 +173,6 @@ TEST(Config, BadGroupingValuesNameTheLineAndKey) {
   EXPECT_EQ(error_of("tidy_axes = true\n"), "test.conf:1: tidy_axes: unknown key");
   EXPECT_EQ(error_of("[device 056a:0010]\ngrouping = false\n"),
             "test.conf:2: grouping: unknown key in a [device] section (pen_radius_mm, "
-            "tolerance_fraction, precision_fraction, width_mm, height_mm)");
+            "tolerance_fraction, precision_fraction, snap_trigger, hold_ms, hold_radius_mm, "
+            "width_mm, height_mm)");
 }

@@ -1,5 +1,6 @@
 #pragma once
 // Pen radius and tolerances, and the store that keeps them per device model.
+#include <cstdint>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -9,11 +10,19 @@
 
 namespace penshape::daemon {
 
+// When a live stroke snaps: at pen-up, when held still while down, or both (live.proto).
+enum class SnapTrigger : std::uint8_t { kPenUp, kHold, kBoth };
+
 // eps = tolerance_fraction * pen_radius_mm, delta = precision_fraction * eps.
 struct PenSettings {
   double pen_radius_mm = 1.0;        // in [0.05, 50]
   double tolerance_fraction = 0.5;   // in [0.01, 4]
   double precision_fraction = 0.125; // in [1/1024, 1/2]
+  // Hold to snap. Both by default: every stroke still snaps at pen-up, as it did before hold to
+  // snap, and holding snaps at once.
+  SnapTrigger snap_trigger = SnapTrigger::kBoth;
+  double hold_ms = 500;        // in [100, 10000]
+  double hold_radius_mm = 1.0; // in [0.01, 10]
   friend bool operator==(const PenSettings&, const PenSettings&) = default;
 };
 
@@ -22,6 +31,9 @@ struct PenSettingsUpdate {
   std::optional<double> pen_radius_mm;
   std::optional<double> tolerance_fraction;
   std::optional<double> precision_fraction;
+  std::optional<SnapTrigger> snap_trigger;
+  std::optional<double> hold_ms;
+  std::optional<double> hold_radius_mm;
 };
 
 // Thrown for a value out of range; the message names the field (prefixed by `field_prefix`).
@@ -36,6 +48,10 @@ PenSettings apply(PenSettings base, const PenSettingsUpdate& update);
 // A device key is "" (the defaults) or "vvvv:pppp", four lowercase hex digits each.
 bool is_valid_device_key(const std::string& key);
 std::string device_key(unsigned vendor_id, unsigned product_id);
+
+// "pen_up", "hold", "both"; parse_snap_trigger answers nothing for another word.
+const char* snap_trigger_name(SnapTrigger trigger);
+std::optional<SnapTrigger> parse_snap_trigger(const std::string& word);
 
 // Thread-safe: read by the geometry workers, written by the Config service.
 class SettingsStore {
