@@ -32,8 +32,8 @@ void snap_pages(const std::vector<std::vector<Stroke>>& pages, const std::string
     result.strokes += pages[p].size();
     for (const Stroke& s : pages[p]) inks[p].push_back(&s.ink);
   }
-  for (PageSnap& ps :
-       recognize_pages(inks, options.settings, recognize_page, options.progress, result.warnings)) {
+  for (PageSnap& ps : recognize_pages(inks, options.settings, recognize_page, options.progress,
+                                      options.threads, result.warnings)) {
     Replacement rep{{}, {}, ps.snap.recognition, ps.pen_radius, ps.snap.tidy};
     for (const std::size_t i : ps.strokes) {
       const Stroke& s = pages[ps.page][i];

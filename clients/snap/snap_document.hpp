@@ -35,8 +35,9 @@ struct SnapResult {
 
 struct SnapOptions {
   SnapSettings settings;
-  SvgScope scope;    // SVG only
-  Progress progress; // optional
+  SvgScope scope;          // SVG only
+  Progress progress;       // optional
+  std::size_t threads = 0; // recognizing in parallel; 0: one per core
 };
 
 // The largest XML a compressed document may expand to (gzip or zip); past it reading stops.

@@ -50,10 +50,10 @@ std::vector<Run> runs_of(const std::vector<std::vector<const InkStroke*>>& pages
   return runs;
 }
 
-// Recognizes every run on min(cores, runs) threads.
+// Recognizes every run on min(threads, runs) threads.
 void recognize_runs(std::vector<Run>& runs, const std::vector<std::vector<const InkStroke*>>& pages,
                     const SnapSettings& settings, const PageRecognizer& recognize_page,
-                    const Progress& progress) {
+                    const Progress& progress, std::size_t threads) {
   std::size_t total = 0;
   for (const Run& r : runs) total += r.strokes.size();
   std::atomic<std::size_t> next{0}, done{0};
@@ -75,9 +75,8 @@ void recognize_runs(std::vector<Run>& runs, const std::vector<std::vector<const 
       }
     }
   };
-  const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
   std::vector<std::jthread> pool;
-  for (std::size_t t = 1; t < std::min(cores, runs.size()); ++t) pool.emplace_back(work);
+  for (std::size_t t = 1; t < std::min(threads, runs.size()); ++t) pool.emplace_back(work);
   work();
 }
 
@@ -93,10 +92,11 @@ bool consecutive(const std::vector<std::size_t>& v) {
 std::vector<PageSnap> recognize_pages(const std::vector<std::vector<const InkStroke*>>& pages,
                                       const SnapSettings& settings,
                                       const PageRecognizer& recognize_page,
-                                      const Progress& progress,
+                                      const Progress& progress, std::size_t threads,
                                       std::vector<std::string>& warnings) {
   std::vector<Run> runs = runs_of(pages);
-  recognize_runs(runs, pages, settings, recognize_page, progress);
+  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  recognize_runs(runs, pages, settings, recognize_page, progress, threads);
   std::vector<PageSnap> out;
   for (Run& run : runs) {
     if (!run.failure.empty()) warnings.push_back(run.failure + ": left as drawn");

@@ -29,10 +29,12 @@ struct PageSnap {
 };
 
 // `pages[p]` are the strokes of page p in drawing order. A run the recognizer refuses is left as
-// drawn, named in `warnings`. Snaps come in page order, then drawing order.
+// drawn, named in `warnings`. Snaps come in page order, then drawing order. `threads` 0: one
+// per core.
 std::vector<PageSnap> recognize_pages(const std::vector<std::vector<const InkStroke*>>& pages,
                                       const SnapSettings& settings,
                                       const PageRecognizer& recognize_page,
-                                      const Progress& progress, std::vector<std::string>& warnings);
+                                      const Progress& progress, std::size_t threads,
+                                      std::vector<std::string>& warnings);
 
 } // namespace penshape::snap
