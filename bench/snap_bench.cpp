@@ -192,7 +192,8 @@ Row process_row(const std::string& what, const std::string& cli, const fs::path&
   Row row{what, 50, 0, 0, 0};
   std::vector<double> t;
   const fs::path out = in.parent_path() / ("out-" + in.filename().string());
-  const std::string cmd = cli + " snap --local " + in.string() + " " + out.string() + " 2>&1";
+  const std::string cmd =
+      cli + " snap --local --quiet " + in.string() + " " + out.string() + " 2>&1";
   for (int i = 0; i < runs; ++i) {
     const auto start = Clock::now();
     FILE* p = ::popen(cmd.c_str(), "r");

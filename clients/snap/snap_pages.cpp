@@ -59,7 +59,7 @@ void recognize_runs(std::vector<Run>& runs, const std::vector<std::vector<const 
   std::atomic<std::size_t> next{0}, done{0};
   std::mutex report;
   const auto work = [&] {
-    for (std::size_t k; (k = next.fetch_add(1)) < runs.size();) {
+    for (std::size_t k = next.fetch_add(1); k < runs.size(); k = next.fetch_add(1)) {
       Run& run = runs[k];
       std::vector<InkStroke> inks;
       for (const std::size_t i : run.strokes) inks.push_back(*pages[run.page][i]);

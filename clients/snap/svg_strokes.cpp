@@ -72,11 +72,11 @@ std::string style_key(const pugi::xml_node& n, const PaintStyle& st, bool callig
   key += "|" + st.stroke + "|" + st.fill + "|" + st.fill_opacity + "|" +
          n.attribute("class").value() + "|" + std::to_string(n.parent().offset_debug());
   for (const auto& [k, v] : parse_style(n.attribute("style").value())) {
-    if (k != "stroke-width") key += "|" + k + ":" + v;
+    if (k != "stroke-width") key.append("|").append(k).append(":").append(v);
   }
   for (const char* a : {"marker-start", "marker-mid", "marker-end", "stroke-dasharray",
                         "stroke-opacity", "opacity", "stroke-linecap", "filter"}) {
-    key += std::string("|") + n.attribute(a).value();
+    key.append("|").append(n.attribute(a).value());
   }
   return key;
 }

@@ -54,7 +54,8 @@ std::string source_bytes(zip_source_t* s) {
   if (zip_source_open(s) != 0) throw std::runtime_error("libzip: cannot reopen the new archive");
   std::string out;
   char buf[1 << 16];
-  for (zip_int64_t n; (n = zip_source_read(s, buf, sizeof buf)) > 0;) {
+  for (zip_int64_t n = zip_source_read(s, buf, sizeof buf); n > 0;
+       n = zip_source_read(s, buf, sizeof buf)) {
     out.append(buf, static_cast<std::size_t>(n));
   }
   zip_source_close(s);
