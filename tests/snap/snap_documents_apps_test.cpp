@@ -49,6 +49,34 @@ CommandResult inkscape_png(const std::string& stem) {
                      " 2>&1");
 }
 
+// A document snapped and both versions rendered by an app: the pictures, or what failed.
+struct BeforeAfter {
+  std::string snap_output, failure;
+  Pixels before, after;
+};
+
+// Snaps dir/stem+ext to dir/stem-snapped+ext and renders both with `render`.
+BeforeAfter snap_and_render(const fs::path& dir, const std::string& stem, const std::string& ext,
+                            CommandResult (*render)(const std::string&)) {
+  BeforeAfter out;
+  const auto r = snap(dir / (stem + ext), dir / (stem + "-snapped" + ext));
+  out.snap_output = r.out;
+  if (r.exit_code != 0) {
+    out.failure = "snap exits " + std::to_string(r.exit_code) + ": " + r.out;
+    return out;
+  }
+  for (const std::string& name : {stem, stem + "-snapped"}) {
+    const auto png = render((dir / name).string());
+    if (png.exit_code != 0) {
+      out.failure = name + ext + " does not open in the app: " + png.out;
+      return out;
+    }
+  }
+  out.before = read_png((dir / (stem + ".png")).string());
+  out.after = read_png((dir / (stem + "-snapped.png")).string());
+  return out;
+}
+
 double inked_share(const Pixels& px, const std::vector<PointD>& pts) {
   std::size_t n = 0;
   for (const PointD& p : pts) n += px.ink(p.x, p.y) > 100 ? 1 : 0;
@@ -101,15 +129,10 @@ TEST(XournalDocuments, ZipWithPressureAndDotsOpensAndKeepsTheRest) {
                                                  {"META-INF/version", "current=4\nmin=4\n"},
                                                  {"content.xml", xml},
                                                  {"attachments/notes.txt", "an attachment"}}));
-  const auto r = snap(dir / "package.xopp", dir / "package-snapped.xopp");
-  ASSERT_EQ(r.exit_code, 0) << r.out;
-  EXPECT_NE(r.out.find("2 of 4 strokes snapped"), std::string::npos) << r.out;
-  for (const char* name : {"package", "package-snapped"}) {
-    const auto png = xournal_png((dir / name).string());
-    ASSERT_EQ(png.exit_code, 0) << name << " does not open in Xournal++: " << png.out;
-  }
-  const Pixels before = read_png((dir / "package.png").string());
-  const Pixels after = read_png((dir / "package-snapped.png").string());
+  const BeforeAfter pictures = snap_and_render(dir, "package", ".xopp", xournal_png);
+  ASSERT_EQ(pictures.failure, "");
+  EXPECT_NE(pictures.snap_output.find("2 of 4 strokes snapped"), std::string::npos);
+  const Pixels &before = pictures.before, &after = pictures.after;
   ASSERT_EQ(after.width, 400);
   EXPECT_GE(inked_share(after, wobbly_circle(90, 90, 60, 90)), 0.9);
   EXPECT_TRUE(same_region(before, after, 285, 25, 315, 55)) << "the dot";
@@ -172,14 +195,9 @@ TEST(InkscapeDocuments, DrawersIntentionsRenderAndTheRestStays) {
                    coordinates(wobbly_line({380, 30}, {200, 30}), ",") + "\"/>\n" + sides +
                    "<path style=\"fill:#000;stroke:none\" d=\"M " + coordinates(outline, ",") +
                    " Z\"/>\n<text x=\"250\" y=\"260\" font-size=\"16\">Hello</text>\n"));
-  const auto r = snap(dir / "intent.svg", dir / "intent-snapped.svg");
-  ASSERT_EQ(r.exit_code, 0) << r.out;
-  for (const char* name : {"intent", "intent-snapped"}) {
-    const auto png = inkscape_png((dir / name).string());
-    ASSERT_EQ(png.exit_code, 0) << name << " does not open in Inkscape: " << png.out;
-  }
-  const Pixels before = read_png((dir / "intent.png").string());
-  const Pixels after = read_png((dir / "intent-snapped.png").string());
+  const BeforeAfter pictures = snap_and_render(dir, "intent", ".svg", inkscape_png);
+  ASSERT_EQ(pictures.failure, "");
+  const Pixels &before = pictures.before, &after = pictures.after;
   ASSERT_EQ(after.width, 400);
   // The square's closing side (x = 40) is drawn.
   std::vector<PointD> left;

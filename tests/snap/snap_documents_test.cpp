@@ -41,7 +41,13 @@ class SnapDocuments : public ::testing::Test {
     std::ifstream in(dir_ / ("out-" + name), std::ios::binary);
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   }
+  // The element with this id in OUT (null when OUT is no XML or has none).
+  pugi::xml_node out_element(const std::string& name, const std::string& id) {
+    if (!out_doc_.load_string(out(name).c_str())) return {};
+    return by_id(out_doc_, id);
+  }
   fs::path dir_;
+  pugi::xml_document out_doc_;
 };
 
 bool contains(const std::string& s, const std::string& part) {
@@ -160,9 +166,7 @@ TEST_F(SnapDocuments, ClosedSquareComesOutClosed) {
                                                  "stroke-width:2\" d=\"M100 100 L200 100 L200 "
                                                  "200 L100 200 Z\"/>\n"));
   ASSERT_EQ(r.exit_code, 0) << r.out;
-  pugi::xml_document doc;
-  ASSERT_TRUE(doc.load_string(out("closed.svg").c_str()));
-  const pugi::xml_node e = by_id(doc, "sq");
+  const pugi::xml_node e = out_element("closed.svg", "sq");
   ASSERT_STREQ(e.name(), "rect") << r.out;
   EXPECT_NEAR(e.attribute("x").as_double(), 100, 1);
   EXPECT_NEAR(e.attribute("width").as_double(), 100, 1);
@@ -185,14 +189,12 @@ TEST_F(SnapDocuments, MarkedStrokesKeepTheirDirection) {
                                    bent + "\"/>\n"),
                       "--no-group");
   ASSERT_EQ(r.exit_code, 0) << r.out;
-  pugi::xml_document doc;
-  ASSERT_TRUE(doc.load_string(out("marker.svg").c_str()));
-  const pugi::xml_node l = by_id(doc, "l");
+  const pugi::xml_node l = out_element("marker.svg", "l");
   ASSERT_STREQ(l.name(), "line") << r.out;
   EXPECT_NEAR(l.attribute("x1").as_double(), 300, 2);
   EXPECT_NEAR(l.attribute("x2").as_double(), 100, 2);
   EXPECT_STREQ(l.attribute("marker-end").value(), "url(#arrow)");
-  const pugi::xml_node b = by_id(doc, "b");
+  const pugi::xml_node b = out_element("marker.svg", "b");
   ASSERT_STREQ(b.name(), "polyline") << r.out;
   const auto pts = pairs_of(b.attribute("points").value());
   ASSERT_GE(pts.size(), 2u);
@@ -220,11 +222,9 @@ TEST_F(SnapDocuments, StrokesOfDifferentStylesNeverMerge) {
   EXPECT_TRUE(contains(r.out, "1 of 4 strokes snapped")) << r.out;
   r = snap("mixed.svg", page("#ff0000"));
   ASSERT_EQ(r.exit_code, 0) << r.out;
-  pugi::xml_document doc;
-  ASSERT_TRUE(doc.load_string(out("mixed.svg").c_str()));
   for (int i = 0; i < 4; ++i) {
     const std::string id = std::string(1, 's').append(std::to_string(i));
-    const pugi::xml_node e = by_id(doc, id);
+    const pugi::xml_node e = out_element("mixed.svg", id);
     ASSERT_TRUE(e) << id << " was deleted: " << r.out;
     EXPECT_STREQ(e.attribute("stroke").value(), i % 2 == 1 ? "#ff0000" : "#000000");
   }
