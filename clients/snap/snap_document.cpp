@@ -1,6 +1,8 @@
 // `penshape snap` in memory (see snap_document.hpp).
 #include "snap_document.hpp"
 
+#include <sstream>
+
 #include "gzip.hpp"
 #include "snap_error.hpp"
 #include "splice.hpp"
@@ -22,11 +24,20 @@ std::string root_name(const pugi::xml_document& doc) {
   return colon == std::string::npos ? name : name.substr(colon + 1);
 }
 
+// The replaced elements' edits of the text. Offsets into the text are known only for UTF-8 input
+// (pugixml converts other encodings); otherwise the document is saved whole from the tree.
+struct Splice {
+  const std::string& text;
+  bool by_offsets = true;
+  std::vector<Edit> edits;
+};
+
 // The snaps of the strokes read, each group's elements as edits of the text.
 template <typename Stroke, typename Replace>
-void snap_pages(const std::vector<std::vector<Stroke>>& pages, const std::string& text,
-                const SnapOptions& options, const PageRecognizer& recognize_page,
-                SnapResult& result, std::vector<Edit>& edits, Replace&& replace) {
+void snap_pages(const std::vector<std::vector<Stroke>>& pages, const SnapOptions& options,
+                const PageRecognizer& recognize_page, SnapResult& result, Splice& splice,
+                Replace&& replace) {
+  std::vector<Edit>& edits = splice.edits;
   std::vector<std::vector<const InkStroke*>> inks(pages.size());
   for (std::size_t p = 0; p < pages.size(); ++p) {
     result.strokes += pages[p].size();
@@ -39,7 +50,7 @@ void snap_pages(const std::vector<std::vector<Stroke>>& pages, const std::string
       const Stroke& s = pages[ps.page][i];
       rep.elements.push_back(s.ink.locator);
       rep.where.push_back(s.ink.where);
-      edits.push_back(element_range(text, s.element));
+      edits.push_back(splice.by_offsets ? element_range(splice.text, s.element) : Edit{});
     }
     // The group's first element becomes the shape; the others go.
     edits[edits.size() - ps.strokes.size()].text =
@@ -49,20 +60,20 @@ void snap_pages(const std::vector<std::vector<Stroke>>& pages, const std::string
 }
 
 void snap_svg(pugi::xml_document& doc, const std::string& text, const SnapOptions& options,
-              const PageRecognizer& recognize_page, SnapResult& result, std::vector<Edit>& edits) {
+              const PageRecognizer& recognize_page, SnapResult& result, Splice& splice) {
   result.format = Format::kSvg;
   std::vector<std::vector<SvgStroke>> pages;
   for (SvgPage& page : read_svg_strokes(doc, text, options.scope, result.warnings)) {
     pages.push_back(std::move(page.strokes));
   }
-  snap_pages(pages, text, options, recognize_page, result, edits,
+  snap_pages(pages, options, recognize_page, result, splice,
              [](const SvgStroke& s, const Recognition& r, double pen) {
                return replace_svg_stroke(s, r, pen);
              });
 }
 
 void snap_xopp(pugi::xml_document& doc, const std::string& text, const SnapOptions& options,
-               const PageRecognizer& recognize_page, SnapResult& result, std::vector<Edit>& edits) {
+               const PageRecognizer& recognize_page, SnapResult& result, Splice& splice) {
   result.format = Format::kXopp;
   if (!options.scope.ids.empty() || !options.scope.layer.empty()) {
     throw SnapInputError("--ids and --layer choose SVG elements; this is a Xournal++ document");
@@ -71,11 +82,21 @@ void snap_xopp(pugi::xml_document& doc, const std::string& text, const SnapOptio
   for (XoppLayer& layer : read_xopp_strokes(doc, text, result.warnings)) {
     pages.push_back(std::move(layer.strokes));
   }
-  snap_pages(pages, text, options, recognize_page, result, edits,
+  snap_pages(pages, options, recognize_page, result, splice,
              [](const XoppStroke& s, const Recognition& r, double pen) {
                replace_xopp_stroke(s, r, pen);
                return s.element;
              });
+}
+
+// The whole tree in the input's encoding (its declaration node is kept; BOM for UTF-16/32).
+std::string saved(const pugi::xml_document& doc, pugi::xml_encoding encoding) {
+  std::ostringstream out;
+  const bool wide = encoding != pugi::encoding_utf8 && encoding != pugi::encoding_latin1;
+  doc.save(out, "",
+           pugi::format_raw | pugi::format_no_declaration | (wide ? pugi::format_write_bom : 0u),
+           encoding);
+  return out.str();
 }
 
 // The XML inside the bytes, and how it was packed.
@@ -128,18 +149,24 @@ SnapResult snap_document(const std::string& bytes, const SnapOptions& options,
                          parsed.description());
   }
   SnapResult result;
-  std::vector<Edit> edits;
+  Splice splice{text, parsed.encoding == pugi::encoding_utf8, {}};
   const std::string root = root_name(doc);
   if (root == "svg") {
-    snap_svg(doc, text, options, recognize_page, result, edits);
+    snap_svg(doc, text, options, recognize_page, result, splice);
   } else if (root == "xournal") {
-    snap_xopp(doc, text, options, recognize_page, result, edits);
+    snap_xopp(doc, text, options, recognize_page, result, splice);
   } else {
     throw SnapInputError(std::string(what) + " is XML of neither format: its root is <" +
                          doc.document_element().name() +
                          ">, not <svg> (SVG) or <xournal> (Xournal++)");
   }
-  result.output = edits.empty() ? bytes : pack(bytes, spliced(text, edits), packing);
+  if (splice.edits.empty()) {
+    result.output = bytes;
+  } else {
+    const std::string xml =
+        splice.by_offsets ? spliced(text, splice.edits) : saved(doc, parsed.encoding);
+    result.output = pack(bytes, xml, packing);
+  }
   return result;
 }
 

@@ -292,5 +292,28 @@ TEST_F(SnapDocuments, UntouchedBytesStayTheSame) {
   EXPECT_TRUE(contains(o.substr(head.size()), "<circle")) << o;
 }
 
+// CRLF line ends are kept outside the replacement; a UTF-16 document (whose offsets the parser
+// does not keep) is written whole, in UTF-16.
+TEST_F(SnapDocuments, LineEndsAndOtherEncodings) {
+  const std::string stroke =
+      "<polyline fill=\"none\" stroke=\"#000\" stroke-width=\"2\" points=\"" +
+      coordinates(wobbly_circle(200, 150, 80), ",") + "\"/>";
+  const std::string head = "<svg xmlns=\"http://www.w3.org/2000/svg\">\r\n<text>a</text>\r\n";
+  auto r = snap("crlf.svg", head + stroke + "\r\n</svg>\r\n");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_EQ(out("crlf.svg").substr(0, head.size()), head);
+  EXPECT_TRUE(contains(out("crlf.svg"), "/>\r\n</svg>\r\n"));
+  std::string utf16 = "\xff\xfe"; // little-endian, with its byte order mark
+  for (const char c : "<?xml version=\"1.0\" encoding=\"UTF-16\"?>\n" + head + stroke + "</svg>") {
+    if (c != '\0') utf16 += std::string{c, '\0'};
+  }
+  r = snap("utf16.svg", utf16);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const std::string o = out("utf16.svg");
+  ASSERT_GE(o.size(), 2u);
+  EXPECT_EQ(o.substr(0, 2), "\xff\xfe");
+  EXPECT_TRUE(contains(o, std::string("<\0c\0i\0r\0c\0l\0e\0", 14))) << r.out;
+}
+
 } // namespace
 } // namespace penshape::test
