@@ -65,8 +65,10 @@ Stroke drawn_shape(int k, double x0, double y0, std::mt19937& rng) {
 std::vector<Stroke> shapes_page() {
   std::mt19937 rng(29);
   std::vector<Stroke> out;
-  for (int i = 0; i < 50; ++i)
-    out.push_back(drawn_shape(i, 20 + 120 * (i % 10), 20 + 120 * (i / 10), rng));
+  out.reserve(50);
+  for (int i = 0; i < 50; ++i) {
+    out.push_back(drawn_shape(i, 20.0 + 120 * (i % 10), 20.0 + 120.0 * (i / 10), rng));
+  }
   return out;
 }
 
@@ -200,8 +202,11 @@ Row process_row(const std::string& what, const std::string& cli, const fs::path&
     if (p == nullptr) throw std::runtime_error("cannot run " + cmd);
     std::string text;
     char buf[4096];
-    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) text.append(buf, n);
-    if (::pclose(p) != 0) throw std::runtime_error("failed: " + cmd + "\n" + text);
+    for (std::size_t n = std::fread(buf, 1, sizeof buf, p); n > 0;
+         n = std::fread(buf, 1, sizeof buf, p)) {
+      text.append(buf, n);
+    }
+    if (::pclose(p) != 0) throw std::runtime_error("failed: " + cmd + "\n" += text);
     t.push_back(std::chrono::duration<double>(Clock::now() - start).count());
     // "penshape snap: N of M strokes snapped"
     const auto at = text.find("penshape snap: ");
@@ -221,8 +226,9 @@ void print(const std::vector<Row>& rows) {
   for (const Row& r : rows) {
     const double per =
         r.cpu >= 0 && r.strokes > 0 ? 1e3 * r.cpu / static_cast<double>(r.strokes) : 0;
-    std::printf("| %-52s | %7zu | %7zu | %8.3f | %9.3f |\n", r.what.c_str(), r.strokes, r.snapped,
-                r.wall, per);
+    const std::string cpu = r.cpu >= 0 ? std::to_string(per).substr(0, 5) : "-";
+    std::printf("| %-52s | %7zu | %7zu | %8.3f | %9s |\n", r.what.c_str(), r.strokes, r.snapped,
+                r.wall, cpu.c_str());
   }
 }
 
@@ -260,6 +266,7 @@ int main(int argc, char** argv) {
   fs::remove_all(dir);
   std::mt19937 rng(29);
   std::vector<std::vector<Stroke>> notes;
+  notes.reserve(static_cast<std::size_t>(pages));
   for (int p = 0; p < pages; ++p) notes.push_back(notes_page(rng));
   const std::string notes_xopp = penshape::snap::gzip(xopp_pages(notes, 1.41));
   std::printf("\nnotes (targets: <= 1 ms CPU per stroke; 100k strokes in <= 30 s on 2 cores):\n\n");

@@ -15,9 +15,10 @@
 namespace penshape::snap {
 namespace {
 
-// A calligraphy outline whose half-width varies more than this (largest over smallest, away from
-// the caps) is a variable-width stroke: left as drawn, since a constant pen would lose its form.
-constexpr double kMaxCalligraphyWidthRatio = 1.5;
+// A calligraphy outline whose half-width varies more than this (upper over lower quartile, away
+// from the caps) is a variable-width stroke: left as drawn, since a constant pen would lose its
+// form.
+constexpr double kMaxCalligraphyWidthRatio = 1.4;
 
 // Content that is never drawn as it stands, or is not ink.
 bool skipped_container(const char* name) {
@@ -47,9 +48,9 @@ double segment_distance(PointD p, PointD a, PointD b) {
   return std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy);
 }
 
-// How the outline's half-width varies along the centre line: the 90th percentile of the
-// distances from the centre line's middle 60% to the outline over the 10th (corners, where the
-// centre estimate cuts inside, do not count).
+// How the outline's half-width varies along the centre line: the upper quartile of the distances
+// from the centre line's middle 60% to the outline over the lower one (corners, where the centre
+// estimate cuts inside, do not count).
 double width_ratio(const std::vector<PointD>& centre, const std::vector<PointD>& ring) {
   std::vector<double> d;
   const std::size_t n = centre.size();
@@ -62,7 +63,7 @@ double width_ratio(const std::vector<PointD>& centre, const std::vector<PointD>&
   }
   if (d.empty()) return 1.0;
   std::sort(d.begin(), d.end());
-  const double lo = d[d.size() / 10], hi = d[d.size() - 1 - d.size() / 10];
+  const double lo = d[d.size() / 4], hi = d[d.size() - 1 - d.size() / 4];
   return lo > 0 ? hi / lo : std::numeric_limits<double>::infinity();
 }
 

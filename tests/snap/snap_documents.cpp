@@ -89,7 +89,8 @@ std::string zip_package(const std::vector<std::pair<std::string, std::string>>& 
   zip_source_open(target);
   std::string out;
   char buf[4096];
-  for (zip_int64_t n; (n = zip_source_read(target, buf, sizeof buf)) > 0;) {
+  for (zip_int64_t n = zip_source_read(target, buf, sizeof buf); n > 0;
+       n = zip_source_read(target, buf, sizeof buf)) {
     out.append(buf, static_cast<std::size_t>(n));
   }
   zip_source_close(target);
@@ -114,7 +115,7 @@ std::map<std::string, std::string> zip_entries(const std::string& zip) {
     zip_file_t* f = zip_fopen_index(z, index, 0);
     std::string bytes;
     char buf[4096];
-    for (zip_int64_t n; (n = zip_fread(f, buf, sizeof buf)) > 0;) {
+    for (zip_int64_t n = zip_fread(f, buf, sizeof buf); n > 0; n = zip_fread(f, buf, sizeof buf)) {
       bytes.append(buf, static_cast<std::size_t>(n));
     }
     zip_fclose(f);

@@ -25,7 +25,7 @@ using namespace docs;
 const std::string kCli = PENSHAPE_CLI;
 
 fs::path out_dir() {
-  const fs::path d = fs::path(PENSHAPE_BINARY_DIR) / "tests" / "snap" / "apps-documents";
+  fs::path d = fs::path(PENSHAPE_BINARY_DIR) / "tests" / "snap" / "apps-documents";
   fs::create_directories(d);
   return d;
 }
@@ -105,10 +105,11 @@ std::string pressures(std::size_t points, const char* last) {
 }
 
 bool skip_without_xournal(std::string& why) {
-  if (!have("xournalpp"))
+  if (!have("xournalpp")) {
     why = "xournalpp is not installed (scripts/setup.sh installs it)";
-  else if (!have("pdftoppm"))
+  } else if (!have("pdftoppm")) {
     why = "pdftoppm (poppler-utils) is not installed";
+  }
   return !why.empty();
 }
 
@@ -147,6 +148,7 @@ TEST(XournalDocuments, TwoHundredPagesOpen) {
   if (skip_without_xournal(why)) GTEST_SKIP() << why;
   const fs::path dir = out_dir();
   std::vector<std::string> pages;
+  pages.reserve(200);
   for (int p = 0; p < 200; ++p) {
     pages.push_back(xopp_stroke(wobbly_circle(100.0 + p % 7 * 20, 150, 50), "2") +
                     xopp_stroke(wobbly_line({250, 50}, {380, 50.0 + p % 5 * 40}), "2"));

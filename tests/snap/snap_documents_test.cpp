@@ -304,7 +304,9 @@ TEST_F(SnapDocuments, LineEndsAndOtherEncodings) {
   EXPECT_EQ(out("crlf.svg").substr(0, head.size()), head);
   EXPECT_TRUE(contains(out("crlf.svg"), "/>\r\n</svg>\r\n"));
   std::string utf16 = "\xff\xfe"; // little-endian, with its byte order mark
-  for (const char c : "<?xml version=\"1.0\" encoding=\"UTF-16\"?>\n" + head + stroke + "</svg>") {
+  std::string ascii = "<?xml version=\"1.0\" encoding=\"UTF-16\"?>\n";
+  ascii.append(head).append(stroke).append("</svg>");
+  for (const char c : ascii) {
     if (c != '\0') utf16 += std::string{c, '\0'};
   }
   r = snap("utf16.svg", utf16);
