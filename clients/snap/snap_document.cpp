@@ -1,6 +1,7 @@
 // `penshape snap` in memory (see snap_document.hpp).
 #include "snap_document.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 #include "gzip.hpp"
@@ -127,11 +128,21 @@ std::string pack(const std::string& original, const std::string& xml, Packing pa
 } // namespace
 
 std::size_t line_of(std::string_view text, std::ptrdiff_t offset) {
+  return LineIndex(text).line(offset);
+}
+
+LineIndex::LineIndex(std::string_view text) {
+  for (std::size_t at = text.find('\n'); at != std::string_view::npos;
+       at = text.find('\n', at + 1)) {
+    newlines_.push_back(at);
+  }
+}
+
+std::size_t LineIndex::line(std::ptrdiff_t offset) const {
   if (offset < 0) return 0;
-  const auto end = std::min(text.size(), static_cast<std::size_t>(offset));
-  std::size_t line = 1;
-  for (std::size_t i = 0; i < end; ++i) line += text[i] == '\n' ? 1 : 0;
-  return line;
+  const auto before =
+      std::lower_bound(newlines_.begin(), newlines_.end(), static_cast<std::size_t>(offset));
+  return 1 + static_cast<std::size_t>(before - newlines_.begin());
 }
 
 SnapResult snap_document(const std::string& bytes, const SnapOptions& options,

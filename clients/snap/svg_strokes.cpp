@@ -103,7 +103,7 @@ struct Frame {
 class Walker {
  public:
   Walker(const std::string& text, const SvgScope& scope, std::vector<std::string>& warnings)
-      : text_(text), scope_(scope), warnings_(warnings) {
+      : lines_(text), scope_(scope), warnings_(warnings) {
     ids_.insert(scope.ids.begin(), scope.ids.end());
   }
 
@@ -150,7 +150,7 @@ class Walker {
       try {
         f.ctm = f.ctm.then_inner(parse_transform(t.value()));
       } catch (const TransformError& e) {
-        warnings_.push_back(describe(n, text_) + ": transform: " + e.what() + ": left as drawn");
+        warnings_.push_back(describe(n, lines_) + ": transform: " + e.what() + ": left as drawn");
         return;
       }
     }
@@ -168,7 +168,7 @@ class Walker {
         stroke(n, f.ctm, f.style, f.page);
       } catch (const NotAStroke& e) {
         if (!e.why.empty())
-          warnings_.push_back(describe(n, text_) + ": " + e.why + ": left as drawn");
+          warnings_.push_back(describe(n, lines_) + ": " + e.why + ": left as drawn");
       }
     }
   }
@@ -194,7 +194,7 @@ class Walker {
     s.element = n;
     s.to_root = m;
     s.calligraphy = calligraphy;
-    s.ink.where = describe(n, text_);
+    s.ink.where = describe(n, lines_);
     s.ink.locator = locator(n);
     s.ink.style = style_key(n, st, calligraphy);
     std::vector<PointD> pts;
@@ -251,7 +251,7 @@ class Walker {
     }
   }
 
-  const std::string& text_;
+  const LineIndex lines_;
   const SvgScope& scope_;
   std::vector<std::string>& warnings_;
   std::set<std::string> ids_, found_;
@@ -260,10 +260,10 @@ class Walker {
 
 } // namespace
 
-std::string describe(const pugi::xml_node& element, const std::string& text) {
+std::string describe(const pugi::xml_node& element, const LineIndex& lines) {
   std::string out = element.name();
   if (const auto id = element.attribute("id")) out += std::string("#") + id.value();
-  return out + " (line " + std::to_string(line_of(text, element.offset_debug())) + ")";
+  return out + " (line " + std::to_string(lines.line(element.offset_debug())) + ")";
 }
 
 std::string locator(const pugi::xml_node& element) {

@@ -12,6 +12,7 @@
 #include <pugixml.hpp>
 
 #include "ink_stroke.hpp"
+#include "snap_error.hpp"
 #include "transform.hpp"
 
 namespace penshape::snap {
@@ -46,6 +47,6 @@ std::vector<SvgPage> read_svg_strokes(const pugi::xml_document& doc, const std::
 std::string locator(const pugi::xml_node& element);
 
 // "path#id (line 12)" for messages.
-std::string describe(const pugi::xml_node& element, const std::string& text);
+std::string describe(const pugi::xml_node& element, const LineIndex& lines);
 
 } // namespace penshape::snap

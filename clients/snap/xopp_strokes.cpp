@@ -15,9 +15,9 @@ namespace penshape::snap {
 namespace {
 
 std::string place(std::size_t page, std::size_t layer, std::size_t index, const pugi::xml_node& n,
-                  const std::string& text) {
+                  const LineIndex& lines) {
   return "page " + std::to_string(page) + " layer " + std::to_string(layer) + " stroke " +
-         std::to_string(index) + " (line " + std::to_string(line_of(text, n.offset_debug())) + ")";
+         std::to_string(index) + " (line " + std::to_string(lines.line(n.offset_debug())) + ")";
 }
 
 // A stroke snap leaves as drawn, and why (empty: silently, as for a dot).
@@ -89,12 +89,12 @@ void read_ink(const pugi::xml_node& n, XoppStroke& s) {
 }
 
 std::optional<XoppStroke> read_stroke(const pugi::xml_node& n, std::size_t page, std::size_t layer,
-                                      std::size_t index, const std::string& text,
+                                      std::size_t index, const LineIndex& lines,
                                       std::vector<std::string>& warnings) {
   XoppStroke s;
   s.element = n;
   s.page = page, s.layer = layer, s.index = index;
-  s.ink.where = place(page, layer, index, n, text);
+  s.ink.where = place(page, layer, index, n, lines);
   s.ink.locator = "/xournal/page[" + std::to_string(page) + "]/layer[" + std::to_string(layer) +
                   "]/stroke[" + std::to_string(index) + "]";
   s.ink.style = std::string(n.attribute("tool").as_string("pen")) + " " +
@@ -138,6 +138,7 @@ std::string pressure_widths(const InkStroke& ink, const std::vector<PointD>& pts
 
 std::vector<XoppLayer> read_xopp_strokes(const pugi::xml_document& doc, const std::string& text,
                                          std::vector<std::string>& warnings) {
+  const LineIndex lines(text);
   std::vector<XoppLayer> out;
   std::size_t page = 0;
   for (const pugi::xml_node& p : doc.document_element().children("page")) {
@@ -151,7 +152,7 @@ std::vector<XoppLayer> read_xopp_strokes(const pugi::xml_document& doc, const st
         ++index;
         const char* tool = n.attribute("tool").as_string("pen");
         if (std::strcmp(tool, "pen") != 0 && std::strcmp(tool, "highlighter") != 0) continue;
-        if (auto s = read_stroke(n, page, layer, index, text, warnings)) {
+        if (auto s = read_stroke(n, page, layer, index, lines, warnings)) {
           strokes.strokes.push_back(std::move(*s));
         }
       }
