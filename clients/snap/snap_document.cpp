@@ -53,9 +53,14 @@ void snap_pages(const std::vector<std::vector<Stroke>>& pages, const SnapOptions
       rep.where.push_back(s.ink.where);
       edits.push_back(splice.by_offsets ? element_range(splice.text, s.element) : Edit{});
     }
-    // The group's first element becomes the shape; the others go.
+    // The group's first element becomes the shape; the others go (from the tree too, for a
+    // document saved whole).
     edits[edits.size() - ps.strokes.size()].text =
         node_text(replace(pages[ps.page][ps.strokes.front()], rep.recognition, ps.pen_radius));
+    for (std::size_t k = 1; k < ps.strokes.size(); ++k) {
+      pugi::xml_node gone = pages[ps.page][ps.strokes[k]].element;
+      gone.parent().remove_child(gone);
+    }
     result.replacements.push_back(std::move(rep));
   }
 }
