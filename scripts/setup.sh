@@ -12,7 +12,7 @@ PACKAGES=(
   libsdl2-dev xvfb python3-grpcio python3-protobuf
   libpolyclipping-dev nlohmann-json3-dev
   dpkg-dev file
-  libpugixml-dev zlib1g-dev libpng-dev
+  libpugixml-dev zlib1g-dev libzip-dev libpng-dev
   inkscape xournalpp python3-lxml python3-cssselect python3-numpy poppler-utils
 )
 

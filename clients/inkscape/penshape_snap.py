@@ -74,9 +74,14 @@ class PenshapeSnap(inkex.EffectExtension):
                     run.returncode, run.stderr.strip().replace(src + ": ", "")))
             self.document = inkex.load_svg(dst)
             self.svg = self.document.getroot()
+        # stderr: warnings (elements left as drawn), maybe a progress bar, the summary last.
+        lines = run.stderr.strip().splitlines()
+        warnings = [line.split("warning: ", 1)[1] for line in lines if "warning: " in line]
+        if warnings:
+            inkex.errormsg("penshape: left as drawn:\n" + "\n".join(warnings))
         if not run.stdout.strip():
             inkex.errormsg("penshape: no stroke was certified as a shape ("
-                           + run.stderr.strip().split(": ", 1)[-1] + ")")
+                           + (lines[-1].split(": ", 1)[-1] if lines else "") + ")")
 
 
 if __name__ == "__main__":

@@ -2,6 +2,7 @@
 // answers, else in-process.
 #include "snap_command.hpp"
 
+#include <atomic>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +15,7 @@
 #include "json_writer.hpp"
 #include "snap/atomic_file.hpp"
 #include "snap/daemon_recognizer.hpp"
+#include "snap/progress_bar.hpp"
 #include "snap/snap_document.hpp"
 #include "snap/snap_error.hpp"
 
@@ -21,7 +23,7 @@ namespace penshape::cli {
 namespace {
 
 constexpr const char* kHelp =
-    "usage: penshape snap [--json] [--pen-radius R] [--tolerance E] [--no-group]\n"
+    "usage: penshape snap [--json] [--quiet] [--pen-radius R] [--tolerance E] [--no-group]\n"
     "                     [--ids ID,...] [--layer ID] [--local | --socket S | --address A]\n"
     "                     IN OUT | --in-place IN\n"
     "\n"
@@ -30,15 +32,21 @@ constexpr const char* kHelp =
     "else (text, images, other layers, pages, backgrounds, metadata, unrecognized strokes) stays.\n"
     "\n"
     "Input, by content (not extension):\n"
-    "  SVG (Inkscape or plain): stroked, unfilled path/polyline/line elements (pen radius: half\n"
-    "    the stroke width) and filled, unstroked one-piece paths (Calligraphy outlines: pen path\n"
-    "    and radius estimated from the outline). Each layer is one page.\n"
-    "  Xournal++ .xopp (gzip XML): pen and highlighter strokes, with per-point pressure widths.\n"
-    "    Each layer of each page is one page.\n"
+    "  SVG (Inkscape or plain): stroked, unfilled path/polyline/polygon/line elements (pen\n"
+    "    radius: half the stroke width; a closed subpath keeps its closing side) and filled,\n"
+    "    unstroked one-piece paths of nearly constant width (Calligraphy outlines: pen path and\n"
+    "    radius estimated from the outline). Each layer is one page.\n"
+    "  Xournal++ .xopp (gzip XML, or the zip package with content.xml and attachments): pen and\n"
+    "    highlighter strokes, with pressure widths read as Xournal++ reads them (a width <= 0\n"
+    "    draws nothing). Each layer of each page is one page.\n"
+    "  A dot (one point) is left as drawn; an element snap cannot read as a stroke (bad numbers,\n"
+    "  widths, transforms, coordinates beyond 1e6) is left as drawn with a warning naming it.\n"
     "Output: SVG rect, circle, ellipse, line, polyline, polygon or path with true arcs, keeping\n"
     "  id, style, transform, with data-penshape-class and data-penshape-certificate; .xopp\n"
-    "  strokes with the original's tool and colour, of the clean pen's width (curves as\n"
-    "  polylines within the certificate's tolerance).\n"
+    "  strokes with the original's tool and colour, of the clean pen's width (a pressure\n"
+    "  stroke keeps its width profile; curves as polylines within the certificate's tolerance).\n"
+    "  Open shapes run the way they were drawn (markers stay at their ends). Only replaced\n"
+    "  elements change: every other byte of the document is written back as it was.\n"
     "\n"
     "  --pen-radius R  pen radius in document units (default: each stroke's: half its width,\n"
     "                  the median for pressure strokes)\n"
@@ -48,14 +56,20 @@ constexpr const char* kHelp =
     "  --no-group      recognize every stroke on its own (default: strokes drawn one after the\n"
     "                  other that together make one shape, such as a rectangle's four sides or\n"
     "                  an arrow's shaft and head, become that shape, certified on their union;\n"
-    "                  document order is drawing order; all of the group's strokes are replaced)\n"
+    "                  document order is drawing order; all of the group's strokes are replaced;\n"
+    "                  only strokes of the same tool, colour, markers and width (within 10%)\n"
+    "                  are grouped)\n"
     "  --ids ID,...    only these elements (a group or layer: what it holds); SVG only\n"
     "  --layer ID      only this layer; SVG only\n"
     "  --in-place      write the result over IN (IN is never overwritten otherwise)\n"
     "  --local         recognize in this process even when penshaped is running\n"
-    "  --json          one object per replacement: elements (SVG ids or \"page P layer L stroke\n"
-    "                  S\"; several for a group), where, class, params, tidy (the tidy-up\n"
-    "                  constraints applied), pen_radius, certificate\n"
+    "  --json          one object per replacement: elements (stable locators: the id, else an\n"
+    "                  XPath-like path such as \"/xournal/page[1]/layer[1]/stroke[3]\"; several\n"
+    "                  for a group), where, class, params, tidy (the tidy-up constraints\n"
+    "                  applied), pen_radius, certificate; then one {\"warning\": ...} per\n"
+    "                  element left as drawn\n"
+    "  --quiet         no progress bar and no warnings (the bar shows on stderr when a run\n"
+    "                  takes over a second, never with --json)\n"
     "  --socket PATH   penshaped's unix socket (default: $XDG_RUNTIME_DIR/penshape.sock)\n"
     "  --address ADDR  a gRPC address instead (unix:PATH, unix-abstract:NAME, HOST:PORT)\n"
     "Without --local, penshaped's Geometry.Recognize is used when it answers (up to 64 strokes "
@@ -64,8 +78,11 @@ constexpr const char* kHelp =
     "written to a temporary file and renamed,\n"
     "so no partial file is left; OUT \"-\" is standard output.\n"
     "\n"
-    "Exit codes: 0 ok, 2 bad input (message names the line, element id or stroke; OUT is not\n"
-    "written), 1 internal failure.";
+    "Pages are recognized in parallel on all cores.\n"
+    "\n"
+    "Exit codes: 0 ok (also when elements were left as drawn), 2 a document the apps cannot open\n"
+    "either (not XML, neither format, corrupt or truncated compression, XML past 1 GiB; the\n"
+    "message names the line; OUT is not written), 1 internal failure.";
 
 std::vector<std::string> split_ids(const std::string& s) {
   std::vector<std::string> out;
@@ -157,7 +174,7 @@ snap::PageRecognizer choose_recognizer(const ParsedArgs& parsed, std::string& en
   }
   engine = "penshaped at " + address;
   auto remote = snap::daemon_recognizer(channel);
-  auto failed = std::make_shared<bool>(false);
+  auto failed = std::make_shared<std::atomic<bool>>(false); // pages run on several threads
   return [remote, local, failed](const std::vector<snap::InkStroke>& page,
                                  const snap::SnapSettings& settings) {
     if (!*failed) {
@@ -170,6 +187,19 @@ snap::PageRecognizer choose_recognizer(const ParsedArgs& parsed, std::string& en
     }
     return local(page, settings);
   };
+}
+
+// Each element left as drawn: a line on stderr, or a {"warning": ...} object with --json.
+void report_warnings(const std::vector<std::string>& warnings, bool json, bool quiet) {
+  for (const std::string& w : warnings) {
+    if (json) {
+      JsonWriter out;
+      out.begin_object().key("warning").string(w).end_object();
+      std::puts(out.str().c_str());
+    } else if (!quiet) {
+      std::fprintf(stderr, "penshape snap: warning: %s\n", w.c_str());
+    }
+  }
 }
 
 struct Paths {
@@ -212,16 +242,20 @@ snap::SnapOptions options_from(const ParsedArgs& parsed) {
 
 int run_snap(std::span<const std::string_view> args) {
   const ParsedArgs parsed(
-      args, live_arg_spec({.flags = {"--json", "--no-group", "--in-place", "--local"},
+      args, live_arg_spec({.flags = {"--json", "--quiet", "--no-group", "--in-place", "--local"},
                            .options = {"--pen-radius", "--tolerance", "--ids", "--layer"}}));
   if (parsed.flag("--help")) {
     std::puts(kHelp);
     return kExitOk;
   }
   const Paths paths = in_and_out(parsed);
-  const snap::SnapOptions options = options_from(parsed);
+  snap::SnapOptions options = options_from(parsed);
   const bool json = parsed.flag("--json");
   if (json && paths.out == "-") throw UsageError("--json needs OUT to be a file, not -");
+  const bool quiet = parsed.flag("--quiet");
+  auto progress = std::make_shared<snap::SnapProgress>();
+  if (!quiet && !json)
+    options.progress = [progress](auto done, auto total) { (*progress)(done, total); };
   std::string engine;
   snap::SnapResult result;
   try {
@@ -229,9 +263,11 @@ int run_snap(std::span<const std::string_view> args) {
     const snap::PageRecognizer recognizer = choose_recognizer(parsed, engine);
     result = snap::snap_document(bytes, options, recognizer);
   } catch (const snap::SnapInputError& e) {
+    progress->finish();
     std::fprintf(stderr, "penshape snap: %s: %s\n", paths.in.c_str(), e.what());
     return kExitBadInput;
   }
+  progress->finish();
   try {
     if (paths.out == "-") {
       std::cout.write(result.output.data(), static_cast<std::streamsize>(result.output.size()));
@@ -254,6 +290,7 @@ int run_snap(std::span<const std::string_view> args) {
                  to_string(rep.recognition.shape), c.bound, c.epsilon, c.pen_radius,
                  c.method.c_str());
   }
+  report_warnings(result.warnings, json, quiet);
   std::fprintf(stderr, "penshape snap: %zu of %zu strokes snapped (%s) -> %s\n",
                result.replacements.size(), result.strokes, engine.c_str(), paths.out.c_str());
   return kExitOk;

@@ -3,6 +3,7 @@
 
 #include <zlib.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "snap_error.hpp"
@@ -32,11 +33,16 @@ std::string gunzip(std::string_view bytes, std::size_t limit) {
       throw SnapInputError("gzip stream is corrupt at byte " + std::to_string(z.total_in) + ": " +
                            why);
     }
-    out.append(buf, sizeof buf - z.avail_out);
-    if (out.size() > limit) {
+    const std::size_t n = sizeof buf - z.avail_out;
+    if (out.size() + n > limit) {
       inflateEnd(&z);
       throw SnapInputError("gzip stream expands beyond " + std::to_string(limit) + " bytes");
     }
+    // Grown by doubling, but never past the limit: a bomb never holds twice the limit.
+    if (out.capacity() < out.size() + n) {
+      out.reserve(std::min(std::max(2 * out.capacity(), out.size() + n), limit));
+    }
+    out.append(buf, n);
     if (rc == Z_OK && z.avail_in == 0 && z.avail_out != 0) {
       inflateEnd(&z);
       throw SnapInputError("gzip stream is truncated after " + std::to_string(out.size()) +

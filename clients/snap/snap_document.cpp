@@ -1,19 +1,23 @@
 // `penshape snap` in memory (see snap_document.hpp).
 #include "snap_document.hpp"
 
-#include <cstring>
+#include <algorithm>
 #include <sstream>
 
-#include "clean_shape.hpp"
 #include "gzip.hpp"
 #include "snap_error.hpp"
+#include "splice.hpp"
 #include "svg_writer.hpp"
 #include "xopp_strokes.hpp"
+#include "xopp_zip.hpp"
 
 namespace penshape::snap {
 namespace {
 
 constexpr unsigned kParse = pugi::parse_full | pugi::parse_ws_pcdata;
+constexpr const char* kZipXml = "content.xml";
+
+enum class Packing { kPlain, kGzip, kZip };
 
 std::string root_name(const pugi::xml_document& doc) {
   std::string name = doc.document_element().name();
@@ -21,103 +25,138 @@ std::string root_name(const pugi::xml_document& doc) {
   return colon == std::string::npos ? name : name.substr(colon + 1);
 }
 
-bool has_distinct_points(const InkStroke& s) {
-  for (const auto& p : s.points) {
-    if (p.x != s.points.front().x || p.y != s.points.front().y) return true;
-  }
-  return false;
-}
+// The replaced elements' edits of the text. Offsets into the text are known only for UTF-8 input
+// (pugixml converts other encodings); otherwise the document is saved whole from the tree.
+struct Splice {
+  const std::string& text;
+  bool by_offsets = true;
+  std::vector<Edit> edits;
+};
 
-// Recognizes one page; calls replace(strokes, snap, pen_radius) for each snap.
+// The snaps of the strokes read, each group's elements as edits of the text.
 template <typename Stroke, typename Replace>
-void snap_page(const std::vector<Stroke>& strokes, const SnapOptions& options,
-               const PageRecognizer& recognize_page, Replace&& replace) {
-  std::vector<const Stroke*> kept;
-  std::vector<InkStroke> inks;
-  for (const Stroke& s : strokes) {
-    if (!has_distinct_points(s.ink)) continue; // a dot: nothing to snap
-    kept.push_back(&s);
-    inks.push_back(s.ink);
+void snap_pages(const std::vector<std::vector<Stroke>>& pages, const SnapOptions& options,
+                const PageRecognizer& recognize_page, SnapResult& result, Splice& splice,
+                Replace&& replace) {
+  std::vector<Edit>& edits = splice.edits;
+  std::vector<std::vector<const InkStroke*>> inks(pages.size());
+  for (std::size_t p = 0; p < pages.size(); ++p) {
+    result.strokes += pages[p].size();
+    for (const Stroke& s : pages[p]) inks[p].push_back(&s.ink);
   }
-  if (inks.empty()) return;
-  for (const StrokeSnap& snap : recognize_page(inks, options.settings)) {
-    if (!is_snap(snap.recognition)) continue;
-    std::vector<const Stroke*> group;
-    for (const std::size_t i : snap.strokes) group.push_back(kept.at(i));
-    replace(group, snap, clean_pen_radius(inks[snap.strokes.front()], options.settings));
+  for (PageSnap& ps : recognize_pages(inks, options.settings, recognize_page, options.progress,
+                                      options.threads, result.warnings)) {
+    Replacement rep{{}, {}, ps.snap.recognition, ps.pen_radius, ps.snap.tidy};
+    for (const std::size_t i : ps.strokes) {
+      const Stroke& s = pages[ps.page][i];
+      rep.elements.push_back(s.ink.locator);
+      rep.where.push_back(s.ink.where);
+      edits.push_back(splice.by_offsets ? element_range(splice.text, s.element) : Edit{});
+    }
+    // The group's first element becomes the shape; the others go (from the tree too, for a
+    // document saved whole).
+    edits[edits.size() - ps.strokes.size()].text =
+        node_text(replace(pages[ps.page][ps.strokes.front()], rep.recognition, ps.pen_radius));
+    for (std::size_t k = 1; k < ps.strokes.size(); ++k) {
+      pugi::xml_node gone = pages[ps.page][ps.strokes[k]].element;
+      gone.parent().remove_child(gone);
+    }
+    result.replacements.push_back(std::move(rep));
   }
-}
-
-std::string saved(const pugi::xml_document& doc) {
-  std::ostringstream out;
-  doc.save(out, "", pugi::format_raw | pugi::format_no_declaration, pugi::encoding_utf8);
-  return out.str();
 }
 
 void snap_svg(pugi::xml_document& doc, const std::string& text, const SnapOptions& options,
-              const PageRecognizer& recognize_page, SnapResult& result) {
+              const PageRecognizer& recognize_page, SnapResult& result, Splice& splice) {
   result.format = Format::kSvg;
-  for (const SvgPage& page : read_svg_strokes(doc, text, options.scope)) {
-    result.strokes += page.strokes.size();
-    snap_page(page.strokes, options, recognize_page,
-              [&](const std::vector<const SvgStroke*>& group, const StrokeSnap& snap, double pen) {
-                const Recognition& r = snap.recognition;
-                Replacement rep{{}, {}, r, pen, snap.tidy};
-                for (const SvgStroke* s : group) {
-                  rep.elements.push_back(s->element.attribute("id").value());
-                  rep.where.push_back(s->ink.where);
-                }
-                replace_svg_stroke(*group.front(), r, pen);
-                for (std::size_t i = 1; i < group.size(); ++i) {
-                  group[i]->element.parent().remove_child(group[i]->element);
-                }
-                result.replacements.push_back(std::move(rep));
-              });
+  std::vector<std::vector<SvgStroke>> pages;
+  for (SvgPage& page : read_svg_strokes(doc, text, options.scope, result.warnings)) {
+    pages.push_back(std::move(page.strokes));
   }
+  snap_pages(pages, options, recognize_page, result, splice,
+             [](const SvgStroke& s, const Recognition& r, double pen) {
+               return replace_svg_stroke(s, r, pen);
+             });
 }
 
 void snap_xopp(pugi::xml_document& doc, const std::string& text, const SnapOptions& options,
-               const PageRecognizer& recognize_page, SnapResult& result) {
+               const PageRecognizer& recognize_page, SnapResult& result, Splice& splice) {
   result.format = Format::kXopp;
   if (!options.scope.ids.empty() || !options.scope.layer.empty()) {
     throw SnapInputError("--ids and --layer choose SVG elements; this is a Xournal++ document");
   }
-  for (const XoppLayer& layer : read_xopp_strokes(doc, text)) {
-    result.strokes += layer.strokes.size();
-    snap_page(layer.strokes, options, recognize_page,
-              [&](const std::vector<const XoppStroke*>& group, const StrokeSnap& snap, double pen) {
-                const Recognition& r = snap.recognition;
-                Replacement rep{{}, {}, r, pen, snap.tidy};
-                for (const XoppStroke* s : group) {
-                  rep.elements.push_back("page " + std::to_string(s->page) + " layer " +
-                                         std::to_string(s->layer) + " stroke " +
-                                         std::to_string(s->index));
-                  rep.where.push_back(s->ink.where);
-                }
-                replace_xopp_stroke(*group.front(), r, pen);
-                for (std::size_t i = 1; i < group.size(); ++i) {
-                  group[i]->element.parent().remove_child(group[i]->element);
-                }
-                result.replacements.push_back(std::move(rep));
-              });
+  std::vector<std::vector<XoppStroke>> pages;
+  for (XoppLayer& layer : read_xopp_strokes(doc, text, result.warnings)) {
+    pages.push_back(std::move(layer.strokes));
+  }
+  snap_pages(pages, options, recognize_page, result, splice,
+             [](const XoppStroke& s, const Recognition& r, double pen) {
+               replace_xopp_stroke(s, r, pen);
+               return s.element;
+             });
+}
+
+// The whole tree in the input's encoding (its declaration node is kept; BOM for UTF-16/32).
+std::string saved(const pugi::xml_document& doc, pugi::xml_encoding encoding) {
+  std::ostringstream out;
+  const bool wide = encoding != pugi::encoding_utf8 && encoding != pugi::encoding_latin1;
+  doc.save(out, "",
+           pugi::format_raw | pugi::format_no_declaration | (wide ? pugi::format_write_bom : 0u),
+           encoding);
+  return out.str();
+}
+
+// The XML inside the bytes, and how it was packed.
+std::string unpack(const std::string& bytes, Packing& packing) {
+  if (looks_zipped(bytes)) {
+    packing = Packing::kZip;
+    return zip_entry(bytes, kZipXml, kMaxXmlBytes);
+  }
+  if (looks_gzipped(bytes)) {
+    packing = Packing::kGzip;
+    return gunzip(bytes, kMaxXmlBytes);
+  }
+  packing = Packing::kPlain;
+  return bytes;
+}
+
+std::string pack(const std::string& original, const std::string& xml, Packing packing) {
+  switch (packing) {
+    case Packing::kZip:
+      return zip_with_entry(original, kZipXml, xml);
+    case Packing::kGzip:
+      return gzip(xml);
+    default:
+      return xml;
   }
 }
 
 } // namespace
 
 std::size_t line_of(std::string_view text, std::ptrdiff_t offset) {
+  return LineIndex(text).line(offset);
+}
+
+LineIndex::LineIndex(std::string_view text) {
+  for (std::size_t at = text.find('\n'); at != std::string_view::npos;
+       at = text.find('\n', at + 1)) {
+    newlines_.push_back(at);
+  }
+}
+
+std::size_t LineIndex::line(std::ptrdiff_t offset) const {
   if (offset < 0) return 0;
-  const auto end = std::min(text.size(), static_cast<std::size_t>(offset));
-  std::size_t line = 1;
-  for (std::size_t i = 0; i < end; ++i) line += text[i] == '\n' ? 1 : 0;
-  return line;
+  const auto before =
+      std::lower_bound(newlines_.begin(), newlines_.end(), static_cast<std::size_t>(offset));
+  return 1 + static_cast<std::size_t>(before - newlines_.begin());
 }
 
 SnapResult snap_document(const std::string& bytes, const SnapOptions& options,
                          const PageRecognizer& recognize_page) {
-  const bool gzipped = looks_gzipped(bytes);
-  const std::string text = gzipped ? gunzip(bytes) : bytes;
-  const char* what = gzipped ? "the gzip's content" : "the file";
+  Packing packing = Packing::kPlain;
+  const std::string text = unpack(bytes, packing);
+  const char* what = packing == Packing::kZip    ? "the zip's content.xml"
+                     : packing == Packing::kGzip ? "the gzip's content"
+                                                 : "the file";
   pugi::xml_document doc;
   const pugi::xml_parse_result parsed = doc.load_buffer(text.data(), text.size(), kParse);
   if (!parsed) {
@@ -126,18 +165,24 @@ SnapResult snap_document(const std::string& bytes, const SnapOptions& options,
                          parsed.description());
   }
   SnapResult result;
+  Splice splice{text, parsed.encoding == pugi::encoding_utf8, {}};
   const std::string root = root_name(doc);
   if (root == "svg") {
-    snap_svg(doc, text, options, recognize_page, result);
+    snap_svg(doc, text, options, recognize_page, result, splice);
   } else if (root == "xournal") {
-    snap_xopp(doc, text, options, recognize_page, result);
+    snap_xopp(doc, text, options, recognize_page, result, splice);
   } else {
     throw SnapInputError(std::string(what) + " is XML of neither format: its root is <" +
                          doc.document_element().name() +
                          ">, not <svg> (SVG) or <xournal> (Xournal++)");
   }
-  result.output = result.replacements.empty() ? text : saved(doc);
-  if (gzipped) result.output = gzip(result.output);
+  if (splice.edits.empty()) {
+    result.output = bytes;
+  } else {
+    const std::string xml =
+        splice.by_offsets ? spliced(text, splice.edits) : saved(doc, parsed.encoding);
+    result.output = pack(bytes, xml, packing);
+  }
   return result;
 }
 

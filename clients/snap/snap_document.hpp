@@ -1,12 +1,15 @@
 #pragma once
-// `penshape snap` on a document in memory: the format found by content (gzip or plain XML with a
-// <xournal> root: Xournal++; an <svg> root: SVG), the strokes of each page recognized in drawing
-// order, the snapped ones replaced, everything else kept byte for byte where the XML library
-// allows (comments, processing instructions, whitespace and attribute order are kept).
+// `penshape snap` on a document in memory: the format found by content (an <svg> root: SVG; a
+// <xournal> root, plain, gzipped or as content.xml of a zip package: Xournal++), the strokes of
+// each page recognized in drawing order (pages in parallel), and the snapped ones replaced by
+// splicing the new elements into the original text: every byte outside a replaced element
+// (whitespace, comments, entities, other attributes) comes out as it came in, and a document with
+// nothing snapped comes out byte for byte.
 #include <string>
 #include <vector>
 
 #include "page_recognizer.hpp"
+#include "snap_pages.hpp"
 #include "svg_strokes.hpp"
 
 namespace penshape::snap {
@@ -15,7 +18,7 @@ enum class Format { kSvg, kXopp };
 
 // One snapped stroke (or group): where it was, and the answer.
 struct Replacement {
-  std::vector<std::string> elements; // SVG element ids ("" when none) or "page P layer L stroke S"
+  std::vector<std::string> elements; // stable locators: the id, else "/svg[1]/g[2]/path[1]"
   std::vector<std::string> where;    // as in messages, with line numbers
   Recognition recognition;
   double pen_radius = 0.0;       // the clean shape's
@@ -24,17 +27,25 @@ struct Replacement {
 
 struct SnapResult {
   Format format = Format::kSvg;
-  std::string output; // the new document's bytes (gzip for .xopp that came gzipped)
+  std::string output; // the new document's bytes (packed as the input was)
   std::vector<Replacement> replacements;
-  std::size_t strokes = 0; // strokes read
+  std::vector<std::string> warnings; // elements left as drawn because snap cannot read them
+  std::size_t strokes = 0;           // strokes read
 };
 
 struct SnapOptions {
   SnapSettings settings;
-  SvgScope scope; // SVG only
+  SvgScope scope;          // SVG only
+  Progress progress;       // optional
+  std::size_t threads = 0; // recognizing in parallel; 0: one per core
 };
 
-// Throws SnapInputError for bad input (the message names the place).
+// The largest XML a compressed document may expand to (gzip or zip); past it reading stops.
+inline constexpr std::size_t kMaxXmlBytes = std::size_t{1} << 30;
+
+// Throws SnapInputError only for a document the apps cannot open either (not XML, neither
+// format, corrupt compression, past kMaxXmlBytes) or a scope that names nothing; the message
+// names the place.
 SnapResult snap_document(const std::string& bytes, const SnapOptions& options,
                          const PageRecognizer& recognize_page);
 

@@ -1,9 +1,11 @@
 // Xournal++ strokes in and out (see xopp_strokes.hpp).
 #include "xopp_strokes.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 
 #include "clean_shape.hpp"
 #include "number_scanner.hpp"
@@ -13,53 +15,95 @@ namespace penshape::snap {
 namespace {
 
 std::string place(std::size_t page, std::size_t layer, std::size_t index, const pugi::xml_node& n,
-                  const std::string& text) {
+                  const LineIndex& lines) {
   return "page " + std::to_string(page) + " layer " + std::to_string(layer) + " stroke " +
-         std::to_string(index) + " (line " + std::to_string(line_of(text, n.offset_debug())) + ")";
+         std::to_string(index) + " (line " + std::to_string(lines.line(n.offset_debug())) + ")";
 }
 
-std::vector<double> numbers(const char* s, const std::string& where, const char* what) {
+// A stroke snap leaves as drawn, and why (empty: silently, as for a dot).
+struct NotAStroke {
+  std::string why;
+};
+
+std::vector<double> numbers(const char* s, const char* what) {
   NumberScanner in(s);
   std::vector<double> out;
   for (in.skip_separators(); !in.done(); in.skip_separators()) {
     const auto v = in.number();
-    if (!v) throw SnapInputError(where + ": bad number in " + what + " at offset " + in.where());
+    if (!v) throw NotAStroke{std::string("bad number in ") + what + " at offset " + in.where()};
     out.push_back(*v);
   }
   return out;
 }
 
-XoppStroke read_stroke(const pugi::xml_node& n, std::size_t page, std::size_t layer,
-                       std::size_t index, const std::string& text) {
+// The pressure widths as Xournal++ keeps them: one per segment of the first `count` points.
+std::vector<double> segment_pressures(std::vector<double> w, std::size_t& count) {
+  std::vector<double> p(w.begin() + 1, w.end());
+  if (p.empty()) return p;
+  count = std::min(count, p.size() + 1); // too few widths: the stroke ends where they do
+  p.resize(count - 1);                   // one per point: the last point's is dropped
+  return p;
+}
+
+// The first run of segments of positive pressure, as [first, last] point indices; throws when
+// none is drawn or several are.
+std::pair<std::size_t, std::size_t> drawn_run(const std::vector<double>& p) {
+  const auto positive = [](double v) { return v > 0; };
+  const auto begin = std::find_if(p.begin(), p.end(), positive);
+  if (begin == p.end()) throw NotAStroke{""}; // invisible in Xournal++
+  const auto end = std::find_if_not(begin, p.end(), positive);
+  if (std::find_if(end, p.end(), positive) != p.end()) {
+    throw NotAStroke{"drawn in pieces (pressure <= 0 between them)"};
+  }
+  return {static_cast<std::size_t>(begin - p.begin()), static_cast<std::size_t>(end - p.begin())};
+}
+
+void check_width(double v) {
+  if (!(v > 0) || v > kMaxStrokeWidth) {
+    throw NotAStroke{"width " + std::to_string(v) + " is beyond what snap redraws (wider than 0 " +
+                     "and at most " + std::to_string(static_cast<int>(kMaxStrokeWidth)) + " pt)"};
+  }
+}
+
+// The pen path and radii Xournal++ draws for the element.
+void read_ink(const pugi::xml_node& n, XoppStroke& s) {
+  const std::vector<double> xy = numbers(n.child_value(), "the points");
+  if (xy.size() % 2 != 0) throw NotAStroke{"odd count of coordinates"};
+  std::size_t count = xy.size() / 2;
+  const std::vector<double> w = numbers(n.attribute("width").value(), "width");
+  if (w.empty()) throw NotAStroke{"no width"};
+  const std::vector<double> p = segment_pressures(w, count);
+  if (count < 2) throw NotAStroke{""}; // a dot (or nothing): nothing to snap
+  std::size_t first = 0, last = count - 1;
+  if (!p.empty()) std::tie(first, last) = drawn_run(p);
+  s.pressure = !p.empty();
+  for (std::size_t i = first; i <= last; ++i) {
+    const double width = p.empty() ? w[0] : p[std::min(i, last - 1)];
+    check_width(width);
+    s.ink.points.push_back({xy[2 * i], xy[2 * i + 1], static_cast<double>(i - first)});
+    s.ink.radii.push_back(width / 2);
+  }
+  if (!coordinates_in_range(s.ink.points)) {
+    throw NotAStroke{"coordinates beyond +-1e6 pt or not finite"};
+  }
+}
+
+std::optional<XoppStroke> read_stroke(const pugi::xml_node& n, std::size_t page, std::size_t layer,
+                                      std::size_t index, const LineIndex& lines,
+                                      std::vector<std::string>& warnings) {
   XoppStroke s;
   s.element = n;
   s.page = page, s.layer = layer, s.index = index;
-  s.ink.where = place(page, layer, index, n, text);
-  const std::vector<double> xy = numbers(n.child_value(), s.ink.where, "the points");
-  if (xy.size() % 2 != 0) throw SnapInputError(s.ink.where + ": odd count of coordinates");
-  const std::size_t count = xy.size() / 2;
-  if (count < 2) {
-    throw SnapInputError(s.ink.where + ": a stroke with " + std::to_string(count) +
-                         " point(s); a stroke needs at least 2");
-  }
-  const std::vector<double> w = numbers(n.attribute("width").value(), s.ink.where, "width");
-  if (w.empty()) throw SnapInputError(s.ink.where + ": no width");
-  for (const double v : w) {
-    if (!(v > 0) || v > kMaxStrokeWidth) {
-      throw SnapInputError(s.ink.where + ": width " + std::to_string(v) +
-                           " is absurd (a pen is wider than 0 and at most " +
-                           std::to_string(static_cast<int>(kMaxStrokeWidth)) + " pt)");
-    }
-  }
-  const std::size_t pressures = w.size() - 1;
-  if (pressures != 0 && pressures != count && pressures != count - 1) {
-    throw SnapInputError(s.ink.where + ": " + std::to_string(pressures) + " pressure widths for " +
-                         std::to_string(count) + " points");
-  }
-  for (std::size_t i = 0; i < count; ++i) {
-    s.ink.points.push_back({xy[2 * i], xy[2 * i + 1], static_cast<double>(i)});
-    const double width = pressures == 0 ? w[0] : w[1 + std::min(i, pressures - 1)];
-    s.ink.radii.push_back(width / 2);
+  s.ink.where = place(page, layer, index, n, lines);
+  s.ink.locator = "/xournal/page[" + std::to_string(page) + "]/layer[" + std::to_string(layer) +
+                  "]/stroke[" + std::to_string(index) + "]";
+  s.ink.style = std::string(n.attribute("tool").as_string("pen")) + " " +
+                n.attribute("color").value() + " fill " + n.attribute("fill").value();
+  try {
+    read_ink(n, s);
+  } catch (const NotAStroke& e) {
+    if (!e.why.empty()) warnings.push_back(s.ink.where + ": " + e.why + ": left as drawn");
+    return std::nullopt;
   }
   return s;
 }
@@ -70,9 +114,31 @@ std::string num(double v) {
   return buf;
 }
 
+// Each new point's pressure width: the old stroke's radius at the same fraction of its length.
+std::string pressure_widths(const InkStroke& ink, const std::vector<PointD>& pts) {
+  const auto lengths = [](const auto& v) {
+    std::vector<double> out{0};
+    for (std::size_t i = 1; i < v.size(); ++i) {
+      out.push_back(out.back() + std::hypot(v[i].x - v[i - 1].x, v[i].y - v[i - 1].y));
+    }
+    return out;
+  };
+  const std::vector<double> old_len = lengths(ink.points), new_len = lengths(pts);
+  std::string out;
+  for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
+    const double f = new_len.back() > 0 ? new_len[i] / new_len.back() : 0;
+    const auto at = std::lower_bound(old_len.begin(), old_len.end(), f * old_len.back());
+    const auto k = std::min(static_cast<std::size_t>(at - old_len.begin()), ink.radii.size() - 1);
+    out.append(" ").append(num(2 * ink.radii[k]));
+  }
+  return out;
+}
+
 } // namespace
 
-std::vector<XoppLayer> read_xopp_strokes(const pugi::xml_document& doc, const std::string& text) {
+std::vector<XoppLayer> read_xopp_strokes(const pugi::xml_document& doc, const std::string& text,
+                                         std::vector<std::string>& warnings) {
+  const LineIndex lines(text);
   std::vector<XoppLayer> out;
   std::size_t page = 0;
   for (const pugi::xml_node& p : doc.document_element().children("page")) {
@@ -86,7 +152,9 @@ std::vector<XoppLayer> read_xopp_strokes(const pugi::xml_document& doc, const st
         ++index;
         const char* tool = n.attribute("tool").as_string("pen");
         if (std::strcmp(tool, "pen") != 0 && std::strcmp(tool, "highlighter") != 0) continue;
-        strokes.strokes.push_back(read_stroke(n, page, layer, index, text));
+        if (auto s = read_stroke(n, page, layer, index, lines, warnings)) {
+          strokes.strokes.push_back(std::move(*s));
+        }
       }
       out.push_back(std::move(strokes));
     }
@@ -96,12 +164,15 @@ std::vector<XoppLayer> read_xopp_strokes(const pugi::xml_document& doc, const st
 
 void replace_xopp_stroke(const XoppStroke& stroke, const Recognition& r, double pen_radius) {
   pugi::xml_node n = stroke.element;
+  const std::vector<PointD> clean = clean_polyline(r);
   std::string pts;
-  for (const PointD& p : clean_polyline(r)) {
+  for (const PointD& p : clean) {
     if (!pts.empty()) pts += ' ';
     pts.append(num(p.x)).append(" ").append(num(p.y));
   }
-  n.attribute("width").set_value(num(2 * pen_radius).c_str());
+  std::string width = num(2 * pen_radius);
+  if (stroke.pressure) width += pressure_widths(stroke.ink, clean);
+  n.attribute("width").set_value(width.c_str());
   while (n.first_child()) n.remove_child(n.first_child());
   n.append_child(pugi::node_pcdata).set_value(pts.c_str());
 }

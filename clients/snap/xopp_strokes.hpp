@@ -1,9 +1,11 @@
 #pragma once
 // Reading and rewriting the strokes of a Xournal++ document (the XML inside a .xopp):
-// <xournal><page><layer><stroke tool= color= width="w [w1 ... wn]">x0 y0 x1 y1 ...</stroke>.
-// The first width is the tool's; the optional others are the pressure widths of the points (one
-// per point, or one per segment as older files have). Each layer of each page is one page for
-// recognition; pen and highlighter strokes are read, in document order.
+// <xournal><page><layer><stroke tool= color= width="w [p0 ... pk]">x0 y0 x1 y1 ...</stroke>.
+// Read as Xournal++ reads them: the first width is the tool's; the others are pressure widths,
+// the i-th for the segment from point i (the last point has none; extra widths are dropped, and
+// with too few the stroke ends where they do); a segment of pressure <= 0 is not drawn, so the
+// stroke is the run of points it draws. Each layer of each page is one page for recognition; pen
+// and highlighter strokes are read, in document order.
 #include <string>
 #include <vector>
 
@@ -18,18 +20,23 @@ struct XoppStroke {
   InkStroke ink; // in points (the page's unit), radius = width / 2
   pugi::xml_node element;
   std::size_t page = 0, layer = 0, index = 0; // 1-based, for --json and messages
+  bool pressure = false;                      // drawn with per-segment pressure widths
 };
 
 struct XoppLayer {
   std::vector<XoppStroke> strokes;
 };
 
-// Throws SnapInputError naming page, layer, stroke and line on too few points, bad numbers,
-// widths that are not positive or beyond kMaxStrokeWidth, or a pressure count that fits no rule.
-std::vector<XoppLayer> read_xopp_strokes(const pugi::xml_document& doc, const std::string& text);
+// Never throws for a stroke: one that Xournal++ draws but snap cannot read as one pen path (bad
+// numbers, widths out of range, coordinates beyond kMaxCoordinate, drawn in several pieces) is
+// left as drawn and named in `warnings`; a dot (one point) and an invisible stroke are left
+// silently.
+std::vector<XoppLayer> read_xopp_strokes(const pugi::xml_document& doc, const std::string& text,
+                                         std::vector<std::string>& warnings);
 
 // The stroke becomes the clean shape's polyline (clean_polyline) with the pen width 2
-// pen_radius and no pressure; tool, colour and every other attribute stay.
+// pen_radius; a pressure stroke keeps its width profile (each new point takes the width found
+// at the same fraction of the old stroke's length). Tool, colour and every other attribute stay.
 void replace_xopp_stroke(const XoppStroke& stroke, const Recognition& r, double pen_radius);
 
 } // namespace penshape::snap

@@ -39,7 +39,8 @@ TEST(ArrowWriter, SvgPathHoldsTheShaftsBend) {
       "</g></svg>";
   pugi::xml_document doc;
   ASSERT_TRUE(doc.load_string(text.c_str()));
-  const std::vector<SvgPage> pages = read_svg_strokes(doc, text, {});
+  std::vector<std::string> warnings;
+  const std::vector<SvgPage> pages = read_svg_strokes(doc, text, {}, warnings);
   ASSERT_EQ(pages.size(), 1u);
   ASSERT_EQ(pages[0].strokes.size(), 1u);
   const pugi::xml_node out = replace_svg_stroke(pages[0].strokes[0], bent_arrow(), 1.0);
@@ -59,7 +60,8 @@ TEST(ArrowWriter, XournalStrokeHoldsTheShaftsBend) {
       "</layer></page></xournal>";
   pugi::xml_document doc;
   ASSERT_TRUE(doc.load_string(text.c_str()));
-  const std::vector<XoppLayer> layers = read_xopp_strokes(doc, text);
+  std::vector<std::string> warnings;
+  const std::vector<XoppLayer> layers = read_xopp_strokes(doc, text, warnings);
   ASSERT_EQ(layers.size(), 1u);
   ASSERT_EQ(layers[0].strokes.size(), 1u);
   replace_xopp_stroke(layers[0].strokes[0], bent_arrow(), 0.75);

@@ -10,8 +10,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "png_pixels.hpp"
-#include "run_command.hpp"
+#include "app_commands.hpp"
 #include "snap_checks.hpp"
 #include "snap_fixtures.hpp"
 #include "test_data.hpp"
@@ -29,17 +28,6 @@ fs::path out_dir() {
   const fs::path d = fs::path(PENSHAPE_BINARY_DIR) / "tests" / "snap" / "apps";
   fs::create_directories(d);
   return d;
-}
-
-bool have(const std::string& program) {
-  return run_command("command -v " + program + " >/dev/null 2>&1").exit_code == 0;
-}
-
-// The apps need a display for GTK; without one they run under Xvfb.
-std::string with_display(const std::string& cmd) {
-  const char* display = std::getenv("DISPLAY");
-  if (display != nullptr && *display != '\0') return cmd;
-  return "xvfb-run -a " + cmd;
 }
 
 std::string extension(const std::string& args) {
@@ -74,15 +62,6 @@ std::vector<PointD> raw_only(const std::vector<PointD>& raw, double cx, double c
     if (std::abs(std::hypot(p.x - cx, p.y - cy) - r) > gap) out.push_back(p);
   }
   return out;
-}
-
-bool same_region(const Pixels& a, const Pixels& b, int x0, int y0, int x1, int y1) {
-  for (int y = y0; y < y1; ++y) {
-    for (int x = x0; x < x1; ++x) {
-      if (std::abs(a.ink(x, y) - b.ink(x, y)) > 8) return false;
-    }
-  }
-  return true;
 }
 
 TEST(InkscapeExtension, SnapsTheCurrentLayerOrTheSelection) {

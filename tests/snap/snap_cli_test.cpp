@@ -179,7 +179,9 @@ TEST_F(SnapCli, XournalDocument) {
   };
   // The JSON names each replacement; its epsilon bounds the distance of the raw ink path to the
   // new stroke's points.
-  EXPECT_NE(r.out.find("\"elements\":[\"page 1 layer 1 stroke 1\"],"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"elements\":[\"/xournal/page[1]/layer[1]/stroke[1]\"],"),
+            std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("\"class\":\"circle\""), std::string::npos) << r.out;
   for (const auto& [layer, k, raw] :
        {std::tuple{0, 0, f.strokes[0]}, std::tuple{0, 1, f.strokes[1]},
@@ -187,7 +189,9 @@ TEST_F(SnapCli, XournalDocument) {
     const pugi::xml_node s = stroke(lout[static_cast<std::size_t>(layer)], k);
     const auto pts = pairs_of(s.child_value());
     EXPECT_GE(pts.size(), 5u);
-    EXPECT_EQ(numbers_of(s.attribute("width").value()).size(), 1u) << "no pressure widths";
+    // The pressure stroke keeps its width profile: a width per segment after the tool's.
+    const std::size_t widths = numbers_of(s.attribute("width").value()).size();
+    EXPECT_TRUE(widths == 1 || widths == pts.size()) << widths << " widths, " << pts.size();
     EXPECT_STREQ(s.attribute("tool").value(), "pen");
     EXPECT_STREQ(s.attribute("color").value(),
                  stroke(lin[static_cast<std::size_t>(layer)], k).attribute("color").value());
@@ -375,28 +379,8 @@ TEST_F(SnapCli, BadInputExits2NamingThePlaceAndWritesNothing) {
        "the gzip's content is not well-formed"},
       {"truncated.xopp", gzip_bytes(xopp_head).substr(0, 20), "gzip stream is truncated"},
       {"neither.xml", "<html><body/></html>", "neither format: its root is <html>"},
-      {"onepoint.svg",
-       svg_head + "<path id=\"dot\" style=\"fill:none;stroke:#000\" d=\"M 5 5\"/>\n</g></svg>",
-       "path#dot (line 3): a stroke with 1 point(s)"},
-      {"onepoint.xopp",
-       gzip_bytes(xopp_head + "<stroke tool=\"pen\" color=\"#000000ff\" width=\"1\">5 "
-                              "5</stroke>\n</layer></page></xournal>"),
-       "page 1 layer 1 stroke 1 (line 2): a stroke with 1 point(s)"},
-      {"wide.svg",
-       svg_head + "<line id=\"fat\" x1=\"0\" y1=\"0\" x2=\"9\" y2=\"9\" stroke=\"red\" "
-                  "stroke-width=\"1e7\"/>\n</g></svg>",
-       "line#fat (line 3): stroke-width 1e7 is absurd"},
-      {"negative.xopp",
-       gzip_bytes(xopp_head + "<stroke tool=\"pen\" color=\"#000000ff\" width=\"-2\">5 5 9 "
-                              "9</stroke>\n</layer></page></xournal>"),
-       "page 1 layer 1 stroke 1 (line 2): width -2"},
-      {"pressure.xopp",
-       gzip_bytes(xopp_head + "<stroke tool=\"pen\" color=\"#000000ff\" width=\"1 1 1e9\">5 5 9 "
-                              "9</stroke>\n</layer></page></xournal>"),
-       "width 1000000000"},
-      {"badpath.svg",
-       svg_head + "<path id=\"p\" stroke=\"red\" fill=\"none\" d=\"M 1 1 L 2\"/>\n</g></svg>",
-       "path#p (line 3): path data at offset"},
+      // Dots, absurd widths and bad path data are left as drawn with a warning
+      // (snap_documents_test.cpp): the apps open such files.
   };
   for (const BadCase& c : cases) {
     const fs::path in = dir_ / c.name, out = dir_ / (std::string("out-") + c.name);
