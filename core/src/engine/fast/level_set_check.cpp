@@ -336,7 +336,7 @@ class Walker {
                         std::max(p.x, q.x) + need + 1, std::max(p.y, q.y) + need + 1,
                         [&](std::size_t k) {
                           const Segment& g = q_.b->segments()[k];
-                          Interval iv;
+                          Interval iv{};
                           if (stadium_interval(s, g.da(), g.db(), need + 1.0, iv))
                             forbidden.push_back(iv);
                         });
@@ -361,7 +361,7 @@ class Walker {
                         std::max(p.y, q.y) + l, [&](std::size_t k) {
                           if (done) return;
                           const Segment& g = q_.a->segments()[k];
-                          Interval iv;
+                          Interval iv{};
                           if (!stadium_interval(s, g.da(), g.db(), radius, iv)) return;
                           if (!closer_than(on(s, iv.lo), g.a, g.b, verify) ||
                               !closer_than(on(s, iv.hi), g.a, g.b, verify)) {
