@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
+#include <string>
 
 #include "penshape/core/verify.hpp"
 #include "verify/verify_shape.hpp"
@@ -174,6 +176,13 @@ std::string number_text(double v) {
   return buf;
 }
 
+// The parts one after the other.
+std::string joined(std::initializer_list<std::string> parts) {
+  std::string out;
+  for (const std::string& p : parts) out += p;
+  return out;
+}
+
 void check_claim(const std::vector<std::vector<PointD>>& strokes, const RecognitionClaim& c) {
   if (!(c.epsilon > 0) || !std::isfinite(c.epsilon)) {
     throw InvalidInput("recognition answer: epsilon must be positive and finite");
@@ -209,8 +218,9 @@ VerifyReport verify_recognition(const std::vector<std::vector<PointD>>& strokes,
   const double eps = claim.epsilon;
   if (claim.bound && !(*claim.bound >= 0 && *claim.bound <= eps)) {
     rep.status = VerifyStatus::kRefuted;
-    rep.message = "the answer's bound " + number_text(*claim.bound) +
-                  (*claim.bound < 0 ? " is negative" : " exceeds eps = " + number_text(eps));
+    rep.message =
+        joined({"the answer's bound ", number_text(*claim.bound),
+                *claim.bound < 0 ? " is negative" : " exceeds eps = " + number_text(eps)});
     return rep;
   }
   // What the answer claims of H: its bound, else eps.
@@ -224,8 +234,8 @@ VerifyReport verify_recognition(const std::vector<std::vector<PointD>>& strokes,
   const double budget = -(Iv(-claimed) + Iv(shape.deviation)).sup(); // rounded down
   const double refute = (Iv(claimed) + Iv(shape.deviation) + Iv(claim.pen_radius)).sup();
   if (!(budget > 0)) {
-    rep.message = "the clean shape's chord deviation " + number_text(shape.deviation) +
-                  " leaves nothing of " + name + " = " + number_text(claimed);
+    rep.message = joined({"the clean shape's chord deviation ", number_text(shape.deviation),
+                          " leaves nothing of ", name, " = ", number_text(claimed)});
     return rep;
   }
   const std::vector<Seg> stroke_segs = segments_of(strokes);
@@ -242,15 +252,15 @@ VerifyReport verify_recognition(const std::vector<std::vector<PointD>>& strokes,
       const std::string other = side == 0 ? "the clean shape" : "the strokes";
       if (f.outcome == Outcome::kRefuted) {
         rep.status = VerifyStatus::kRefuted;
-        rep.message =
-            what + point_text(f.at) + " is " + number_text(f.lower) + " from " + other +
-            ": farther than " + name + " + r = " + number_text(claimed + claim.pen_radius) +
-            ", so the inks are farther than " + name + " = " + number_text(claimed) + " apart";
+        rep.message = joined(
+            {what, point_text(f.at), " is ", number_text(f.lower), " from ", other,
+             ": farther than ", name, " + r = ", number_text(claimed + claim.pen_radius),
+             ", so the inks are farther than ", name, " = ", number_text(claimed), " apart"});
       } else {
         rep.status = VerifyStatus::kUnproven;
-        rep.message = "the paths are not proven within " + name + " = " + number_text(claimed) +
-                      " near " + what + point_text(f.at) + " (at least " + number_text(f.lower) +
-                      " from " + other + ")";
+        rep.message = joined({"the paths are not proven within ", name, " = ", number_text(claimed),
+                              " near ", what, point_text(f.at), " (at least ", number_text(f.lower),
+                              " from ", other, ")"});
       }
       return rep;
     }
