@@ -59,7 +59,8 @@ std::vector<RecognizeRow> recognize_batch(const std::vector<FileStroke>& batch,
     input.samples = s.points;
     std::optional<InkPolygon> ink;
     try {
-      if (options.on_ink) {
+      // Writing is never recognized (unless --snap-writing): no ink to build for it.
+      if (options.on_ink && (options.snap_writing || intents[k].intent == Intent::kDrawing)) {
         ink = ink_of(s, options.recognizer, options.pressure, input.pen_radius);
         if (ink) input.ink = &*ink;
       }

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "penshape/core/deconstruct.hpp"
+
 namespace penshape {
 namespace {
 
@@ -18,6 +20,8 @@ IntentGrouper::IntentGrouper(GroupingConfig grouping, RecognizerConfig recognize
 
 GroupUpdate IntentGrouper::add(const StrokeInput& stroke, Intent intent) {
   const std::size_t index = added_;
+  // A stroke without samples is bad input whatever its intent (a dot has one).
+  if (stroke.samples.empty()) throw InvalidInput("recognize: the stroke has no samples");
   if (intent == Intent::kWriting && !snap_writing_) {
     GroupedShape answer;
     answer.id = writing_id(writing_.size());

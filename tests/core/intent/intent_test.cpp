@@ -154,6 +154,12 @@ TEST(IntentGrouper, WritingStaysFreeformAndApart) {
   }
 }
 
+TEST(IntentGrouper, AStrokeWithoutSamplesIsRefused) {
+  penshape::IntentGrouper grouper;
+  EXPECT_THROW(grouper.add({}, Intent::kWriting), penshape::InvalidInput);
+  EXPECT_TRUE(grouper.shapes().empty());
+}
+
 TEST(IntentGrouper, DrawingStrokesKeepTheirPageIndices) {
   double t = 0;
   penshape::IntentGrouper grouper;

@@ -20,7 +20,8 @@ class IntentGrouper {
 
   // Adds the next stroke in drawing order (its index is the number of strokes added before).
   // Throws InvalidInput as StrokeGrouper::add does, for drawing strokes (and every stroke with
-  // snap_writing); a writing stroke is not checked by the recognizer (a dot is fine).
+  // snap_writing); a writing stroke is not checked by the recognizer (a dot is fine), but a
+  // stroke without samples is refused (InvalidInput) whatever its intent.
   GroupUpdate add(const StrokeInput& stroke, Intent intent);
 
   // The current answers, ordered by their first stroke; indices are this grouper's. Ids are
