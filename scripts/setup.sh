@@ -8,7 +8,7 @@ PACKAGES=(
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libhidapi-dev libusb-1.0-0-dev libudev-dev
   libprotobuf-dev protobuf-compiler libgrpc++-dev protobuf-compiler-grpc
-  libgtest-dev libgmock-dev libbenchmark-dev
+  libgtest-dev libgmock-dev
   libsdl2-dev xvfb python3-grpcio python3-protobuf
   libpolyclipping-dev nlohmann-json3-dev
   dpkg-dev file
