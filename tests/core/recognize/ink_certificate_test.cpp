@@ -266,11 +266,13 @@ TEST(InkCertificate, PressureBulgeDoesNotSnapOnTheInk) {
   StrokeInput input;
   for (const InkSample& p : s) input.samples.push_back({p.x, p.y, 0});
   input.pen_radius = 2.0;
-  const Recognition on_path = recognize(input.samples, RecognizerConfig{.pen_radius = 2.0});
+  // epsilon 10 (5 radii) given: the default follows the drawing's size (issue 23).
+  const RecognizerConfig tol10{.pen_radius = 2.0, .tolerance = 10.0};
+  const Recognition on_path = recognize(input.samples, tol10);
   ASSERT_EQ(on_path.shape, ShapeClass::kCircle) << "the path certificate sees a circle";
   EXPECT_EQ(on_path.certificate.method, "path");
   input.ink = &ink;
-  const Recognition on_ink = recognize(input);
+  const Recognition on_ink = recognize(input, tol10);
   EXPECT_EQ(on_ink.shape, ShapeClass::kFreeform) << to_string(on_ink.shape);
   bool circle_refused = false;
   for (const Candidate& c : on_ink.alternatives) {

@@ -49,8 +49,9 @@ TEST(InkWhenNeeded, CertifiesOnTheInkAsAGivenInkDoes) {
       ++calls;
       return &ink;
     };
-    const Recognition a = recognize(given);
-    const Recognition b = recognize(later);
+    const RecognizerConfig tol10{.pen_radius = 0.0, .tolerance = 10.0}; // 5 radii (issue 23)
+    const Recognition a = recognize(given, tol10);
+    const Recognition b = recognize(later, tol10);
     EXPECT_GE(calls, 1);
     EXPECT_EQ(b.certificate.method, "ink");
     EXPECT_EQ(a.shape, b.shape);
