@@ -160,11 +160,17 @@ TEST(IntentGrouper, AStrokeWithoutSamplesIsRefused) {
   EXPECT_TRUE(grouper.shapes().empty());
 }
 
+// A short stroke (a t-bar) from time t on.
+penshape::StrokeInput bar(double& t) {
+  penshape::StrokeInput input;
+  input.samples = penshape::test::ink::traced({{0, 0}, {2, 0}}, t);
+  return input;
+}
+
 TEST(IntentGrouper, DrawingStrokesKeepTheirPageIndices) {
   double t = 0;
   penshape::IntentGrouper grouper;
-  penshape::StrokeInput input;
-  input.samples = penshape::test::ink::traced({{0, 0}, {2, 0}}, t);
+  penshape::StrokeInput input = bar(t);
   grouper.add(input, Intent::kWriting);
   input.samples = penshape::test::ink::circle(40, 40, 15, t);
   const auto update = grouper.add(input, Intent::kDrawing);
@@ -178,8 +184,7 @@ TEST(IntentGrouper, DrawingStrokesKeepTheirPageIndices) {
 TEST(IntentGrouper, ForgetsWritingAnswersAndKeepsCounting) {
   double t = 0;
   penshape::IntentGrouper grouper;
-  penshape::StrokeInput input;
-  input.samples = penshape::test::ink::traced({{0, 0}, {2, 0}}, t);
+  const penshape::StrokeInput input = bar(t);
   grouper.add(input, Intent::kWriting);
   grouper.forget_unreachable();
   EXPECT_TRUE(grouper.shapes().empty());

@@ -3,8 +3,8 @@
 // to shapes. A pure function of the page's strokes in drawing order (no I/O, no threads, no
 // CGAL): each stroke is measured (size, turning, straightness, speed) and set against its
 // context, the strokes drawn just before and after it (the page's typical writing height,
-// neighbours on a text line, the run of small strokes it sits in). A logistic model whose
-// weights were learned offline (scripts/intent_learn.py, committed as
+// neighbours on a text line, the run of small strokes it sits in). A small model (8 tanh units, a
+// logistic output) whose weights were learned offline (scripts/intent_learn.py, committed as
 // core/src/intent/intent_weights.hpp) turns that into P(writing).
 //
 // Not a certificate: this is a classifier, and its score is a probability estimate. It decides
