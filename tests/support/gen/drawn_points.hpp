@@ -13,7 +13,8 @@ namespace penshape::gen {
 inline std::vector<PointD> drawn_points(std::uint64_t seed, const std::string& kind) {
   StrokeGenerator generator(seed);
   std::vector<PointD> out;
-  for (const auto& p : generator.draw(kind).strokes.front().points) out.push_back({p.x, p.y});
+  const Drawing drawing = generator.draw(kind); // kept: a range-for would not extend its life
+  for (const auto& p : drawing.strokes.front().points) out.push_back({p.x, p.y});
   return out;
 }
 

@@ -2,6 +2,7 @@
 // then renamed into place, so a test never sees a half-written corpus.
 #include "generated_corpus.hpp"
 
+#include <cstdio>
 #include <fstream>
 #include <functional>
 #include <random>
@@ -16,10 +17,20 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// A fingerprint of what the generators make now: in the folder's name, so that a changed
+// generator writes a new folder instead of reusing stale files.
+std::string fingerprint() {
+  std::string all;
+  for (const auto& e : single_stroke_corpus(kCorpusSeed, 1, 1)) all += to_jsonl(e.drawing, "");
+  for (const auto& p : polygon_suite(kCorpusSeed)) all += p.text;
+  char hex[24];
+  std::snprintf(hex, sizeof hex, "%016zx", std::hash<std::string>{}(all));
+  return hex;
+}
+
 fs::path materialize(const std::string& name, const std::function<void(const fs::path&)>& fill) {
-  // The seed and the generator version are in the folder's name: a changed generator makes a
-  // new folder rather than reusing stale files.
-  const fs::path target = fs::path(PENSHAPE_BINARY_DIR) / "generated" / name;
+  static const std::string version = fingerprint();
+  const fs::path target = fs::path(PENSHAPE_BINARY_DIR) / "generated" / version / name;
   std::error_code ec;
   if (fs::is_directory(target, ec)) return target;
   fs::create_directories(target.parent_path());
@@ -34,13 +45,13 @@ fs::path materialize(const std::string& name, const std::function<void(const fs:
 } // namespace
 
 fs::path generated_dollar_dir() {
-  return materialize("strokes-v1/dollar1", [](const fs::path& dir) {
+  return materialize("strokes/dollar1", [](const fs::path& dir) {
     write_dollar_corpus(dir, single_stroke_corpus(kCorpusSeed, 3, 5));
   });
 }
 
 fs::path generated_polygon_dir() {
-  return materialize("polygons-v1", [](const fs::path& dir) {
+  return materialize("polygons", [](const fs::path& dir) {
     fs::create_directories(dir);
     for (const auto& p : polygon_suite(kCorpusSeed))
       std::ofstream(dir / (p.name + ".txt")) << p.text;

@@ -259,14 +259,22 @@ const std::map<std::string, Builder>& builders() {
        }},
       {"dot",
        [](const Canvas& c) {
-         return Plan{{{c.centre,
-                       {c.centre.x + c.rng->uniform(0.5, 2), c.centre.y + c.rng->uniform(0.5, 2)}}},
-                     {"freeform"},
-                     false,
-                     false};
+         return Plan{
+             {{c.centre, {c.centre.x + c.rng->uniform(2, 4), c.centre.y + c.rng->uniform(1, 3)}}},
+             {"freeform"},
+             false,
+             false};
        }},
   };
   return table;
+}
+
+// A logged stroke needs two distinct positions (a dot's samples may round to one pixel).
+bool has_two_positions(const GenStroke& s) {
+  for (const auto& p : s.points) {
+    if (p.x != s.points.front().x || p.y != s.points.front().y) return true;
+  }
+  return false;
 }
 
 } // namespace
@@ -333,7 +341,11 @@ std::vector<CorpusEntry> single_stroke_corpus(std::uint64_t seed, int subjects, 
     StrokeGenerator gen(seed * 1000 + static_cast<std::uint64_t>(s)); // one hand per subject
     for (const Speed speed : {Speed::kSlow, Speed::kMedium, Speed::kFast}) {
       for (const auto& kind : kinds) {
-        for (int n = 1; n <= per_kind; ++n) out.push_back({s, speed, n, gen.draw(kind, {speed})});
+        for (int n = 1; n <= per_kind; ++n) {
+          Drawing d = gen.draw(kind, {speed});
+          while (!has_two_positions(d.strokes.front())) d = gen.draw(kind, {speed}); // a stroke
+          out.push_back({s, speed, n, std::move(d)});
+        }
       }
     }
   }
