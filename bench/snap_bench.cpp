@@ -1,8 +1,9 @@
-// `penshape snap` on a page of 50 real strokes (the five bundled $1 gestures, ten times each, on
-// a grid): the whole snap in this process (read, recognize with the ink certificate, write), and
-// the `penshape snap --local` process as a user runs it, for an Inkscape SVG and a Xournal++
-// .xopp (and the SVG page drawn as Calligraphy outlines). Baseline beside it: the core recognizer
-// alone on the same strokes' points (no file, no ink polygon). Target: the page in <= 1 s with
+// `penshape snap` on a page of 50 hand-drawn strokes (five generated strokes, tests/support/gen,
+// ten times each, on a grid; the bench prints that its data is generated): the whole snap in this
+// process (read, recognize with the ink certificate, write), and the `penshape snap --local`
+// process as a user runs it, for an Inkscape SVG and a Xournal++ .xopp (and the SVG page drawn as
+// Calligraphy outlines). Baseline beside it: the core recognizer alone on the same strokes' points
+// (no file, no ink polygon). Target: the page in <= 1 s with
 // --local.
 //   build/release/bench/snap_bench [--runs N] [--cli PATH]
 #include <chrono>
@@ -11,7 +12,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <pugixml.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -20,25 +20,25 @@
 #include "penshape/core/recognize.hpp"
 #include "snap/gzip.hpp"
 #include "snap/snap_document.hpp"
+#include "stroke_gen.hpp"
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
 namespace fs = std::filesystem;
 
-const char* const kGestures[] = {"s02-medium-circle03.xml", "s03-medium-rectangle04.xml",
-                                 "s04-medium-triangle05.xml", "s05-medium-pigtail02.xml",
-                                 "s06-medium-circle07.xml"};
+// The generated hand-drawn strokes the snap fixtures use too (tests/support/gen): circles, a
+// rectangle, a triangle and a spiral (not a shape).
+const std::pair<const char*, std::uint64_t> kGestures[] = {
+    {"circle", 3}, {"rectangle", 4}, {"triangle", 5}, {"spiral", 2}, {"circle", 7}};
 
 // A gesture's points scaled to a 100-unit box at (x0, y0).
-std::vector<penshape::PointD> gesture(const std::string& name, double x0, double y0) {
-  pugi::xml_document doc;
-  const fs::path file = fs::path(PENSHAPE_SOURCE_DIR) / "tests/data/snap" / name;
-  if (!doc.load_file(file.c_str())) throw std::runtime_error("cannot read " + file.string());
+std::vector<penshape::PointD> gesture(const std::pair<const char*, std::uint64_t>& which, double x0,
+                                      double y0) {
+  penshape::gen::StrokeGenerator generator(which.second);
+  const penshape::gen::Drawing drawing = generator.draw(which.first);
   std::vector<penshape::PointD> pts;
-  for (const auto& p : doc.child("Gesture").children("Point")) {
-    pts.push_back({p.attribute("X").as_double(), p.attribute("Y").as_double()});
-  }
+  for (const auto& p : drawing.strokes.front().points) pts.push_back({p.x, p.y});
   double minx = 1e300, miny = 1e300, maxx = -1e300, maxy = -1e300;
   for (const auto& p : pts) {
     minx = std::min(minx, p.x), miny = std::min(miny, p.y);
@@ -187,6 +187,7 @@ int main(int argc, char** argv) {
     if (a == "--cli") cli = argv[i + 1];
   }
   const auto strokes = page_strokes();
+  std::printf("data: generated strokes (tests/support/gen: circle, rectangle, triangle, spiral)\n");
   const std::string svg = svg_page(strokes), xopp = penshape::snap::gzip(xopp_page(strokes));
   const fs::path dir =
       fs::temp_directory_path() / ("penshape-snap-bench-" + std::to_string(::getpid()));
@@ -204,7 +205,7 @@ int main(int argc, char** argv) {
   };
   fs::remove_all(dir);
   std::printf(
-      "snap_bench: a page of %zu real strokes (5 $1 gestures x 10), %d runs each; target "
+      "snap_bench: a page of %zu generated strokes (5 kinds x 10), %d runs each; target "
       "<= 1 s with --local\n\n",
       strokes.size(), runs);
   std::printf("| %-48s | %7s | %8s | %8s | %6s |\n", "what", "snapped", "p50 s", "max s", "<= 1 s");
