@@ -37,7 +37,13 @@ inline std::vector<DollarPoint> read_dollar_gesture(const std::string& path) {
   return out;
 }
 
-// A hand-drawn rectangle made by the stroke generator (tests/support/gen), as a $1 file.
-inline std::string dollar_rectangle_path() { return stroke_file("rectangle", 2); }
+// A hand-drawn rectangle: the real one of the $1 logs (subject 2, slow) when the shared corpus
+// is present, else one made by the stroke generator (tests/support/gen), as a $1 file.
+inline std::string dollar_rectangle_path() {
+  if (const auto real = test::shared_path("strokes/dollar1/s02/slow/rectangle01.xml")) {
+    return real->string();
+  }
+  return stroke_file("rectangle", 2);
+}
 
 } // namespace penshape::testing

@@ -135,7 +135,7 @@ std::vector<PointD> placed_gesture(const std::string& file, double x0, double y0
 
 Fixture inkscape_fixture() {
   Fixture f;
-  const auto circle = placed_gesture(gesture("circle", 3), 40, 40, 120);
+  const auto circle = placed_gesture(gesture("circle", 1), 40, 40, 120);
   const auto rect = placed_gesture(gesture("rectangle", 4), 220, 40, 150);
   const auto pig = placed_gesture(gesture("spiral", 2), 440, 40, 120);
   const auto tri = placed_gesture(gesture("triangle", 5), 40, 260, 140);
@@ -200,7 +200,7 @@ Fixture inkscape_fixture() {
 
 Fixture xopp_fixture() {
   Fixture f;
-  const auto circle = placed_gesture(gesture("circle", 3), 60, 60, 110);
+  const auto circle = placed_gesture(gesture("circle", 1), 60, 60, 110);
   const auto rect = placed_gesture(gesture("rectangle", 4), 260, 60, 130);
   const auto pig = placed_gesture(gesture("spiral", 2), 480, 60, 110);
   const auto notes = placed_gesture(gesture("circle", 7), 320, 340, 110);
