@@ -417,8 +417,7 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  const std::string file =
-      std::string(PENSHAPE_SOURCE_DIR) + "/recordings/dollar1-shapes.xppen-deco01v2.hidrec";
+  const std::string file = std::string(PENSHAPE_SOURCE_DIR) + "/recordings/generated-shapes.hidrec";
   const auto recording = penshape::drivers::load_recording_file(file);
   const auto decoded =
       penshape::drivers::replay(recording, penshape::drivers::ReplaySpeed::kAsFastAsPossible);

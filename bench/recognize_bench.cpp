@@ -27,6 +27,11 @@
 // other people), all subjects beside leave-one-subject-out, the size x pen table beside the
 // former rule, and the derivation of the default tolerance's fractions.
 //
+// The same cases on the generated strokes (tests/support/gen) beside the real ones, and the
+// recognizer's figures (shapes named right, non-shapes left as ink) on both corpora: the
+// generated corpus is never used to tune a threshold, its figures are printed to compare.
+// Without the shared corpus only the generated rows are printed (the bench says so).
+//
 // Usage: recognize_bench [--json] [--repeat N] [--khz-stride K] [--accuracy-only |
 //                         --timing-only | --derive-tolerance]
 //        (data dir: $PENSHAPE_SHARED_DATA_DIR)
@@ -38,12 +43,11 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <regex>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "generated_accuracy.hpp"
+#include "generated_corpus.hpp"
 #include "penshape/core/ink.hpp"
 #include "penshape/core/live_recognizer.hpp"
 #include "penshape/core/recognize.hpp"
@@ -62,29 +66,6 @@ double thread_cpu_seconds() {
 
 double wall_seconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-std::vector<std::vector<StrokePoint>> load_strokes(const std::filesystem::path& root) {
-  std::vector<std::filesystem::path> files;
-  for (const auto& e : std::filesystem::recursive_directory_iterator(root)) {
-    if (e.is_regular_file() && e.path().extension() == ".xml") files.push_back(e.path());
-  }
-  std::sort(files.begin(), files.end());
-  const std::regex point("<Point X=\"(-?[0-9.]+)\" Y=\"(-?[0-9.]+)\" T=\"(-?[0-9.]+)\"");
-  std::vector<std::vector<StrokePoint>> out;
-  for (const auto& f : files) {
-    std::ifstream in(f);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    const std::string text = ss.str();
-    std::vector<StrokePoint> pts;
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), point);
-         it != std::sregex_iterator(); ++it) {
-      pts.push_back({std::stod((*it)[1]), std::stod((*it)[2]), std::stod((*it)[3]) / 1000.0});
-    }
-    out.push_back(std::move(pts));
-  }
-  return out;
 }
 
 // One sample per millisecond between the first and last time stamps, linearly interpolated by
@@ -229,15 +210,32 @@ int main(int argc, char** argv) {
   const std::filesystem::path data = env ? env : PENSHAPE_SHARED_DATA_DIR;
   if (accuracy) print_accuracy_figures(data / "strokes", derive_only);
   if (!timing) return 0;
-  const auto strokes = load_strokes(data / "strokes" / "dollar1");
-  if (strokes.empty()) {
-    std::fprintf(stderr, "recognize_bench: no $1 logs under %s\n", data.string().c_str());
-    return 2;
-  }
+  const auto real = penshape::bench::real_dollar_strokes((data / "strokes" / "dollar1").string());
+  const auto generated = penshape::bench::generated_strokes();
+  std::fprintf(
+      stderr, "recognize_bench: real strokes: %s; generated strokes: %zu (seed %llu)\n",
+      real.empty()
+          ? "none (no $1 logs in the shared corpus)"
+          : ((data / "strokes" / "dollar1").string() + ", " + std::to_string(real.size())).c_str(),
+      generated.size(), static_cast<unsigned long long>(penshape::gen::kCorpusSeed));
+  const auto points_of = [](const std::vector<penshape::bench::LabelledStroke>& in) {
+    std::vector<std::vector<StrokePoint>> out;
+    for (const auto& s : in) out.push_back(s.points);
+    return out;
+  };
+  const auto strokes = points_of(real);
   std::vector<std::vector<StrokePoint>> dense;
   for (std::size_t i = 0; i < strokes.size(); i += khz_stride) dense.push_back(at_1khz(strokes[i]));
-  const Density densities[] = {run("$1 as logged", strokes, repeat),
-                               run("$1 at 1 kHz", dense, repeat)};
+  std::vector<Density> densities;
+  if (!strokes.empty()) {
+    densities.push_back(run("$1 as logged", strokes, repeat));
+    densities.push_back(run("$1 at 1 kHz", dense, repeat));
+  }
+  densities.push_back(run("generated as drawn", points_of(generated), repeat));
+  if (!json) {
+    if (!real.empty()) penshape::bench::print_labelled_accuracy("real $1 logs", real);
+    penshape::bench::print_labelled_accuracy("generated strokes", generated);
+  }
   for (const Density& d : densities) {
     const Series* all[] = {&d.unthinned,  &d.offline,   &d.pen_up,  &d.pen_up_unthinned,
                            &d.per_sample, &d.ink_build, &d.ink_cert};

@@ -26,7 +26,8 @@ install(FILES ${man_pages} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
 # package).
 install(FILES ${PROJECT_SOURCE_DIR}/packaging/70-penshape-tablets.rules
   DESTINATION lib/udev/rules.d)
-# The bundled recordings, to try penshaped without a tablet (penshaped --replay FILE).
+# The generated recordings (recordings/generate.sh), to try penshaped without a tablet
+# (penshaped --replay FILE).
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/recordings/ DESTINATION ${CMAKE_INSTALL_DATADIR}/penshape/recordings
   FILES_MATCHING PATTERN "*.hidrec" PATTERN "*.expected" PATTERN "SOURCES.md")
 

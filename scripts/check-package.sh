@@ -38,7 +38,7 @@ grep -q '^ExecStart=/usr/bin/penshaped$' /usr/lib/systemd/user/penshaped.service
 dir=$(mktemp -d)
 trap 'kill %1 2>/dev/null; wait 2>/dev/null; rm -rf "$dir";
       DEBIAN_FRONTEND=noninteractive "${SUDO[@]}" apt-get remove -y -qq penshape >/dev/null' EXIT
-recording=/usr/share/penshape/recordings/dollar1-shapes.xppen-deco01v2.hidrec
+recording=/usr/share/penshape/recordings/generated-shapes.hidrec
 # Watch from before the replay starts until it has played (its last report's time) and its last
 # stroke has been recognized.
 last=$(grep '^E:' "$recording" | tail -n 1 | awk '{print int($2)}')

@@ -2,7 +2,8 @@
 # Short libFuzzer runs of every fuzz target: the drivers' (descriptor parser, report decoder and
 # pipeline, recording/table parsers), the daemon's --replay file, and the CLI's file readers
 # (polygon x-y/WKT, JSON-lines and $1 XML strokes) with the daemon's config. Seeded from the
-# repository's own data (recordings/, tests/data/) and, when present, ../shared/data/hid. CI calls
+# project's generators (penshape-testgen: pen descriptors, polygons, $1-format strokes; the
+# generated recordings/) and, when present, ../shared/data/hid. CI calls
 # this after the asan preset's build; a finding fails the run and leaves its crash file in
 # build/asan/fuzz/.
 #   scripts/fuzz.sh [SECONDS_PER_TARGET]      (default 30)
@@ -13,7 +14,7 @@ shared="${PENSHAPE_SHARED_DATA_DIR:-$(pwd)/../shared/data}"
 build=build/asan
 cmake --preset asan >/dev/null
 cmake --build --preset asan -j2 --target descriptor_fuzzer report_fuzzer recording_fuzzer \
-  replay_file_fuzzer file_readers_fuzzer
+  replay_file_fuzzer file_readers_fuzzer penshape-testgen
 
 work="$build/fuzz"
 rm -rf "$work"
@@ -31,16 +32,25 @@ copy_all() { # DEST PREFIX_BYTE_OR_EMPTY FILE...
     i=$((i + 1))
   done
 }
-mapfile -t descriptors < <(find tests/data/hid "$shared/hid/wacom-hid-descriptors" \
+testgen="$build/tests/support/penshape-testgen"
+mkdir -p "$work/generated/hid"
+for name in small-8192-id7 medium-tilt-id2 large-24bit-inch basic-no-id-1024 tiny-inch-255 \
+  vendor-graphire; do
+  "$testgen" descriptor "$name" "$work/generated/hid/$name.hid.bin"
+done
+"$testgen" polygons "$work/generated/polygons" --seed 7
+"$testgen" corpus "$work/generated/strokes" --seed 7 --subjects 1 --per-kind 1
+mapfile -t descriptors < <(find "$work/generated/hid" "$shared/hid/wacom-hid-descriptors" \
   -name '*.hid.bin' 2>/dev/null | sort)
 copy_all "$work/seeds-descriptor" "" "${descriptors[@]}"
 mapfile -t texts < <({ ls recordings/*.hidrec; find "$shared/hid" \( -name 'hidrecord.txt' -o \
   -name '*.hidrec.txt' -o -path '*dumps*' -name 'pen_*.txt' -size -64k \) 2>/dev/null; } | sort)
 copy_all "$work/seeds-text" "" "${texts[@]}" drivers/data/tablets.tsv
 # File readers: the first byte picks the reader (0 polygon, 1 JSON lines, 2 $1 XML, 3 config).
-mapfile -t polygons < <(find tests/data/polygons -name '*.txt' -size -8k | sort)
+mapfile -t polygons < <(find "$work/generated/polygons" tests/data/adversarial -name '*.txt' \
+  -size -8k | sort)
 copy_all "$work/seeds-readers" '\x00' "${polygons[@]}"
-mapfile -t gestures < <(find tests/data/strokes -name '*.xml' | sort | head -n 20)
+mapfile -t gestures < <(find "$work/generated/strokes" -name '*.xml' | sort | head -n 20)
 mkdir -p "$work/seeds-readers/xml" && copy_all "$work/seeds-readers/xml" '\x02' "${gestures[@]}"
 printf '\x01{"points": [[0, 0, 0], [10, 0, 0.1], [10, 10, 0.2, 0.5]], "name": "a\\u00e9"}\n' \
   >"$work/seeds-readers/jsonl"

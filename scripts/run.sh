@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # The main job: sets up (Debian packages), builds, and runs penshaped, printing every stroke and
 # the shape it is recognized as. With a tablet attached it reads the tablet (Ctrl-C stops);
-# with none — or with a recording given — it replays a bundled recording as if live and stops at
+# with none — or with a recording given — it replays a recording as if live and stops at
 # its end.
-#   scripts/run.sh [RECORDING]     default: recordings/dollar1-shapes.xppen-deco01v2.hidrec
+#   scripts/run.sh [RECORDING]     default: recordings/generated-shapes.hidrec, made by the
+#                                  project (recordings/generate.sh, see recordings/SOURCES.md)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
@@ -38,7 +39,7 @@ if [ -z "$recording" ]; then
     exit 0
   fi
   kill -TERM "$daemon_pid"; wait "$daemon_pid" 2>/dev/null || true; daemon_pid=
-  recording=recordings/dollar1-shapes.xppen-deco01v2.hidrec
+  recording=recordings/generated-shapes.hidrec
   echo "run: no tablet attached; replaying $recording as if live"
 fi
 [ -f "$recording" ] || { echo "run: no such recording: $recording" >&2; exit 2; }

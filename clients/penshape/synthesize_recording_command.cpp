@@ -83,15 +83,17 @@ int run_synthesize_recording(std::span<const std::string_view> args) {
   identity.name = parsed.value("--name").value_or("penshape synthesized tablet");
   try {
     const drivers::Recording source = drivers::load_recording_file(*descriptor_path);
-    const auto layouts =
-        drivers::find_pen_layouts(drivers::parse_report_descriptor(source.descriptor));
-    if (layouts.empty()) throw InputError(*descriptor_path + ": the descriptor declares no pen");
-    const drivers::PenLayout& pen = layouts.front();
-    if (pen.x_resolution <= 0 || pen.y_resolution <= 0) {
+    // The device's profile, as the drivers build it: the descriptor's pen, or the vendor
+    // protocol's layout (with the tablet table's size) for tablets known by VID/PID.
+    const drivers::DeviceProfile profile = drivers::build_profile(identity, source.descriptor);
+    if (!profile.has_pen()) throw InputError(*descriptor_path + ": the descriptor declares no pen");
+    const drivers::PenLayout& pen = profile.decoder.layouts().front();
+    const double x_resolution = profile.info.x_resolution, y_resolution = profile.info.y_resolution;
+    if (x_resolution <= 0 || y_resolution <= 0) {
       throw InputError(*descriptor_path + ": the pen has no physical size (resolution unknown)");
     }
-    const double width_mm = pen.x_max() / pen.x_resolution;
-    const double height_mm = pen.y_max() / pen.y_resolution;
+    const double width_mm = pen.x_max() / x_resolution;
+    const double height_mm = pen.y_max() / y_resolution;
 
     std::vector<Placed> strokes;
     for (const auto& file : collect_stroke_files(parsed.positionals())) {
@@ -131,9 +133,9 @@ int run_synthesize_recording(std::span<const std::string_view> args) {
                                      0.9 * cell_h / std::max(ymax - ymin, 1e-9)});
       auto to_units = [&](double x, double y, PenSample& s) {
         s.x = static_cast<std::int32_t>(
-            std::lround((cx + (x - 0.5 * (xmin + xmax)) * scale) * pen.x_resolution));
+            std::lround((cx + (x - 0.5 * (xmin + xmax)) * scale) * x_resolution));
         s.y = static_cast<std::int32_t>(
-            std::lround((cy + (y - 0.5 * (ymin + ymax)) * scale) * pen.y_resolution));
+            std::lround((cy + (y - 0.5 * (ymin + ymax)) * scale) * y_resolution));
       };
       header_comments += "# stroke " + std::to_string(k) + ": " + strokes[k].source + "\n";
       const double t0 = pts.front().t;

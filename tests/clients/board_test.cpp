@@ -253,6 +253,10 @@ TEST_F(Board, ScriptedRectangleSnapsToTheDaemonsSquareAndUndoRestoresTheStroke) 
 // Against the real penshaped: meaningful once the recognizer is merged into the daemon; until
 // then the daemon says it has no stroke analyzer and the shape part is skipped.
 TEST_F(Board, RealDaemonSnapsTheHandDrawnRectangle) {
+  // The generated rectangles stay freeform on the board's path (its pen radius at the board's
+  // scale; the CLI names them rectangles): a finding reported with issue 28, so this check runs
+  // on the real $1 rectangle.
+  PENSHAPE_SHARED_OR_SKIP(real, "strokes/dollar1/s02/slow/rectangle01.xml");
   const std::string address = unique_test_address("board-real");
   ChildProcess daemon({PENSHAPED, "--listen", address});
   ASSERT_TRUE(daemon.wait_for_output("listening on")) << daemon.output();

@@ -1,8 +1,9 @@
-// `penshape deconstruct` run as a user would, on the shared demo polygons.
+// `penshape deconstruct` run as a user would, on generated polygons of known answer (the shared
+// demo polygons' answers are checked in tests/core).
 #include <gtest/gtest.h>
 
+#include "generated_files.hpp"
 #include "run_command.hpp"
-#include "test_data.hpp"
 
 #include <array>
 #include <cstdio>
@@ -18,13 +19,11 @@ Result run(const std::string& args) {
   return penshape::test::run_command(std::string(PENSHAPE_CLI) + " deconstruct " + args);
 }
 
-std::string polygon(const std::string& name) {
-  return penshape::test::data_file("polygons/" + name);
-}
+using penshape::testing::rounded_hexagon_file;
 
-TEST(DeconstructCli, Work1IsYesWithJsonKeys) {
-  const Result r = run(polygon("authors_demo_1_01_work1.txt") +
-                       " --radius 1 --tolerance 0.1 --engine reference --json");
+TEST(DeconstructCli, RoundedHexagonIsYesWithJsonKeys) {
+  const Result r =
+      run(rounded_hexagon_file() + " --radius 1 --tolerance 0.1 --engine reference --json");
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_EQ(r.out.rfind("{\"answer\":\"YES\",\"engine\":\"reference\",\"seconds\":", 0), 0U)
       << r.out;
@@ -35,8 +34,8 @@ TEST(DeconstructCli, Work1IsYesWithJsonKeys) {
   }
 }
 
-TEST(DeconstructCli, Fail1IsNo) {
-  const Result r = run(polygon("authors_demo_1_01_fail1.txt") +
+TEST(DeconstructCli, SquareIsNo) {
+  const Result r = run(penshape::testing::square_file() +
                        " --radius 1 --tolerance 0.1 --engine reference --json");
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_EQ(r.out.rfind("{\"answer\":\"NO\"", 0), 0U) << r.out;
@@ -53,19 +52,16 @@ TEST(DeconstructCli, WktInput) {
 
 TEST(DeconstructCli, BadInputExitsTwo) {
   EXPECT_EQ(run("/nonexistent/file.txt --radius 1 --tolerance 0.1").exit_code, 2);
-  EXPECT_EQ(run(polygon("authors_demo_1_01_work1.txt") + " --tolerance 0.1").exit_code, 2);
-  const Result nan = run(polygon("authors_demo_1_01_work1.txt") + " --radius nan --tolerance 0.1");
+  EXPECT_EQ(run(rounded_hexagon_file() + " --tolerance 0.1").exit_code, 2);
+  const Result nan = run(rounded_hexagon_file() + " --radius nan --tolerance 0.1");
   EXPECT_EQ(nan.exit_code, 2);
   EXPECT_NE(nan.out.find("--radius"), std::string::npos) << nan.out;
-  const Result coarse =
-      run(polygon("authors_demo_1_01_work1.txt") + " --radius 1 --tolerance 0.1 --precision 0.5");
+  const Result coarse = run(rounded_hexagon_file() + " --radius 1 --tolerance 0.1 --precision 0.5");
   EXPECT_EQ(coarse.exit_code, 2);
   EXPECT_NE(coarse.out.find("precision must be smaller than the tolerance"), std::string::npos)
       << coarse.out;
-  EXPECT_EQ(
-      run(polygon("authors_demo_1_01_work1.txt") + " --radius 1 --tolerance 0.1 --engine quick")
-          .exit_code,
-      2);
+  EXPECT_EQ(run(rounded_hexagon_file() + " --radius 1 --tolerance 0.1 --engine quick").exit_code,
+            2);
 }
 
 TEST(DeconstructCli, MalformedFileNamesTheLine) {
@@ -89,8 +85,8 @@ TEST(DeconstructCli, SelfIntersectingFileIsRejected) {
 namespace {
 
 TEST(DeconstructCli, ArcsOfTheSolutionOffset) {
-  const Result r = run(polygon("authors_demo_1_01_work1.txt") +
-                       " --radius 1 --tolerance 0.1 --engine reference --json --arcs");
+  const Result r =
+      run(rounded_hexagon_file() + " --radius 1 --tolerance 0.1 --engine reference --json --arcs");
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_NE(r.out.find("\"offset\":[{\"outer\":[{\""), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("{\"arc\":{\"center\":["), std::string::npos) << r.out;

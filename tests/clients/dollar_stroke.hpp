@@ -1,6 +1,7 @@
 #pragma once
-// Reads a gesture of the $1 Unistroke data set (tests/data/strokes/dollar1, ../shared/data/...):
-// integer pixel points with millisecond times. Tests use these real human strokes as pen input.
+// Reads a gesture in the $1 Unistroke data set's format (../shared/data/strokes/dollar1, or the
+// project's generated strokes written the same way): integer pixel points with millisecond times.
+// Tests use these hand-drawn strokes as pen input.
 #include <cstdint>
 #include <fstream>
 #include <regex>
@@ -9,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "generated_files.hpp"
 #include "test_data.hpp"
 
 namespace penshape::testing {
@@ -35,9 +37,13 @@ inline std::vector<DollarPoint> read_dollar_gesture(const std::string& path) {
   return out;
 }
 
-// A hand-drawn rectangle (subject 2, slow) from the $1 logs (bundled in tests/data).
+// A hand-drawn rectangle: the real one of the $1 logs (subject 2, slow) when the shared corpus
+// is present, else one made by the stroke generator (tests/support/gen), as a $1 file.
 inline std::string dollar_rectangle_path() {
-  return test::data_file("strokes/dollar1/s02/slow/rectangle01.xml");
+  if (const auto real = test::shared_path("strokes/dollar1/s02/slow/rectangle01.xml")) {
+    return real->string();
+  }
+  return stroke_file("rectangle", 2);
 }
 
 } // namespace penshape::testing

@@ -399,11 +399,11 @@ TEST(LiveCli, RecordedFileReplaysToTheSameSamples) {
   EXPECT_NE(out.find("{\"stroke\":1,"), std::string::npos) << out;
 }
 
-// The real penshaped replaying a real tablet capture (Wacom PenPartner, hid-recorder format) as
+// The real penshaped replaying a tablet recording (generated in the Wacom PenPartner's protocol) as
 // a live device: watch sees the device and its strokes, with the samples the drivers' offline
 // decoder finds in the same file.
 TEST(LiveCli, WatchAgainstTheRealDaemonReplayingARealCapture) {
-  const std::string capture = (test::recordings_dir() / "wacom-penpartner.hidrec").string();
+  const std::string capture = (test::recordings_dir() / "generated-graphire.hidrec").string();
   const std::string address = unique_test_address("real-replay");
   ChildProcess daemon({PENSHAPED, "--listen", address, "--replay", capture, "--replay-delay", "3"});
   ASSERT_TRUE(daemon.wait_for_output("listening on")) << daemon.output();
@@ -438,8 +438,7 @@ TEST(LiveCli, WatchAgainstTheRealDaemonReplayingARealCapture) {
 // `penshape replay FILE`: through the real penshaped when it answers (each stroke's shape as the
 // daemon certifies it), locally otherwise; stderr says which.
 TEST(LiveCli, ReplayGoesThroughTheDaemonWhenItRunsAndLocallyOtherwise) {
-  const std::string recording =
-      (test::recordings_dir() / "dollar1-shapes.xppen-deco01v2.hidrec").string();
+  const std::string recording = (test::recordings_dir() / "generated-shapes.hidrec").string();
   {
     const auto [code, out] =
         run_program({kCli, "replay", recording, "--address", unique_test_address("none")});
@@ -461,7 +460,7 @@ TEST(LiveCli, ReplayGoesThroughTheDaemonWhenItRunsAndLocallyOtherwise) {
   }
   std::vector<std::string> expected;
   for (const auto& line :
-       lines(test::read_file(test::recordings_dir() / "dollar1-shapes.xppen-deco01v2.expected"))) {
+       lines(test::read_file(test::recordings_dir() / "generated-shapes.expected"))) {
     if (!line.empty() && line[0] != '#') expected.push_back(line);
   }
   ASSERT_EQ(shapes.size(), expected.size()) << out;

@@ -83,7 +83,7 @@ TEST_F(MalformedFiles, StrokeFiles) {
 
 TEST_F(MalformedFiles, TabletRecordingsAndDescriptors) {
   const std::string recording =
-      penshape::test::read_file(penshape::test::recordings_dir() / "wacom-penpartner.hidrec");
+      penshape::test::read_file(penshape::test::recordings_dir() / "generated-graphire.hidrec");
   const std::string header = recording.substr(0, recording.find("E: "));
   for (const char* command : {"replay --local", "hid describe"}) {
     for (const Case& c : std::vector<Case>{

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <string>
 
+#include "generated_files.hpp"
 #include "test_data.hpp"
 
 namespace {
@@ -32,7 +33,8 @@ Result run(const std::string& args) {
   return r;
 }
 
-std::filesystem::path data_dir() { return penshape::test::collection_dir(""); }
+// A hand-drawn triangle made by the stroke generator, as a $1 gesture log.
+std::filesystem::path triangle_file() { return penshape::testing::stroke_file("triangle", 6); }
 
 std::string quoted(const std::filesystem::path& p) {
   std::string out(1, '\'');
@@ -49,7 +51,7 @@ std::filesystem::path write_temp(const std::string& name, const std::string& tex
 }
 
 TEST(RecognizeCli, DollarLogToJson) {
-  const auto file = data_dir() / "strokes" / "dollar1" / "s02" / "medium" / "triangle01.xml";
+  const auto file = triangle_file();
   const Result r = run("--json " + quoted(file));
   ASSERT_EQ(r.exit_code, 0) << r.out;
   for (const char* key : {"\"file\":", "\"class\":\"triangle\"",
@@ -120,7 +122,7 @@ std::string circle_jsonl(double (*pressure)(double)) {
 }
 
 TEST(RecognizeCli, InkCertificateAndPressure) {
-  const auto dollar = data_dir() / "strokes" / "dollar1" / "s02" / "medium" / "triangle01.xml";
+  const auto dollar = triangle_file();
   Result r = run("--ink --json " + quoted(dollar));
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_NE(r.out.find("\"class\":\"triangle\""), std::string::npos) << r.out;

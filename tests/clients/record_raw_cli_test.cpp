@@ -1,5 +1,5 @@
 // `penshape record` captures the device's own bytes: the real penshaped replays the bundled
-// PenPartner capture (recordings/wacom-penpartner.hidrec) as a live tablet, the real `penshape`
+// PenPartner capture (recordings/generated-graphire.hidrec) as a live tablet, the real `penshape`
 // binary records it over a unix-abstract socket, and the file must hold the same descriptor, ids
 // and every report in the same order with the same times; replayed offline it gives the same
 // strokes as the original. Also: --strokes ends the file with the report that ended the stroke,
@@ -23,7 +23,7 @@ namespace fs = std::filesystem;
 
 const std::string kCli = PENSHAPE_CLI;
 const std::string kOriginal =
-    std::string(PENSHAPE_SOURCE_DIR) + "/recordings/wacom-penpartner.hidrec";
+    std::string(PENSHAPE_SOURCE_DIR) + "/recordings/generated-graphire.hidrec";
 
 fs::path temp_dir(const std::string& name) {
   const auto dir = fs::temp_directory_path() /

@@ -19,9 +19,9 @@ using render::DeconstructionFigure;
 using render::ShapeOutline;
 using render::StrokeFigure;
 
-PolygonSet read_polygon(const std::string& name) {
-  std::ifstream in(test::data_file("polygons/" + name));
-  if (!in) throw std::runtime_error("cannot read " + name);
+// A generated polygon (tests/support/gen) read from its x-y text.
+PolygonSet read_polygon(const std::string& text) {
+  std::istringstream in(text);
   PolygonSet set;
   set.polygons.emplace_back();
   for (std::string line; std::getline(in, line);) {
@@ -53,7 +53,7 @@ std::vector<double> end_point(const PathCommand& c) {
 
 TEST(SvgFigure, DeconstructionHasTheLayersOfThePaperFigures) {
   DeconstructionFigure f;
-  f.q = read_polygon("cgal_wheel1.txt");
+  f.q = read_polygon(gen::spikes(3, 20, 60.0, 100.0).text);
   const double r = 4e6;
   f.radius = r;
   f.tolerance = 1e6;
@@ -139,7 +139,7 @@ TEST(SvgFigure, DeconstructionHasTheLayersOfThePaperFigures) {
 
 TEST(SvgFigure, WithoutSolutionOnlyQIsDrawn) {
   DeconstructionFigure f;
-  f.q = read_polygon("authors_S.txt");
+  f.q = read_polygon(gen::country(12, 160, 50.0).text);
   f.radius = 1;
   f.tolerance = 0.5;
   const ptree doc = parse_xml(render::deconstruction_svg(f));
@@ -150,8 +150,7 @@ TEST(SvgFigure, WithoutSolutionOnlyQIsDrawn) {
 
 TEST(SvgFigure, StrokeWithCircleAndArcShapes) {
   StrokeFigure f;
-  const auto gesture =
-      read_dollar_gesture(test::data_file("strokes/dollar1/s02/slow/circle01.xml"));
+  const auto gesture = read_dollar_gesture(stroke_file("circle", 3));
   for (const auto& p : gesture) f.samples.push_back({p.x * 0.2, p.y * 0.2});
   f.pen_radius = 1.5;
   f.tolerance = 0.75;
@@ -204,7 +203,7 @@ TEST(SvgFigure, StrokeWithCircleAndArcShapes) {
 }
 
 TEST(SvgFigure, FigureOfADeconstructionResult) {
-  const PolygonSet q = read_polygon("authors_S.txt");
+  const PolygonSet q = read_polygon(gen::country(12, 160, 50.0).text);
   DeconstructResult yes;
   yes.answer = Answer::kYes;
   yes.params.radius = Rational(3, 2);

@@ -10,6 +10,7 @@
 
 #include "penshape/core/deconstruct.hpp"
 #include "penshape/core/polygon_io.hpp"
+#include "polygon_gen.hpp"
 #include "support/hausdorff_check.hpp"
 #include "test_data.hpp"
 
@@ -113,8 +114,8 @@ TEST(ArcOffset, HoleShrinksWithSharpCorners) {
   check_ring(region.polygons[0].outer, p, 1.0, region.max_error);
 }
 
-TEST(ArcOffset, DemoSolutionOffset) {
-  const PolygonSet q = read_xy(test::read_data("polygons/authors_demo_1_01_work2.txt"));
+// The arc offset of a deconstruction's solution has arcs at its convex corners.
+void expect_solution_offset_has_arcs(const PolygonSet& q) {
   const auto res = deconstruct(q, {1, Rational(1, 10), Rational(1, 80), EngineKind::kReference});
   ASSERT_EQ(res.answer, Answer::kYes);
   const CurvedRegion region = offset_with_arcs(res.solution, 1.0, 1e-4);
@@ -122,6 +123,16 @@ TEST(ArcOffset, DemoSolutionOffset) {
   const Counts c =
       check_ring(region.polygons[0].outer, test::to_region_d(res.solution), 1.0, region.max_error);
   EXPECT_GT(c.arcs, 0U);
+}
+
+TEST(ArcOffset, DemoSolutionOffset) {
+  PENSHAPE_SHARED_OR_SKIP(file, "polygons/authors_demo_1_01_work2.txt");
+  expect_solution_offset_has_arcs(read_xy(test::read_file(file)));
+}
+
+TEST(ArcOffset, GeneratedSolutionOffset) {
+  // Q = a convex heptagon offset by r = 1 (chords on the arcs within 0.02): a YES at eps 0.1.
+  expect_solution_offset_has_arcs(read_xy(gen::rounded_convex(3, 7, 12.0, 1.0, 0.02).q.text));
 }
 
 TEST(ArcOffset, BadInput) {

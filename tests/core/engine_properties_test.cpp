@@ -1,5 +1,7 @@
-// Properties of the decider on random and real polygons: interior ⊆ exterior approximations,
-// answers monotone in eps, engines never contradict, every shared polygon runs.
+// Properties of the decider on random, generated and real polygons: interior ⊆ exterior
+// approximations, answers monotone in eps, engines never contradict, every polygon runs. The
+// real polygons come from the shared corpus (skipped without it); the generated ones
+// (tests/support/gen: coastline, staircase, comb, spikes, holes, thin features) always run.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,6 +14,7 @@
 #include "penshape/core/disk_approximation.hpp"
 #include "penshape/core/offset.hpp"
 #include "penshape/core/polygon_io.hpp"
+#include "polygon_gen.hpp"
 #include "support/hausdorff_check.hpp"
 #include "test_data.hpp"
 
@@ -100,32 +103,63 @@ TEST(EngineProperties, EnginesNeverContradict) {
   }
 }
 
+void expect_engines_agree(const PolygonSet& q, const std::string& name) {
+  for (int divisor : {10, 30}) {
+    SCOPED_TRACE(name + " r = w/" + std::to_string(divisor));
+    const Rational r = width(q) / divisor;
+    const DeconstructParams base{r, r / 2, r / 16, EngineKind::kReference};
+    auto fast = base;
+    fast.engine = EngineKind::kFast;
+    const Answer a = deconstruct(q, base).answer;
+    const Answer b = deconstruct(q, fast).answer;
+    EXPECT_FALSE((a == Answer::kYes && b == Answer::kNo) || (a == Answer::kNo && b == Answer::kYes))
+        << to_string(a) << " vs " << to_string(b);
+  }
+}
+
 TEST(EngineProperties, EnginesNeverContradictOnRealPolygons) {
+  PENSHAPE_SHARED_OR_SKIP(dir, "polygons");
   for (const char* name :
        {"authors_demo_1_01_work1.txt", "authors_demo_1_01_fail2.txt", "authors_S.txt",
         "cgal_wheel1.txt", "cgal_comb_robot.txt", "israel_ne50m.txt", "cgal_knife.txt"}) {
-    const PolygonSet q = read_polygon_text(test::read_data(std::string("polygons/") + name));
-    for (int divisor : {10, 30}) {
-      SCOPED_TRACE(std::string(name) + " r = w/" + std::to_string(divisor));
-      const Rational r = width(q) / divisor;
-      const DeconstructParams base{r, r / 2, r / 16, EngineKind::kReference};
-      auto fast = base;
-      fast.engine = EngineKind::kFast;
-      const Answer a = deconstruct(q, base).answer;
-      const Answer b = deconstruct(q, fast).answer;
-      EXPECT_FALSE((a == Answer::kYes && b == Answer::kNo) ||
-                   (a == Answer::kNo && b == Answer::kYes))
-          << to_string(a) << " vs " << to_string(b);
+    expect_engines_agree(read_polygon_text(test::read_file(dir / name)), name);
+  }
+}
+
+TEST(EngineProperties, EnginesNeverContradictOnGeneratedPolygons) {
+  for (const auto& g : gen::polygon_suite(17)) {
+    if (g.name != "country_1881") expect_engines_agree(read_polygon_text(g.text), g.name);
+  }
+}
+
+// Every polygon at r = w/10, w/30, w/50, eps = r/2, delta = eps/8 with the reference engine: no
+// crash, no hang (a 20 s deadline per case through the cancel hook; a cancelled case counts as
+// finished cleanly), and every YES checked independently on the polygons of up to 300 vertices
+// (the check samples a grid of spacing w/150, so it is loose but independent).
+void expect_runs(const PolygonSet& q, const std::string& name) {
+  const Rational w = width(q);
+  for (int divisor : {10, 30, 50}) {
+    SCOPED_TRACE(name + " r = w/" + std::to_string(divisor));
+    const Rational r = w / divisor;
+    const Rational e = r / 2;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    DeconstructResult res;
+    try {
+      res = deconstruct(q, {r, e, e / 8, EngineKind::kReference},
+                        [&] { return std::chrono::steady_clock::now() > deadline; });
+    } catch (const Cancelled&) {
+      continue;
+    }
+    if (res.answer == Answer::kYes && q.vertex_count() <= 300) {
+      const auto h = test::hausdorff_to_offset(test::region_skeleton(res.solution), r.get_d(),
+                                               test::to_region_d(q), w.get_d() / 150);
+      EXPECT_LE(h.value, e.get_d() + h.error + 1e-9);
     }
   }
 }
 
-// Every shared polygon at r = w/10, w/30, w/50, eps = r/2, delta = eps/8 with the reference
-// engine: no crash, no hang (a 20 s deadline per case through the cancel hook; a cancelled
-// case counts as finished cleanly), and every YES checked independently on the polygons of up
-// to 300 vertices (the check samples a grid of spacing w/150, so it is loose but independent).
 TEST(EngineProperties, EverySharedPolygonRuns) {
-  const std::string dir = test::collection_dir("polygons").string();
+  PENSHAPE_SHARED_OR_SKIP(dir, "polygons");
   std::vector<std::filesystem::path> files;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     if (entry.path().extension() == ".txt") files.push_back(entry.path());
@@ -133,27 +167,12 @@ TEST(EngineProperties, EverySharedPolygonRuns) {
   std::sort(files.begin(), files.end());
   ASSERT_GE(files.size(), 20U);
   for (const auto& path : files) {
-    const PolygonSet q = read_polygon_text(test::read_file(path.string()));
-    const Rational w = width(q);
-    for (int divisor : {10, 30, 50}) {
-      SCOPED_TRACE(path.filename().string() + " r = w/" + std::to_string(divisor));
-      const Rational r = w / divisor;
-      const Rational e = r / 2;
-      const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-      DeconstructResult res;
-      try {
-        res = deconstruct(q, {r, e, e / 8, EngineKind::kReference},
-                          [&] { return std::chrono::steady_clock::now() > deadline; });
-      } catch (const Cancelled&) {
-        continue;
-      }
-      if (res.answer == Answer::kYes && q.vertex_count() <= 300) {
-        const auto h = test::hausdorff_to_offset(test::region_skeleton(res.solution), r.get_d(),
-                                                 test::to_region_d(q), w.get_d() / 150);
-        EXPECT_LE(h.value, e.get_d() + h.error + 1e-9);
-      }
-    }
+    expect_runs(read_polygon_text(test::read_file(path.string())), path.filename().string());
   }
+}
+
+TEST(EngineProperties, EveryGeneratedPolygonRuns) {
+  for (const auto& g : gen::polygon_suite(5)) expect_runs(read_polygon_text(g.text), g.name);
 }
 
 } // namespace

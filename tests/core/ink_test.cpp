@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "drawn_points.hpp"
 #include "penshape/core/deconstruct.hpp"
 #include "support/dollar1.hpp"
 #include "support/hausdorff_check.hpp"
@@ -121,15 +122,25 @@ TEST(InkPolygon, DoublingBackAndSelfCrossing) {
   expect_ink_close(pts, 1.0, ink, 0.2);
 }
 
+void expect_valid_and_close(const std::vector<PointD>& pts) {
+  const double r = 3.0; // pixels as millimetres (resolution unknown)
+  const InkPolygon ink = ink_polygon(with_radius(pts, r), {.radius_mm = r});
+  expect_ink_close(pts, r, ink, 0.75);
+}
+
 TEST(InkPolygon, RealStrokesAreValidAndClose) {
-  const std::string dir = test::collection_dir("strokes/dollar1/s02/medium").string() + "/";
+  PENSHAPE_SHARED_OR_SKIP(dir, "strokes/dollar1/s02/medium");
   for (const char* name : {"circle01.xml", "rectangle01.xml", "star01.xml", "pigtail01.xml",
                            "x01.xml", "question_mark01.xml"}) {
     SCOPED_TRACE(name);
-    const auto pts = test::read_dollar1(dir + name);
-    const double r = 3.0; // pixels as millimetres (resolution unknown)
-    const InkPolygon ink = ink_polygon(with_radius(pts, r), {.radius_mm = r});
-    expect_ink_close(pts, r, ink, 0.75);
+    expect_valid_and_close(test::read_dollar1((dir / name).string()));
+  }
+}
+
+TEST(InkPolygon, GeneratedStrokesAreValidAndClose) {
+  for (const char* kind : {"circle", "rectangle", "arrow1", "scribble", "word", "spiral", "dot"}) {
+    SCOPED_TRACE(kind);
+    expect_valid_and_close(gen::drawn_points(6, kind));
   }
 }
 
@@ -231,11 +242,9 @@ double swept_signed_distance(const std::vector<InkSample>& s, PointD y) {
   return best;
 }
 
-TEST(InkPolygon, PressureStrokeIsValidAndWithinItsRadii) {
-  // A real stroke with a pressure ramp: Q lies between the ink of the thinnest and of the
-  // thickest constant pen (areas), and is a valid region.
-  const auto pts =
-      test::read_dollar1(test::collection_dir("strokes/dollar1/s02/medium/pigtail01.xml").string());
+// A stroke with a pressure ramp: Q lies between the ink of the thinnest and of the thickest
+// constant pen (areas), and is a valid region.
+void expect_pressure_ink_within_radii(const std::vector<PointD>& pts) {
   std::vector<InkSample> samples;
   for (std::size_t i = 0; i < pts.size(); ++i) {
     const double t = static_cast<double>(i) / static_cast<double>(pts.size() - 1);
@@ -259,30 +268,53 @@ TEST(InkPolygon, PressureStrokeIsValidAndWithinItsRadii) {
   }
 }
 
+TEST(InkPolygon, PressureStrokeIsValidAndWithinItsRadii) {
+  PENSHAPE_SHARED_OR_SKIP(file, "strokes/dollar1/s02/medium/pigtail01.xml");
+  expect_pressure_ink_within_radii(test::read_dollar1(file.string()));
+}
+
+TEST(InkPolygon, GeneratedPressureStrokeIsValidAndWithinItsRadii) {
+  expect_pressure_ink_within_radii(gen::drawn_points(8, "spiral"));
+}
+
 } // namespace
 } // namespace penshape
 
 namespace penshape {
 namespace {
 
-TEST(InkPolygon, RealStrokeInkDeconstructs) {
-  // The daemon's path: stroke → ink polygon → decision with the pen radius; every YES is
-  // checked independently against the ink polygon.
-  const std::string dir = test::collection_dir("strokes/dollar1/s03/medium").string() + "/";
-  int yes = 0;
-  for (const char* name : {"circle02.xml", "triangle02.xml", "v02.xml"}) {
-    SCOPED_TRACE(name);
-    const auto pts = test::read_dollar1(dir + name);
+// The daemon's path: stroke → ink polygon → decision with the pen radius; every YES is checked
+// independently against the ink polygon. True on YES.
+bool expect_ink_deconstructs(const std::vector<PointD>& pts) {
+  {
     const double r = 3.0;
     const InkPolygon ink = ink_polygon(with_radius(pts, r), {.radius_mm = r});
     const DeconstructParams params{Rational(3), Rational(3, 2), Rational(3, 16),
                                    EngineKind::kReference};
     const auto res = deconstruct(ink.region, params);
-    if (res.answer != Answer::kYes) continue;
-    ++yes;
+    if (res.answer != Answer::kYes) return false;
     const auto h = test::hausdorff_to_offset(test::region_skeleton(res.solution), r,
                                              test::to_region_d(ink.region), 0.5);
     EXPECT_LE(h.value, 1.5 + h.error + 1e-9);
+    return true;
+  }
+}
+
+TEST(InkPolygon, RealStrokeInkDeconstructs) {
+  PENSHAPE_SHARED_OR_SKIP(dir, "strokes/dollar1/s03/medium");
+  int yes = 0;
+  for (const char* name : {"circle02.xml", "triangle02.xml", "v02.xml"}) {
+    SCOPED_TRACE(name);
+    yes += expect_ink_deconstructs(test::read_dollar1((dir / name).string())) ? 1 : 0;
+  }
+  EXPECT_GE(yes, 1);
+}
+
+TEST(InkPolygon, GeneratedStrokeInkDeconstructs) {
+  int yes = 0;
+  for (const char* kind : {"circle", "triangle", "line"}) {
+    SCOPED_TRACE(kind);
+    yes += expect_ink_deconstructs(gen::drawn_points(10, kind)) ? 1 : 0;
   }
   EXPECT_GE(yes, 1);
 }

@@ -1,4 +1,5 @@
-// Issue-5 properties on real polygons with the real engines: ε̂(r) monotone and 1-Lipschitz,
+// Issue-5 properties with the real engines, on real polygons and strokes (the shared corpus,
+// skipped without it) and on generated ones (tests/support/gen): ε̂(r) monotone and 1-Lipschitz,
 // the ε̂ interval agreeing with the decider at its ends, CONVEXDECIDE agreeing with the general
 // decider, and simplified solutions keeping the certificate — each checked independently.
 #include <gtest/gtest.h>
@@ -13,6 +14,8 @@
 #include "penshape/core/polygon_io.hpp"
 #include "penshape/core/search.hpp"
 #include "penshape/core/simplify.hpp"
+#include "polygon_gen.hpp"
+#include "stroke_gen.hpp"
 #include "support/dollar1.hpp"
 #include "support/hausdorff_check.hpp"
 #include "test_data.hpp"
@@ -20,9 +23,12 @@
 namespace penshape {
 namespace {
 
-PolygonSet shared_polygon(const std::string& name) {
-  return read_polygon_text(test::read_data("polygons/" + name + ".txt"));
+PolygonSet shared_polygon(const std::filesystem::path& dir, const std::string& name) {
+  return read_polygon_text(test::read_file(dir / (name + ".txt")));
 }
+
+// A generated coastline of the size of the authors' S (about 100 units across).
+PolygonSet generated_coast() { return read_polygon_text(gen::country(12, 160, 50.0).text); }
 
 double bbox_width(const PolygonSet& q) {
   double lo = INFINITY;
@@ -49,9 +55,8 @@ void expect_certified(const PolygonSet& q, const DeconstructResult& res) {
 
 Rational rational_of(double v) { return exact(v); }
 
-TEST(SearchEngine, EpsHatIsMonotoneAndLipschitzOnRealPolygons) {
-  for (const char* name : {"authors_S", "cgal_knife_blade", "authors_concave"}) {
-    const PolygonSet q = shared_polygon(name);
+void expect_eps_hat_monotone_and_lipschitz(const PolygonSet& q, const std::string& name) {
+  {
     const double w = bbox_width(q);
     const Decider decide = make_decider(q, EngineKind::kFast);
     std::vector<ToleranceSearchResult> at;
@@ -71,8 +76,18 @@ TEST(SearchEngine, EpsHatIsMonotoneAndLipschitzOnRealPolygons) {
   }
 }
 
-TEST(SearchEngine, IntervalEndsAgreeWithTheDecider) {
-  const PolygonSet q = shared_polygon("authors_S");
+TEST(SearchEngine, EpsHatIsMonotoneAndLipschitzOnRealPolygons) {
+  PENSHAPE_SHARED_OR_SKIP(dir, "polygons");
+  for (const char* name : {"authors_S", "cgal_knife_blade", "authors_concave"})
+    expect_eps_hat_monotone_and_lipschitz(shared_polygon(dir, name), name);
+}
+
+TEST(SearchEngine, EpsHatIsMonotoneAndLipschitzOnGeneratedPolygons) {
+  expect_eps_hat_monotone_and_lipschitz(generated_coast(), "coast");
+  expect_eps_hat_monotone_and_lipschitz(read_polygon_text(gen::comb(6, 10, 6, 40).text), "comb");
+}
+
+void expect_interval_ends_agree(const PolygonSet& q) {
   const double r = bbox_width(q) / 25;
   const Rational radius = rational_of(r);
   const Decider decide = make_decider(q, EngineKind::kFast);
@@ -85,8 +100,16 @@ TEST(SearchEngine, IntervalEndsAgreeWithTheDecider) {
   }
 }
 
-TEST(SearchEngine, RadiusSearchBracketsRStar) {
-  const PolygonSet q = shared_polygon("authors_S");
+TEST(SearchEngine, IntervalEndsAgreeWithTheDecider) {
+  PENSHAPE_SHARED_OR_SKIP(dir, "polygons");
+  expect_interval_ends_agree(shared_polygon(dir, "authors_S"));
+}
+
+TEST(SearchEngine, IntervalEndsAgreeWithTheDeciderOnAGeneratedPolygon) {
+  expect_interval_ends_agree(generated_coast());
+}
+
+void expect_radius_search_brackets_r_star(const PolygonSet& q) {
   const double w = bbox_width(q);
   const Rational eps = rational_of(w / 60);
   const Decider decide = make_decider(q, EngineKind::kFast);
@@ -99,6 +122,15 @@ TEST(SearchEngine, RadiusSearchBracketsRStar) {
   // r_low has a solution; r_high (when it is a tested radius) has none: ε̂(r_high) >= ε.
   const auto above = search_tolerance(decide, res.r_high, res.r_high / 200);
   EXPECT_GE(above.eps_high, eps - res.r_high / 200);
+}
+
+TEST(SearchEngine, RadiusSearchBracketsRStar) {
+  PENSHAPE_SHARED_OR_SKIP(dir, "polygons");
+  expect_radius_search_brackets_r_star(shared_polygon(dir, "authors_S"));
+}
+
+TEST(SearchEngine, RadiusSearchBracketsRStarOnAGeneratedPolygon) {
+  expect_radius_search_brackets_r_star(generated_coast());
 }
 
 TEST(SearchEngine, ConvexDecideAgreesWithTheGeneralDecider) {
@@ -128,25 +160,38 @@ TEST(SearchEngine, ConvexDecideAgreesWithTheGeneralDecider) {
   EXPECT_GT(compared, 10);
 }
 
-TEST(SearchEngine, SimplificationKeepsTheCertificateOnSharedPolygons) {
-  std::size_t simplified = 0;
-  for (const auto& entry :
-       std::filesystem::directory_iterator(test::collection_dir("polygons").string())) {
-    if (entry.path().extension() != ".txt") continue;
-    const std::string name = entry.path().stem().string();
-    const PolygonSet q = shared_polygon(name);
+// Simplifies the solution at r = w/30; true when it was simplified.
+bool expect_simplified_certified(const PolygonSet& q, const std::string& name) {
+  {
     const double r = bbox_width(q) / 30;
     const DeconstructParams p{exact(r), exact(r / 2), exact(r / 16), EngineKind::kFast};
     const DeconstructResult raw = deconstruct(q, p);
-    if (raw.answer != Answer::kYes) continue;
+    if (raw.answer != Answer::kYes) return false;
     const SimplifyResult s = simplify_solution(q, raw);
     EXPECT_LE(s.solution_vertices, s.raw_vertices) << name;
     expect_certified(q, s.result);
     std::printf("%-28s raw %4zu -> simplified %4zu (tau %.4g)\n", name.c_str(), s.raw_vertices,
                 s.solution_vertices, to_double(s.tau));
-    simplified += s.simplified ? 1 : 0;
+    return s.simplified;
+  }
+}
+
+TEST(SearchEngine, SimplificationKeepsTheCertificateOnSharedPolygons) {
+  PENSHAPE_SHARED_OR_SKIP(dir, "polygons");
+  std::size_t simplified = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (entry.path().extension() != ".txt") continue;
+    const std::string name = entry.path().stem().string();
+    simplified += expect_simplified_certified(shared_polygon(dir, name), name) ? 1 : 0;
   }
   EXPECT_GE(simplified, 5U);
+}
+
+TEST(SearchEngine, SimplificationKeepsTheCertificateOnGeneratedPolygons) {
+  std::size_t simplified = 0;
+  for (const auto& g : gen::polygon_suite(31))
+    simplified += expect_simplified_certified(read_polygon_text(g.text), g.name) ? 1 : 0;
+  EXPECT_GE(simplified, 2U);
 }
 
 } // namespace
@@ -173,11 +218,9 @@ TEST(SearchEngine, NearlyStraightStrokeBecomesASegment) {
   expect_certified(ink.region, s.result);
 }
 
-TEST(SearchEngine, SimplificationKeepsTheCertificateOnRealStrokes) {
-  for (const char* file : {"s02/medium/circle01.xml", "s03/fast/triangle05.xml",
-                           "s04/slow/pigtail03.xml", "s05/medium/rectangle02.xml"}) {
-    const auto points =
-        test::read_dollar1(test::collection_dir("strokes/dollar1").string() + "/" + file);
+void expect_stroke_simplified_certified(const std::vector<PointD>& points,
+                                        const std::string& file) {
+  {
     std::vector<InkSample> samples;
     for (const auto& pt : points) samples.push_back({pt.x, pt.y, 3.0});
     InkOptions opt;
@@ -185,11 +228,30 @@ TEST(SearchEngine, SimplificationKeepsTheCertificateOnRealStrokes) {
     const InkPolygon ink = ink_polygon(samples, opt);
     const DeconstructParams p{exact(3.0), exact(1.5), exact(1.5 / 8), EngineKind::kFast};
     const DeconstructResult raw = deconstruct(ink.region, p);
-    if (raw.answer != Answer::kYes) continue;
+    if (raw.answer != Answer::kYes) return;
     const SimplifyResult s = simplify_solution(ink.region, raw);
     EXPECT_LE(s.solution_vertices, s.raw_vertices) << file;
     expect_certified(ink.region, s.result);
-    std::printf("%-28s raw %4zu -> simplified %4zu\n", file, s.raw_vertices, s.solution_vertices);
+    std::printf("%-28s raw %4zu -> simplified %4zu\n", file.c_str(), s.raw_vertices,
+                s.solution_vertices);
+  }
+}
+
+TEST(SearchEngine, SimplificationKeepsTheCertificateOnRealStrokes) {
+  PENSHAPE_SHARED_OR_SKIP(dir, "strokes/dollar1");
+  for (const char* file : {"s02/medium/circle01.xml", "s03/fast/triangle05.xml",
+                           "s04/slow/pigtail03.xml", "s05/medium/rectangle02.xml"}) {
+    expect_stroke_simplified_certified(test::read_dollar1((dir / file).string()), file);
+  }
+}
+
+TEST(SearchEngine, SimplificationKeepsTheCertificateOnGeneratedStrokes) {
+  gen::StrokeGenerator strokes(41);
+  for (const char* kind : {"circle", "triangle", "spiral", "rectangle"}) {
+    std::vector<PointD> points;
+    const gen::Drawing drawing = strokes.draw(kind);
+    for (const auto& p : drawing.strokes.front().points) points.push_back({p.x, p.y});
+    expect_stroke_simplified_certified(points, kind);
   }
 }
 

@@ -840,9 +840,9 @@ TEST_F(DaemonE2E, SubmitStrokeAnswersAndPublishes) {
 
 } // namespace
 
-// The drivers' device manager as the source: a real recording (the Wacom PenPartner capture)
-// replayed through the daemon reaches a subscriber as exactly the strokes the drivers' offline
-// replay finds.
+// The drivers' device manager as the source: a recording (generated, in the Wacom PenPartner's
+// protocol) replayed through the daemon reaches a subscriber as exactly the strokes the drivers'
+// offline replay finds.
 #include "penshape/daemon/device_manager_source.hpp"
 #include "penshape/drivers/recording.hpp"
 #include "penshape/drivers/replay.hpp"
@@ -851,7 +851,7 @@ namespace {
 
 TEST_F(DaemonE2E, AReplayedRecordingReachesSubscribersAsTheDriversStrokes) {
   const auto recording = penshape::drivers::load_recording_file(
-      (penshape::test::recordings_dir() / "wacom-penpartner.hidrec").string());
+      (penshape::test::recordings_dir() / "generated-graphire.hidrec").string());
   const auto offline =
       penshape::drivers::replay(recording, penshape::drivers::ReplaySpeed::kAsFastAsPossible);
   ASSERT_GE(offline.strokes.size(), 3U);

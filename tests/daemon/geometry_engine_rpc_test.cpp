@@ -20,15 +20,26 @@
 #include "penshape/daemon/proto_convert.hpp"
 #include "penshape/daemon/server.hpp"
 #include "penshape/v1/geometry.grpc.pb.h"
-#include "test_data.hpp"
+#include "polygon_gen.hpp"
 
 namespace {
 
 using namespace std::chrono_literals;
 namespace v1 = penshape::v1;
 
-// The data root: the shared corpus when present, else tests/data (which bundles every polygon).
-std::string data_dir() { return penshape::test::collection_dir("").string(); }
+// The polygons, generated (tests/support/gen): the RPCs must answer as the core library does.
+// A YES case at r = 1, eps = 1/10 (a convex hexagon offset by 1, chords within 0.02).
+std::string rounded_hexagon() {
+  return penshape::gen::rounded_convex(8, 6, 10.0, 1.0, 0.02).q.text;
+}
+// A NO case at r = 1, eps = 1/10: a square's corners are (sqrt 2 - 1) r from any offset by r.
+std::string square(int side) {
+  const std::string s = std::to_string(side);
+  return "0 0\n" + s + " 0\n" + s + " " + s + "\n0 " + s + "\n";
+}
+// A coastline about 100 units across, and a large one of 1,881 vertices.
+std::string coast() { return penshape::gen::country(12, 160, 50.0).text; }
+std::string large_coast() { return penshape::gen::country(4, 1881, 1000.0).text; }
 
 // "x y" lines as exact decimals → exact rationals ("123/100"), so nothing is rounded.
 std::string decimal_to_rational(const std::string& text) {
@@ -43,9 +54,8 @@ std::string decimal_to_rational(const std::string& text) {
   return q.get_str(10);
 }
 
-v1::PolygonSet read_exact_polygon(const std::string& name) {
-  std::ifstream in(data_dir() + "/polygons/" + name);
-  EXPECT_TRUE(in) << name;
+v1::PolygonSet read_exact_polygon(const std::string& text) {
+  std::istringstream in(text);
   v1::PolygonSet set;
   v1::Ring* ring = set.add_polygons()->mutable_outer();
   std::string line;
@@ -77,7 +87,8 @@ class GeometryEngineRpc : public ::testing::Test {
 };
 
 struct Case {
-  const char* file;
+  std::string what;
+  std::string text;
   const char* radius;
   const char* tolerance;
   v1::Answer impossible; // the answer the data's documentation rules out
@@ -85,16 +96,17 @@ struct Case {
 
 TEST_F(GeometryEngineRpc, DeconstructEqualsTheCoreLibrary) {
   const Case cases[] = {
-      {"authors_demo_1_01_work1.txt", "1", "1/10", v1::ANSWER_NO},
-      {"authors_demo_1_01_work2.txt", "1", "1/10", v1::ANSWER_NO},
-      {"authors_demo_1_01_fail1.txt", "1", "1/10", v1::ANSWER_YES},
-      {"authors_demo_1_01_fail2.txt", "1", "1/10", v1::ANSWER_YES},
-      {"authors_S.txt", "10", "5", v1::ANSWER_UNSPECIFIED},
+      {"rounded hexagon", rounded_hexagon(), "1", "1/10", v1::ANSWER_NO},
+      {"rounded heptagon", penshape::gen::rounded_convex(3, 7, 12.0, 1.0, 0.02).q.text, "1", "1/10",
+       v1::ANSWER_NO},
+      {"square 5", square(5), "1", "1/10", v1::ANSWER_YES},
+      {"square 8", square(8), "1", "1/10", v1::ANSWER_YES},
+      {"coast", coast(), "10", "5", v1::ANSWER_UNSPECIFIED},
   };
   for (const Case& c : cases) {
-    SCOPED_TRACE(c.file);
+    SCOPED_TRACE(c.what);
     v1::DeconstructRequest request;
-    *request.mutable_polygon() = read_exact_polygon(c.file);
+    *request.mutable_polygon() = read_exact_polygon(c.text);
     request.mutable_radius()->set_rational(c.radius);
     request.mutable_tolerance()->set_rational(c.tolerance);
     grpc::ClientContext ctx;
@@ -122,7 +134,7 @@ TEST_F(GeometryEngineRpc, DeconstructEqualsTheCoreLibrary) {
 
 TEST_F(GeometryEngineRpc, SimplifyEqualsTheCoreSimplification) {
   v1::DeconstructRequest request;
-  *request.mutable_polygon() = read_exact_polygon("authors_demo_1_01_work1.txt");
+  *request.mutable_polygon() = read_exact_polygon(rounded_hexagon());
   request.mutable_radius()->set_rational("1");
   request.mutable_tolerance()->set_rational("1/2");
   request.set_simplify(true);
@@ -152,7 +164,7 @@ TEST_F(GeometryEngineRpc, SimplifyEqualsTheCoreSimplification) {
 
 TEST_F(GeometryEngineRpc, ACancelledLargeDeconstructionStops) {
   v1::DeconstructRequest request;
-  *request.mutable_polygon() = read_exact_polygon("kazakhstan_paper1881.txt");
+  *request.mutable_polygon() = read_exact_polygon(large_coast());
   request.mutable_radius()->set_rational("1/100");
   request.mutable_tolerance()->set_rational("1/200"); // eps = r / 2, delta = eps / 8
   grpc::ClientContext ctx;
@@ -231,7 +243,7 @@ namespace {
 
 TEST_F(GeometryEngineRpc, SearchToleranceEqualsTheCoreSearch) {
   v1::SearchToleranceRequest request;
-  *request.mutable_polygon() = read_exact_polygon("authors_S.txt");
+  *request.mutable_polygon() = read_exact_polygon(coast());
   request.mutable_radius()->set_rational("10");
   request.mutable_width()->set_rational("1/4");
   grpc::ClientContext ctx;
@@ -274,7 +286,7 @@ TEST_F(GeometryEngineRpc, SearchToleranceEqualsTheCoreSearch) {
 
 TEST_F(GeometryEngineRpc, ACancelledSuggestRadiusStopsPromptly) {
   v1::SuggestRadiusRequest request;
-  *request.mutable_polygon() = read_exact_polygon("kazakhstan_paper1881.txt");
+  *request.mutable_polygon() = read_exact_polygon(large_coast());
   request.mutable_min_radius()->set_rational("1/1000");
   request.mutable_max_radius()->set_rational("1/10");
   request.set_samples(40);

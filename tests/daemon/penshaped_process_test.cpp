@@ -181,7 +181,7 @@ TEST(Penshaped, FindsItsConfigInXdgConfigHome) {
 
 TEST(Penshaped, ReplaysARecordingAsIfLive) {
   const std::string capture =
-      (penshape::test::recordings_dir() / "wacom-penpartner.hidrec").string();
+      (penshape::test::recordings_dir() / "generated-graphire.hidrec").string();
   const auto offline = penshape::drivers::replay(penshape::drivers::load_recording_file(capture),
                                                  penshape::drivers::ReplaySpeed::kAsFastAsPossible);
   ASSERT_GE(offline.strokes.size(), 3U);
@@ -239,7 +239,8 @@ TEST(Penshaped, BadConfigAndCommandLineExitWithTwo) {
 // what is wrong, and nothing is left behind (the daemon never serves).
 TEST(Penshaped, AFileThatIsNotARecordingExitsTwoNamingIt) {
   Sandbox box;
-  const std::string good = (penshape::test::recordings_dir() / "wacom-penpartner.hidrec").string();
+  const std::string good =
+      (penshape::test::recordings_dir() / "generated-graphire.hidrec").string();
   const std::string text = penshape::test::read_file(good);
   std::ofstream(box.path("truncated.hidrec")) << text.substr(0, text.find("E: ") + 20);
   std::ofstream(box.path("no-events.hidrec")) << text.substr(0, text.find("E: "));
@@ -247,7 +248,7 @@ TEST(Penshaped, AFileThatIsNotARecordingExitsTwoNamingIt) {
   std::ofstream(box.path("empty.hidrec"));
   const std::vector<std::pair<std::string, std::string>> cases = {
       {box.path("missing.hidrec"), "cannot open"},
-      {(penshape::test::recordings_dir() / "wacom-penpartner.expected").string(),
+      {(penshape::test::recordings_dir() / "generated-graphire.expected").string(),
        "not a tablet recording"},
       {box.path("no-events.hidrec"), "no input reports"},
       {box.path("truncated.hidrec"), "truncated.hidrec"},
@@ -269,8 +270,8 @@ TEST(Penshaped, AFileThatIsNotARecordingExitsTwoNamingIt) {
 // arrive, then the first recording's again.
 TEST(Penshaped, PlaysSeveralRecordingsAndLoops) {
   const auto dir = penshape::test::recordings_dir();
-  const std::string a = (dir / "wacom-penpartner.hidrec").string();
-  const std::string b = (dir / "dollar1-shapes.xppen-deco01v2.hidrec").string();
+  const std::string a = (dir / "generated-graphire.hidrec").string();
+  const std::string b = (dir / "generated-shapes.hidrec").string();
   const auto strokes_of = [](const std::string& file) {
     return penshape::drivers::replay(penshape::drivers::load_recording_file(file),
                                      penshape::drivers::ReplaySpeed::kAsFastAsPossible)

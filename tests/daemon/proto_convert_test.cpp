@@ -1,5 +1,5 @@
 #include "penshape/daemon/proto_convert.hpp"
-#include "test_data.hpp"
+#include "polygon_gen.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,13 +16,12 @@ using penshape::daemon::FieldError;
 using penshape::daemon::Limits;
 namespace v1 = penshape::v1;
 
-// The data root: the shared corpus when present, else tests/data (which bundles every polygon).
-std::string data_dir() { return penshape::test::collection_dir("").string(); }
+// A generated polygon of 64 vertices (a spiky star, tests/support/gen) in the polygon files'
+// format: "x y" per line, '#' header lines.
+std::string star64() { return penshape::gen::spikes(5, 32, 30.0, 100.0).text; }
 
-// The shared polygon files: "x y" per line, '#' header lines.
-v1::PolygonSet read_polygon(const std::string& name) {
-  std::ifstream in(data_dir() + "/polygons/" + name);
-  EXPECT_TRUE(in) << name;
+v1::PolygonSet read_polygon(const std::string& text) {
+  std::istringstream in(text);
   v1::PolygonSet set;
   v1::Ring* ring = set.add_polygons()->mutable_outer();
   std::string line;
@@ -69,8 +68,8 @@ v1::PolygonSet triangle() {
   return set;
 }
 
-TEST(ProtoConvert, RealPolygonConvertsExactlyAndRoundTrips) {
-  const v1::PolygonSet message = read_polygon("cgal_knife.txt");
+TEST(ProtoConvert, PolygonConvertsExactlyAndRoundTrips) {
+  const v1::PolygonSet message = read_polygon(star64());
   ASSERT_EQ(message.polygons(0).outer().points_size(), 64);
   const penshape::PolygonSet set = penshape::daemon::polygon_set_from_proto(message, "polygon", {});
   ASSERT_EQ(set.vertex_count(), 64U);
@@ -154,7 +153,7 @@ TEST(ProtoConvert, BadCoordinatesAreNamedByTheirPath) {
 TEST(ProtoConvert, VertexLimitIsEnforcedBeforeConversion) {
   Limits limits;
   limits.max_vertices = 63;
-  const v1::PolygonSet message = read_polygon("cgal_knife.txt");
+  const v1::PolygonSet message = read_polygon(star64());
   EXPECT_EQ(error_of([&] { penshape::daemon::polygon_set_from_proto(message, "polygon", limits); }),
             "polygon has 64 vertices, beyond the limit 63");
 }

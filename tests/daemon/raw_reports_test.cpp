@@ -1,6 +1,8 @@
 // Raw HID reports through the daemon: only subscribers that ask get them (in the hub and over
-// gRPC), they are every report of the device byte for byte (the real PenPartner capture replayed
-// through the drivers' device manager, reports that decode to no sample included), DeviceInfo
+// gRPC), they are every report of the device byte for byte (the real PenPartner capture of the
+// shared corpus, skipped without it, and the generated recording in its protocol with status
+// reports added, replayed through the drivers' device manager, reports that decode to no sample
+// included), DeviceInfo
 // carries the device's descriptor and ids, a slow raw subscriber loses only its oldest events
 // (counted), and the raw-subscriber limit answers RESOURCE_EXHAUSTED.
 #include <grpcpp/grpcpp.h>
@@ -19,6 +21,7 @@
 #include "penshape/drivers/recording.hpp"
 #include "penshape/drivers/replay.hpp"
 #include "penshape/v1/live.grpc.pb.h"
+#include "test_data.hpp"
 
 namespace penshape::testing {
 namespace {
@@ -26,8 +29,19 @@ namespace {
 namespace v1 = penshape::v1;
 using namespace std::chrono_literals;
 
-const std::string kCapture =
-    std::string(PENSHAPE_SOURCE_DIR) + "/recordings/wacom-penpartner.hidrec";
+// The generated recording in the PenPartner's protocol (Wacom Graphire, 056a:0061), with a
+// status report (ID 0x63, as the real device sends; no pen sample) after every 10th report.
+drivers::Recording generated_capture() {
+  drivers::Recording r = drivers::load_recording_file(std::string(PENSHAPE_SOURCE_DIR) +
+                                                      "/recordings/generated-graphire.hidrec");
+  std::vector<drivers::HidEvent> events;
+  for (std::size_t i = 0; i < r.events.size(); ++i) {
+    events.push_back(r.events[i]);
+    if (i % 10 == 9) events.push_back({r.events[i].time_us + 1, {0x63, 0, 0, 0, 0, 0, 0, 0}});
+  }
+  r.events = std::move(events);
+  return r;
+}
 
 v1::LiveEvent raw_event(const std::string& device, std::int64_t time_us) {
   v1::LiveEvent e;
@@ -176,8 +190,9 @@ TEST(RawReportsHub, TheLimitIsAConfigKeyAndZeroTurnsRawReportsOff) {
 // The real PenPartner capture replayed through the drivers' device manager (the path of a live
 // tablet): the raw subscriber gets the device's descriptor and ids and every report of the file,
 // byte for byte with its time; the subscriber without include_raw_reports gets none of them.
-TEST(RawReportsGrpc, EveryReportOfTheDeviceOnlyForSubscribersThatAsk) {
-  const drivers::Recording recording = drivers::load_recording_file(kCapture);
+void expect_every_report_only_for_subscribers_that_ask(const drivers::Recording& recording,
+                                                       const std::string& name,
+                                                       const std::string& phys) {
   ASSERT_GT(recording.events.size(), 500U);
   const drivers::ReplayResult offline =
       drivers::replay(recording, drivers::ReplaySpeed::kAsFastAsPossible);
@@ -222,8 +237,8 @@ TEST(RawReportsGrpc, EveryReportOfTheDeviceOnlyForSubscribersThatAsk) {
   ASSERT_TRUE(device.has_hid());
   EXPECT_EQ(device.hid().report_descriptor(),
             std::string(recording.descriptor.begin(), recording.descriptor.end()));
-  EXPECT_EQ(device.hid().name(), "WACOM FT-0203-UV1.4-2");
-  EXPECT_EQ(device.hid().phys(), "usb-0000:00:1d.0-1.8/input0");
+  EXPECT_EQ(device.hid().name(), name);
+  EXPECT_EQ(device.hid().phys(), phys);
   EXPECT_EQ(device.hid().bus(), 3U);
   EXPECT_EQ(device.hid().vendor_id(), 0x056aU);
   EXPECT_EQ(device.hid().product_id(), 0x0061U);
@@ -255,6 +270,19 @@ TEST(RawReportsGrpc, EveryReportOfTheDeviceOnlyForSubscribersThatAsk) {
   EXPECT_TRUE(plain_reader->Finish().ok());
   EXPECT_EQ(raw_reports, 0U);
   EXPECT_EQ(samples, offline.samples.size());
+}
+
+TEST(RawReportsGrpc, EveryReportOfTheDeviceOnlyForSubscribersThatAsk) {
+  PENSHAPE_SHARED_OR_SKIP(capture, "hid/wacom-hid-descriptors/Wacom_PenPartner/hidrecord.txt");
+  expect_every_report_only_for_subscribers_that_ask(drivers::load_recording_file(capture),
+                                                    "WACOM FT-0203-UV1.4-2",
+                                                    "usb-0000:00:1d.0-1.8/input0");
+}
+
+TEST(RawReportsGrpc, EveryReportOfAGeneratedDeviceOnlyForSubscribersThatAsk) {
+  expect_every_report_only_for_subscribers_that_ask(generated_capture(),
+                                                    "penshape generated pen (vendor-graphire)",
+                                                    "usb-penshape-generated/input0");
 }
 
 // A source whose reader sends raw reports only while the sink wants them, as the device manager

@@ -1,4 +1,5 @@
-// `penshape hid describe` and `penshape replay --local`, run as a user would, on real files.
+// `penshape hid describe` and `penshape replay --local`, run as a user would, on real files (the
+// shared corpus, skipped without it) and on the project's generated descriptors and recordings.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -7,6 +8,7 @@
 #include <fstream>
 #include <string>
 
+#include "descriptor_gen.hpp"
 #include "run_command.hpp"
 #include "shared_data.hpp"
 
@@ -25,10 +27,7 @@ std::string quoted(const std::filesystem::path& path) {
   return out;
 }
 
-std::string data(const std::string& rel) {
-  return quoted(penshape::drivers::testing::hid_dir() / rel);
-}
-
+// The generated recording in the PenPartner's protocol (Wacom Graphire, 056a:0061).
 std::string penpartner() { return quoted(penshape::drivers::testing::penpartner_capture()); }
 
 std::size_t count(const std::string& s, const std::string& what) {
@@ -37,19 +36,31 @@ std::size_t count(const std::string& s, const std::string& what) {
   return n;
 }
 
-TEST(CliDevices, DescribeJsonHasTheIssueKeys) {
-  // Huion HS610 firmware-mode pen interface: report 0x0A, 16-bit X/Y with a physical size.
-  const Result r =
-      run("hid describe --json " +
-          data("wacom-hid-descriptors/Huion_HS610/sysinfo.MGYZr3MuFs/0003:256C:0064.001B.hid.bin"));
+void expect_issue_keys(const std::string& descriptor, const std::string& pen_report_id) {
+  const Result r = run("hid describe --json " + descriptor);
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_EQ(r.out.rfind("{\"reports\":[{\"id\":", 0), 0U) << r.out;
-  for (const char* key :
-       {"\"fields\":", "\"usage\":\"Digitizer/Tip Switch\"", "\"bit_offset\":8",
-        "\"size\":", "\"logical_min\":", "\"logical_max\":", "\"pen\":{\"report_id\":10",
-        "\"x_max\":", "\"y_max\":", "\"pressure_max\":8191", "\"resolution\":"}) {
+  const std::string pen = "\"pen\":{\"report_id\":" + pen_report_id;
+  for (const char* key : {"\"fields\":", "\"usage\":\"Digitizer/Tip Switch\"", "\"bit_offset\":8",
+                          "\"size\":", "\"logical_min\":", "\"logical_max\":", pen.c_str(),
+                          "\"x_max\":", "\"y_max\":", "\"pressure_max\":8191", "\"resolution\":"}) {
     EXPECT_NE(r.out.find(key), std::string::npos) << key << " in " << r.out;
   }
+}
+
+TEST(CliDevices, DescribeJsonHasTheIssueKeys) {
+  // Huion HS610 firmware-mode pen interface: report 0x0A, 16-bit X/Y with a physical size.
+  PENSHAPE_SHARED_OR_SKIP(
+      bin, "hid/wacom-hid-descriptors/Huion_HS610/sysinfo.MGYZr3MuFs/0003:256C:0064.001B.hid.bin");
+  expect_issue_keys(quoted(bin), "10");
+}
+
+TEST(CliDevices, DescribeJsonHasTheIssueKeysOnAGeneratedDescriptor) {
+  // The project's own pen descriptor: report 7, 16-bit X/Y in centimetres, 8191 pressure levels.
+  const std::string bin = ::testing::TempDir() + "/penshape_generated_descriptor.bin";
+  const auto bytes = penshape::gen::pen_descriptor(penshape::gen::pen_descriptor_specs().front());
+  std::ofstream(bin, std::ios::binary) << std::string(bytes.begin(), bytes.end());
+  expect_issue_keys(bin, "7");
 }
 
 TEST(CliDevices, DescribeVendorProtocolFromTheIdLine) {
@@ -59,16 +70,26 @@ TEST(CliDevices, DescribeVendorProtocolFromTheIdLine) {
       << r.out;
 }
 
-TEST(CliDevices, ReplayJsonSamplesAndStrokes) {
-  const Result r = run("replay --local --json " + penpartner());
+void expect_json_samples_and_strokes(const std::string& recording, std::size_t samples,
+                                     std::size_t strokes) {
+  const Result r = run("replay --local --json " + recording);
   ASSERT_EQ(r.exit_code, 0) << r.out;
-  EXPECT_EQ(count(r.out, "{\"t\":"), 757U);
-  EXPECT_EQ(count(r.out, "{\"stroke\":"), 3U);
+  EXPECT_EQ(count(r.out, "{\"t\":"), samples);
+  EXPECT_EQ(count(r.out, "{\"stroke\":"), strokes);
   for (const char* key :
        {"\"x\":", "\"y\":", "\"pressure\":", "\"tilt_x\":", "\"tilt_y\":", "\"tip\":true",
         "\"in_range\":", "\"buttons\":", "\"t_start\":", "\"t_end\":", "\"samples\":"}) {
     EXPECT_NE(r.out.find(key), std::string::npos) << key;
   }
+}
+
+TEST(CliDevices, ReplayJsonSamplesAndStrokes) {
+  PENSHAPE_SHARED_OR_SKIP(capture, penshape::drivers::testing::kPenPartnerCapture);
+  expect_json_samples_and_strokes(quoted(capture), 757U, 3U); // the real PenPartner capture
+}
+
+TEST(CliDevices, ReplayJsonSamplesAndStrokesOfAGeneratedRecording) {
+  expect_json_samples_and_strokes(penpartner(), 653U, 3U);
 }
 
 TEST(CliDevices, ReplayUsbhidDumpWithVidPidAndDescriptor) {
@@ -124,19 +145,18 @@ TEST(CliTablets, ListsTheTableWithFamilyAndSize) {
 }
 
 TEST(CliTablets, DescribeAndReplayNameFamilyAndSizeSource) {
-  // The bundled recording (an XP-Pen Deco 01 V2 descriptor with physical units): every clone.
-  const std::string rec =
-      quoted(penshape::test::recordings_dir() / "dollar1-shapes.xppen-deco01v2.hidrec");
+  // The generated default recording (the project's descriptor with physical units, on a
+  // VID:PID the table does not know): every clone.
+  const std::string rec = quoted(penshape::test::recordings_dir() / "generated-shapes.hidrec");
   const Result d = run("hid describe --json " + rec);
   ASSERT_EQ(d.exit_code, 0) << d.out;
-  for (const char* key :
-       {"\"family\":\"xppen\"", "\"physical_size_known\":true", "\"width_mm\":254",
-        "\"height_mm\":158.75", "\"size_source\":\"descriptor\""}) {
+  for (const char* key : {"\"family\":\"hid\"", "\"physical_size_known\":true", "\"width_mm\":224",
+                          "\"height_mm\":140", "\"size_source\":\"descriptor\""}) {
     EXPECT_NE(d.out.find(key), std::string::npos) << key << " in " << d.out;
   }
   const Result r = run("replay --local " + rec);
   ASSERT_EQ(r.exit_code, 0) << r.out;
-  EXPECT_NE(r.out.find("# family xppen (layout hid), size 254.0 x 158.8 mm from the descriptor"),
+  EXPECT_NE(r.out.find("# family hid (layout hid), size 224.0 x 140.0 mm from the descriptor"),
             std::string::npos)
       << r.out.substr(0, 400);
 }

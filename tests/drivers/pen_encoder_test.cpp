@@ -1,5 +1,6 @@
-// encode_pen_report is the decoder's inverse: on every pen layout of every shared descriptor,
-// random samples encode and decode back to themselves.
+// encode_pen_report is the decoder's inverse: on every pen layout of every shared descriptor
+// (the shared corpus, when present) and of the project's generated descriptors, random samples
+// encode and decode back to themselves.
 #include "penshape/drivers/pen_encoder.hpp"
 
 #include <gtest/gtest.h>
@@ -16,7 +17,9 @@ namespace {
 TEST(PenEncoder, RoundTripsThroughTheDecoderOnEverySharedPenLayout) {
   std::mt19937 rng(17);
   std::size_t layouts = 0;
-  for (const auto& d : testing::all_shared_descriptors()) {
+  auto descriptors = testing::all_shared_descriptors();
+  for (auto& d : testing::generated_descriptors()) descriptors.push_back(std::move(d));
+  for (const auto& d : descriptors) {
     ParsedDescriptor parsed;
     try {
       parsed = parse_report_descriptor(d.bytes);
@@ -51,8 +54,8 @@ TEST(PenEncoder, RoundTripsThroughTheDecoderOnEverySharedPenLayout) {
       }
     }
   }
-  // Over a hundred pen layouts in the shared corpus; the two bundled descriptors have one each.
-  EXPECT_GE(layouts, test::shared_path("hid") ? 100U : 2U);
+  // Over a hundred pen layouts in the shared corpus; the generated descriptors have one each.
+  EXPECT_GE(layouts, test::shared_path("hid") ? 100U : testing::generated_descriptors().size());
 }
 
 } // namespace

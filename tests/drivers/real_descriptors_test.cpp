@@ -27,7 +27,7 @@ struct OtdFacts {
 
 std::multimap<std::pair<int, int>, OtdFacts> load_otd() {
   std::multimap<std::pair<int, int>, OtdFacts> out;
-  std::ifstream in(hid_dir() / "opentabletdriver/configs_summary.tsv");
+  std::ifstream in(*hid_dir() / "opentabletdriver/configs_summary.tsv");
   std::string line;
   std::getline(in, line); // header
   while (std::getline(in, line)) {
@@ -56,7 +56,7 @@ struct WacomFacts {
 // libwacom: DeviceMatch=bus|vid|pid[|name|fw];… and Width/Height in millimetres.
 std::multimap<std::pair<int, int>, WacomFacts> load_libwacom() {
   std::multimap<std::pair<int, int>, WacomFacts> out;
-  for (const auto& e : std::filesystem::directory_iterator(hid_dir() / "libwacom/tablets")) {
+  for (const auto& e : std::filesystem::directory_iterator(*hid_dir() / "libwacom/tablets")) {
     std::ifstream in(e.path());
     std::string line;
     std::vector<std::pair<int, int>> ids;

@@ -1,7 +1,8 @@
 // Real report streams decode to plausible pen samples: the Wacom PenPartner hid-recorder capture
-// and every DIGImend usbhid-dump (firmware and vendor mode). Plausible = coordinates within the
-// maxima, pressure varying in the pressure dumps, tilt in the tilt dumps, buttons in the button
-// dumps, and strokes cut from them.
+// and every DIGImend usbhid-dump (firmware and vendor mode), from the shared corpus (skipped
+// without it); and the generated recording in the PenPartner's protocol, in every clone. Plausible
+// = coordinates within the maxima, pressure varying in the pressure dumps, tilt in the tilt dumps,
+// buttons in the button dumps, and strokes cut from them.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -47,8 +48,24 @@ Summary summarise(const ReplayResult& r) {
   return s;
 }
 
-TEST(RealStreams, WacomPenPartnerCapture) {
+TEST(RealStreams, GeneratedGraphireRecording) {
   const auto rec = read_hid_recorder(read_file(testing::penpartner_capture()));
+  EXPECT_EQ(rec.identity.vendor_id, 0x056a);
+  EXPECT_EQ(rec.identity.product_id, 0x0061);
+  const auto r = replay(rec, ReplaySpeed::kAsFastAsPossible);
+  EXPECT_EQ(r.tablet.x_max, 3250);
+  EXPECT_EQ(r.tablet.pressure_max, 255U);
+  EXPECT_EQ(r.layout, "wacom-graphire");
+  EXPECT_EQ(r.size_source, SizeSource::kTable);
+  const Summary s = summarise(r);
+  EXPECT_EQ(r.counters.pen_samples, rec.events.size());
+  EXPECT_GT(s.pressures.size(), 20U) << "pressure must vary";
+  EXPECT_EQ(r.strokes.size(), 3U); // recordings/generated-graphire.expected
+}
+
+TEST(RealStreams, WacomPenPartnerCapture) {
+  PENSHAPE_SHARED_OR_SKIP(capture, testing::kPenPartnerCapture);
+  const auto rec = read_hid_recorder(read_file(capture));
   EXPECT_EQ(rec.identity.vendor_id, 0x056a);
   EXPECT_EQ(rec.identity.product_id, 0x0061);
   ASSERT_EQ(rec.events.size(), 874U);

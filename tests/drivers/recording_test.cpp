@@ -13,10 +13,12 @@
 namespace penshape::drivers {
 namespace {
 
+// The generated recording in the PenPartner's protocol (every clone).
 std::string penpartner_text() { return read_file(testing::penpartner_capture()); }
 
 TEST(Recording, ReadsTheRealHidRecorderCapture) {
-  const Recording r = read_hid_recorder(penpartner_text());
+  PENSHAPE_SHARED_OR_SKIP(capture, testing::kPenPartnerCapture);
+  const Recording r = read_hid_recorder(read_file(capture));
   EXPECT_EQ(r.identity.name, "WACOM FT-0203-UV1.4-2");
   EXPECT_EQ(r.phys, "usb-0000:00:1d.0-1.8/input0");
   EXPECT_EQ(r.identity.bus, Bus::kUsb);
@@ -30,6 +32,17 @@ TEST(Recording, ReadsTheRealHidRecorderCapture) {
   ASSERT_NE(pen, r.events.end());
   EXPECT_EQ(pen->bytes,
             (std::vector<std::uint8_t>{0x02, 0x90, 0xb7, 0x04, 0xb9, 0x03, 0x06, 0x00}));
+}
+
+TEST(Recording, ReadsTheGeneratedRecording) {
+  const Recording r = read_hid_recorder(penpartner_text());
+  EXPECT_EQ(r.identity.name, "penshape generated pen (vendor-graphire)");
+  EXPECT_EQ(r.identity.bus, Bus::kUsb);
+  EXPECT_EQ(r.identity.vendor_id, 0x056a);
+  ASSERT_FALSE(r.events.empty());
+  EXPECT_EQ(r.events[1].time_us, 8000); // 125 Hz
+  EXPECT_EQ(r.events[0].bytes.size(), 8U);
+  EXPECT_EQ(r.events[0].bytes[0], 0x02);
 }
 
 TEST(Recording, WriteThenReadIsIdentical) {

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "descriptor_gen.hpp"
 #include "penshape/drivers/recording.hpp"
 
 namespace penshape::drivers::testing {
@@ -60,7 +61,9 @@ void read_collection(const std::filesystem::path& file, const std::string& rel,
 
 std::vector<NamedDescriptor> all_shared_descriptors() {
   std::vector<NamedDescriptor> out;
-  const auto whd = hid_dir() / "wacom-hid-descriptors";
+  const auto hid = hid_dir();
+  if (!hid) return out;
+  const auto whd = *hid / "wacom-hid-descriptors";
   std::vector<std::filesystem::path> bins;
   for (const auto& e : std::filesystem::recursive_directory_iterator(whd)) {
     if (e.is_regular_file() && e.path().string().ends_with(".hid.bin")) bins.push_back(e.path());
@@ -68,7 +71,7 @@ std::vector<NamedDescriptor> all_shared_descriptors() {
   std::sort(bins.begin(), bins.end());
   for (const auto& p : bins) {
     NamedDescriptor d;
-    d.source = std::filesystem::relative(p, hid_dir()).string();
+    d.source = std::filesystem::relative(p, *hid).string();
     // File names are <bus>:<VID>:<PID>.<n>.hid.bin
     const std::string name = p.filename().string();
     d.vendor_id = hex16(name.substr(5, 4));
@@ -77,10 +80,17 @@ std::vector<NamedDescriptor> all_shared_descriptors() {
     d.bytes.assign(bytes.begin(), bytes.end());
     out.push_back(std::move(d));
   }
-  read_collection(hid_dir() / "hid-tools-tests/tablet_rdescs.hidrec.txt",
+  read_collection(*hid / "hid-tools-tests/tablet_rdescs.hidrec.txt",
                   "hid-tools-tests/tablet_rdescs.hidrec.txt", out);
-  read_collection(hid_dir() / "udev-hid-bpf/huion_xppen_rdescs.hidrec.txt",
+  read_collection(*hid / "udev-hid-bpf/huion_xppen_rdescs.hidrec.txt",
                   "udev-hid-bpf/huion_xppen_rdescs.hidrec.txt", out);
+  return out;
+}
+
+std::vector<NamedDescriptor> generated_descriptors() {
+  std::vector<NamedDescriptor> out;
+  for (const auto& spec : gen::pen_descriptor_specs())
+    out.push_back({"generated/" + spec.name, 0x1209, 0x7e50, gen::pen_descriptor(spec)});
   return out;
 }
 

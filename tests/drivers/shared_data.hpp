@@ -1,8 +1,9 @@
 #pragma once
-// Test helpers: the HID data (the shared corpus's hid/ when present, else the descriptors bundled
-// in tests/data/hid), the bundled PenPartner capture, and the descriptor collections.
+// Test helpers: the HID data of the shared corpus (hid/, absent from a bare clone), the project's
+// generated descriptors and recordings, and the descriptor collections.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,11 +11,17 @@
 
 namespace penshape::drivers::testing {
 
-inline std::filesystem::path hid_dir() { return test::collection_dir("hid"); }
+// The shared corpus's hid/ folder; nullopt in a bare clone.
+inline std::optional<std::filesystem::path> hid_dir() { return test::shared_path("hid"); }
 
-// The real Wacom PenPartner hid-recorder capture, bundled in recordings/ (ODbL).
+// The real Wacom PenPartner hid-recorder capture, in the shared corpus.
+inline constexpr const char* kPenPartnerCapture =
+    "hid/wacom-hid-descriptors/Wacom_PenPartner/hidrecord.txt";
+
+// A generated recording in the PenPartner's protocol (Wacom Graphire, 056a:0061, the drivers'
+// table: 3250 x 2320, ~125 Hz): three strokes, made by recordings/generate.sh.
 inline std::filesystem::path penpartner_capture() {
-  return test::recordings_dir() / "wacom-penpartner.hidrec";
+  return test::recordings_dir() / "generated-graphire.hidrec";
 }
 
 struct NamedDescriptor {
@@ -25,7 +32,10 @@ struct NamedDescriptor {
 };
 
 // Every descriptor under hid_dir(): the .hid.bin files of wacom-hid-descriptors and each R: line
-// of the hid-tools and udev-hid-bpf collections (absent from the bundled subset).
+// of the hid-tools and udev-hid-bpf collections; none without the shared corpus.
 std::vector<NamedDescriptor> all_shared_descriptors();
+// The pen descriptors the project writes (tests/support/gen/descriptor_gen.hpp), as
+// "generated/<name>" with VID:PID 1209:7e50.
+std::vector<NamedDescriptor> generated_descriptors();
 
 } // namespace penshape::drivers::testing

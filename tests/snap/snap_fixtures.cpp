@@ -11,6 +11,10 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <unistd.h>
+
+#include "stroke_files.hpp"
+#include "stroke_gen.hpp"
 #include "test_data.hpp"
 
 namespace penshape::test {
@@ -82,7 +86,17 @@ std::string calligraphy_d(const std::vector<PointD>& p, double w) {
   return d;
 }
 
-std::string gesture(const char* name) { return (bundled_data_dir() / "snap" / name).string(); }
+// A hand-drawn stroke made by the stroke generator (tests/support/gen): `kind` drawn with `seed`,
+// written as a $1 gesture log in this process's temporary folder.
+std::string gesture(const char* kind, std::uint64_t seed) {
+  gen::StrokeGenerator generator(seed);
+  const gen::Drawing d = generator.draw(kind);
+  const auto path =
+      std::filesystem::temp_directory_path() /
+      ("penshape_snap_" + std::to_string(::getpid()) + "_" + kind + std::to_string(seed) + ".xml");
+  std::ofstream(path) << gen::to_dollar_xml(d.strokes.front(), kind, 1, gen::Speed::kMedium);
+  return path.string();
+}
 
 std::string points_text(const std::vector<PointD>& p) {
   std::string s;
@@ -100,7 +114,14 @@ std::vector<PointD> placed_gesture(const std::string& file, double x0, double y0
   if (!doc.load_file(file.c_str())) throw std::runtime_error("cannot read gesture " + file);
   std::vector<PointD> pts;
   for (const auto& p : doc.child("Gesture").children("Point")) {
-    pts.push_back({p.attribute("X").as_double(), p.attribute("Y").as_double()});
+    const PointD q{p.attribute("X").as_double(), p.attribute("Y").as_double()};
+    // A pixel repeated at once or after one step back (a pause, a jitter) gives a Calligraphy
+    // outline no direction there: drop it.
+    const auto same = [&](std::size_t back) {
+      return pts.size() >= back && q.x == pts[pts.size() - back].x &&
+             q.y == pts[pts.size() - back].y;
+    };
+    if (!same(1) && !same(2)) pts.push_back(q);
   }
   double minx = 1e300, miny = 1e300, maxx = -1e300, maxy = -1e300;
   for (const PointD& p : pts) {
@@ -114,11 +135,11 @@ std::vector<PointD> placed_gesture(const std::string& file, double x0, double y0
 
 Fixture inkscape_fixture() {
   Fixture f;
-  const auto circle = placed_gesture(gesture("s02-medium-circle03.xml"), 40, 40, 120);
-  const auto rect = placed_gesture(gesture("s03-medium-rectangle04.xml"), 220, 40, 150);
-  const auto pig = placed_gesture(gesture("s05-medium-pigtail02.xml"), 440, 40, 120);
-  const auto tri = placed_gesture(gesture("s04-medium-triangle05.xml"), 40, 260, 140);
-  const auto notes = placed_gesture(gesture("s06-medium-circle07.xml"), 320, 380, 110);
+  const auto circle = placed_gesture(gesture("circle", 1), 40, 40, 120);
+  const auto rect = placed_gesture(gesture("rectangle", 4), 220, 40, 150);
+  const auto pig = placed_gesture(gesture("spiral", 2), 440, 40, 120);
+  const auto tri = placed_gesture(gesture("triangle", 5), 40, 260, 140);
+  const auto notes = placed_gesture(gesture("circle", 7), 320, 380, 110);
   std::vector<PointD> notes_page;
   for (const PointD& p : notes) notes_page.push_back({p.x, p.y + 20});
   f.strokes = {{"pencil-circle", circle, 8, "circle"},
@@ -179,10 +200,10 @@ Fixture inkscape_fixture() {
 
 Fixture xopp_fixture() {
   Fixture f;
-  const auto circle = placed_gesture(gesture("s02-medium-circle03.xml"), 60, 60, 110);
-  const auto rect = placed_gesture(gesture("s03-medium-rectangle04.xml"), 260, 60, 130);
-  const auto pig = placed_gesture(gesture("s05-medium-pigtail02.xml"), 480, 60, 110);
-  const auto notes = placed_gesture(gesture("s06-medium-circle07.xml"), 320, 340, 110);
+  const auto circle = placed_gesture(gesture("circle", 1), 60, 60, 110);
+  const auto rect = placed_gesture(gesture("rectangle", 4), 260, 60, 130);
+  const auto pig = placed_gesture(gesture("spiral", 2), 480, 60, 110);
+  const auto notes = placed_gesture(gesture("circle", 7), 320, 340, 110);
   // Pressure: widths between 60% and 100% of the tool's 5.67 pt (very thick), as a pen pressed
   // unevenly.
   std::string widths = "5.67";

@@ -1,7 +1,8 @@
 #pragma once
-// Test drawings for `penshape snap`, made from real human strokes (the $1 gesture logs bundled in
-// tests/data/snap): an Inkscape SVG with Pencil paths and a Calligraphy outline, and a Xournal++
-// document with pressure widths; both also hold text, an image and a second layer.
+// Test drawings for `penshape snap`, made from hand-drawn strokes of the project's stroke
+// generator (tests/support/gen: circles, a rectangle, a triangle, a spiral): an Inkscape SVG with
+// Pencil paths and a Calligraphy outline, and a Xournal++ document with pressure widths; both also
+// hold text, an image and a second layer.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -10,7 +11,7 @@
 
 namespace penshape::test {
 
-// A bundled gesture's points, scaled so the larger side of its box is `size`, its box's corner
+// A gesture file's points, scaled so the larger side of its box is `size`, its box's corner
 // at (x0, y0).
 std::vector<PointD> placed_gesture(const std::string& file, double x0, double y0, double size);
 

@@ -1,5 +1,5 @@
-// Where test data lives: bundled folders by the compile-time source path, the shared corpus by
-// one override (environment first, then the CMake cache variable).
+// Where test data lives: project-made folders by the compile-time source path, the shared corpus
+// by one override (environment first, then the CMake cache variable).
 #include "test_data.hpp"
 
 #include <cstdlib>
@@ -37,15 +37,7 @@ std::optional<std::filesystem::path> shared_path(const std::string& relative) {
 }
 
 std::optional<std::filesystem::path> data_path(const std::string& relative) {
-  std::filesystem::path bundled = bundled_data_dir() / relative;
-  std::error_code ec;
-  if (std::filesystem::exists(bundled, ec)) return bundled;
   return shared_path(relative);
-}
-
-std::filesystem::path collection_dir(const std::string& relative) {
-  if (auto shared = shared_path(relative)) return *shared;
-  return bundled_data_dir() / relative;
 }
 
 std::string read_file(const std::filesystem::path& path) {
@@ -63,7 +55,8 @@ namespace penshape::test {
 std::string data_file(const std::string& relative) {
   const auto path = data_path(relative);
   if (!path)
-    throw std::runtime_error(relative + " is neither in tests/data nor in the shared corpus");
+    throw std::runtime_error(relative + " is not in the shared corpus (" + shared_data_location() +
+                             "); outside data is never bundled in the repository");
   return path->string();
 }
 

@@ -1,6 +1,7 @@
-// The fast engine's certified answers against independent checks: the authors' demo cases,
-// dense-sampling verification of every YES solution, consistency of answers across eps and
-// delta on random and real polygons, and clear errors at the documented limits.
+// The fast engine's certified answers against independent checks: the authors' demo cases and
+// the shared polygons (shared corpus, skipped without it), generated polygons of known answer
+// and the generated suite, dense-sampling verification of every YES solution, consistency of
+// answers across eps and delta on random polygons, and clear errors at the documented limits.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -9,12 +10,14 @@
 
 #include "engine/engines.hpp"
 #include "fast_test_support.hpp"
+#include "penshape/core/polygon_io.hpp"
+#include "polygon_gen.hpp"
+#include "test_data.hpp"
 
 namespace penshape {
 namespace {
 
 using fast_test::check_yes;
-using fast_test::data_dir;
 using fast_test::read_polygon_file;
 
 DeconstructParams params_of(const Rational& r, const Rational& eps, const Rational& delta) {
@@ -24,6 +27,15 @@ DeconstructParams params_of(const Rational& r, const Rational& eps, const Ration
   p.precision = delta;
   return p;
 }
+
+PolygonSet generated(const gen::GenPolygon& g) {
+  PolygonSet q = read_polygon_text(g.text);
+  normalize_orientation(q);
+  return q;
+}
+
+// A generated YES case at r = 1, eps = 1/10: a convex hexagon offset by 1 (chords within 0.02).
+PolygonSet rounded_hexagon() { return generated(gen::rounded_convex(8, 6, 10.0, 1.0, 0.02).q); }
 
 DeconstructResult decide(const PolygonSet& q, const DeconstructParams& p) {
   return detail::decide_fast(q, p, {}, {});
@@ -55,7 +67,8 @@ void expect_yes_solution_checks(const PolygonSet& q, const DeconstructResult& re
 }
 
 TEST(FastEngine, AuthorsDemoCases) {
-  const std::string dir = data_dir() + "/polygons/";
+  PENSHAPE_SHARED_OR_SKIP(polygons, "polygons");
+  const std::string dir = polygons.string() + "/";
   const Rational r = 1, eps(1, 10);
   for (const char* name : {"authors_demo_1_01_work1.txt", "authors_demo_1_01_work2.txt"}) {
     const PolygonSet q = read_polygon_file(dir + name);
@@ -80,7 +93,7 @@ TEST(FastEngine, AuthorsDemoCases) {
 // sqrt(2) (r - eps) <= r + eps, i.e. eps >= eps_hat = (sqrt(2) - 1)^2 r ≈ 0.1716 r.
 // With delta below |eps - eps_hat| / 2 the answer is decided (Theorems 11, 13).
 TEST(FastEngine, SquareMatchesTheClosedFormThreshold) {
-  const PolygonSet q = read_polygon_file(data_dir() + "/polygons/authors_demo_1_01_fail1.txt");
+  const PolygonSet q{{{{{0, 0}, {5, 0}, {5, 5}, {0, 5}}, {}}}}; // the demo's fail1 square
   const double eps_hat = (std::sqrt(2.0) - 1.0) * (std::sqrt(2.0) - 1.0);
   for (const int hundredths : {10, 14, 16}) {
     const Rational eps(hundredths, 100);
@@ -95,29 +108,46 @@ TEST(FastEngine, SquareMatchesTheClosedFormThreshold) {
   }
 }
 
-TEST(FastEngine, SharedPolygonsAtThreeRadii) {
-  for (const auto& entry : std::filesystem::directory_iterator(data_dir() + "/polygons")) {
-    if (entry.path().extension() != ".txt") continue;
-    const PolygonSet q = read_polygon_file(entry.path().string());
-    ASSERT_FALSE(q.empty()) << entry.path();
-    const Rational w = width(q);
-    for (const int div : {10, 30, 50}) {
-      const Rational r = w / div, eps = r / 2;
-      const std::string what = entry.path().filename().string() + " r=w/" + std::to_string(div);
-      const DeconstructResult res = decide(q, params_of(r, eps, eps / 8));
-      if (res.answer == Answer::kYes) expect_yes_solution_checks(q, res, what);
-      EXPECT_TRUE(res.answer != Answer::kYes || res.solution.vertex_count() >= 3) << what;
-    }
+void expect_checked_at_three_radii(const PolygonSet& q, const std::string& name) {
+  ASSERT_FALSE(q.empty()) << name;
+  const Rational w = width(q);
+  for (const int div : {10, 30, 50}) {
+    const Rational r = w / div, eps = r / 2;
+    const std::string what = name + " r=w/" + std::to_string(div);
+    const DeconstructResult res = decide(q, params_of(r, eps, eps / 8));
+    if (res.answer == Answer::kYes) expect_yes_solution_checks(q, res, what);
+    EXPECT_TRUE(res.answer != Answer::kYes || res.solution.vertex_count() >= 3) << what;
   }
 }
 
-TEST(FastEngine, KazakhstanIsApproximableAtHalfRadius) {
-  const PolygonSet q = read_polygon_file(data_dir() + "/polygons/kazakhstan_paper1881.txt");
+TEST(FastEngine, SharedPolygonsAtThreeRadii) {
+  PENSHAPE_SHARED_OR_SKIP(dir, "polygons");
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (entry.path().extension() != ".txt") continue;
+    expect_checked_at_three_radii(read_polygon_file(entry.path().string()),
+                                  entry.path().filename().string());
+  }
+}
+
+TEST(FastEngine, GeneratedPolygonsAtThreeRadii) {
+  for (const auto& g : gen::polygon_suite(23)) expect_checked_at_three_radii(generated(g), g.name);
+}
+
+void expect_approximable_at_half_radius(const PolygonSet& q, const std::string& what) {
   const Rational r = width(q) / 30, eps = r / 2;
   const DeconstructResult res = decide(q, params_of(r, eps, eps / 8));
-  expect_yes_solution_checks(q, res, "kazakhstan w/30");
+  expect_yes_solution_checks(q, res, what);
   // Far fewer vertices than the input (the point of deconstruction).
   EXPECT_LT(res.solution.vertex_count(), q.vertex_count() / 2);
+}
+
+TEST(FastEngine, KazakhstanIsApproximableAtHalfRadius) {
+  PENSHAPE_SHARED_OR_SKIP(file, "polygons/kazakhstan_paper1881.txt");
+  expect_approximable_at_half_radius(read_polygon_file(file.string()), "kazakhstan w/30");
+}
+
+TEST(FastEngine, GeneratedCountryIsApproximableAtHalfRadius) {
+  expect_approximable_at_half_radius(generated(gen::country(4, 1881, 1000.0)), "country w/30");
 }
 
 // Certified answers never contradict: YES at eps1 and NO at eps2 > eps1 is impossible, and
@@ -163,8 +193,8 @@ TEST(FastEngine, RandomPolygonsAnswersConsistentAcrossEpsAndDelta) {
 }
 
 TEST(FastEngine, HugeCoordinatesWithSmallExtentWork) {
-  // A far-away copy of the work1 square: the grid frame translates it.
-  PolygonSet q = read_polygon_file(data_dir() + "/polygons/authors_demo_1_01_work1.txt");
+  // A far-away copy of a YES case: the grid frame translates it.
+  PolygonSet q = rounded_hexagon();
   const Rational shift(mpz_class("1000000000000"), 1);
   for (auto& v : q.polygons[0].outer) v.x += shift;
   const DeconstructResult res = decide(q, params_of(1, Rational(1, 10), Rational(1, 80)));
@@ -172,7 +202,7 @@ TEST(FastEngine, HugeCoordinatesWithSmallExtentWork) {
 }
 
 TEST(FastEngine, ExtentTooLargeForPrecisionIsAClearError) {
-  PolygonSet q = read_polygon_file(data_dir() + "/polygons/authors_demo_1_01_work1.txt");
+  PolygonSet q = rounded_hexagon();
   for (auto& v : q.polygons[0].outer) v.x *= Rational(mpz_class("1000000000"), 1);
   try {
     decide(q, params_of(1, Rational(1, 10), Rational(1, 80)));
@@ -184,7 +214,7 @@ TEST(FastEngine, ExtentTooLargeForPrecisionIsAClearError) {
 }
 
 TEST(FastEngine, TinyPrecisionHitsTheDiskLimit) {
-  const PolygonSet q = read_polygon_file(data_dir() + "/polygons/authors_demo_1_01_work1.txt");
+  const PolygonSet q = rounded_hexagon();
   DeconstructLimits limits;
   limits.max_disk_vertices = 64;
   try {
@@ -196,7 +226,7 @@ TEST(FastEngine, TinyPrecisionHitsTheDiskLimit) {
 }
 
 TEST(FastEngine, CancelHookStopsTheComputation) {
-  const PolygonSet q = read_polygon_file(data_dir() + "/polygons/kazakhstan_paper1881.txt");
+  const PolygonSet q = generated(gen::country(4, 1881, 1000.0));
   const Rational r = width(q) / 30;
   EXPECT_THROW(detail::decide_fast(q, params_of(r, r / 2, r / 16), [] { return true; }, {}),
                Cancelled);

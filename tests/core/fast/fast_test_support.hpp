@@ -58,9 +58,6 @@ inline PolygonSet read_polygon_file(const std::string& path) {
   return set;
 }
 
-// The data root (the shared corpus when present, else tests/data, which bundles every polygon).
-inline std::string data_dir() { return test::collection_dir("").string(); }
-
 // A star-shaped (hence simple) random polygon around the origin, counterclockwise.
 inline PolygonSet random_star_polygon(std::mt19937& rng, int n, double radius) {
   std::uniform_real_distribution<double> angle(0.0, 2.0 * M_PI), scale(0.4, 1.0);
