@@ -126,7 +126,7 @@ int main(int argc, char** argv) {
   }
   const auto decoded = penshape::drivers::replay(
       penshape::drivers::load_recording_file(std::string(PENSHAPE_SOURCE_DIR) +
-                                             "/recordings/dollar1-shapes.xppen-deco01v2.hidrec"),
+                                             "/recordings/generated-shapes.hidrec"),
       penshape::drivers::ReplaySpeed::kAsFastAsPossible);
   const std::string dir = penshape::bench::make_scratch_dir();
   auto player = std::make_shared<HoldPlayer>(decoded.tablet);

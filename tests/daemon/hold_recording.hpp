@@ -91,16 +91,16 @@ inline void write_strokes(const std::filesystem::path& file,
   if (!out) throw std::runtime_error("cannot write " + file.string());
 }
 
-// `penshape synthesize-recording` of the strokes as the bundled XP-Pen tablet's reports, at
-// `rate_hz`, `mm_per_unit` millimetres per stroke unit, four strokes a row.
+// `penshape synthesize-recording` of the strokes as the reports of the tablet in the generated
+// default recording, at `rate_hz`, `mm_per_unit` millimetres per stroke unit, four strokes a row.
 inline void synthesize(const std::filesystem::path& strokes, const std::filesystem::path& out,
                        int rate_hz, double mm_per_unit) {
   const std::string command =
       std::string("'") + PENSHAPE_BINARY_DIR + "/clients/penshape' synthesize-recording" +
       " --descriptor '" + PENSHAPE_SOURCE_DIR +
-      "/recordings/dollar1-shapes.xppen-deco01v2.hidrec' --vid 28bd --pid 0905 --columns 4" +
-      " --rate " + std::to_string(rate_hz) + " --mm-per-unit " + std::to_string(mm_per_unit) +
-      " --out '" + out.string() + "' '" + strokes.string() + "' > /dev/null";
+      "/recordings/generated-shapes.hidrec' --vid 1209 --pid 7e57 --columns 4" + " --rate " +
+      std::to_string(rate_hz) + " --mm-per-unit " + std::to_string(mm_per_unit) + " --out '" +
+      out.string() + "' '" + strokes.string() + "' > /dev/null";
   if (std::system(command.c_str()) != 0) throw std::runtime_error("failed: " + command);
 }
 
