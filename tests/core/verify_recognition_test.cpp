@@ -92,6 +92,18 @@ TEST(VerifyRecognition, RotatedEllipseAndArc) {
   EXPECT_NE(status(arc, claim(ShapeClass::kArc, a, 0.4)), VerifyStatus::kVerified);
 }
 
+TEST(VerifyRecognition, DotIsItsPoint) {
+  ShapeParams p;
+  p.vertices = {{5, 5}};
+  // A tap: every sample at the dot's point.
+  EXPECT_EQ(status({{5, 5}, {5, 5}}, claim(ShapeClass::kDot, p, 1e-3)), VerifyStatus::kVerified);
+  // A stroke 3 long is not a dot within 1.
+  EXPECT_EQ(status({{5, 5}, {8, 5}}, claim(ShapeClass::kDot, p, 1.0)), VerifyStatus::kRefuted);
+  ShapeParams two;
+  two.vertices = {{5, 5}, {6, 5}};
+  EXPECT_THROW(verify_recognition({{{5, 5}}}, claim(ShapeClass::kDot, two, 1.0)), InvalidInput);
+}
+
 TEST(VerifyRecognition, PolygonsAndPolylinesExactly) {
   // The stroke is the rectangle's outline itself: any eps > 0 verifies.
   const std::vector<PointD> rect{{0, 0}, {80, 0}, {80, 40}, {0, 40}, {0, 0}};

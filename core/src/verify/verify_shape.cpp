@@ -230,6 +230,9 @@ ShapeChains shape_chains(ShapeClass shape, const ShapeParams& params, double tar
     case ShapeClass::kArrow:
     case ShapeClass::kDoubleArrow:
       return arrow_chains(shape, params);
+    case ShapeClass::kDot: // the point itself, as a zero-length chain
+      if (params.vertices.size() != 1) throw InvalidInput("clean shape: a dot has 1 vertex");
+      return {{{params.vertices[0], params.vertices[0]}}, 0.0};
     case ShapeClass::kSegment:
     case ShapeClass::kPolyline:
       if (params.vertices.size() < 2) throw InvalidInput("clean shape: needs 2 or more vertices");
