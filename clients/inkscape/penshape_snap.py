@@ -36,6 +36,7 @@ class PenshapeSnap(inkex.EffectExtension):
         pars.add_argument("--pen_radius", type=float, default=0.0)
         pars.add_argument("--tolerance", type=float, default=0.0)
         pars.add_argument("--grouping", type=inkex.Boolean, default=True)
+        pars.add_argument("--snap_writing", type=inkex.Boolean, default=False)
 
     def scope_args(self):
         ids = [i for i in self.svg.selection.ids if i]
@@ -64,6 +65,8 @@ class PenshapeSnap(inkex.EffectExtension):
             args += ["--tolerance", repr(self.options.tolerance)]
         if not self.options.grouping:
             args.append("--no-group")
+        if self.options.snap_writing:
+            args.append("--snap-writing")
         with tempfile.TemporaryDirectory(prefix="penshape-snap-") as tmp:
             src, dst = os.path.join(tmp, "in.svg"), os.path.join(tmp, "out.svg")
             self.document.write(src)

@@ -24,7 +24,8 @@ namespace {
 
 constexpr const char* kHelp =
     "usage: penshape snap [--json] [--quiet] [--pen-radius R] [--tolerance E] [--no-group]\n"
-    "                     [--ids ID,...] [--layer ID] [--local | --socket S | --address A]\n"
+    "                     [--snap-writing] [--ids ID,...] [--layer ID]\n"
+    "                     [--local | --socket S | --address A]\n"
     "                     IN OUT | --in-place IN\n"
     "\n"
     "Replaces each pen stroke of a drawing that the recognizer certifies by its clean shape, as a\n"
@@ -59,6 +60,11 @@ constexpr const char* kHelp =
     "                  document order is drawing order; all of the group's strokes are replaced;\n"
     "                  only strokes of the same tool, colour, markers and width (within 10%)\n"
     "                  are grouped)\n"
+    "  --snap-writing  snap handwriting too (default: each page's strokes are judged writing or\n"
+    "                  drawing in drawing order, as `penshape recognize` does, with the page's\n"
+    "                  unit in mm: SVG user units from the root's width and viewBox, else CSS\n"
+    "                  pixels; .xopp points; writing strokes are never snapped nor grouped and\n"
+    "                  stay byte for byte); for drawings with no writing on them\n"
     "  --ids ID,...    only these elements (a group or layer: what it holds); SVG only\n"
     "  --layer ID      only this layer; SVG only\n"
     "  --in-place      write the result over IN (IN is never overwritten otherwise)\n"
@@ -66,8 +72,9 @@ constexpr const char* kHelp =
     "  --json          one object per replacement: elements (stable locators: the id, else an\n"
     "                  XPath-like path such as \"/xournal/page[1]/layer[1]/stroke[3]\"; several\n"
     "                  for a group), where, class, params, tidy (the tidy-up constraints\n"
-    "                  applied), pen_radius, certificate; then one {\"warning\": ...} per\n"
-    "                  element left as drawn\n"
+    "                  applied), pen_radius, certificate, intent; then one object per stroke\n"
+    "                  read: element, where, intent (\"writing\" or \"drawing\"), writing_score\n"
+    "                  (P(writing)); then one {\"warning\": ...} per element left as drawn\n"
     "  --quiet         no progress bar and no warnings (the bar shows on stderr when a run\n"
     "                  takes over a second, never with --json)\n"
     "  --socket PATH   penshaped's unix socket (default: $XDG_RUNTIME_DIR/penshape.sock)\n"
@@ -147,7 +154,16 @@ std::string json_line(const snap::Replacement& rep) {
   json.key("certified").boolean(c.certified).key("bound").number(c.bound);
   json.key("epsilon").number(c.epsilon).key("pen_radius").number(c.pen_radius);
   json.key("method").string(c.method).end_object();
+  json.key("intent").string(to_string(rep.intent));
   json.end_object();
+  return json.str();
+}
+
+std::string json_line(const snap::StrokeIntent& s) {
+  JsonWriter json;
+  json.begin_object().key("element").string(s.element).key("where").string(s.where);
+  json.key("intent").string(to_string(s.decision.intent));
+  json.key("writing_score").number(s.decision.writing_score).end_object();
   return json.str();
 }
 
@@ -202,6 +218,19 @@ void report_warnings(const std::vector<std::string>& warnings, bool json, bool q
   }
 }
 
+// How many strokes were judged writing and left as drawn (a line on stderr).
+void report_writing(const snap::SnapResult& result, bool snap_writing, bool quiet) {
+  std::size_t writing = 0;
+  for (const snap::StrokeIntent& s : result.intents) {
+    writing += s.decision.intent == Intent::kWriting ? 1 : 0;
+  }
+  if (writing == 0 || snap_writing || quiet) return;
+  std::fprintf(stderr,
+               "penshape snap: %zu stroke(s) judged writing, left as drawn (--snap-writing "
+               "snaps them too)\n",
+               writing);
+}
+
 struct Paths {
   std::string in, out;
 };
@@ -233,6 +262,7 @@ snap::SnapOptions options_from(const ParsedArgs& parsed) {
     options.settings.tolerance = *e;
   }
   options.settings.group = !parsed.flag("--no-group");
+  options.settings.snap_writing = parsed.flag("--snap-writing");
   if (const auto ids = parsed.value("--ids")) options.scope.ids = split_ids(*ids);
   if (const auto layer = parsed.value("--layer")) options.scope.layer = *layer;
   return options;
@@ -242,7 +272,8 @@ snap::SnapOptions options_from(const ParsedArgs& parsed) {
 
 int run_snap(std::span<const std::string_view> args) {
   const ParsedArgs parsed(
-      args, live_arg_spec({.flags = {"--json", "--quiet", "--no-group", "--in-place", "--local"},
+      args, live_arg_spec({.flags = {"--json", "--quiet", "--no-group", "--in-place", "--local",
+                                     "--snap-writing"},
                            .options = {"--pen-radius", "--tolerance", "--ids", "--layer"}}));
   if (parsed.flag("--help")) {
     std::puts(kHelp);
@@ -290,9 +321,13 @@ int run_snap(std::span<const std::string_view> args) {
                  to_string(rep.recognition.shape), c.bound, c.epsilon, c.pen_radius,
                  c.method.c_str());
   }
+  if (json) {
+    for (const snap::StrokeIntent& s : result.intents) std::puts(json_line(s).c_str());
+  }
   report_warnings(result.warnings, json, quiet);
   std::fprintf(stderr, "penshape snap: %zu of %zu strokes snapped (%s) -> %s\n",
                result.replacements.size(), result.strokes, engine.c_str(), paths.out.c_str());
+  report_writing(result, options.settings.snap_writing, quiet);
   return kExitOk;
 }
 

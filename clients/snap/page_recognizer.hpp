@@ -15,9 +15,10 @@
 namespace penshape::snap {
 
 struct SnapSettings {
-  double pen_radius = 0.0; // page units; <= 0: each stroke's own (median) radius
-  double tolerance = 0.0;  // page units; <= 0: the recognizer's rule (recognize.hpp)
-  bool group = true;       // may strokes be grouped into one shape
+  double pen_radius = 0.0;   // page units; <= 0: each stroke's own (median) radius
+  double tolerance = 0.0;    // page units; <= 0: the recognizer's rule (recognize.hpp)
+  bool group = true;         // may strokes be grouped into one shape
+  bool snap_writing = false; // snap writing strokes too (default: left as drawn, page_intent.hpp)
 };
 
 // One answer: the strokes it covers (indices into the page, ascending) and their recognition.

@@ -33,25 +33,56 @@ struct Splice {
   std::vector<Edit> edits;
 };
 
-// The snaps of the strokes read, each group's elements as edits of the text.
+// Each page's writing/drawing decisions, recorded in the result for --json.
+template <typename Stroke>
+std::vector<std::vector<IntentDecision>> intents_of(
+    const std::vector<std::vector<Stroke>>& pages,
+    const std::vector<std::vector<const InkStroke*>>& inks, double mm_per_unit,
+    SnapResult& result) {
+  std::vector<std::vector<IntentDecision>> intents;
+  for (std::size_t p = 0; p < pages.size(); ++p) {
+    intents.push_back(page_intents(inks[p], mm_per_unit));
+    for (std::size_t i = 0; i < pages[p].size(); ++i) {
+      const InkStroke& ink = pages[p][i].ink;
+      result.intents.push_back({ink.locator, ink.where, intents.back()[i]});
+    }
+  }
+  return intents;
+}
+
+// The replacement of one snap; writing when every stroke it covers is writing.
+template <typename Stroke>
+Replacement replacement_of(const PageSnap& ps, const std::vector<std::vector<Stroke>>& pages,
+                           const std::vector<std::vector<IntentDecision>>& intents) {
+  Replacement rep{{}, {}, ps.snap.recognition, ps.pen_radius, ps.snap.tidy, Intent::kWriting};
+  for (const std::size_t i : ps.strokes) {
+    const Stroke& s = pages[ps.page][i];
+    rep.elements.push_back(s.ink.locator);
+    rep.where.push_back(s.ink.where);
+    if (intents[ps.page][i].intent == Intent::kDrawing) rep.intent = Intent::kDrawing;
+  }
+  return rep;
+}
+
+// The snaps of the strokes read (mm_per_unit: the page unit's length), each group's elements as
+// edits of the text.
 template <typename Stroke, typename Replace>
-void snap_pages(const std::vector<std::vector<Stroke>>& pages, const SnapOptions& options,
-                const PageRecognizer& recognize_page, SnapResult& result, Splice& splice,
-                Replace&& replace) {
+void snap_pages(const std::vector<std::vector<Stroke>>& pages, double mm_per_unit,
+                const SnapOptions& options, const PageRecognizer& recognize_page,
+                SnapResult& result, Splice& splice, Replace&& replace) {
   std::vector<Edit>& edits = splice.edits;
   std::vector<std::vector<const InkStroke*>> inks(pages.size());
   for (std::size_t p = 0; p < pages.size(); ++p) {
     result.strokes += pages[p].size();
     for (const Stroke& s : pages[p]) inks[p].push_back(&s.ink);
   }
-  for (PageSnap& ps : recognize_pages(inks, options.settings, recognize_page, options.progress,
-                                      options.threads, result.warnings)) {
-    Replacement rep{{}, {}, ps.snap.recognition, ps.pen_radius, ps.snap.tidy};
+  const auto intents = intents_of(pages, inks, mm_per_unit, result);
+  for (PageSnap& ps : recognize_pages(inks, intents, options.settings, recognize_page,
+                                      options.progress, options.threads, result.warnings)) {
+    Replacement rep = replacement_of(ps, pages, intents);
     for (const std::size_t i : ps.strokes) {
-      const Stroke& s = pages[ps.page][i];
-      rep.elements.push_back(s.ink.locator);
-      rep.where.push_back(s.ink.where);
-      edits.push_back(splice.by_offsets ? element_range(splice.text, s.element) : Edit{});
+      edits.push_back(splice.by_offsets ? element_range(splice.text, pages[ps.page][i].element)
+                                        : Edit{});
     }
     // The group's first element becomes the shape; the others go (from the tree too, for a
     // document saved whole).
@@ -72,8 +103,8 @@ void snap_svg(pugi::xml_document& doc, const std::string& text, const SnapOption
   for (SvgPage& page : read_svg_strokes(doc, text, options.scope, result.warnings)) {
     pages.push_back(std::move(page.strokes));
   }
-  snap_pages(pages, options, recognize_page, result, splice,
-             [](const SvgStroke& s, const Recognition& r, double pen) {
+  snap_pages(pages, svg_mm_per_unit(doc.document_element()), options, recognize_page, result,
+             splice, [](const SvgStroke& s, const Recognition& r, double pen) {
                return replace_svg_stroke(s, r, pen);
              });
 }
@@ -88,7 +119,7 @@ void snap_xopp(pugi::xml_document& doc, const std::string& text, const SnapOptio
   for (XoppLayer& layer : read_xopp_strokes(doc, text, result.warnings)) {
     pages.push_back(std::move(layer.strokes));
   }
-  snap_pages(pages, options, recognize_page, result, splice,
+  snap_pages(pages, kXoppMmPerUnit, options, recognize_page, result, splice,
              [](const XoppStroke& s, const Recognition& r, double pen) {
                replace_xopp_stroke(s, r, pen);
                return s.element;

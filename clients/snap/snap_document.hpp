@@ -4,10 +4,12 @@
 // each page recognized in drawing order (pages in parallel), and the snapped ones replaced by
 // splicing the new elements into the original text: every byte outside a replaced element
 // (whitespace, comments, entities, other attributes) comes out as it came in, and a document with
-// nothing snapped comes out byte for byte.
+// nothing snapped comes out byte for byte. Writing strokes (page_intent.hpp) are left as drawn
+// unless SnapSettings::snap_writing.
 #include <string>
 #include <vector>
 
+#include "page_intent.hpp"
 #include "page_recognizer.hpp"
 #include "snap_pages.hpp"
 #include "svg_strokes.hpp"
@@ -21,8 +23,16 @@ struct Replacement {
   std::vector<std::string> elements; // stable locators: the id, else "/svg[1]/g[2]/path[1]"
   std::vector<std::string> where;    // as in messages, with line numbers
   Recognition recognition;
-  double pen_radius = 0.0;       // the clean shape's
-  std::vector<std::string> tidy; // tidy-up constraints applied ("axis", "right_angles", ...)
+  double pen_radius = 0.0;          // the clean shape's
+  std::vector<std::string> tidy;    // tidy-up constraints applied ("axis", "right_angles", ...)
+  Intent intent = Intent::kDrawing; // writing (only with snap_writing) if all its strokes are
+};
+
+// Every stroke read, with its writing/drawing decision.
+struct StrokeIntent {
+  std::string element; // stable locator
+  std::string where;
+  IntentDecision decision;
 };
 
 struct SnapResult {
@@ -31,6 +41,7 @@ struct SnapResult {
   std::vector<Replacement> replacements;
   std::vector<std::string> warnings; // elements left as drawn because snap cannot read them
   std::size_t strokes = 0;           // strokes read
+  std::vector<StrokeIntent> intents; // one per stroke read, pages in order, drawing order
 };
 
 struct SnapOptions {

@@ -32,13 +32,23 @@ bool same_style(const InkStroke& a, const InkStroke& b) {
   return a.style == b.style && std::abs(ra - rb) <= kGroupWidthTolerance * std::max(ra, rb);
 }
 
-std::vector<Run> runs_of(const std::vector<std::vector<const InkStroke*>>& pages) {
+// Whether stroke i of page p is writing to be left as drawn.
+bool left_as_writing(const std::vector<std::vector<IntentDecision>>& intents, std::size_t p,
+                     std::size_t i, const SnapSettings& settings) {
+  return !settings.snap_writing && p < intents.size() && i < intents[p].size() &&
+         intents[p][i].intent == Intent::kWriting;
+}
+
+std::vector<Run> runs_of(const std::vector<std::vector<const InkStroke*>>& pages,
+                         const std::vector<std::vector<IntentDecision>>& intents,
+                         const SnapSettings& settings) {
   std::vector<Run> runs;
   for (std::size_t p = 0; p < pages.size(); ++p) {
     const InkStroke* last = nullptr;
     for (std::size_t i = 0; i < pages[p].size(); ++i) {
       const InkStroke& s = *pages[p][i];
-      if (!has_distinct_points(s)) { // a dot: nothing to snap, and it parts its neighbours
+      // A dot has nothing to snap, and writing stays as written: either parts its neighbours.
+      if (!has_distinct_points(s) || left_as_writing(intents, p, i, settings)) {
         last = nullptr;
         continue;
       }
@@ -90,11 +100,12 @@ bool consecutive(const std::vector<std::size_t>& v) {
 } // namespace
 
 std::vector<PageSnap> recognize_pages(const std::vector<std::vector<const InkStroke*>>& pages,
+                                      const std::vector<std::vector<IntentDecision>>& intents,
                                       const SnapSettings& settings,
                                       const PageRecognizer& recognize_page,
                                       const Progress& progress, std::size_t threads,
                                       std::vector<std::string>& warnings) {
-  std::vector<Run> runs = runs_of(pages);
+  std::vector<Run> runs = runs_of(pages, intents, settings);
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
   recognize_runs(runs, pages, settings, recognize_page, progress, threads);
   std::vector<PageSnap> out;
