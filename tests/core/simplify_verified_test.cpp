@@ -35,7 +35,7 @@ SimplifyResult simplify_and_verify(const PolygonSet& q, const Rational& r) {
   const DeconstructResult raw = deconstruct(q, params);
   EXPECT_EQ(raw.answer, Answer::kYes);
   if (raw.answer != Answer::kYes) return {};
-  const SimplifyResult s = simplify_solution(q, raw);
+  SimplifyResult s = simplify_solution(q, raw);
   const DeconstructionClaim claim{
       Answer::kYes,      r,           s.result.params.tolerance, s.result.params.precision,
       s.result.solution, std::nullopt};
