@@ -1,6 +1,8 @@
 // Issue-5 figures, each beside its baseline in the same run:
 //   1. kazakhstan_paper1881, eps = r/2, delta = eps/8: |P| of the simplified solution vs the raw
 //      Π̂ of the same engine (target: at most 1/4), both certified;
+//      and the regression row: at r = w/30 the simplified |P| beside its target (<= 91, what an
+//      earlier release reached); above it the row says FAIL and the bench exits 1;
 //   2. ε̂ search on kazakhstan_paper1881 to Δ = r/100: time and decider calls;
 //   3. convex inputs of 100..10,000 vertices: CONVEXDECIDE vs the general fast decider (ratio,
 //      and the convex path's time per vertex, which stays flat when it grows linearly).
@@ -86,6 +88,10 @@ penshape::PolygonSet convex_input(int n) {
   return q;
 }
 
+// An earlier release simplified KAZ at r = w/30 to 91 vertices; the certificate change of issue
+// 22 lost ground (119) unnoticed, so this row fails when the figure is above it again.
+constexpr std::size_t kKazW30Target = 91;
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -113,6 +119,7 @@ int main(int argc, char** argv) {
     std::printf("%-6s | %-6s | %9s | %10s | %6s | %9s\n", "r", "answer", "raw |P|", "simplified",
                 "ratio", "simplify s");
   }
+  std::size_t kaz_w30 = 0; // simplified |P| at r = w/30 (0: not YES)
   for (const int div : {10, 30, 50}) {
     const Rational r = w / div;
     const penshape::DeconstructParams p{r, r / 2, r / 16, penshape::EngineKind::kFast};
@@ -127,6 +134,7 @@ int main(int argc, char** argv) {
       raw_n = s.raw_vertices;
       simp_n = s.solution_vertices;
     }
+    if (div == 30) kaz_w30 = simp_n;
     const double ratio = raw_n > 0 ? static_cast<double>(simp_n) / static_cast<double>(raw_n) : 0;
     if (json) {
       std::printf(
@@ -137,6 +145,17 @@ int main(int argc, char** argv) {
       std::printf("w/%-4d | %-6s | %9zu | %10zu | %6.3f | %9.3f\n", div,
                   penshape::to_string(raw.answer), raw_n, simp_n, ratio, secs);
     }
+  }
+
+  const bool kaz_ok = kaz_w30 > 0 && kaz_w30 <= kKazW30Target;
+  if (json) {
+    std::printf(
+        "{\"case\":\"simplify_target\",\"r\":\"w/30\",\"solution_vertices\":%zu,"
+        "\"target\":%zu,\"ok\":%s}\n",
+        kaz_w30, kKazW30Target, kaz_ok ? "true" : "false");
+  } else {
+    std::printf("KAZ r=w/30 simplified |P| = %zu (target <= %zu): %s\n", kaz_w30, kKazW30Target,
+                kaz_ok ? "ok" : "FAIL");
   }
 
   // 2. ε̂ search.
@@ -203,5 +222,5 @@ int main(int argc, char** argv) {
                   penshape::to_string(gen.answer), gen_s * 1e3, gen_s / conv_s);
     }
   }
-  return 0;
+  return kaz_ok ? 0 : 1;
 }

@@ -1,0 +1,66 @@
+// Simplified YES solutions are accepted by the independent verifier (penshape/core/verify.hpp):
+// on a generated non-convex polygon (every clone) and on the paper's Kazakhstan polygon at
+// r = w/30, ε = r/2, δ = ε/8, where the simplification must also reach at most 91 vertices
+// (issue 26; skipped without the shared corpus).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "penshape/core/deconstruct.hpp"
+#include "penshape/core/polygon_io.hpp"
+#include "penshape/core/simplify.hpp"
+#include "penshape/core/verify.hpp"
+#include "test_data.hpp"
+
+namespace penshape {
+namespace {
+
+// A wavy ring of n vertices on a 1/64 grid: radius 10 ± 2 with 7 lobes, so it is not convex.
+PolygonSet wavy_ring(int n) {
+  Ring ring;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * std::numbers::pi * i / n;
+    const double rad = 10 + 2 * std::sin(7 * a);
+    ring.push_back({exact(std::round(rad * std::cos(a) * 64) / 64),
+                    exact(std::round(rad * std::sin(a) * 64) / 64)});
+  }
+  return {{{std::move(ring), {}}}};
+}
+
+// Decides with the fast engine, simplifies, and has the verifier check the simplified claim.
+SimplifyResult simplify_and_verify(const PolygonSet& q, const Rational& r) {
+  const DeconstructParams params{r, r / 2, r / 16, EngineKind::kFast};
+  const DeconstructResult raw = deconstruct(q, params);
+  EXPECT_EQ(raw.answer, Answer::kYes);
+  if (raw.answer != Answer::kYes) return {};
+  SimplifyResult s = simplify_solution(q, raw);
+  const DeconstructionClaim claim{
+      Answer::kYes,      r,           s.result.params.tolerance, s.result.params.precision,
+      s.result.solution, std::nullopt};
+  const VerifyReport rep = verify_deconstruction(q, claim);
+  EXPECT_EQ(rep.status, VerifyStatus::kVerified) << rep.message;
+  return s;
+}
+
+TEST(SimplifyVerified, GeneratedPolygon) {
+  const PolygonSet q = wavy_ring(400);
+  const SimplifyResult s = simplify_and_verify(q, Rational(1, 2));
+  EXPECT_TRUE(s.simplified);
+  EXPECT_LT(s.solution_vertices, s.raw_vertices);
+}
+
+TEST(SimplifyVerified, KazakhstanAtWidthOver30) {
+  PENSHAPE_SHARED_OR_SKIP(path, "polygons/kazakhstan_paper1881.txt");
+  const PolygonSet q = read_polygon_text(test::read_file(path));
+  const Ring& ring = q.polygons.at(0).outer; // one ring; w is its width in x
+  const auto [lo, hi] = std::minmax_element(
+      ring.begin(), ring.end(), [](const ExactPoint& a, const ExactPoint& b) { return a.x < b.x; });
+  const SimplifyResult s = simplify_and_verify(q, (hi->x - lo->x) / 30);
+  EXPECT_TRUE(s.simplified);
+  EXPECT_LE(s.solution_vertices, 91U) << "raw " << s.raw_vertices;
+}
+
+} // namespace
+} // namespace penshape
