@@ -41,7 +41,8 @@ int BoardModel::server_shape(std::uint64_t server_id, const v1::Shape& shape) {
   s->answered = true;
   s->held.reset();
   if (shape.kind() == v1::SHAPE_KIND_NONE || shape.kind() == v1::SHAPE_KIND_UNSPECIFIED) {
-    s->note = "no shape";
+    // Writing stays as drawn (the daemon leaves it alone unless snap_writing).
+    s->note = shape.intent() == v1::INTENT_WRITING ? "writing" : "no shape";
   } else {
     s->shape = shape;
     s->snapped = true;

@@ -134,6 +134,9 @@ std::string shape_kind_name(v1::ShapeKind kind) {
 
 std::string shape_summary(const v1::Shape& shape) {
   std::string out = shape_kind_name(shape.kind());
+  if (shape.intent() == v1::INTENT_WRITING) { // left as drawn (unless snap_writing)
+    out += format(" (writing, P %.2f)", shape.writing_score());
+  }
   if (shape.kind() == v1::SHAPE_KIND_NONE || shape.kind() == v1::SHAPE_KIND_UNSPECIFIED) {
     return out;
   }
@@ -203,6 +206,10 @@ void write_shape_json(JsonWriter& json, const v1::Shape& shape) {
   json.begin_object();
   json.key("kind").string(shape_kind_name(shape.kind()));
   json.key("confidence").number(shape.confidence());
+  if (shape.intent() != v1::INTENT_UNSPECIFIED) { // absent when the daemon made no decision
+    json.key("intent").string(shape.intent() == v1::INTENT_WRITING ? "writing" : "drawing");
+    json.key("writing_score").number(shape.writing_score());
+  }
   switch (shape.params_case()) {
     case v1::Shape::kVertices:
       json.key("vertices").begin_array();

@@ -38,6 +38,8 @@ constexpr const char* kHelp =
     "                     (device_attached, device_detached, stroke_started, samples,\n"
     "                     stroke_finished, preview, shape, deconstructed, dropped) and the\n"
     "                     type's fields (stroke_id; samples; shape {kind, confidence,\n"
+    "                     intent (writing | drawing: writing is left as drawn unless\n"
+    "                     snap_writing), writing_score,\n"
     "                     vertices | circle | ellipse | arc | arrow {tail, tip, barbs,\n"
     "                     tail_barbs, head_angle_rad, shaft_bulge, shaft_bends},\n"
     "                     hausdorff_bound, tolerance,\n"

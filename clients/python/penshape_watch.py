@@ -59,6 +59,9 @@ def shape_record(device_id, stroke_id, shape):
     if shape.HasField("certificate"):
         record["hausdorff_bound_mm"] = shape.certificate.hausdorff_bound.approx
         record["tolerance_mm"] = shape.certificate.tolerance.approx
+    if shape.intent != shape_pb2.INTENT_UNSPECIFIED:  # writing is left as drawn
+        record["intent"] = shape_pb2.Intent.Name(shape.intent)[len("INTENT_"):].lower()
+        record["writing_score"] = shape.writing_score
     return record
 
 
@@ -95,6 +98,8 @@ def describe(record):
         text = "follows the pen: " + text
     elif trigger == "release":
         text = ("released, adjusted: " if record.get("adjusted") else "released: ") + text
+    if record.get("intent") == "writing":
+        text += " (writing, left as drawn unless snap_writing)"
     if "vertices" in record:
         text += " " + " ".join("(%.2f, %.2f)" % tuple(v) for v in record["vertices"])
     if "radius" in record:

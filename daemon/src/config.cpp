@@ -78,6 +78,10 @@ bool apply_settings_key(const LineContext& at, const std::string& key, std::stri
     }
     return true;
   }
+  if (key == "snap_writing") {
+    update.snap_writing = parse_bool(at, key, value);
+    return true;
+  }
   using Field = std::optional<double> PenSettingsUpdate::*;
   const std::map<std::string, Field> fields = {
       {"pen_radius_mm", &PenSettingsUpdate::pen_radius_mm},

@@ -20,6 +20,11 @@ GroupedStrokeAnalysis GroupHistory::add(const Stroke& stroke, bool with_ink,
   return session_->add(stroke, with_ink, cancel, offload);
 }
 
+GroupedStrokeAnalysis GroupHistory::add_held(const Stroke& partial, const CancelHook& cancel,
+                                             const InkOffload& offload) {
+  return session_->add_held(partial, cancel, offload);
+}
+
 GroupAnswer GroupHistory::take(const GroupedStrokeAnalysis& r, std::uint64_t stroke_id) {
   GroupAnswer out;
   if (r.grouped) stroke_ids_[session_->stroke_count() - 1] = stroke_id;

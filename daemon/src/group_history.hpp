@@ -36,6 +36,9 @@ class GroupHistory {
   // The stroke added to the session (ensure() first). Throws as StrokeGroupSession::add.
   GroupedStrokeAnalysis add(const Stroke& stroke, bool with_ink, const CancelHook& cancel,
                             const InkOffload& offload = {});
+  // The stroke so far of a hold added to the session (StrokeGroupSession::add_held).
+  GroupedStrokeAnalysis add_held(const Stroke& partial, const CancelHook& cancel,
+                                 const InkOffload& offload);
   // After add(), before r's shape is moved out (it reads its kind): the strokes and earlier
   // answers `r` replaces (those answers are then forgotten: never superseded twice).
   GroupAnswer take(const GroupedStrokeAnalysis& r, std::uint64_t stroke_id);

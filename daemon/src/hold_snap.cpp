@@ -12,7 +12,7 @@ std::optional<v1::LiveEvent> snap_at_hold(GroupHistory& history, const Stroke& p
                                           const CancelHook& cancel, const InkOffload& offload) {
   if (history.session() == nullptr) return std::nullopt; // the analyzer does not group
   GroupHistory trial = history.copy();
-  GroupedStrokeAnalysis result = trial.add(partial, true, cancel, offload);
+  GroupedStrokeAnalysis result = trial.add_held(partial, cancel, offload); // a hold: drawing
   const v1::ShapeKind kind = result.analysis.shape.kind();
   if (kind == v1::SHAPE_KIND_NONE || kind == v1::SHAPE_KIND_UNSPECIFIED) return std::nullopt;
   const GroupAnswer answer = trial.take(result, partial.id);

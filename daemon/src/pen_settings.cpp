@@ -40,6 +40,7 @@ PenSettings apply(PenSettings base, const PenSettingsUpdate& update) {
   if (update.snap_trigger) base.snap_trigger = *update.snap_trigger;
   if (update.hold_ms) base.hold_ms = *update.hold_ms;
   if (update.hold_radius_mm) base.hold_radius_mm = *update.hold_radius_mm;
+  if (update.snap_writing) base.snap_writing = *update.snap_writing;
   return base;
 }
 
@@ -109,6 +110,7 @@ PenSettings SettingsStore::update(const std::string& key, const PenSettingsUpdat
   if (update.snap_trigger) own.snap_trigger = update.snap_trigger;
   if (update.hold_ms) own.hold_ms = update.hold_ms;
   if (update.hold_radius_mm) own.hold_radius_mm = update.hold_radius_mm;
+  if (update.snap_writing) own.snap_writing = update.snap_writing;
   return apply(defaults_, own);
 }
 

@@ -297,6 +297,7 @@ PenSettingsUpdate settings_update_from_proto(const v1::PenSettings& message,
   if (message.has_snap_trigger()) update.snap_trigger = snap_trigger_from_proto(message, field);
   if (message.has_hold_ms()) update.hold_ms = message.hold_ms();
   if (message.has_hold_radius_mm()) update.hold_radius_mm = message.hold_radius_mm();
+  if (message.has_snap_writing()) update.snap_writing = message.snap_writing();
   try {
     validate(update, field);
   } catch (const SettingsError& e) {
@@ -369,6 +370,7 @@ void to_proto(const PenSettings& settings, v1::PenSettings* out) {
   out->set_snap_trigger(to_proto(settings.snap_trigger));
   out->set_hold_ms(static_cast<std::uint32_t>(settings.hold_ms));
   out->set_hold_radius_mm(settings.hold_radius_mm);
+  out->set_snap_writing(settings.snap_writing);
 }
 
 v1::Answer to_proto(Answer answer) {

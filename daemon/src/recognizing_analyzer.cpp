@@ -1,5 +1,6 @@
 #include "penshape/daemon/recognizing_analyzer.hpp"
 
+#include <deque>
 #include <functional>
 #include <map>
 #include <memory>
@@ -7,6 +8,8 @@
 #include <optional>
 
 #include "penshape/core/ink.hpp"
+#include "penshape/core/intent.hpp"
+#include "penshape/core/intent_grouper.hpp"
 #include "penshape/core/live_recognizer.hpp"
 #include "penshape/daemon/build_once.hpp"
 #include "penshape/daemon/ink_analyzer.hpp"
@@ -89,6 +92,24 @@ void add_alternatives(const Recognition& r, std::vector<v1::Shape>* out) {
   }
 }
 
+// The decision on the answer (a writing stroke snapped only with snap_writing).
+void set_intent(const IntentDecision& d, v1::Shape* shape) {
+  shape->set_intent(d.intent == Intent::kWriting ? v1::INTENT_WRITING : v1::INTENT_DRAWING);
+  shape->set_writing_score(d.writing_score);
+}
+
+// A group's intent: writing only when each of its strokes is (a grouped answer is drawing
+// unless snap_writing grouped writing); its score the strokes' mean P(writing).
+IntentDecision answer_intent(const std::vector<IntentDecision>& intents,
+                             const std::vector<std::size_t>& strokes) {
+  IntentDecision out{Intent::kWriting, 0.0};
+  for (const std::size_t i : strokes) {
+    if (intents.at(i).intent != Intent::kWriting) out.intent = Intent::kDrawing;
+    out.writing_score += intents.at(i).writing_score / static_cast<double>(strokes.size());
+  }
+  return out;
+}
+
 // One tablet's live grouping: core's StrokeGrouper on the strokes' paths in mm; a lone stroke is
 // certified on its ink polygon (as analyze() does), a group on the union of its strokes' paths.
 class GroupSession final : public StrokeGroupSession {
@@ -114,18 +135,57 @@ class GroupSession final : public StrokeGroupSession {
   using StrokeGroupSession::add;
   GroupedStrokeAnalysis add(const Stroke& stroke, bool with_ink, const CancelHook& cancel,
                             const InkOffload& offload) override {
+    return add_stroke(stroke, with_ink, false, cancel, offload);
+  }
+  GroupedStrokeAnalysis add_held(const Stroke& stroke, const CancelHook& cancel,
+                                 const InkOffload& offload) override {
+    return add_stroke(stroke, true, true, cancel, offload);
+  }
+
+  [[nodiscard]] std::unique_ptr<StrokeGroupSession> clone() const override {
+    return std::make_unique<GroupSession>(*this);
+  }
+  [[nodiscard]] std::size_t stroke_count() const override { return grouper_.stroke_count(); }
+  [[nodiscard]] std::size_t oldest_retained_stroke() const override {
+    return grouper_.oldest_retained_stroke();
+  }
+  [[nodiscard]] std::size_t retained_stroke_count() const override {
+    return grouper_.retained_stroke_count();
+  }
+
+ private:
+  // The new stroke's intent, decided with the recent strokes before it as its context (which it
+  // then joins). A held stroke is drawing: the hold asks for a snap.
+  IntentDecision decide(const std::vector<StrokePoint>& path, bool held) {
+    IntentDecision d;
+    if (!held) {
+      std::vector<IntentStroke> page(recent_.begin(), recent_.end());
+      page.emplace_back(path);
+      d = decide_intent(page).back();
+    }
+    recent_.push_back(path);
+    if (recent_.size() > kIntentContext) recent_.pop_front();
+    return d;
+  }
+
+  GroupedStrokeAnalysis add_stroke(const Stroke& stroke, bool with_ink, bool held,
+                                   const CancelHook& cancel, const InkOffload& offload) {
     GroupedStrokeAnalysis out;
     if (with_ink && finished_) finished_(stroke.id);
     StrokeInput input;
     input.samples = path_mm(stroke);
     input.pen_radius = settings_.pen_radius_mm;
     if (cancel && cancel()) throw Cancelled();
-    if (input.samples.empty()) { // no tip-down sample: nothing to recognize (a dot is a shape)
+    const bool no_path = input.samples.empty(); // no tip-down sample: nothing to recognize
+    const IntentDecision intent = no_path ? IntentDecision{} : decide(input.samples, held);
+    const bool writing = intent.intent == Intent::kWriting && !settings_.snap_writing;
+    if (no_path || writing) { // alone, as drawn (a dot is a shape)
       if (with_ink) {
         const InkOptions options = ink_options_for(settings_);
         out.analysis.ink_polygon = build_ink(ink_samples(stroke, options), options).proto;
       }
       out.analysis.shape.set_kind(v1::SHAPE_KIND_NONE);
+      if (!no_path) set_intent(intent, &out.analysis.shape);
       return out;
     }
     // Q is built on another worker while the path is fitted, or here once the recognizer needs it.
@@ -146,6 +206,7 @@ class GroupSession final : public StrokeGroupSession {
     grouper_.forget_unreachable(); // memory follows the grouping window, however long the session
     const Recognition& r = u.shape.recognition;
     out.analysis.shape = to_proto_shape(r.shape, r.params, r.clean, r.certificate, r.confidence);
+    set_intent(intent, &out.analysis.shape);
     add_alternatives(r, &out.analysis.alternatives);
     out.grouped = true;
     out.answer = u.shape.id;
@@ -155,21 +216,12 @@ class GroupSession final : public StrokeGroupSession {
     return out;
   }
 
-  [[nodiscard]] std::unique_ptr<StrokeGroupSession> clone() const override {
-    return std::make_unique<GroupSession>(*this);
-  }
-  [[nodiscard]] std::size_t stroke_count() const override { return grouper_.stroke_count(); }
-  [[nodiscard]] std::size_t oldest_retained_stroke() const override {
-    return grouper_.oldest_retained_stroke();
-  }
-  [[nodiscard]] std::size_t retained_stroke_count() const override {
-    return grouper_.retained_stroke_count();
-  }
-
- private:
+  // Strokes before a new one that form its intent context (core's default).
+  static constexpr std::size_t kIntentContext = 24;
   PenSettings settings_;
   StrokeGrouper grouper_;
   std::function<void(std::uint64_t)> finished_;
+  std::deque<std::vector<StrokePoint>> recent_; // the last strokes' paths in mm (intent context)
 };
 
 class RecognizingAnalyzer final : public StrokeAnalyzer,
@@ -222,12 +274,19 @@ class RecognizingAnalyzer final : public StrokeAnalyzer,
       in.pen_radius = settings.pen_radius_mm;
       inputs.push_back(std::move(in));
     }
+    // The strokes are the page: each stroke's intent has the strokes around it as context.
+    std::vector<IntentStroke> page;
+    for (const StrokeInput& in : inputs) page.emplace_back(in.samples);
+    const std::vector<IntentDecision> intents = decide_intent(page);
+    IntentGrouper grouper(grouping, config_for(settings), settings.snap_writing);
+    for (std::size_t i = 0; i < inputs.size(); ++i) (void)grouper.add(inputs[i], intents[i].intent);
     std::vector<v1::RecognizedGroup> out;
-    for (const GroupedShape& g : recognize_strokes(inputs, grouping, config_for(settings))) {
+    for (const GroupedShape& g : grouper.shapes()) {
       v1::RecognizedGroup group;
       const Recognition& r = g.recognition;
       *group.mutable_shape() =
           to_proto_shape(r.shape, r.params, r.clean, r.certificate, r.confidence);
+      set_intent(answer_intent(intents, g.strokes), group.mutable_shape());
       for (const std::size_t i : g.strokes) group.add_strokes(static_cast<std::uint32_t>(i));
       for (const std::string& t : g.tidy) group.add_tidy(t);
       for (const Candidate& c : r.alternatives) {

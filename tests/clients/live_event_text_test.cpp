@@ -1,5 +1,6 @@
 // `penshape watch` prints what a grouped answer replaces: the strokes whose ink it replaces and
-// the earlier shapes it supersedes, in its text line and its JSON object, and a preview's group.
+// the earlier shapes it supersedes, in its text line and its JSON object, and a preview's group;
+// and a stroke's intent (writing is named, a shape without a decision says nothing).
 #include "live_event_text.hpp"
 
 #include <gtest/gtest.h>
@@ -123,6 +124,34 @@ TEST(LiveEventText, HoldSnapsNameTheirTriggerAndHold) {
   json = penshape::cli::event_json(event);
   EXPECT_NE(json.find("\"trigger\":\"pen_up\""), std::string::npos) << json;
   EXPECT_EQ(json.find("\"hold\""), std::string::npos) << json;
+}
+
+} // namespace
+
+namespace {
+
+v1::LiveEvent writing_stroke() {
+  v1::LiveEvent event;
+  event.set_device_id("hidraw3");
+  v1::Shape* shape = event.mutable_shape()->mutable_shape();
+  event.mutable_shape()->set_stroke_id(6);
+  shape->set_kind(v1::SHAPE_KIND_NONE);
+  shape->set_intent(v1::INTENT_WRITING);
+  shape->set_writing_score(0.875);
+  return event;
+}
+
+TEST(LiveEventText, WritingIsNamedInTextAndJson) {
+  const std::string line = penshape::cli::event_line(writing_stroke());
+  EXPECT_NE(line.find("stroke 6 is freeform (writing, P 0.88)"), std::string::npos) << line;
+  const std::string json = penshape::cli::event_json(writing_stroke());
+  EXPECT_NE(json.find("\"intent\":\"writing\""), std::string::npos) << json;
+  EXPECT_NE(json.find("\"writing_score\":0.875"), std::string::npos) << json;
+  v1::LiveEvent drawing = rectangle_upgrade();
+  drawing.mutable_shape()->mutable_shape()->set_intent(v1::INTENT_DRAWING);
+  EXPECT_NE(penshape::cli::event_json(drawing).find("\"intent\":\"drawing\""), std::string::npos);
+  EXPECT_EQ(penshape::cli::event_json(rectangle_upgrade()).find("\"intent\""), std::string::npos)
+      << "no decision made: no intent";
 }
 
 } // namespace

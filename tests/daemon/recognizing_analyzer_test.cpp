@@ -118,6 +118,7 @@ TEST(RecognizingAnalyzer, GroupsAShaftAndItsHeadIntoOneArrow) {
   const auto analyzer = make_recognizing_analyzer();
   PenSettings settings;
   settings.pen_radius_mm = 0.5;
+  settings.snap_writing = true; // grouping and dots alone (a dot is writing: intent_e2e_test)
   const std::vector<v1::RecognizedGroup> groups =
       analyzer->recognize_group(strokes, settings, GroupingConfig{});
   ASSERT_EQ(groups.size(), 2u);
@@ -150,6 +151,7 @@ TEST(RecognizingAnalyzer, GroupSessionMemoryFollowsTheWindow) {
   const auto analyzer = make_recognizing_analyzer();
   PenSettings settings;
   settings.pen_radius_mm = 0.5;
+  settings.snap_writing = true; // 200 small strokes in rows: writing, never grouped, else
   GroupingConfig grouping;
   grouping.max_strokes = 4;
   const auto session = analyzer->group_session(settings, grouping);

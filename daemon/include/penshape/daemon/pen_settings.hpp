@@ -23,6 +23,8 @@ struct PenSettings {
   SnapTrigger snap_trigger = SnapTrigger::kBoth;
   double hold_ms = 500;        // in [100, 10000]
   double hold_radius_mm = 1.0; // in [0.01, 10]
+  // Writing strokes are recognized too (off: writing is left as drawn; a hold is always drawing).
+  bool snap_writing = false;
   friend bool operator==(const PenSettings&, const PenSettings&) = default;
 };
 
@@ -34,6 +36,7 @@ struct PenSettingsUpdate {
   std::optional<SnapTrigger> snap_trigger;
   std::optional<double> hold_ms;
   std::optional<double> hold_radius_mm;
+  std::optional<bool> snap_writing;
 };
 
 // Thrown for a value out of range; the message names the field (prefixed by `field_prefix`).

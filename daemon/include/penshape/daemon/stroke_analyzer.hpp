@@ -48,8 +48,10 @@ struct InkOffload {
 };
 
 // One tablet's grouping of recent strokes (core's StrokeGrouper): strokes are added in drawing
-// order, one at a time; a session is not thread-safe (the pipeline runs one device's strokes in
-// order on one worker at a time). Stroke indices count the strokes added (dots are not added).
+// order, one at a time; a stroke decided to be writing (core's decide_intent on the recent
+// strokes) is answered freeform, never recognized nor grouped, unless the pen's snap_writing; a
+// session is not thread-safe (the pipeline runs one device's strokes in order on one worker at a
+// time). Stroke indices count the strokes added (dots are not added).
 class StrokeGroupSession {
  public:
   virtual ~StrokeGroupSession() = default;
@@ -60,6 +62,12 @@ class StrokeGroupSession {
                                     const InkOffload& offload) = 0;
   GroupedStrokeAnalysis add(const Stroke& stroke, bool with_ink, const CancelHook& cancel) {
     return add(stroke, with_ink, cancel, {});
+  }
+  // The stroke so far of a hold (hold to snap): a hold is an explicit request to snap, so the
+  // stroke is drawing whatever its writing score (add() leaves writing alone).
+  virtual GroupedStrokeAnalysis add_held(const Stroke& stroke, const CancelHook& cancel,
+                                         const InkOffload& offload) {
+    return add(stroke, true, cancel, offload);
   }
   // An independent copy (a preview adds the stroke in progress to a copy).
   [[nodiscard]] virtual std::unique_ptr<StrokeGroupSession> clone() const = 0;
