@@ -1,6 +1,5 @@
 #include "penshape/daemon/recognizing_analyzer.hpp"
 
-#include <algorithm>
 #include <deque>
 #include <functional>
 #include <map>
@@ -75,13 +74,6 @@ std::vector<StrokePoint> path_mm(const Stroke& stroke) {
     if (s.tip) out.push_back(point_mm(s, stroke.tablet));
   }
   return out;
-}
-
-// Every sample at the first one's position: a dot (recognize() answers it as itself).
-bool one_position(const std::vector<StrokePoint>& samples) {
-  return std::all_of(samples.begin(), samples.end(), [&](const StrokePoint& p) {
-    return p.x == samples.front().x && p.y == samples.front().y;
-  });
 }
 
 RecognizerConfig config_for(const PenSettings& settings) {
@@ -187,19 +179,13 @@ class GroupSession final : public StrokeGroupSession {
     const bool no_path = input.samples.empty(); // no tip-down sample: nothing to recognize
     const IntentDecision intent = no_path ? IntentDecision{} : decide(input.samples, held);
     const bool writing = intent.intent == Intent::kWriting && !settings_.snap_writing;
-    if (no_path || writing) { // alone, as drawn
+    if (no_path || writing) { // alone, as drawn (a dot is a shape)
       if (with_ink) {
         const InkOptions options = ink_options_for(settings_);
         out.analysis.ink_polygon = build_ink(ink_samples(stroke, options), options).proto;
       }
       out.analysis.shape.set_kind(v1::SHAPE_KIND_NONE);
-      if (no_path) return out;
-      if (one_position(input.samples)) { // a dot answers itself: it rewrites nothing
-        const Recognition r = recognize(input.samples, config_for(settings_));
-        out.analysis.shape =
-            to_proto_shape(r.shape, r.params, r.clean, r.certificate, r.confidence);
-      }
-      set_intent(intent, &out.analysis.shape);
+      if (!no_path) set_intent(intent, &out.analysis.shape);
       return out;
     }
     // Q is built on another worker while the path is fitted, or here once the recognizer needs it.

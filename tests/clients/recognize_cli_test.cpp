@@ -84,7 +84,10 @@ TEST(RecognizeCli, BadInputNamesFileAndLine) {
   EXPECT_NE(r.out.find(bad_json.string() + ":2:"), std::string::npos) << r.out;
 
   const auto single = write_temp("single.jsonl", "{\"points\":[[5,5,0]]}\n");
-  r = run(quoted(single)); // a dot is a stroke (issue 23), never an error
+  r = run(quoted(single)); // a dot is a stroke (issue 23), never an error: alone it is writing
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("-> freeform (writing)"), std::string::npos) << r.out;
+  r = run("--snap-writing " + quoted(single)); // recognized, it is a dot
   EXPECT_EQ(r.exit_code, 0) << r.out;
   EXPECT_NE(r.out.find("-> dot"), std::string::npos) << r.out;
 

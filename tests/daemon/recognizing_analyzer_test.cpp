@@ -118,7 +118,7 @@ TEST(RecognizingAnalyzer, GroupsAShaftAndItsHeadIntoOneArrow) {
   const auto analyzer = make_recognizing_analyzer();
   PenSettings settings;
   settings.pen_radius_mm = 0.5;
-  settings.snap_writing = true; // grouping mechanics (a lone bar among few strokes may be writing)
+  settings.snap_writing = true; // grouping and dots alone (a dot is writing: intent_e2e_test)
   const std::vector<v1::RecognizedGroup> groups =
       analyzer->recognize_group(strokes, settings, GroupingConfig{});
   ASSERT_EQ(groups.size(), 2u);
@@ -141,13 +141,6 @@ TEST(RecognizingAnalyzer, GroupsAShaftAndItsHeadIntoOneArrow) {
   EXPECT_EQ(dot.shape.kind(), v1::SHAPE_KIND_DOT);
   ASSERT_EQ(dot.shape.vertices().vertices_size(), 1);
   EXPECT_NEAR(dot.shape.vertices().vertices(0).x(), 5, 1e-9);
-  // With writing left alone (the default), a dot is writing and still answers itself.
-  settings.snap_writing = false;
-  const auto writing_dots =
-      analyzer->recognize_group({stroke_from({{1, 1}, {1, 1}})}, settings, {});
-  ASSERT_EQ(writing_dots.size(), 1u);
-  EXPECT_EQ(writing_dots[0].shape().kind(), v1::SHAPE_KIND_DOT);
-  EXPECT_EQ(writing_dots[0].shape().intent(), v1::INTENT_WRITING);
 }
 
 // A live grouping session keeps only the strokes its window can reach: through 200 short strokes

@@ -4,7 +4,6 @@
 #include <algorithm>
 
 #include "penshape/core/deconstruct.hpp"
-#include "recognize/dot.hpp"
 
 namespace penshape {
 namespace {
@@ -17,7 +16,7 @@ std::size_t writing_id(std::size_t k) { return 2 * k + 1; }
 
 IntentGrouper::IntentGrouper(GroupingConfig grouping, RecognizerConfig recognizer,
                              bool snap_writing)
-    : grouper_(grouping, recognizer), recognizer_(recognizer), snap_writing_(snap_writing) {}
+    : grouper_(grouping, recognizer), snap_writing_(snap_writing) {}
 
 GroupUpdate IntentGrouper::add(const StrokeInput& stroke, Intent intent) {
   const std::size_t index = added_;
@@ -27,9 +26,6 @@ GroupUpdate IntentGrouper::add(const StrokeInput& stroke, Intent intent) {
     GroupedShape answer;
     answer.id = writing_id(writing_.size());
     answer.strokes = {index};
-    if (recognize_detail::is_dot(stroke.samples)) {
-      answer.recognition = recognize(stroke.samples, recognizer_);
-    }
     writing_.push_back(answer);
     ++added_;
     return {answer, {}, {}};

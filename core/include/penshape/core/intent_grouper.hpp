@@ -2,8 +2,8 @@
 // Grouping that leaves writing alone: a StrokeGrouper that is given each stroke's intent
 // (intent.hpp). Drawing strokes are grouped and recognized as before; a writing stroke is a
 // freeform answer of its own, is never recognized and never joins a group (unless
-// snap_writing, which turns the filter off). A writing dot (one position: a full stop, the dot
-// of an i) answers `dot`, its own point: that rewrites nothing, and a dot is never an error. What
+// snap_writing, which turns the filter off). A writing dot (a full stop, the dot of an i) is
+// writing like any other stroke: freeform, never an error. What
 // `penshape recognize` uses; the daemon and `penshape snap` can use it the same way (decide_intent
 // on the page or the recent strokes, then add()).
 #include <cstddef>
@@ -35,7 +35,6 @@ class IntentGrouper {
 
  private:
   StrokeGrouper grouper_;
-  RecognizerConfig recognizer_; // for writing dots
   bool snap_writing_;
   std::size_t added_ = 0;
   std::vector<std::size_t> grouped_; // this grouper's index of each stroke grouper_ was given
