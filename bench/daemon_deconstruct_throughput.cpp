@@ -22,6 +22,7 @@
 #include <thread>
 #include <vector>
 
+#include "bench_data.hpp"
 #include "bench_support.hpp"
 #include "penshape/daemon/geometry_backend.hpp"
 #include "penshape/daemon/proto_convert.hpp"
@@ -62,9 +63,9 @@ std::shared_ptr<penshape::daemon::GeometryBackend> backend() {
 }
 
 v1::DeconstructRequest request() {
-  const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR");
-  std::ifstream in(std::string(env != nullptr ? env : PENSHAPE_SHARED_DATA_DIR) +
-                   "/polygons/authors_S.txt");
+  const std::string file = penshape::bench::shared_data_dir() + "/polygons/authors_S.txt";
+  penshape::bench::say_data("daemon_deconstruct_throughput", file);
+  std::ifstream in(file);
   v1::DeconstructRequest r;
   auto* ring = r.mutable_polygon()->add_polygons()->mutable_outer();
   std::string line;

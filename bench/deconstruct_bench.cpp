@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_data.hpp"
 #include "penshape/core/deconstruct.hpp"
 #include "penshape/core/ink.hpp"
 #include "penshape/core/polygon_io.hpp"
@@ -98,8 +99,7 @@ double percentile(std::vector<double> v, double p) {
 int main(int argc, char** argv) {
   bool json = false;
   int runs = 3;
-  const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR");
-  std::string data = env != nullptr && *env ? env : PENSHAPE_SHARED_DATA_DIR;
+  std::string data = penshape::bench::shared_data_dir();
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--json") {
@@ -114,6 +114,8 @@ int main(int argc, char** argv) {
     }
   }
 
+  penshape::bench::say_data("deconstruct_bench",
+                            data + "/polygons/kazakhstan_paper1881.txt (the paper's polygon)");
   const penshape::PolygonSet q =
       penshape::read_polygon_text(read_file(data + "/polygons/kazakhstan_paper1881.txt"));
   Rational lo = q.polygons[0].outer[0].x, hi = lo;

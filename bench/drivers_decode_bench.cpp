@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_data.hpp"
 #include "bench_support.hpp"
 #include "penshape/drivers/pen_pipeline.hpp"
 #include "penshape/drivers/recording.hpp"
@@ -24,10 +25,10 @@ using namespace penshape::drivers;
 using Clock = std::chrono::steady_clock;
 
 std::filesystem::path hid_dir() {
-  if (const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR"); env != nullptr && *env) {
-    return std::filesystem::path(env) / "hid";
-  }
-  return std::filesystem::path(PENSHAPE_SHARED_DATA_DIR) / "hid";
+  const std::filesystem::path dir =
+      std::filesystem::path(penshape::bench::shared_data_dir()) / "hid";
+  penshape::bench::say_data("drivers_decode_bench", dir.string() + " (real tablet data)");
+  return dir;
 }
 
 std::vector<std::vector<std::uint8_t>> reports_of(const std::string& rel) {

@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "bench_data.hpp"
 #include "engine/engines.hpp"
 
 namespace {
@@ -70,9 +71,10 @@ int main(int argc, char** argv) {
     if (a == "--repeats" && i + 1 < argc) repeats = std::max(1, std::atoi(argv[++i]));
     if (a == "--engines" && i + 1 < argc) engines = argv[++i];
   }
-  const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR");
-  const std::string dir = env != nullptr ? env : PENSHAPE_SHARED_DATA_DIR;
-  const penshape::PolygonSet q = read_polygon(dir + "/polygons/kazakhstan_paper1881.txt");
+  const std::string file =
+      penshape::bench::shared_data_dir() + "/polygons/kazakhstan_paper1881.txt";
+  penshape::bench::say_data("fast_engine_bench", file + " (the paper's polygon)");
+  const penshape::PolygonSet q = read_polygon(file);
   penshape::Rational min_x = q.polygons[0].outer[0].x, max_x = min_x;
   for (const auto& p : q.polygons[0].outer) {
     min_x = std::min(min_x, p.x);

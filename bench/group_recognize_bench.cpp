@@ -29,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_data.hpp"
 #include "group_gesture_figures.hpp"
 #include "multi_stroke_cases.hpp"
 #include "penshape/core/group_recognize.hpp"
@@ -170,9 +171,9 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR");
   const std::filesystem::path root =
-      std::filesystem::path(env ? env : PENSHAPE_SHARED_DATA_DIR) / "strokes" / "dollar1";
+      std::filesystem::path(penshape::bench::shared_data_dir()) / "strokes" / "dollar1";
+  penshape::bench::say_data("group_recognize_bench", root.string() + " (real $1 strokes)");
   if (!std::filesystem::exists(root)) {
     std::fprintf(stderr, "group_recognize_bench: no $1 logs under %s\n", root.c_str());
     return 2;

@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_data.hpp"
 #include "penshape/core/live_recognizer.hpp"
 #include "penshape/core/recognize.hpp"
 
@@ -152,8 +153,8 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR");
-  const std::filesystem::path data = env ? env : PENSHAPE_SHARED_DATA_DIR;
+  const std::filesystem::path data = penshape::bench::shared_data_dir();
+  penshape::bench::say_data("live_recognizer_bench", (data / "strokes" / "dollar1").string());
   std::vector<Stroke> logged = load_strokes(data / "strokes" / "dollar1");
   if (logged.empty()) {
     std::fprintf(stderr, "live_recognizer_bench: no $1 logs under %s\n", data.string().c_str());

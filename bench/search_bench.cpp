@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_data.hpp"
 #include "engine/engines.hpp" // detail::decide_fast: the general path, for the comparison
 #include "penshape/core/convex_deconstruct.hpp"
 #include "penshape/core/polygon_io.hpp"
@@ -96,8 +97,7 @@ constexpr std::size_t kKazW30Target = 91;
 
 int main(int argc, char** argv) {
   bool json = false;
-  const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR");
-  std::string data = env != nullptr ? env : PENSHAPE_SHARED_DATA_DIR;
+  std::string data = penshape::bench::shared_data_dir();
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--json") {
@@ -109,6 +109,8 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
+  penshape::bench::say_data("search_bench",
+                            data + "/polygons/kazakhstan_paper1881.txt (the paper's polygon)");
   const penshape::PolygonSet q =
       penshape::read_polygon_text(read_file(data + "/polygons/kazakhstan_paper1881.txt"));
   const Rational w = width_of(q);
