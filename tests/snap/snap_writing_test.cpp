@@ -157,7 +157,9 @@ std::vector<NoteStroke> read_item(const fs::path& file) {
   for (std::string line; std::getline(in, line);) {
     if (line.empty()) continue;
     NoteStroke& s = strokes.emplace_back();
-    for (const auto& p : nlohmann::json::parse(line).at("points")) {
+    // Named: a range-for over a temporary's member would read freed memory.
+    const auto item = nlohmann::json::parse(line);
+    for (const auto& p : item.at("points")) {
       s.points.push_back({p.at(0).get<double>(), p.at(1).get<double>(), 0.0});
     }
   }

@@ -202,7 +202,9 @@ std::vector<Points> read_jsonl(const std::filesystem::path& file) {
   while (std::getline(in, line)) {
     if (line.empty()) continue;
     Points s;
-    for (const auto& p : nlohmann::json::parse(line).at("points")) {
+    // Named: a range-for over a temporary's member would read freed memory.
+    const auto item = nlohmann::json::parse(line);
+    for (const auto& p : item.at("points")) {
       s.push_back({p.at(0).get<double>(), p.at(1).get<double>(), p.at(2).get<double>()});
     }
     strokes.push_back(std::move(s));
