@@ -96,7 +96,9 @@ void add_hook(std::vector<Pt>& path, double length, Rng& rng) {
   if (path.size() < 2) return;
   const Pt a = path[path.size() - 2], b = path.back();
   const double heading = std::atan2(b.y - a.y, b.x - a.x);
-  const double turn = (rng.chance(0.5) ? 1 : -1) * rng.uniform(1.6, 2.6);
+  // Draws named one by one: operands' evaluation order is unspecified, and compilers differ.
+  const double sign = rng.chance(0.5) ? 1 : -1;
+  const double turn = sign * rng.uniform(1.6, 2.6);
   for (int k = 1; k <= 6; ++k) { // a tight curve turning by `turn`
     const double h = heading + turn * k / 6.0;
     const Pt last = path.back();

@@ -133,7 +133,8 @@ Plan open_plan(const Canvas& c, int vertices, std::set<std::string> truth) {
   for (int k = 0; k < vertices; ++k) {
     v.push_back(p);
     p = {p.x + std::cos(heading) / (vertices - 1), p.y + std::sin(heading) / (vertices - 1)};
-    heading += (rng.chance(0.5) ? 1 : -1) * rng.uniform(0.9, 2.2);
+    const double sign = rng.chance(0.5) ? 1 : -1; // drawn first, whatever the compiler
+    heading += sign * rng.uniform(0.9, 2.2);
   }
   double xmin = 1e9, xmax = -1e9, ymin = 1e9, ymax = -1e9;
   for (const Pt& q : v) {
@@ -193,7 +194,8 @@ const std::map<std::string, Builder>& builders() {
        [](const Canvas& c) { return open_plan(c, c.rng->integer(3, 4), {"polyline"}); }},
       {"arc",
        [](const Canvas& c) {
-         const double sweep = c.rng->uniform(1.6, 3.8) * (c.rng->chance(0.5) ? 1 : -1);
+         const double size = c.rng->uniform(1.6, 3.8); // drawn first, whatever the compiler
+         const double sweep = size * (c.rng->chance(0.5) ? 1 : -1);
          return Plan{{elliptic_arc(c.centre, 0.45 * c.size, 0.45 * c.size, 0,
                                    c.rng->uniform(0, 2 * kPi), sweep)},
                      {"arc"},
@@ -236,10 +238,11 @@ const std::map<std::string, Builder>& builders() {
        }},
       {"spiral",
        [](const Canvas& c) {
-         return Plan{{spiral(c.centre, 0.4 * c.size, c.rng->uniform(2.0, 3.5), c.rng->chance(0.5))},
-                     {"freeform"},
-                     false,
-                     false};
+         // Named: the order in which a call's arguments are evaluated differs between compilers.
+         const bool clockwise = c.rng->chance(0.5);
+         const double turns = c.rng->uniform(2.0, 3.5);
+         return Plan{
+             {spiral(c.centre, 0.4 * c.size, turns, clockwise)}, {"freeform"}, false, false};
        }},
       {"letter",
        [](const Canvas& c) {
