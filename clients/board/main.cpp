@@ -197,45 +197,55 @@ class Board {
     }
   }
 
+  void on_stroke_finished(const v1::StrokeFinished& f) {
+    if (f.not_analysed().empty()) {
+      model_.server_finished(f.stroke().id());
+      return;
+    }
+    const int i = model_.server_not_analysed(f.stroke().id(), f.not_analysed());
+    if (i >= 0) say("stroke " + std::to_string(i + 1) + " not analysed: " + f.not_analysed());
+    dirty_ = true;
+  }
+
+  void on_shape(const v1::ShapeRecognized& s) {
+    if (s.trigger() == v1::SHAPE_TRIGGER_HOLD || s.trigger() == v1::SHAPE_TRIGGER_FOLLOW) {
+      const int i = model_.server_held(s.stroke_id(), s.shape());
+      if (i >= 0 && s.trigger() == v1::SHAPE_TRIGGER_HOLD) {
+        say("stroke " + std::to_string(i + 1) + " held: " + describe_shape(s.shape()));
+      }
+      dirty_ = dirty_ || i >= 0;
+      return;
+    }
+    const int i = model_.server_shape(s.stroke_id(), s.shape());
+    if (i >= 0) {
+      last_ = cli::shape_kind_name(s.shape().kind());
+      say("stroke " + std::to_string(i + 1) + " is a " + describe_shape(s.shape()));
+    }
+    dirty_ = true;
+    update_title();
+  }
+
+  void on_event(const v1::LiveEvent& e) {
+    if (e.has_stroke_started()) {
+      model_.server_stroke_started(e.stroke_started().stroke_id());
+    } else if (e.has_stroke_finished()) {
+      on_stroke_finished(e.stroke_finished());
+    } else if (e.has_preview()) {
+      const auto& p = e.preview();
+      if (model_.server_preview(p.stroke_id(),
+                                p.candidates_size() > 0 ? &p.candidates(0) : nullptr) >= 0) {
+        dirty_ = true;
+      }
+    } else if (e.has_shape()) {
+      on_shape(e.shape());
+    }
+  }
+
   void poll_daemon() {
     std::vector<v1::LiveEvent> events;
     std::vector<std::string> errors;
     inbox_.drain(events, errors);
-    for (const auto& e : events) {
-      if (e.has_stroke_started()) {
-        model_.server_stroke_started(e.stroke_started().stroke_id());
-      } else if (e.has_stroke_finished() && !e.stroke_finished().not_analysed().empty()) {
-        const int i = model_.server_not_analysed(e.stroke_finished().stroke().id(),
-                                                 e.stroke_finished().not_analysed());
-        if (i >= 0)
-          say("stroke " + std::to_string(i + 1) +
-              " not analysed: " + e.stroke_finished().not_analysed());
-        dirty_ = true;
-      } else if (e.has_stroke_finished()) {
-        model_.server_finished(e.stroke_finished().stroke().id());
-      } else if (e.has_preview()) {
-        const auto& p = e.preview();
-        if (model_.server_preview(p.stroke_id(),
-                                  p.candidates_size() > 0 ? &p.candidates(0) : nullptr) >= 0) {
-          dirty_ = true;
-        }
-      } else if (e.has_shape() && (e.shape().trigger() == v1::SHAPE_TRIGGER_HOLD ||
-                                   e.shape().trigger() == v1::SHAPE_TRIGGER_FOLLOW)) {
-        const int i = model_.server_held(e.shape().stroke_id(), e.shape().shape());
-        if (i >= 0 && e.shape().trigger() == v1::SHAPE_TRIGGER_HOLD) {
-          say("stroke " + std::to_string(i + 1) + " held: " + describe_shape(e.shape().shape()));
-        }
-        dirty_ = dirty_ || i >= 0;
-      } else if (e.has_shape()) {
-        const int i = model_.server_shape(e.shape().stroke_id(), e.shape().shape());
-        if (i >= 0) {
-          last_ = cli::shape_kind_name(e.shape().shape().kind());
-          say("stroke " + std::to_string(i + 1) + " is a " + describe_shape(e.shape().shape()));
-        }
-        dirty_ = true;
-        update_title();
-      }
-    }
+    for (const auto& e : events) on_event(e);
     for (const auto& m : errors) {
       disconnected_ = m;
       say("disconnected: " + m);

@@ -311,7 +311,7 @@ class Parser {
     return out_.reports.back();
   }
 
-  void add_fields(ReportType type, std::uint32_t flags) {
+  void check_report_ids() const {
     if (global_.report_id == 0 && out_.uses_report_ids) {
       fail("main item without a report ID after report IDs were declared");
     }
@@ -320,13 +320,10 @@ class Parser {
                     [](const ReportLayout& r) { return r.report_id == 0 && !r.fields.empty(); })) {
       fail("report IDs declared after fields without one");
     }
-    ReportLayout& report = report_for(type);
-    const std::uint64_t bits =
-        static_cast<std::uint64_t>(global_.report_size) * global_.report_count;
-    if (report.size_bits + bits > kMaxReportBytes * 8) {
-      fail("report " + std::to_string(report.report_id) + " longer than " +
-           std::to_string(kMaxReportBytes) + " bytes");
-    }
+  }
+
+  // What every field of this main item shares: the global state and the enclosing collections.
+  ReportField base_field(ReportType type, std::uint32_t flags) const {
     ReportField base;
     base.type = type;
     base.report_id = global_.report_id;
@@ -347,39 +344,59 @@ class Parser {
     base.unit_exponent = global_.unit_exponent;
     base.application = application_;
     base.collection = collections_.empty() ? 0 : collections_.back();
+    return base;
+  }
 
-    const bool constant = (flags & kConstant) != 0;
-    const bool variable = (flags & kVariable) != 0;
-    if (constant || global_.report_count == 0 || global_.report_size == 0) {
-      if (bits > 0) {
+  // A variable item: one field per value, each with its own usage.
+  void add_variable_fields(ReportLayout& report, const ReportField& base) const {
+    for (std::uint32_t i = 0; i < global_.report_count; ++i) {
+      ReportField f = base;
+      f.bit_offset = report.size_bits + i * global_.report_size;
+      f.count = 1;
+      if (!local_.usages.empty()) {
+        // Fewer usages than values: the last usage repeats (HID 1.11 §6.2.2.8).
+        f.usage = local_.usages[std::min<std::size_t>(i, local_.usages.size() - 1)];
+      } else if (huge_range_) {
+        f.usage = range_lo_ + i <= range_hi_ ? range_lo_ + i : range_hi_;
+      }
+      report.fields.push_back(f);
+    }
+  }
+
+  // An array item: one field whose values are usages in a range.
+  void add_array_field(ReportLayout& report, ReportField base) const {
+    base.bit_offset = report.size_bits;
+    base.count = global_.report_count;
+    if (huge_range_) {
+      base.usage_minimum = range_lo_;
+      base.usage_maximum = range_hi_;
+    } else if (!local_.usages.empty()) {
+      base.usage_minimum = *std::min_element(local_.usages.begin(), local_.usages.end());
+      base.usage_maximum = *std::max_element(local_.usages.begin(), local_.usages.end());
+    }
+    report.fields.push_back(base);
+  }
+
+  void add_fields(ReportType type, std::uint32_t flags) {
+    check_report_ids();
+    ReportLayout& report = report_for(type);
+    const std::uint64_t bits =
+        static_cast<std::uint64_t>(global_.report_size) * global_.report_count;
+    if (report.size_bits + bits > kMaxReportBytes * 8) {
+      fail("report " + std::to_string(report.report_id) + " longer than " +
+           std::to_string(kMaxReportBytes) + " bytes");
+    }
+    ReportField base = base_field(type, flags);
+    if ((flags & kConstant) != 0 || global_.report_count == 0 || global_.report_size == 0) {
+      if (bits > 0) { // padding or a constant: kept whole
         base.bit_offset = report.size_bits;
         base.count = global_.report_count;
         report.fields.push_back(base);
       }
-    } else if (variable) {
-      for (std::uint32_t i = 0; i < global_.report_count; ++i) {
-        ReportField f = base;
-        f.bit_offset = report.size_bits + i * global_.report_size;
-        f.count = 1;
-        if (!local_.usages.empty()) {
-          // Fewer usages than values: the last usage repeats (HID 1.11 §6.2.2.8).
-          f.usage = local_.usages[std::min<std::size_t>(i, local_.usages.size() - 1)];
-        } else if (huge_range_) {
-          f.usage = range_lo_ + i <= range_hi_ ? range_lo_ + i : range_hi_;
-        }
-        report.fields.push_back(f);
-      }
+    } else if ((flags & kVariable) != 0) {
+      add_variable_fields(report, base);
     } else {
-      base.bit_offset = report.size_bits;
-      base.count = global_.report_count;
-      if (huge_range_) {
-        base.usage_minimum = range_lo_;
-        base.usage_maximum = range_hi_;
-      } else if (!local_.usages.empty()) {
-        base.usage_minimum = *std::min_element(local_.usages.begin(), local_.usages.end());
-        base.usage_maximum = *std::max_element(local_.usages.begin(), local_.usages.end());
-      }
-      report.fields.push_back(base);
+      add_array_field(report, base);
     }
     report.size_bits += static_cast<std::uint32_t>(bits);
   }

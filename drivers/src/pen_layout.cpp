@@ -71,109 +71,131 @@ double resolution_per_mm(const ReportField& axis) {
   return size_mm > 0 ? span_log / size_mm : 0.0;
 }
 
+namespace {
+
+// The digitizer-page usages a pen report carries, each to its slot in the candidate.
+void file_digitizer_field(Candidate& c, const ReportField& f, std::uint16_t id) {
+  switch (id) {
+    case 0x42:
+      return take(c.tip, f);
+    case 0x32:
+      return take(c.in_range, f);
+    case 0x30:
+      return take(c.pressure, f);
+    case 0x3D:
+      return take(c.tilt_x, f);
+    case 0x3E:
+      return take(c.tilt_y, f);
+    case 0x45:
+      return take(c.eraser, f);
+    case 0x3C:
+      return take(c.invert, f);
+    case 0x44:
+    case 0x5A:
+      c.barrels.push_back(&f);
+      return;
+    default:
+      return;
+  }
+}
+
+void file_field(Candidate& c, const ReportField& f) {
+  if (f.collection == make_usage(kDigitizer, 0x20)) c.stylus_collection = true;
+  if (f.collection == make_usage(kDigitizer, 0x22)) c.finger_collection = true;
+  if (c.application == 0) c.application = f.application;
+  if (f.is_constant() || !f.is_variable()) return;
+  const std::uint16_t page = usage_page(f.usage);
+  const std::uint16_t id = usage_id(f.usage);
+  if (page == kDesktop && !f.is_relative()) {
+    if (id == 0x30) take(c.x, f);
+    if (id == 0x31) take(c.y, f);
+  } else if (page == kDigitizer) {
+    file_digitizer_field(c, f, id);
+  } else if (page == kButton && id >= 1 && id <= 3) {
+    c.buttons.push_back(&f);
+  }
+}
+
+enum class PenKind { kNone, kPen, kMouseMode };
+
+// A pen report has a position and a contact signal, and is not a touch-only collection: a pen
+// application or stylus collection, or a mouse-mode report with pressure and buttons.
+PenKind pen_kind(const Candidate& c) {
+  if (c.x == nullptr || c.y == nullptr) return PenKind::kNone;
+  if (c.tip == nullptr && c.pressure == nullptr && c.in_range == nullptr) return PenKind::kNone;
+  if (c.finger_collection && !c.stylus_collection) return PenKind::kNone;
+  if (is_pen_application(c.application) || c.stylus_collection) return PenKind::kPen;
+  if (c.pressure != nullptr && !c.buttons.empty()) return PenKind::kMouseMode;
+  return PenKind::kNone;
+}
+
+void set_tilt(PenLayout& l, const ReportField& tilt_x, const ReportField& tilt_y) {
+  l.tilt_x = field_from(tilt_x);
+  l.tilt_y = field_from(tilt_y);
+  const double deg = degrees_per_unit(tilt_x);
+  const double span_log = static_cast<double>(tilt_x.logical_maximum) - tilt_x.logical_minimum;
+  const double span_phys = static_cast<double>(tilt_x.physical_maximum) - tilt_x.physical_minimum;
+  if (deg > 0 && span_log > 0 && span_phys > 0) {
+    l.tilt_scale = span_phys / span_log * deg;
+    l.tilt_offset = tilt_x.physical_minimum * deg;
+  } else {
+    // No angular unit: the common vendor convention is whole degrees, signed.
+    l.tilt_scale = 1.0;
+    l.tilt_offset = tilt_x.logical_minimum;
+  }
+}
+
+// Mouse-mode pens report the tip as button 1 and the barrel buttons as 2 and 3.
+void set_buttons(PenLayout& l, const Candidate& c) {
+  std::vector<const ReportField*> barrels = c.barrels;
+  if (c.tip == nullptr) {
+    for (const auto* b : c.buttons) {
+      if (usage_id(b->usage) == 1) {
+        l.tip = field_from(*b);
+      } else {
+        barrels.push_back(b);
+      }
+    }
+  }
+  if (barrels.size() > 0) l.barrel1 = field_from(*barrels[0]);
+  if (barrels.size() > 1) l.barrel2 = field_from(*barrels[1]);
+  if (barrels.size() > 2) l.barrel3 = field_from(*barrels[2]);
+}
+
+PenLayout layout_from(const Candidate& c, const ReportLayout& report, bool uses_report_ids) {
+  PenLayout l;
+  l.origin = "hid";
+  l.report_id = report.report_id;
+  l.uses_report_id = uses_report_ids;
+  l.min_report_bytes = report.size_bytes();
+  l.x = field_from(*c.x);
+  l.y = field_from(*c.y);
+  if (c.tip) l.tip = field_from(*c.tip);
+  if (c.in_range) l.in_range = field_from(*c.in_range);
+  if (c.pressure) l.pressure = field_from(*c.pressure);
+  if (c.eraser) l.eraser = field_from(*c.eraser);
+  if (c.invert) l.invert = field_from(*c.invert);
+  if (c.tilt_x && c.tilt_y) set_tilt(l, *c.tilt_x, *c.tilt_y);
+  set_buttons(l, c);
+  l.x_resolution = resolution_per_mm(*c.x);
+  l.y_resolution = resolution_per_mm(*c.y);
+  return l;
+}
+
+} // namespace
+
+// Digitizer reports first, then mouse-mode ones, each in descriptor order.
 std::vector<PenLayout> find_pen_layouts(const ParsedDescriptor& descriptor) {
   std::vector<PenLayout> digitizer;
   std::vector<PenLayout> mouse_mode;
   for (const auto& report : descriptor.reports) {
     if (report.type != ReportType::kInput) continue;
     Candidate c;
-    for (const auto& f : report.fields) {
-      if (f.collection == make_usage(kDigitizer, 0x20)) c.stylus_collection = true;
-      if (f.collection == make_usage(kDigitizer, 0x22)) c.finger_collection = true;
-      if (c.application == 0) c.application = f.application;
-      if (f.is_constant() || !f.is_variable()) continue;
-      const std::uint16_t page = usage_page(f.usage);
-      const std::uint16_t id = usage_id(f.usage);
-      if (page == kDesktop && !f.is_relative()) {
-        if (id == 0x30) take(c.x, f);
-        if (id == 0x31) take(c.y, f);
-      } else if (page == kDigitizer) {
-        switch (id) {
-          case 0x42:
-            take(c.tip, f);
-            break;
-          case 0x32:
-            take(c.in_range, f);
-            break;
-          case 0x30:
-            take(c.pressure, f);
-            break;
-          case 0x3D:
-            take(c.tilt_x, f);
-            break;
-          case 0x3E:
-            take(c.tilt_y, f);
-            break;
-          case 0x45:
-            take(c.eraser, f);
-            break;
-          case 0x3C:
-            take(c.invert, f);
-            break;
-          case 0x44:
-          case 0x5A:
-            c.barrels.push_back(&f);
-            break;
-          default:
-            break;
-        }
-      } else if (page == kButton && id >= 1 && id <= 3) {
-        c.buttons.push_back(&f);
-      }
-    }
-    if (c.x == nullptr || c.y == nullptr) continue;
-    if (c.tip == nullptr && c.pressure == nullptr && c.in_range == nullptr) continue;
-    if (c.finger_collection && !c.stylus_collection) continue;
-    const bool pen = is_pen_application(c.application) || c.stylus_collection;
-    const bool mouse_with_pressure = !pen && c.pressure != nullptr && !c.buttons.empty();
-    if (!pen && !mouse_with_pressure) continue;
-
-    PenLayout l;
-    l.origin = "hid";
-    l.report_id = report.report_id;
-    l.uses_report_id = descriptor.uses_report_ids;
-    l.min_report_bytes = report.size_bytes();
-    l.x = field_from(*c.x);
-    l.y = field_from(*c.y);
-    if (c.tip) l.tip = field_from(*c.tip);
-    if (c.in_range) l.in_range = field_from(*c.in_range);
-    if (c.pressure) l.pressure = field_from(*c.pressure);
-    if (c.eraser) l.eraser = field_from(*c.eraser);
-    if (c.invert) l.invert = field_from(*c.invert);
-    if (c.tilt_x && c.tilt_y) {
-      l.tilt_x = field_from(*c.tilt_x);
-      l.tilt_y = field_from(*c.tilt_y);
-      const double deg = degrees_per_unit(*c.tilt_x);
-      const double span_log =
-          static_cast<double>(c.tilt_x->logical_maximum) - c.tilt_x->logical_minimum;
-      const double span_phys =
-          static_cast<double>(c.tilt_x->physical_maximum) - c.tilt_x->physical_minimum;
-      if (deg > 0 && span_log > 0 && span_phys > 0) {
-        l.tilt_scale = span_phys / span_log * deg;
-        l.tilt_offset = c.tilt_x->physical_minimum * deg;
-      } else {
-        // No angular unit: the common vendor convention is whole degrees, signed.
-        l.tilt_scale = 1.0;
-        l.tilt_offset = c.tilt_x->logical_minimum;
-      }
-    }
-    // Mouse-mode pens report the tip as button 1 and the barrel buttons as 2 and 3.
-    std::vector<const ReportField*> barrels = c.barrels;
-    if (c.tip == nullptr && !c.buttons.empty()) {
-      for (const auto* b : c.buttons) {
-        if (usage_id(b->usage) == 1) {
-          l.tip = field_from(*b);
-        } else {
-          barrels.push_back(b);
-        }
-      }
-    }
-    if (barrels.size() > 0) l.barrel1 = field_from(*barrels[0]);
-    if (barrels.size() > 1) l.barrel2 = field_from(*barrels[1]);
-    if (barrels.size() > 2) l.barrel3 = field_from(*barrels[2]);
-    l.x_resolution = resolution_per_mm(*c.x);
-    l.y_resolution = resolution_per_mm(*c.y);
-    (pen ? digitizer : mouse_mode).push_back(std::move(l));
+    for (const auto& f : report.fields) file_field(c, f);
+    const PenKind kind = pen_kind(c);
+    if (kind == PenKind::kNone) continue;
+    (kind == PenKind::kPen ? digitizer : mouse_mode)
+        .push_back(layout_from(c, report, descriptor.uses_report_ids));
   }
   for (auto& l : mouse_mode) digitizer.push_back(std::move(l));
   return digitizer;

@@ -39,6 +39,10 @@ class PenDecoder {
       return f == 1.0 ? v : static_cast<std::int64_t>(static_cast<double>(v) * f + 0.5);
     }
   };
+  PenSample read_sample(std::span<const std::uint8_t> report, std::size_t layout,
+                        std::int64_t time_us) const;
+  DecodeStatus not_a_pen(std::span<const std::uint8_t> report, std::uint8_t id, bool known) const;
+
   std::vector<PenLayout> pens_;
   std::vector<Scale> scales_;
   bool uses_report_ids_ = false;
