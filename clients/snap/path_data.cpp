@@ -9,16 +9,12 @@
 #include <string>
 
 #include "number_scanner.hpp"
+#include "penshape/core/point_arithmetic.hpp"
 
 namespace penshape::snap {
 namespace {
 
 constexpr std::size_t kMaxPieces = 1024;
-
-PointD operator+(PointD a, PointD b) { return {a.x + b.x, a.y + b.y}; }
-PointD operator-(PointD a, PointD b) { return {a.x - b.x, a.y - b.y}; }
-PointD operator*(double s, PointD a) { return {s * a.x, s * a.y}; }
-double norm(PointD a) { return std::hypot(a.x, a.y); }
 
 std::size_t pieces_for(double second_derivative_bound, double flatness) {
   const double n = std::ceil(std::sqrt(second_derivative_bound / (8.0 * flatness)));

@@ -5,13 +5,14 @@
 #include <cmath>
 #include <string>
 
-#include "exact_geometry.hpp"
+#include "geometry/exact_predicates.hpp"
+#include "geometry/segment_sweep.hpp"
 #include "prepared_annulus.hpp"
 
 namespace penshape::annulus {
 namespace {
 
-using detail::orientation;
+using ::penshape::detail::orientation;
 
 void check_coordinate(double v, const Limits& limits, const std::string& what) {
   if (!std::isfinite(v)) throw InvalidInput(what + " is not finite");
@@ -59,13 +60,23 @@ void check_simple(const std::vector<PointD>& v) {
       throw InvalidInput("template edges " + std::to_string(i) + " and " +
                          std::to_string((i + 1) % m) + " overlap");
     }
-    for (std::size_t j = i + 2; j < m; ++j) {
-      if (i == 0 && j == m - 1) continue; // adjacent through the closing edge
-      if (detail::segments_intersect(a, b, v[j], v[(j + 1) % m])) {
-        throw InvalidInput("template is not simple: edges " + std::to_string(i) + " and " +
-                           std::to_string(j) + " intersect");
-      }
-    }
+  }
+  // Other edge pairs may not meet at all: the kernel's sweep, as for input regions.
+  std::vector<ExactPoint> exact_v;
+  exact_v.reserve(m);
+  for (const PointD& p : v) exact_v.push_back(exact(p));
+  std::vector<::penshape::detail::SweepSegment> edges;
+  edges.reserve(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    edges.push_back({::penshape::detail::filtered(exact_v[i]),
+                     ::penshape::detail::filtered(exact_v[(i + 1) % m])});
+  }
+  const auto adjacent = [m](std::size_t i, std::size_t j) {
+    return (i + 1) % m == j || (j + 1) % m == i;
+  };
+  if (const auto pair = ::penshape::detail::find_forbidden_contact(edges, adjacent)) {
+    throw InvalidInput("template is not simple: edges " + std::to_string(pair->first) + " and " +
+                       std::to_string(pair->second) + " intersect");
   }
 }
 

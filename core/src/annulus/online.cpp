@@ -48,7 +48,7 @@ struct OnlineContainment::State {
 
   // Intersects structure s with the containing sets of point j; false when it became empty.
   bool apply(Structure& s, std::size_t j) const {
-    const PointD d = sub(pts[j], pts[s.point]);
+    const PointD d = pts[j] - pts[s.point];
     bool any = false;
     for (int w = 0; w < 2; ++w) {
       const Curve& c = curve(w);

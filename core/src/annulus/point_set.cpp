@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "exact_geometry.hpp"
+#include "geometry/exact_predicates.hpp"
 
 namespace penshape::annulus::detail {
+
+using ::penshape::detail::orientation; // the kernel's exact predicate
 
 WeightedPoints merge_duplicates(const std::vector<PointD>& points) {
   std::vector<PointD> sorted = points;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "geometry/distance_kernel.hpp"
+
 namespace penshape::annulus::detail {
 namespace {
 
@@ -25,7 +27,7 @@ std::vector<PointD> clip(const std::vector<PointD>& poly, PointD n, double h) {
     if (sa <= 0.0) out.push_back(a);
     if ((sa < 0.0 && sb > 0.0) || (sa > 0.0 && sb < 0.0)) {
       const double t = sa / (sa - sb);
-      out.push_back(add(a, mul(sub(b, a), t)));
+      out.push_back(a + (b - a) * t);
     }
   }
   return out;
@@ -84,7 +86,7 @@ bool segment_in_halfplanes(const std::vector<Edge>& edges, double off, PointD z0
 void segment_in_stadium(const Edge& e, double delta, PointD z0, PointD w, IntervalSet& out) {
   double lo = 0.0;
   double hi = 1.0;
-  const PointD r0 = sub(z0, e.a);
+  const PointD r0 = z0 - e.a;
   clip_linear(lo, hi, -dot(r0, e.v), -dot(w, e.v));
   clip_linear(lo, hi, dot(r0, e.v) - e.len2, dot(w, e.v));
   clip_linear(lo, hi, dot(e.n, r0) - delta, dot(e.n, w));
@@ -116,7 +118,7 @@ IntervalSet arc_in_halfplanes(const std::vector<Edge>& edges, double off, PointD
 
 void arc_in_stadium(const Edge& e, double delta, PointD z0, double r, double lo, double hi,
                     IntervalSet& out) {
-  const PointD r0 = sub(z0, e.a);
+  const PointD r0 = z0 - e.a;
   IntervalSet cur{{lo, hi}};
   intersect_trig(cur, -r * e.v.x, -r * e.v.y, dot(r0, e.v));
   if (!cur.empty()) intersect_trig(cur, r * e.v.x, r * e.v.y, e.len2 - dot(r0, e.v));
@@ -150,7 +152,7 @@ PreparedAnnulus prepare_single(const TemplatePolygon& p, OuterOffset outer, doub
   for (std::size_t k = 0; k < m; ++k) {
     Edge e;
     e.a = v[k];
-    e.v = sub(v[(k + 1) % m], v[k]);
+    e.v = v[(k + 1) % m] - v[k];
     e.len2 = dot(e.v, e.v);
     const double len = std::sqrt(e.len2);
     e.n = {e.v.y / len, -e.v.x / len};
@@ -168,11 +170,11 @@ PreparedAnnulus prepare_single(const TemplatePolygon& p, OuterOffset outer, doub
   if (!p.convex()) {
     // Every piece of every stadium boundary: a superset of the annulus boundary (Section 5).
     for (const Edge& e : an.edges) {
-      const PointD b = add(e.a, e.v);
+      const PointD b = e.a + e.v;
       for (double side : {1.0, -1.0}) {
         Piece s;
-        s.a = add(e.a, mul(e.n, side * delta));
-        s.b = add(b, mul(e.n, side * delta));
+        s.a = e.a + e.n * (side * delta);
+        s.b = b + e.n * (side * delta);
         an.outer_curve.push_back(s);
         if (delta == 0.0) break;
       }
@@ -201,7 +203,7 @@ PreparedAnnulus prepare_single(const TemplatePolygon& p, OuterOffset outer, doub
     const Edge& prev = an.edges[(k + m - 1) % m];
     const Edge& cur = an.edges[k];
     const double s = delta / (1.0 + dot(prev.n, cur.n));
-    an.outer_poly.push_back(add(v[k], mul(add(prev.n, cur.n), s)));
+    an.outer_poly.push_back(v[k] + (prev.n + cur.n) * s);
   }
   if (outer == OuterOffset::kLinearized) {
     an.outer_curve = polygon_curve(an.outer_poly);
@@ -215,8 +217,8 @@ PreparedAnnulus prepare_single(const TemplatePolygon& p, OuterOffset outer, doub
       const Edge& e = an.edges[k];
       const Edge& next = an.edges[(k + 1) % m];
       Piece s;
-      s.a = add(e.a, mul(e.n, delta));
-      s.b = add(add(e.a, e.v), mul(e.n, delta));
+      s.a = e.a + e.n * delta;
+      s.b = (e.a + e.v) + e.n * delta;
       an.outer_curve.push_back(s);
       if (delta > 0.0) {
         const double phi0 = std::atan2(e.n.y, e.n.x);
@@ -239,8 +241,8 @@ PreparedAnnulus prepare(const TemplatePolygon& p, OuterOffset outer, double delt
     // Vertex centroid of the hole and its distance to the nearest hole edge line, shrunk a
     // little so rounding cannot put the disk outside the open hole.
     PointD c{0.0, 0.0};
-    for (const PointD& q : an.inner) c = add(c, q);
-    c = mul(c, 1.0 / static_cast<double>(an.inner.size()));
+    for (const PointD& q : an.inner) c = c + q;
+    c = c * (1.0 / static_cast<double>(an.inner.size()));
     double r = INFINITY;
     for (const Edge& e : an.edges) r = std::min(r, e.h - delta - dot(e.n, c));
     an.hole_centre = c;
@@ -281,10 +283,9 @@ IntervalSet member_set(const PreparedAnnulus& an, const Piece& piece, PointD d) 
   // `reach` of its middle, so a middle far inside or far outside decides the whole piece.
   {
     const double mid_t = 0.5 * (piece.lo() + piece.hi());
-    const PointD z = add(piece.at(mid_t), d);
-    const double reach = piece.arc
-                             ? piece.r * 0.5 * (piece.phi1 - piece.phi0)
-                             : 0.5 * std::sqrt(dot(sub(piece.b, piece.a), sub(piece.b, piece.a)));
+    const PointD z = piece.at(mid_t) + d;
+    const double reach = piece.arc ? piece.r * 0.5 * (piece.phi1 - piece.phi0)
+                                   : 0.5 * std::sqrt(dot(piece.b - piece.a, piece.b - piece.a));
     const double m = prepared_measure(an, z);
     const double slack = 1e-12 * (std::abs(z.x) + std::abs(z.y) + reach + an.delta) + 1e-300;
     if (m + reach < an.delta - slack) {
@@ -295,8 +296,8 @@ IntervalSet member_set(const PreparedAnnulus& an, const Piece& piece, PointD d) 
   }
   const double delta = an.delta;
   if (!piece.arc) {
-    const PointD z0 = add(piece.a, d);
-    const PointD w = sub(piece.b, piece.a);
+    const PointD z0 = piece.a + d;
+    const PointD w = piece.b - piece.a;
     if (!an.convex) {
       for (std::size_t k = 0; k < an.edges.size(); ++k) {
         if (overlaps(pb, an.stadium_boxes[k]))
@@ -337,7 +338,7 @@ IntervalSet member_set(const PreparedAnnulus& an, const Piece& piece, PointD d) 
     }
     return result;
   }
-  const PointD z0 = add(piece.c, d);
+  const PointD z0 = piece.c + d;
   const double r = piece.r;
   if (!an.convex) {
     for (std::size_t k = 0; k < an.edges.size(); ++k) {
@@ -377,12 +378,11 @@ double annulus_measure(const TemplatePolygon& p, OuterOffset outer, PointD x) {
   double dmin2 = INFINITY; // squared distance to the boundary
   for (std::size_t k = 0; k < m; ++k) {
     const PointD a = v[k];
-    const PointD e = sub(v[(k + 1) % m], a);
-    const PointD r = sub(x, a);
-    const double len2 = dot(e, e);
-    if (p.convex()) fmax = std::max(fmax, -cross(e, r) / std::sqrt(len2));
-    const double t = std::clamp(dot(r, e) / len2, 0.0, 1.0);
-    const PointD q = sub(r, mul(e, t));
+    const PointD b = v[(k + 1) % m];
+    const PointD e = b - a;
+    const PointD r = x - a;
+    if (p.convex()) fmax = std::max(fmax, -cross(e, r) / std::sqrt(dot(e, e)));
+    const PointD q = r - e * ::penshape::detail::proposed_foot_parameter(x, a, b);
     dmin2 = std::min(dmin2, dot(q, q));
   }
   if (!p.convex()) return std::sqrt(dmin2);
@@ -397,9 +397,8 @@ double prepared_measure(const PreparedAnnulus& an, PointD x) {
   if (an.convex && an.outer == OuterOffset::kLinearized) return fmax;
   double dmin2 = INFINITY;
   for (const Edge& e : an.edges) {
-    const PointD r = sub(x, e.a);
-    const double t = std::clamp(dot(r, e.v) / e.len2, 0.0, 1.0);
-    const PointD q = sub(r, mul(e.v, t));
+    const PointD r = x - e.a;
+    const PointD q = r - e.v * ::penshape::detail::proposed_foot_parameter_along(r, e.v, e.len2);
     dmin2 = std::min(dmin2, dot(q, q));
   }
   return std::sqrt(dmin2);

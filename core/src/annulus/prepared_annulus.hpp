@@ -7,14 +7,9 @@
 
 #include "intervals.hpp"
 #include "penshape/core/annulus/annulus_template.hpp"
+#include "penshape/core/point_arithmetic.hpp" // the kernel's PointD arithmetic
 
 namespace penshape::annulus::detail {
-
-inline PointD add(PointD a, PointD b) { return {a.x + b.x, a.y + b.y}; }
-inline PointD sub(PointD a, PointD b) { return {a.x - b.x, a.y - b.y}; }
-inline PointD mul(PointD a, double s) { return {a.x * s, a.y * s}; }
-inline double dot(PointD a, PointD b) { return a.x * b.x + a.y * b.y; }
-inline double cross(PointD a, PointD b) { return a.x * b.y - a.y * b.x; }
 
 struct Box {
   double x0, y0, x1, y1;

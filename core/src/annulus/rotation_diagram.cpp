@@ -21,7 +21,6 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 inline PointD perp(PointD d) { return {d.y, -d.x}; } // R(-theta) d = cos * d + sin * perp(d)
-inline double norm(PointD a) { return std::sqrt(a.x * a.x + a.y * a.y); }
 
 // A boundary edge of the inner (hole) or outer linearized offset, template frame.
 struct CurveEdge {
@@ -57,7 +56,7 @@ struct RotationGeometry {
       for (std::size_t k = 0; k < poly.size(); ++k) {
         CurveEdge e;
         e.a = poly[k];
-        e.v = sub(poly[(k + 1) % poly.size()], poly[k]);
+        e.v = poly[(k + 1) % poly.size()] - poly[k];
         const double len = norm(e.v);
         e.n = len > 0.0 ? PointD{e.v.y / len, -e.v.x / len} : PointD{0.0, 0.0};
         e.H = dot(e.n, e.a);
@@ -65,7 +64,7 @@ struct RotationGeometry {
       }
     }
     for (const PointD& a : corners[0]) {
-      for (const PointD& b : corners[0]) diameter = std::max(diameter, norm(sub(a, b)));
+      for (const PointD& b : corners[0]) diameter = std::max(diameter, norm(a - b));
     }
     total = curve[0].size() + curve[1].size();
     dmin.assign(total * total, 0.0);
@@ -74,20 +73,20 @@ struct RotationGeometry {
       for (std::size_t y = 0; y < total; ++y) {
         const CurveEdge& e = at(x);
         const CurveEdge& f = at(y);
-        const PointD e1 = add(e.a, e.v);
-        const PointD f1 = add(f.a, f.v);
+        const PointD e1 = e.a + e.v;
+        const PointD f1 = f.a + f.v;
         double lo =
             std::min({point_segment_distance(e.a, f.a, f.v), point_segment_distance(e1, f.a, f.v),
                       point_segment_distance(f.a, e.a, e.v), point_segment_distance(f1, e.a, e.v)});
         // Crossing segments are at distance 0.
-        const double o1 = cross(e.v, sub(f.a, e.a));
-        const double o2 = cross(e.v, sub(f1, e.a));
-        const double o3 = cross(f.v, sub(e.a, f.a));
-        const double o4 = cross(f.v, sub(e1, f.a));
+        const double o1 = cross(e.v, f.a - e.a);
+        const double o2 = cross(e.v, f1 - e.a);
+        const double o3 = cross(f.v, e.a - f.a);
+        const double o4 = cross(f.v, e1 - f.a);
         if (o1 * o2 <= 0.0 && o3 * o4 <= 0.0) lo = 0.0;
         dmin[x * total + y] = lo;
-        dmax[x * total + y] = std::max(
-            {norm(sub(e.a, f.a)), norm(sub(e.a, f1)), norm(sub(e1, f.a)), norm(sub(e1, f1))});
+        dmax[x * total + y] =
+            std::max({norm(e.a - f.a), norm(e.a - f1), norm(e1 - f.a), norm(e1 - f1)});
       }
     }
   }
@@ -103,7 +102,7 @@ struct RotationGeometry {
     const double hi = V.back().hi;
     const double mid = 0.5 * (lo + hi);
     const double reach = (norm(kc) + norm(ks)) * 0.5 * (hi - lo);
-    const PointD wm = add(k0, add(mul(kc, std::cos(mid)), mul(ks, std::sin(mid))));
+    const PointD wm = k0 + (kc * std::cos(mid) + ks * std::sin(mid));
     double f = -INFINITY;
     for (const Edge& e : edges) f = std::max(f, dot(e.n, wm) - e.h);
     // f is 1-Lipschitz and W moves at most `reach` over V.
@@ -174,7 +173,7 @@ Placement placement_at(const Family& f, PointD qi, double theta) {
   const double c = (1.0 - u * u) / (1.0 + u * u);
   const double s = 2.0 * u / (1.0 + u * u);
   pl.theta = 2.0 * std::atan(u);
-  const PointD z = add(f.Z0, add(mul(f.Zc, c), mul(f.Zs, s)));
+  const PointD z = f.Z0 + (f.Zc * c + f.Zs * s);
   pl.tx = qi.x - (c * z.x - s * z.y);
   pl.ty = qi.y - (s * z.x + c * z.y);
   return pl;
@@ -230,11 +229,11 @@ struct Search {
       for (std::size_t t = 0; t < order.size(); ++t) {
         const std::size_t k = order[t];
         if (k == f.i || k == f.j) continue;
-        const PointD d = sub(pts[k], qi);
+        const PointD d = pts[k] - qi;
         if (norm(d) > g.diameter + tol) {
           S.clear();
         } else {
-          S = g.member(f.Z0, add(f.Zc, d), add(f.Zs, perp(d)), S);
+          S = g.member(f.Z0, f.Zc + d, f.Zs + perp(d), S);
         }
         if (S.empty()) {
           std::swap(order[t], order[0]);
@@ -264,10 +263,10 @@ struct Search {
                       (f.j == SIZE_MAX ? 0L : static_cast<long>(wp.weight[f.j]));
     for (std::size_t k = 0; k < pts.size(); ++k) {
       if (k == f.i || k == f.j) continue;
-      const PointD d = sub(pts[k], qi);
+      const PointD d = pts[k] - qi;
       if (norm(d) > g.diameter + tol) continue;
       const long w = static_cast<long>(wp.weight[k]);
-      for (const Interval& iv : g.member(f.Z0, add(f.Zc, d), add(f.Zs, perp(d)), f.V)) {
+      for (const Interval& iv : g.member(f.Z0, f.Zc + d, f.Zs + perp(d), f.V)) {
         events.push_back({iv.lo, w});
         events.push_back({iv.hi, -w});
       }
@@ -314,7 +313,7 @@ struct Search {
     // Two points on two boundary edges.
     for (std::size_t i = 0; i < n; ++i) {
       for (std::size_t j = i + 1; j < n; ++j) {
-        const PointD d = sub(pts[j], pts[i]);
+        const PointD d = pts[j] - pts[i];
         const double rho = norm(d);
         if (rho > g.diameter + tol) continue;
         const PointD dp = perp(d);
@@ -336,13 +335,13 @@ struct Search {
             restrict_trig(V, -ac, -as, a0);     // sigma >= 0
             restrict_trig(V, ac, as, 1.0 - a0); // sigma <= 1
             if (V.empty()) continue;
-            const PointD Z0 = add(ea.a, mul(ea.v, a0));
-            const PointD Zc = mul(ea.v, ac);
-            const PointD Zs = mul(ea.v, as);
+            const PointD Z0 = ea.a + ea.v * a0;
+            const PointD Zc = ea.v * ac;
+            const PointD Zs = ea.v * as;
             const double L2 = dot(eb.v, eb.v);
-            const double t0 = dot(sub(Z0, eb.a), eb.v) / L2;
-            const double tc = dot(add(Zc, d), eb.v) / L2;
-            const double ts = dot(add(Zs, dp), eb.v) / L2;
+            const double t0 = dot(Z0 - eb.a, eb.v) / L2;
+            const double tc = dot(Zc + d, eb.v) / L2;
+            const double ts = dot(Zs + dp, eb.v) / L2;
             restrict_trig(V, -tc, -ts, t0);     // j's position on edge b >= 0
             restrict_trig(V, tc, ts, 1.0 - t0); // <= 1
             if (V.empty()) continue;

@@ -103,7 +103,7 @@ bool find_survivor(Problem& pr, const PreparedAnnulus& an, Accept&& accept) {
       for (std::size_t t = 0; t < pr.order.size() && alive; ++t) {
         const std::size_t j = pr.order[t];
         if (j == i) continue;
-        const PointD d = sub(pts[j], pts[i]);
+        const PointD d = pts[j] - pts[i];
         bool any = false;
         for (std::size_t k = 0; k < curve.size(); ++k) {
           if (sets[k].empty()) continue;
@@ -239,7 +239,7 @@ SweepBest anchored_sweep(const PreparedAnnulus& an, const WeightedPoints& wp, bo
       const double stride = curve == &an.outer_curve ? an.outer_stride : 1.0;
       events.clear();
       for (std::size_t j : nb) {
-        const PointD d = sub(pts[j], pts[i]);
+        const PointD d = pts[j] - pts[i];
         const long w = static_cast<long>(wp.weight[j]);
         // Global intervals of j, merged across piece ends so j is never counted twice.
         along.clear();

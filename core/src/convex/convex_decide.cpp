@@ -12,6 +12,7 @@
 #include "convex_exact_inset.hpp"
 #include "convex_inset.hpp"
 #include "geometry/distance_kernel.hpp"
+#include "geometry/exact_predicates.hpp"
 #include "penshape/core/convex_deconstruct.hpp"
 #include "penshape/core/simplify.hpp"
 
@@ -194,7 +195,7 @@ detail::IPoint enclose_truncated(const ExactPoint& p) {
 std::optional<int> certified_turn(const detail::IPoint& u, const detail::IPoint& v,
                                   const detail::IPoint& w, const ExactPoint& a, const ExactPoint& b,
                                   const ExactPoint& c) {
-  const detail::IntervalNT det = (v.x - u.x) * (w.y - v.y) - (v.y - u.y) * (w.x - v.x);
+  const detail::IntervalNT det = detail::orientation_determinant(u.x, u.y, v.x, v.y, w.x, w.y);
   if (det.inf() > 0) return 1;
   if (det.sup() < 0) return -1;
   if (a == b || b == c) return std::nullopt;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <deque>
 
+#include "geometry/exact_predicates.hpp"
+
 namespace penshape::detail {
 namespace {
 
@@ -102,11 +104,7 @@ bool convex_ring_inside_inset(const std::vector<PointD>& pi, const Ring& q, cons
     const PointD a = pi[i];
     const PointD b = pi[(i + 1) % m];
     const PointD c = pi[(i + 2) % m];
-    const double det = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-    const double mag =
-        (std::abs(b.x - a.x) + std::abs(b.y - a.y)) * (std::abs(c.x - a.x) + std::abs(c.y - a.y));
-    if (det > rel * mag) continue;
-    if (orientation(exact(a), exact(b), exact(c)) <= 0) return false;
+    if (orientation(a, b, c) <= 0) return false; // the kernel's filtered exact predicate
   }
   const double shift_d = to_double(shift);
   std::size_t j = 0; // the vertex extreme along the current edge normal; turns with the edges

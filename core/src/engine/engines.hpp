@@ -1,5 +1,5 @@
 #pragma once
-// The two deconstruction engines behind deconstruct() (core/src/deconstruct.cpp). Internal:
+// The two deconstruction engines behind deconstruct() (deconstruct/deconstruct.cpp). Internal:
 // callers use penshape/core/deconstruct.hpp. Both receive validated input with r > eps (the
 // r <= eps case is answered before dispatch) and must give certified YES/NO answers; they may
 // differ only in speed and in which undecided cases they can settle.

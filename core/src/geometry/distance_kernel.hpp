@@ -83,12 +83,17 @@ double proposed_distance(const P& p, const P& s, const P& t) {
 }
 // The parameter u in [0, 1] of the point s + u (t - s) nearest p (0 when s == t), in doubles:
 // for callers that need the foot point itself, not only its distance.
+// The same from r = p - s, d = t - s and len2 = |d|², for callers that keep them.
+template <typename V>
+double proposed_foot_parameter_along(const V& r, const V& d, double len2) {
+  if (!(len2 > 0)) return 0.0;
+  return std::clamp((r.x * d.x + r.y * d.y) / len2, 0.0, 1.0);
+}
 template <typename P>
 double proposed_foot_parameter(const P& p, const P& s, const P& t) {
-  const double dx = t.x - s.x, dy = t.y - s.y;
-  const double len2 = dx * dx + dy * dy;
-  if (!(len2 > 0)) return 0.0;
-  return std::clamp(((p.x - s.x) * dx + (p.y - s.y) * dy) / len2, 0.0, 1.0);
+  const Point2<double> d{t.x - s.x, t.y - s.y};
+  return proposed_foot_parameter_along(Point2<double>{p.x - s.x, p.y - s.y}, d,
+                                       d.x * d.x + d.y * d.y);
 }
 
 inline IPoint enclose(const ExactPoint& p) {

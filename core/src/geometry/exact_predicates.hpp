@@ -1,11 +1,67 @@
 #pragma once
-// Exact orientation and segment predicates on rational points, with a floating-point filter:
-// most calls decide from doubles, and only near-degenerate ones pay for GMP arithmetic. Internal.
+// The kernel's orientation and segment-intersection predicates, written once for every point
+// type core uses: exact doubles (PointD), rationals with their nearest doubles (FilteredPoint) and
+// rationals alone (ExactPoint). One floating-point filter with one derived error bound decides
+// most calls; only near-degenerate ones pay for GMP arithmetic. Internal to core.
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 
 #include "penshape/core/polygon_set.hpp"
 
 namespace penshape::detail {
+
+// Where the filter's doubles come from: the inputs themselves (exact), or each the double
+// truncated from a rational (mpq_get_d: |x - x~| <= 2u|x~| for u = 2^-53).
+enum class FilterInputs { kExact, kRounded };
+
+// The sign of D = (b - a) × (c - a) from doubles, or nullopt when the doubles cannot tell.
+// det = l - r with l = (bx - ax)(cy - ay) and r = (by - ay)(cx - ax), evaluated in doubles.
+// - Rounding of the differences, products and subtraction: Shewchuk's orient2d bound
+//   (3 + 16u)u(|l| + |r|); 4u(|l| + |r|) also covers the rounding of the bound's own sum.
+// - Rounded inputs: with M the largest |coordinate|, every true difference is within 4uM of the
+//   doubles' one (of size <= 2M), so each true product is within 16uM² + 16u²M² of it and D
+//   within 32uM² + 32u²M² of the doubles' determinant; 36uM² covers that and its rounding. This
+//   needs normal coordinates' error bounds, so rounded inputs decide only for M > 1e-100.
+// - Underflow: a product below the normal range is off by at most half the smallest subnormal;
+//   eight of them cover both products and the bound's own underflow.
+// NaN or infinity (overflow) makes every comparison false: undecided.
+inline std::optional<int> orientation_filter(double ax, double ay, double bx, double by, double cx,
+                                             double cy, FilterInputs inputs) {
+  constexpr double u = std::numeric_limits<double>::epsilon() / 2;
+  const double l = (bx - ax) * (cy - ay);
+  const double r = (by - ay) * (cx - ax);
+  const double det = l - r;
+  double bound =
+      4 * u * (std::abs(l) + std::abs(r)) + 8 * std::numeric_limits<double>::denorm_min();
+  if (inputs == FilterInputs::kRounded) {
+    const double m = std::max(
+        {std::abs(ax), std::abs(ay), std::abs(bx), std::abs(by), std::abs(cx), std::abs(cy)});
+    if (!(m > 1e-100)) return std::nullopt;
+    bound += 36 * u * m * m;
+  }
+  if (det > bound) return 1;
+  if (det < -bound) return -1;
+  return std::nullopt;
+}
+
+// (b - a) × (c - a) in any number type: doubles propose, CGAL intervals enclose it (the caller
+// holds the rounding guard), rationals give it exactly.
+template <typename NT>
+NT orientation_determinant(const NT& ax, const NT& ay, const NT& bx, const NT& by, const NT& cx,
+                           const NT& cy) {
+  return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+}
+
+// Its sign for an exact number type (Rational, or a wide enough integer): +1 left, -1 right,
+// 0 collinear.
+template <typename NT>
+int exact_orientation(const NT& ax, const NT& ay, const NT& bx, const NT& by, const NT& cx,
+                      const NT& cy) {
+  const NT det = orientation_determinant(ax, ay, bx, by, cx, cy);
+  return static_cast<int>(det > 0) - static_cast<int>(det < 0);
+}
 
 // A rational point with its nearest double, converted once.
 struct FilteredPoint {
@@ -16,45 +72,69 @@ struct FilteredPoint {
 
 inline FilteredPoint filtered(const ExactPoint& p) { return {&p, p.x.get_d(), p.y.get_d()}; }
 
-// Sign of the cross product (b - a) × (c - a): +1 left turn, -1 right turn, 0 collinear.
+// +1 left turn a → b → c, -1 right turn, 0 collinear. Exact for every point type.
+inline int orientation(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c) {
+  return exact_orientation(a.x, a.y, b.x, b.y, c.x, c.y);
+}
 inline int orientation(const FilteredPoint& a, const FilteredPoint& b, const FilteredPoint& c) {
-  const double det = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-  // Each coordinate carries a relative error <= 2^-53 from the conversion, and the few
-  // operations above add a handful more; 1e-12 · M² bounds the total with a wide margin.
-  const double m = std::max(
-      {std::abs(a.x), std::abs(a.y), std::abs(b.x), std::abs(b.y), std::abs(c.x), std::abs(c.y)});
-  const double bound = 1e-12 * m * m;
-  // Only where products stay normal doubles (tiny coordinates fall through to exact).
-  if (m > 1e-100) {
-    if (det > bound) return 1;
-    if (det < -bound) return -1;
+  if (const auto s = orientation_filter(a.x, a.y, b.x, b.y, c.x, c.y, FilterInputs::kRounded)) {
+    return *s;
   }
-  const ExactPoint& pa = *a.exact;
-  const ExactPoint& pb = *b.exact;
-  const ExactPoint& pc = *c.exact;
-  const Rational exact_det = (pb.x - pa.x) * (pc.y - pa.y) - (pb.y - pa.y) * (pc.x - pa.x);
-  return sgn(exact_det);
+  return orientation(*a.exact, *b.exact, *c.exact);
+}
+inline int orientation(PointD a, PointD b, PointD c) {
+  if (const auto s = orientation_filter(a.x, a.y, b.x, b.y, c.x, c.y, FilterInputs::kExact)) {
+    return *s;
+  }
+  return orientation(exact(a), exact(b), exact(c));
 }
 
+// The exact coordinates behind each point type: the point itself, but a FilteredPoint's rational.
+template <typename P>
+const P& exact_coordinates(const P& p) {
+  return p;
+}
+inline const ExactPoint& exact_coordinates(const FilteredPoint& p) { return *p.exact; }
+
 // c lies on the closed segment ab, given that a, b, c are collinear.
-inline bool on_collinear_segment(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c) {
+template <typename P>
+bool on_collinear_segment(const P& a, const P& b, const P& c) {
   return std::min(a.x, b.x) <= c.x && c.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= c.y &&
          c.y <= std::max(a.y, b.y);
 }
 
-// Closed segments ab and cd share at least one point.
-inline bool segments_intersect(const FilteredPoint& a, const FilteredPoint& b,
-                               const FilteredPoint& c, const FilteredPoint& d) {
+// The bounding boxes of ab and cd are apart. On a FilteredPoint's doubles this is still exact:
+// rounding is monotone, so a strict order of the doubles is the rationals' order.
+template <typename P>
+bool boxes_apart(const P& a, const P& b, const P& c, const P& d) {
+  return std::max(a.x, b.x) < std::min(c.x, d.x) || std::max(c.x, d.x) < std::min(a.x, b.x) ||
+         std::max(a.y, b.y) < std::min(c.y, d.y) || std::max(c.y, d.y) < std::min(a.y, b.y);
+}
+
+// Segments ab and cd cross at one point inside both (touching and overlapping do not count).
+template <typename P>
+bool segments_cross_properly(const P& a, const P& b, const P& c, const P& d) {
+  return orientation(a, b, c) * orientation(a, b, d) < 0 &&
+         orientation(c, d, a) * orientation(c, d, b) < 0;
+}
+
+// Closed segments ab and cd share at least one point. Exact.
+template <typename P>
+bool segments_intersect(const P& a, const P& b, const P& c, const P& d) {
+  if (boxes_apart(a, b, c, d)) return false;
   const int o1 = orientation(a, b, c);
   const int o2 = orientation(a, b, d);
   const int o3 = orientation(c, d, a);
   const int o4 = orientation(c, d, b);
   if (o1 * o2 < 0 && o3 * o4 < 0) return true; // proper crossing
-  if (o1 == 0 && on_collinear_segment(*a.exact, *b.exact, *c.exact)) return true;
-  if (o2 == 0 && on_collinear_segment(*a.exact, *b.exact, *d.exact)) return true;
-  if (o3 == 0 && on_collinear_segment(*c.exact, *d.exact, *a.exact)) return true;
-  if (o4 == 0 && on_collinear_segment(*c.exact, *d.exact, *b.exact)) return true;
-  return false;
+  const auto& ea = exact_coordinates(a);
+  const auto& eb = exact_coordinates(b);
+  const auto& ec = exact_coordinates(c);
+  const auto& ed = exact_coordinates(d);
+  return (o1 == 0 && on_collinear_segment(ea, eb, ec)) ||
+         (o2 == 0 && on_collinear_segment(ea, eb, ed)) ||
+         (o3 == 0 && on_collinear_segment(ec, ed, ea)) ||
+         (o4 == 0 && on_collinear_segment(ec, ed, eb));
 }
 
 } // namespace penshape::detail

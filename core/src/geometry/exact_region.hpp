@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <memory>
 
-#include "penshape/core/deconstruct.hpp"
+#include "penshape/core/base.hpp"
 #include "penshape/core/polygon_set.hpp"
 
 namespace penshape::detail {

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "geometry/exact_predicates.hpp"
-#include "penshape/core/deconstruct.hpp"
+#include "penshape/core/base.hpp"
 
 namespace penshape::detail {
 

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "deconstruct/validate_input.hpp"
 #include "engine/engines.hpp"
 #include "geometry/distance_kernel.hpp"
 #include "geometry/segment_distance.hpp"
@@ -157,80 +158,6 @@ std::vector<std::size_t> simplify_ring_indices(const Ring& ring, const Rational&
   return keep;
 }
 
-bool is_valid_region(const PolygonSet& set) {
-  struct Edge {
-    const ExactPoint* a;
-    const ExactPoint* b;
-    std::size_t ring;
-    std::size_t index;
-    std::size_t ring_size;
-    double xmin, xmax, ymin, ymax;
-  };
-  std::vector<Edge> edges;
-  const auto rings = all_rings(set);
-  for (std::size_t r = 0; r < rings.size(); ++r) {
-    const Ring& ring = *rings[r];
-    if (ring.size() < 3 || sgn(twice_signed_area(ring)) == 0) return false;
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-      const ExactPoint& a = ring[i];
-      const ExactPoint& b = ring[(i + 1) % ring.size()];
-      if (a == b) return false;
-      const PointD da = to_double(a);
-      const PointD db = to_double(b);
-      const double pad =
-          1e-9 * (1 + std::abs(da.x) + std::abs(da.y) + std::abs(db.x) + std::abs(db.y));
-      edges.push_back({&a, &b, r, i, ring.size(), std::min(da.x, db.x) - pad,
-                       std::max(da.x, db.x) + pad, std::min(da.y, db.y) - pad,
-                       std::max(da.y, db.y) + pad});
-    }
-  }
-  std::sort(edges.begin(), edges.end(),
-            [](const Edge& x, const Edge& y) { return x.xmin < y.xmin; });
-  for (std::size_t i = 0; i < edges.size(); ++i) {
-    for (std::size_t j = i + 1; j < edges.size() && edges[j].xmin <= edges[i].xmax; ++j) {
-      const Edge& e = edges[i];
-      const Edge& f = edges[j];
-      if (f.ymin > e.ymax || e.ymin > f.ymax) continue;
-      if (e.ring == f.ring) {
-        const std::size_t n = e.ring_size;
-        const bool adjacent = (e.index + 1) % n == f.index || (f.index + 1) % n == e.index;
-        if (adjacent) {
-          // Neighbours share one endpoint; they must not fold back onto each other.
-          const ExactPoint& shared = (e.index + 1) % n == f.index ? *e.b : *e.a;
-          const ExactPoint& p = (e.index + 1) % n == f.index ? *e.a : *e.b;
-          const ExactPoint& q = (e.index + 1) % n == f.index ? *f.b : *f.a;
-          if (detail::orientation(p, shared, q) == 0 &&
-              sgn((p.x - shared.x) * (q.x - shared.x) + (p.y - shared.y) * (q.y - shared.y)) > 0) {
-            return false;
-          }
-          continue;
-        }
-      }
-      if (detail::segments_meet(*e.a, *e.b, *f.a, *f.b)) return false;
-    }
-  }
-  // No edges meet, so nesting is decided by one vertex per ring.
-  for (std::size_t p = 0; p < set.polygons.size(); ++p) {
-    const auto& poly = set.polygons[p];
-    for (const auto& h : poly.holes) {
-      if (!detail::strictly_inside_ring(h.front(), poly.outer)) return false;
-      for (const auto& other : poly.holes) {
-        if (&other != &h && detail::strictly_inside_ring(h.front(), other)) return false;
-      }
-    }
-    for (std::size_t q = 0; q < set.polygons.size(); ++q) {
-      if (q == p) continue;
-      const auto& other = set.polygons[q];
-      if (!detail::strictly_inside_ring(poly.outer.front(), other.outer)) continue;
-      bool in_hole = false;
-      for (const auto& h : other.holes)
-        in_hole |= detail::strictly_inside_ring(poly.outer.front(), h);
-      if (!in_hole) return false;
-    }
-  }
-  return true;
-}
-
 std::size_t distinct_vertex_count(const PolygonSet& set) {
   std::size_t n = 0;
   for (const auto* ring : all_rings(set)) {
@@ -304,7 +231,7 @@ SimplifyResult simplify_solution(const PolygonSet& q, const DeconstructResult& r
         poly.outer = pick(poly.outer, simplify_ring_indices(poly.outer, tau));
         for (auto& h : poly.holes) h = pick(h, simplify_ring_indices(h, tau));
       }
-      if (!is_valid_region(p)) continue; // a chord crossed another ring: try a smaller τ
+      if (!detail::is_valid_region(p)) continue; // a chord crossed another ring: try a smaller τ
     }
     const std::size_t count = distinct_vertex_count(p);
     if (count >= out.solution_vertices) continue; // keep the best of all attempts

@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "penshape/core/base.hpp"
 #include "penshape/core/polygon_set.hpp"
 
 namespace penshape {
@@ -25,19 +26,7 @@ enum class EngineKind { kFast, kReference };
 const char* to_string(Answer a);     // "YES", "NO", "UNDECIDED"
 const char* to_string(EngineKind e); // "fast", "reference"
 
-// Called now and then inside long computations; returning true aborts with Cancelled.
-using CancelHook = std::function<bool()>;
-
-// Thrown when a CancelHook asked to stop.
-struct Cancelled : std::runtime_error {
-  Cancelled() : std::runtime_error("cancelled") {}
-};
-
-// Thrown for input the engines refuse; the message names the problem (which polygon, ring and
-// vertex, which parameter, which bound).
-struct InvalidInput : std::invalid_argument {
-  using std::invalid_argument::invalid_argument;
-};
+// CancelHook, Cancelled and InvalidInput are in penshape/core/base.hpp (included above).
 
 struct DeconstructParams {
   Rational radius;    // r > 0

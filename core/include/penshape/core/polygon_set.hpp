@@ -4,16 +4,12 @@
 // A PolygonSet is a union of disjoint polygons, each an outer ring with holes. Coordinates are
 // GMP rationals so every double converts exactly and every certified result keeps its exact
 // vertices; to_double() is for display only. No CGAL here: this header is used everywhere.
-#include <gmpxx.h>
-
 #include <cstddef>
 #include <vector>
 
-namespace penshape {
+#include "penshape/core/base.hpp" // Rational
 
-// GMP needs canonical rationals (lowest terms, positive denominator): mpq_class(p, q) is not
-// canonical unless p/q already is; call canonicalize() after building one from a fraction.
-using Rational = mpq_class;
+namespace penshape {
 
 struct ExactPoint {
   Rational x;

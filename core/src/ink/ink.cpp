@@ -10,7 +10,7 @@
 #include <numbers>
 #include <string>
 
-#include "penshape/core/deconstruct.hpp"
+#include "penshape/core/base.hpp"
 
 namespace penshape {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "penshape/core/deconstruct.hpp"
+#include "penshape/core/base.hpp"
 
 namespace penshape {
 namespace {

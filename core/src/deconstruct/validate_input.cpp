@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "deconstruct/validate_input.hpp"
 #include "geometry/exact_predicates.hpp"
 #include "geometry/ring_nesting.hpp"
 #include "geometry/segment_sweep.hpp"
@@ -268,6 +269,20 @@ void validate_region(const PolygonSet& q, std::size_t max_vertices, const Cancel
   check_no_crossings(rings, cancel);
   check_nesting(rings, q);
 }
+
+namespace detail {
+
+bool is_valid_region(const PolygonSet& set) {
+  if (set.empty()) return true;
+  try {
+    validate_region(set, std::numeric_limits<std::size_t>::max());
+  } catch (const InvalidInput&) {
+    return false;
+  }
+  return true;
+}
+
+} // namespace detail
 
 void validate_deconstruct_input(const PolygonSet& q, const DeconstructParams& params,
                                 const DeconstructLimits& limits, const CancelHook& cancel) {

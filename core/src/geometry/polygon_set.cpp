@@ -1,3 +1,4 @@
+// The public PolygonSet's functions (polygon_set.hpp): exact conversion, area, ring orientation.
 #include "penshape/core/polygon_set.hpp"
 
 #include <algorithm>

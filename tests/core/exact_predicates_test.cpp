@@ -1,0 +1,135 @@
+// The kernel's orientation filter and segment intersection (geometry/exact_predicates.hpp)
+// against plain rational arithmetic written here, on the inputs where a filter goes wrong: the
+// classic grid of near-collinear double triples (Kettner et al., "Classroom examples of robustness
+// problems"), rationals whose doubles are off by an ulp, tiny and huge coordinates, and segments
+// that touch, overlap or miss by one ulp. All three point types must give the exact answer.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "geometry/exact_predicates.hpp"
+
+namespace penshape::detail {
+namespace {
+
+int reference_orientation(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c) {
+  const Rational det = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+  return sgn(det);
+}
+
+int filtered_orientation(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c) {
+  return orientation(filtered(a), filtered(b), filtered(c));
+}
+
+// (0.5 + i·ulp, 0.5 + j·ulp) against (12, 12) and (24, 24): doubles alone get many signs wrong.
+TEST(OrientationFilter, NearCollinearDoubleGridIsExact) {
+  const double ulp = std::nextafter(0.5, 1.0) - 0.5;
+  const PointD q{12, 12}, r{24, 24};
+  int wrong_without_filter = 0;
+  for (int i = 0; i < 64; ++i) {
+    for (int j = 0; j < 64; ++j) {
+      const PointD p{0.5 + i * ulp, 0.5 + j * ulp};
+      const int truth = reference_orientation(exact(p), exact(q), exact(r));
+      ASSERT_EQ(orientation(p, q, r), truth) << i << ' ' << j;
+      ASSERT_EQ(orientation(q, r, p), truth) << i << ' ' << j;
+      ASSERT_EQ(filtered_orientation(exact(p), exact(q), exact(r)), truth);
+      const double naive = (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x);
+      wrong_without_filter += (naive > 0) - (naive < 0) != truth;
+    }
+  }
+  EXPECT_GT(wrong_without_filter, 0); // the grid does reach the filter's hard cases
+}
+
+// Rationals that are no doubles, nearly collinear: the doubles the filter sees are truncations,
+// so the input error term of the bound is what keeps the sign right.
+TEST(OrientationFilter, RoundedRationalInputsAreExact) {
+  std::mt19937_64 rng(27);
+  std::uniform_int_distribution<long> num(-1'000'000, 1'000'000);
+  std::uniform_int_distribution<long> den(3, 999);
+  int collinear = 0;
+  for (int k = 0; k < 20'000; ++k) {
+    // a and b random, c = a + t (b - a) + a perturbation far below an ulp of the coordinates.
+    ExactPoint a{Rational(num(rng), den(rng)), Rational(num(rng), den(rng))};
+    ExactPoint b{Rational(num(rng), den(rng)), Rational(num(rng), den(rng))};
+    a.x.canonicalize(), a.y.canonicalize(), b.x.canonicalize(), b.y.canonicalize();
+    Rational t(num(rng), 1'000'003);
+    t.canonicalize();
+    Rational nudge(num(rng) % 3, 1);
+    nudge /= Rational(mpz_class(1) << 80);
+    ExactPoint c{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y) + nudge};
+    const int truth = reference_orientation(a, b, c);
+    collinear += truth == 0;
+    ASSERT_EQ(filtered_orientation(a, b, c), truth) << k;
+    ASSERT_EQ(filtered_orientation(b, c, a), truth) << k;
+    ASSERT_EQ(orientation(a, b, c), truth) << k;
+  }
+  EXPECT_GT(collinear, 100);
+}
+
+TEST(OrientationFilter, TinyAndHugeCoordinates) {
+  for (const double s : {1e-310, 1e-200, 1e-150, 1.0, 1e150, 1e300}) {
+    const PointD a{0, 0}, b{s, s}, c{2 * s, std::nextafter(2 * s, 0.0)};
+    const int truth = reference_orientation(exact(a), exact(b), exact(c));
+    EXPECT_EQ(orientation(a, b, c), truth) << s;
+    EXPECT_EQ(filtered_orientation(exact(a), exact(b), exact(c)), truth) << s;
+    const PointD d{s, 0}, e{0, s}, f{s / 2, s / 2};
+    EXPECT_EQ(orientation(d, e, f), reference_orientation(exact(d), exact(e), exact(f))) << s;
+  }
+}
+
+bool reference_intersect(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c,
+                         const ExactPoint& d) {
+  const auto on = [](const ExactPoint& p, const ExactPoint& q, const ExactPoint& r) {
+    return std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x) && std::min(p.y, q.y) <= r.y &&
+           r.y <= std::max(p.y, q.y);
+  };
+  const int o1 = reference_orientation(a, b, c), o2 = reference_orientation(a, b, d);
+  const int o3 = reference_orientation(c, d, a), o4 = reference_orientation(c, d, b);
+  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+  return (o1 == 0 && on(a, b, c)) || (o2 == 0 && on(a, b, d)) || (o3 == 0 && on(c, d, a)) ||
+         (o4 == 0 && on(c, d, b));
+}
+
+// Segments on a small lattice scaled by an awkward double: touching, overlapping, crossing and
+// missing, with every point type.
+TEST(SegmentsIntersect, AllPointTypesAgreeWithRationals) {
+  std::mt19937_64 rng(7);
+  std::uniform_int_distribution<int> coord(0, 4);
+  const double scale = 0.1;
+  int meets = 0, proper = 0;
+  for (int k = 0; k < 20'000; ++k) {
+    PointD p[4];
+    for (auto& q : p) q = {coord(rng) * scale, coord(rng) * scale};
+    ExactPoint e[4];
+    for (int i = 0; i < 4; ++i) e[i] = exact(p[i]);
+    const bool truth = reference_intersect(e[0], e[1], e[2], e[3]);
+    meets += truth;
+    ASSERT_EQ(segments_intersect(p[0], p[1], p[2], p[3]), truth) << k;
+    ASSERT_EQ(segments_intersect(e[0], e[1], e[2], e[3]), truth) << k;
+    const FilteredPoint f[4] = {filtered(e[0]), filtered(e[1]), filtered(e[2]), filtered(e[3])};
+    ASSERT_EQ(segments_intersect(f[0], f[1], f[2], f[3]), truth) << k;
+    const bool crosses = segments_cross_properly(p[0], p[1], p[2], p[3]);
+    proper += crosses;
+    if (crosses) {
+      ASSERT_TRUE(truth);
+    }
+  }
+  EXPECT_GT(meets, 1000);
+  EXPECT_GT(proper, 100);
+}
+
+TEST(SegmentsIntersect, OneUlpApartAndTouching) {
+  const PointD a{0, 0}, b{1, 1};
+  const double x = 0.3;
+  const double y = std::nextafter(0.3, 1.0);
+  EXPECT_TRUE(segments_intersect(a, b, PointD{x, x}, PointD{1, 0}));  // touches at (0.3, 0.3)
+  EXPECT_FALSE(segments_intersect(a, b, PointD{y, x}, PointD{1, 0})); // one ulp to the right
+  EXPECT_FALSE(segments_cross_properly(a, b, PointD{x, x}, PointD{1, 0}));
+  EXPECT_TRUE(segments_intersect(a, b, PointD{1, 1}, PointD{2, 2})); // collinear, one end shared
+  EXPECT_FALSE(segments_intersect(a, b, PointD{y + 1, y + 1}, PointD{2, 2}));
+}
+
+} // namespace
+} // namespace penshape::detail
