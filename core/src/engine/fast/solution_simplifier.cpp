@@ -30,8 +30,9 @@ using namespace penshape::fast;
 
 // Largest total turn of one cap: Theorem 5 splits arcs into pieces of at most a quarter circle.
 constexpr double kMaxCapTurn = std::numbers::pi / 2 * 0.95;
-// Work cap of the single-vertex drops: checks × (|Q̃| + |P|) vertices, so a large input pays a
-// few checks rather than two per vertex of P (a cost bound, about 2^20 / 2000 checks on KAZ).
+// Work cap of the whole checks of candidates and of the single-vertex drops: checks ×
+// (|Q̃| + |P|) vertices each, so a large input pays a few checks rather than two per vertex of P
+// (a cost bound, about 2^20 / 2000 checks on KAZ, 5 on 200,000 vertices).
 constexpr std::size_t kDropWork = std::size_t{1} << 20;
 // Q_s for the checks here is simplified at d / kInputFraction (d = delta in grid units).
 constexpr double kInputFraction = 16.0;
@@ -153,6 +154,33 @@ bool drop_vertices(const YesCheckInput& in, IRegion& region, std::size_t& budget
   return dropped;
 }
 
+// The fewest-vertex candidate that verifies: indented caps removed, or not, then Douglas-Peucker
+// coarsest first (the first that verifies and saves vertices wins per family); at most `checks`
+// verifications. Nothing when none verifies.
+std::optional<IRegion> coarsest_verified(const YesCheckInput& in, const IRegion& raw, double eps,
+                                         double d, std::size_t& checks, const CancelHook& cancel) {
+  IRings capped;
+  for (const IRing& ring : flatten(raw)) capped.push_back(remove_caps(ring));
+  const IRings plain = flatten(raw);
+  std::optional<IRegion> best;
+  std::size_t best_count = vertex_count(raw);
+  for (const IRings* rings_ptr : std::array<const IRings*, 2>{&capped, &plain}) {
+    for (double tol = eps / 2.0; tol >= d / 16.0 && checks > 0; tol /= 2.0) {
+      if (cancel && cancel()) throw Cancelled();
+      const IRegion candidate = simplify(*rings_ptr, tol);
+      const std::size_t count = vertex_count(candidate);
+      if (candidate.empty() || count >= best_count) continue;
+      --checks;
+      if (verify_yes(in, candidate, cancel)) {
+        best = candidate;
+        best_count = count;
+        break;
+      }
+    }
+  }
+  return best;
+}
+
 } // namespace
 
 std::optional<PolygonSet> simplify_fast_solution(const PolygonSet& q_any,
@@ -187,30 +215,13 @@ std::optional<PolygonSet> simplify_fast_solution(const PolygonSet& q_any,
                          d / 32.0};
 
   const IRegion raw = to_grid(frame, solution);
-  IRings capped;
-  for (const IRing& ring : flatten(raw)) capped.push_back(remove_caps(ring));
-  std::optional<IRegion> best;
-  std::size_t best_count = vertex_count(raw);
-  // Coarsest first; the first candidate that verifies and saves vertices wins per family.
-  const IRings plain = flatten(raw);
-  for (const IRings* rings_ptr : std::array<const IRings*, 2>{&capped, &plain}) {
-    const IRings& rings = *rings_ptr;
-    for (double tol = eps / 2.0; tol >= d / 16.0; tol /= 2.0) {
-      if (cancel && cancel()) throw Cancelled();
-      const IRegion candidate = simplify(rings, tol);
-      const std::size_t count = vertex_count(candidate);
-      if (candidate.empty() || count >= best_count) continue;
-      if (verify_yes(in, candidate, cancel)) {
-        best = candidate;
-        best_count = count;
-        break;
-      }
-    }
-  }
-  if (!best) return std::nullopt;
-  // Then single vertices: at most two checks per vertex, within the work cap.
   std::size_t q_count = 0;
   for (const IRing& ring : grid.rings) q_count += ring.size();
+  // Whole checks of Douglas-Peucker candidates, within the same work cap as the drops below.
+  std::size_t checks = std::max<std::size_t>(1, kDropWork / (q_count + vertex_count(raw)));
+  std::optional<IRegion> best = coarsest_verified(in, raw, eps, d, checks, cancel);
+  if (!best) return std::nullopt;
+  // Then single vertices: at most two checks per vertex, within the work cap.
   std::size_t budget =
       std::min(2 * vertex_count(*best), kDropWork / (q_count + vertex_count(*best)));
   while (budget > 0 && drop_vertices(in, *best, budget, cancel)) {
