@@ -131,6 +131,7 @@ std::string write_star(const penshape::PolygonSet& q) {
 
 // `penshape deconstruct FILE ...` as a child: its exit status, and its CPU ms (user + system).
 int run_cli(const std::vector<std::string>& args, double& cpu) {
+  std::fflush(stdout); // the child must not write our buffered table again
   const pid_t pid = fork();
   if (pid == 0) {
     std::vector<char*> argv;
