@@ -337,11 +337,12 @@ class Walker {
   bool check(const Piece& s) {
     // Distance every represented curve point must keep from B's edges: clearance + error.
     const double need = add_up(q_.clearance, s.error);
+    // Deep inside {d(·, A) < level}: every piece point is within half its length of the
+    // midpoint and every curve point within `error` of the piece (1-Lipschitz). Tried first:
+    // most offset segments of a jagged A are, and this asks one edge, not all of B's near ones.
+    if (some_edge_closer(*q_.a, on(s, 0.5), deep_threshold(s))) return true;
     const bool far = far_from_b(s, 0.0, 1.0, need);
     if (far && outside_b(s, 0.0, 1.0, need)) return true;
-    // Deep inside {d(·, A) < level}: every piece point is within half its length of the
-    // midpoint and every curve point within `error` of the piece (1-Lipschitz).
-    if (some_edge_closer(*q_.a, on(s, 0.5), deep_threshold(s))) return true;
     // Near or inside B: drop the parts proven closer than `level` to A (all of the piece when
     // it lies inside B), then check the remaining gaps.
     std::vector<Interval> forbidden;
