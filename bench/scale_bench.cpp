@@ -117,9 +117,9 @@ constexpr double kTargetMs = 700.0;
 
 // The star as x-y text (its coordinates are multiples of 1/1024: %.17g prints them exactly).
 std::string write_star(const penshape::PolygonSet& q) {
-  const std::string path = (std::filesystem::temp_directory_path() /
-                            ("scale_bench_star_" + std::to_string(getpid()) + ".txt"))
-                               .string();
+  std::string path = (std::filesystem::temp_directory_path() /
+                      ("scale_bench_star_" + std::to_string(getpid()) + ".txt"))
+                         .string();
   std::ofstream out(path);
   char line[96];
   for (const auto& v : q.polygons[0].outer) {
@@ -135,6 +135,7 @@ int run_cli(const std::vector<std::string>& args, double& cpu) {
   const pid_t pid = fork();
   if (pid == 0) {
     std::vector<char*> argv;
+    argv.reserve(args.size() + 1);
     for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
     if (std::freopen("/dev/null", "w", stdout) == nullptr) _exit(127);
