@@ -1,15 +1,21 @@
-// Offset deconstruction, fast engine side by side with the reference engine (the paper's
-// algorithm with CGAL) on the 1,881-vertex Kazakhstan polygon, eps = r/2, delta = eps/8,
-// r = w/10, w/30, w/50, w/100; then a 1,000-sample stroke → ink polygon + decision (p50/p99).
+// Offset deconstruction, the default engine (fast, with its fallbacks) side by side with the
+// reference engine (the paper's algorithm, literally, on CGAL's exact kernel) on the 1,881-vertex
+// Kazakhstan polygon, eps = r/2, delta = eps/8, r = w/10, w/30, w/50, w/100: median thread CPU
+// time of N runs, the two engines alternated so both see the same machine load, and their ratio.
+// Issue 26's target is the ratio at r = w/30 (>= 25x): below it the row says FAIL and the bench
+// exits 1. Then a 1,000-sample stroke → ink polygon + decision (p50/p99, wall time).
 //
-//   deconstruct_bench [--json] [--data DIR] [--runs N]
+//   deconstruct_bench [--json] [--data DIR] [--runs N] [--only-default N]
 //
+// --only-default N runs the default engine N times at r = w/30 and nothing else (for perf).
+
 // DIR defaults to $PENSHAPE_SHARED_DATA_DIR or the configured shared data directory.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <fstream>
 #include <functional>
 #include <numbers>
@@ -45,21 +51,35 @@ double seconds_of(const std::function<void()>& f) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
+// Thread CPU seconds: what the shared machine's other load inflates least.
+double cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + static_cast<double>(ts.tv_nsec) * 1e-9;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
 struct EngineRun {
   penshape::DeconstructResult result;
-  double median_s = 0;
+  std::vector<double> cpu_s;
 };
 
-EngineRun run_engine(const penshape::PolygonSet& q, penshape::DeconstructParams p, int runs) {
-  EngineRun out;
-  std::vector<double> times;
-  for (int i = 0; i < runs; ++i) {
-    times.push_back(seconds_of([&] { out.result = penshape::deconstruct(q, p); }));
-  }
-  std::sort(times.begin(), times.end());
-  out.median_s = times[times.size() / 2];
-  return out;
+// One more deconstruct() call with `engine`, its thread CPU time appended.
+void run_once(const penshape::PolygonSet& q, penshape::DeconstructParams p,
+              penshape::EngineKind engine, EngineRun& into) {
+  p.engine = engine;
+  const double c0 = cpu_seconds();
+  into.result = penshape::deconstruct(q, p);
+  into.cpu_s.push_back(cpu_seconds() - c0);
 }
+
+// Issue 26: at r = w/30 the default engine is at least this many times faster than the
+// reference engine (the literal algorithm).
+constexpr double kRatioTarget = 25.0;
 
 // A real $1 stroke resampled to n points along its length, scaled to millimetres.
 std::vector<penshape::InkSample> resampled_stroke(const std::string& xml, std::size_t n,
@@ -98,7 +118,8 @@ double percentile(std::vector<double> v, double p) {
 
 int main(int argc, char** argv) {
   bool json = false;
-  int runs = 3;
+  int runs = 5;
+  int only_default = 0;
   std::string data = penshape::bench::shared_data_dir();
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -108,8 +129,12 @@ int main(int argc, char** argv) {
       data = argv[++i];
     } else if (a == "--runs" && i + 1 < argc) {
       runs = std::max(1, std::atoi(argv[++i]));
+    } else if (a == "--only-default" && i + 1 < argc) {
+      only_default = std::max(1, std::atoi(argv[++i]));
     } else {
-      std::fprintf(stderr, "usage: deconstruct_bench [--json] [--data DIR] [--runs N]\n");
+      std::fprintf(stderr,
+                   "usage: deconstruct_bench [--json] [--data DIR] [--runs N] "
+                   "[--only-default N]\n");
       return 2;
     }
   }
@@ -124,37 +149,63 @@ int main(int argc, char** argv) {
     hi = std::max(hi, v.x);
   }
   const Rational w = hi - lo;
+  if (only_default > 0) {
+    const Rational r = w / 30;
+    EngineRun run;
+    for (int i = 0; i < only_default; ++i) {
+      run_once(q, {r, r / 2, r / 16}, penshape::EngineKind::kFast, run);
+    }
+    std::printf("default engine, r = w/30: %s, median thread CPU %.2f ms of %d runs\n",
+                penshape::to_string(run.result.answer), median(run.cpu_s) * 1e3, only_default);
+    return 0;
+  }
   if (!json) {
     std::printf(
-        "kazakhstan_paper1881 (%zu vertices, w = %.4f), eps = r/2, delta = eps/8, median of %d\n",
+        "kazakhstan_paper1881 (%zu vertices, w = %.4f), eps = r/2, delta = eps/8,\n"
+        "median thread CPU ms of %d runs, the engines alternated\n",
         q.vertex_count(), w.get_d(), runs);
-    std::printf("%-8s | %-9s %10s %6s | %-9s %10s %6s | %8s\n", "r", "reference", "ms", "|P|",
-                "fast", "ms", "|P|", "ref/fast");
+    std::printf("%-8s | %-9s %10s %6s | %-9s %10s %6s | %8s\n", "r", "reference", "cpu ms", "|P|",
+                "default", "cpu ms", "|P|", "ref/def");
   }
+  double ratio_w30 = 0;
   for (int divisor : {10, 30, 50, 100}) {
     const Rational r = w / divisor;
     const Rational e = r / 2;
-    penshape::DeconstructParams p{r, e, e / 8, penshape::EngineKind::kReference};
-    const EngineRun ref = run_engine(q, p, runs);
-    p.engine = penshape::EngineKind::kFast;
-    const EngineRun fast = run_engine(q, p, runs);
-    const double ratio = ref.median_s / fast.median_s;
+    const penshape::DeconstructParams p{r, e, e / 8};
+    EngineRun ref, fast;
+    for (int i = 0; i < runs; ++i) {
+      run_once(q, p, penshape::EngineKind::kReference, ref);
+      run_once(q, p, penshape::EngineKind::kFast, fast);
+    }
+    const double ref_s = median(ref.cpu_s), fast_s = median(fast.cpu_s);
+    const double ratio = ref_s / fast_s;
+    if (divisor == 30) ratio_w30 = ratio;
     if (json) {
       std::printf(
           "{\"case\":\"kazakhstan_paper1881\",\"r\":\"w/%d\",\"radius\":%.17g,\"reference\":{"
-          "\"answer\":\"%s\",\"seconds\":%.6g,\"solution_vertices\":%zu},\"fast\":{\"answer\":\"%"
-          "s\","
-          "\"seconds\":%.6g,\"solution_vertices\":%zu},\"ratio\":%.4g,\"same_answer\":%s}\n",
-          divisor, r.get_d(), penshape::to_string(ref.result.answer), ref.median_s,
+          "\"answer\":\"%s\",\"cpu_seconds\":%.6g,\"solution_vertices\":%zu},\"default\":{"
+          "\"answer\":\"%s\",\"engine\":\"%s\",\"cpu_seconds\":%.6g,\"solution_vertices\":%zu},"
+          "\"ratio\":%.4g,\"same_answer\":%s}\n",
+          divisor, r.get_d(), penshape::to_string(ref.result.answer), ref_s,
           ref.result.solution.vertex_count(), penshape::to_string(fast.result.answer),
-          fast.median_s, fast.result.solution.vertex_count(), ratio,
-          ref.result.answer == fast.result.answer ? "true" : "false");
+          penshape::to_string(fast.result.engine), fast_s, fast.result.solution.vertex_count(),
+          ratio, ref.result.answer == fast.result.answer ? "true" : "false");
     } else {
       std::printf("w/%-6d | %-9s %10.2f %6zu | %-9s %10.2f %6zu | %7.2fx\n", divisor,
-                  penshape::to_string(ref.result.answer), ref.median_s * 1e3,
+                  penshape::to_string(ref.result.answer), ref_s * 1e3,
                   ref.result.solution.vertex_count(), penshape::to_string(fast.result.answer),
-                  fast.median_s * 1e3, fast.result.solution.vertex_count(), ratio);
+                  fast_s * 1e3, fast.result.solution.vertex_count(), ratio);
     }
+  }
+  const bool ratio_ok = ratio_w30 >= kRatioTarget;
+  if (json) {
+    std::printf(
+        "{\"case\":\"ratio_target\",\"r\":\"w/30\",\"ratio\":%.4g,\"target\":%.4g,"
+        "\"ok\":%s}\n",
+        ratio_w30, kRatioTarget, ratio_ok ? "true" : "false");
+  } else {
+    std::printf("KAZ r=w/30 reference/default = %.1fx (target >= %.0fx): %s\n", ratio_w30,
+                kRatioTarget, ratio_ok ? "ok" : "FAIL");
   }
 
   // A 1,000-sample stroke: the $1 pigtail (loops, a crossing) at 0.2 mm per pixel, pen radius
@@ -218,5 +269,5 @@ int main(int argc, char** argv) {
         pressure_ink.region.vertex_count(), percentile(pressure_s, 0.5) * 1e3,
         percentile(pressure_s, 0.99) * 1e3);
   }
-  return 0;
+  return ratio_ok ? 0 : 1;
 }

@@ -149,33 +149,6 @@ std::vector<const ExactPoint*> vertex_candidates(const PolygonSet& q, const Grid
   return out;
 }
 
-// Q_s: a Douglas-Peucker copy of Q̃ with a checked distance (H(Q, Q_s) <= eta), simple and
-// consistently nested, or Q̃ itself; empty index when not even Q̃ is (then YES cannot be
-// certified: a finer precision gives a finer grid).
-struct CertifiedInput {
-  std::optional<SegmentIndex> index;
-  double eta = kInputRounding;
-};
-
-CertifiedInput certified_input(const IRings& q_grid, double tolerance, double cell) {
-  CertifiedInput out;
-  if (q_grid.empty()) return out;
-  // Narrow features can make a coarse simplification cross itself: retry finer.
-  for (double tol = tolerance; tol >= tolerance / 8.0 && !out.index; tol /= 2.0) {
-    if (auto q_dp = simplify_rings_checked(q_grid, tol)) {
-      out.index.emplace(*q_dp, cell);
-      out.eta = add_up(kInputRounding, tol);
-      if (!is_certifiable_region(*out.index)) out.index.reset();
-    }
-  }
-  if (!out.index) {
-    out.eta = kInputRounding;
-    out.index.emplace(q_grid, cell);
-    if (!is_certifiable_region(*out.index)) out.index.reset();
-  }
-  return out;
-}
-
 // One decision: the grid, Q̃ and its solid part, then the YES and NO attempts.
 class FastDecision {
  public:

@@ -187,8 +187,13 @@ class Walker {
         // true segment is within the larger deviation of the piece (convexity).
         const Rep& p = out_[i];
         const Rep& q = in_[(i + 1) % n];
-        if (!check({p.p, q.p, std::max(p.dev, q.dev)})) return false;
-        if (orientation(prev, v, next) > 0 && !arc(prev, v, next, in_[i], out_[i])) return false;
+        const double dev = std::max(p.dev, q.dev);
+        if (!outside_window(p.p, q.p, dev) && !check({p.p, q.p, dev})) return false;
+        // Every point of the arc around v is within `level` of v (and its chords too).
+        if (orientation(prev, v, next) > 0 && !outside_window(to_d(v), to_d(v), q_.level) &&
+            !arc(prev, v, next, in_[i], out_[i])) {
+          return false;
+        }
         if ((++pieces_ & 255U) == 0 && cancel_ && cancel_()) throw Cancelled();
       }
     }
@@ -196,6 +201,16 @@ class Walker {
   }
 
  private:
+  // Whether every point within `reach` of the segment [p, q] is outside the query's window (two
+  // units spare cover the rounding of these double sums; false without a window).
+  [[nodiscard]] bool outside_window(DPt p, DPt q, double reach) const {
+    if (q_.window == nullptr) return false;
+    const Window& w = *q_.window;
+    const double r = reach + 2.0;
+    return std::min(p.x, q.x) - r > w.hi_x || std::max(p.x, q.x) + r < w.lo_x ||
+           std::min(p.y, q.y) - r > w.hi_y || std::max(p.y, q.y) + r < w.lo_y;
+  }
+
   // A double standing for an exact point of the level set, and its proven distance to it.
   struct Rep {
     DPt p;
@@ -322,11 +337,12 @@ class Walker {
   bool check(const Piece& s) {
     // Distance every represented curve point must keep from B's edges: clearance + error.
     const double need = add_up(q_.clearance, s.error);
+    // Deep inside {d(·, A) < level}: every piece point is within half its length of the
+    // midpoint and every curve point within `error` of the piece (1-Lipschitz). Tried first:
+    // most offset segments of a jagged A are, and this asks one edge, not all of B's near ones.
+    if (some_edge_closer(*q_.a, on(s, 0.5), deep_threshold(s))) return true;
     const bool far = far_from_b(s, 0.0, 1.0, need);
     if (far && outside_b(s, 0.0, 1.0, need)) return true;
-    // Deep inside {d(·, A) < level}: every piece point is within half its length of the
-    // midpoint and every curve point within `error` of the piece (1-Lipschitz).
-    if (some_edge_closer(*q_.a, on(s, 0.5), deep_threshold(s))) return true;
     // Near or inside B: drop the parts proven closer than `level` to A (all of the piece when
     // it lies inside B), then check the remaining gaps.
     std::vector<Interval> forbidden;

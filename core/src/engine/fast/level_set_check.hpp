@@ -15,12 +15,22 @@
 
 namespace penshape::fast {
 
+// An axis-parallel box of the grid plane.
+struct Window {
+  double lo_x, lo_y, hi_x, hi_y;
+};
+
 struct LevelSetQuery {
   const SegmentIndex* a = nullptr; // region whose level set is walked
   double level = 0.0;              // grid units, > 1, taken as exact
   const SegmentIndex* b = nullptr; // region the level set must stay away from
   double clearance = 0.0;          // grid units, >= 3/4 (> the rounding of a point to the grid)
   double max_sagitta = 1.0;        // chord error allowed when walking arcs
+  // When set, only the level set's points inside this box are checked: pieces of the walk
+  // whose every point is proven outside it (with two units to spare for the doubles' rounding
+  // of the box comparisons, whose coordinates are below 2^32) are skipped. The caller proves
+  // the points outside some other way (yes_certificate.cpp: a local change of B).
+  const Window* window = nullptr;
 };
 
 bool level_set_avoids(const LevelSetQuery& query, const CancelHook& cancel);

@@ -30,9 +30,12 @@ using namespace penshape::fast;
 
 // Largest total turn of one cap: Theorem 5 splits arcs into pieces of at most a quarter circle.
 constexpr double kMaxCapTurn = std::numbers::pi / 2 * 0.95;
-// Work cap of the single-vertex drops: checks × (|Q̃| + |P|) vertices, so a large input pays a
-// few checks rather than two per vertex of P (a cost bound, about 2^20 / 2000 checks on KAZ).
+// Work cap of the whole checks of candidates and of the single-vertex drops: checks ×
+// (|Q̃| + |P|) vertices each, so a large input pays a few checks rather than two per vertex of P
+// (a cost bound, about 2^20 / 2000 checks on KAZ, 5 on 200,000 vertices).
 constexpr std::size_t kDropWork = std::size_t{1} << 20;
+// Q_s for the checks here is simplified at d / kInputFraction (d = delta in grid units).
+constexpr double kInputFraction = 16.0;
 
 double turn_angle(IPt a, IPt b, IPt c) { // signed, positive for a left turn
   const double ux = static_cast<double>(b.x - a.x);
@@ -120,8 +123,9 @@ IRing& ring_at(IRegion& region, std::size_t p, std::size_t r) {
   return r == 0 ? region[p].outer : region[p].holes[r - 1];
 }
 
-// Each ring of `region` in turn: a vertex is dropped when the region without it still verifies
-// (the same YES check, so nothing is trusted), else kept. `budget` caps the number of checks.
+// Each ring of `region` (which verify_yes accepted) in turn: a vertex is dropped when the region
+// without it still verifies (the same YES check, walked only near the dropped vertex's triangle,
+// which is all that changes: verify_yes_after_drop), else kept. `budget` caps the checks.
 bool drop_vertices(const YesCheckInput& in, IRegion& region, std::size_t& budget,
                    const CancelHook& cancel) {
   bool dropped = false;
@@ -134,8 +138,11 @@ bool drop_vertices(const YesCheckInput& in, IRegion& region, std::size_t& budget
         --budget;
         IRegion candidate = region;
         IRing& ring = ring_at(candidate, p, r);
+        const std::size_t n = ring.size();
+        const IPt before = ring[(i + n - 1) % n], gone = ring[i], after = ring[(i + 1) % n];
         ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(i));
-        if (verify_yes(in, candidate, cancel)) {
+        // `region` verified (before the pass, or as a candidate): only T's surroundings change.
+        if (verify_yes_after_drop(in, candidate, before, gone, after, cancel)) {
           region = std::move(candidate); // the next vertex is now at i
           dropped = true;
         } else {
@@ -145,6 +152,33 @@ bool drop_vertices(const YesCheckInput& in, IRegion& region, std::size_t& budget
     }
   }
   return dropped;
+}
+
+// The fewest-vertex candidate that verifies: indented caps removed, or not, then Douglas-Peucker
+// coarsest first (the first that verifies and saves vertices wins per family); at most `checks`
+// verifications. Nothing when none verifies.
+std::optional<IRegion> coarsest_verified(const YesCheckInput& in, const IRegion& raw, double eps,
+                                         double d, std::size_t& checks, const CancelHook& cancel) {
+  IRings capped;
+  for (const IRing& ring : flatten(raw)) capped.push_back(remove_caps(ring));
+  const IRings plain = flatten(raw);
+  std::optional<IRegion> best;
+  std::size_t best_count = vertex_count(raw);
+  for (const IRings* rings_ptr : std::array<const IRings*, 2>{&capped, &plain}) {
+    for (double tol = eps / 2.0; tol >= d / 16.0 && checks > 0; tol /= 2.0) {
+      if (cancel && cancel()) throw Cancelled();
+      const IRegion candidate = simplify(*rings_ptr, tol);
+      const std::size_t count = vertex_count(candidate);
+      if (candidate.empty() || count >= best_count) continue;
+      --checks;
+      if (verify_yes(in, candidate, cancel)) {
+        best = candidate;
+        best_count = count;
+        break;
+      }
+    }
+  }
+  return best;
 }
 
 } // namespace
@@ -160,18 +194,20 @@ std::optional<PolygonSet> simplify_fast_solution(const PolygonSet& q_any,
   const double eps = frame.units(params.tolerance);
   const double d = frame.units(params.precision);
   const GridInput grid = frame.round(q);
-  // The certificate's region A is the solid part of Q̃ itself (η = input rounding): slower than
-  // decide_fast's simplified copy, but there is only a handful of candidates. B is all of Q̃.
+  // The certificate's region A is a Douglas-Peucker copy Q_s of the solid part of Q̃, as in
+  // decide_fast, but finer (d/16 instead of d/4): the drop pass checks up to two candidates
+  // per vertex of P, and each walks A's level set, so A's size is what they cost (the solid
+  // part itself made KAZ's pass take about 1 s and a 200,000-vertex input's 20 s); the finer
+  // tolerance leaves the drops most of the room. B is all of Q̃.
   std::vector<std::size_t> left_out;
   const IRings solid = grid.solid_rings(left_out);
-  if (solid.empty()) return std::nullopt;
-  const SegmentIndex a_index(solid, eps / 2.0);
-  if (!is_certifiable_region(a_index)) return std::nullopt;
+  const CertifiedInput a = certified_input(solid, d / kInputFraction, eps / 2.0);
+  if (!a.index) return std::nullopt;
   const SegmentIndex q_index(grid.rings, eps / 2.0);
   std::vector<IPt> q_vertices;
   for (const auto& poly : q.polygons) q_vertices.push_back(frame.round(poly.outer.front()));
-  const YesCheckInput in{&a_index,
-                         kInputRounding,
+  const YesCheckInput in{&*a.index,
+                         a.eta,
                          &q_index,
                          q_vertices,
                          frame.bounds(params.radius),
@@ -179,30 +215,13 @@ std::optional<PolygonSet> simplify_fast_solution(const PolygonSet& q_any,
                          d / 32.0};
 
   const IRegion raw = to_grid(frame, solution);
-  IRings capped;
-  for (const IRing& ring : flatten(raw)) capped.push_back(remove_caps(ring));
-  std::optional<IRegion> best;
-  std::size_t best_count = vertex_count(raw);
-  // Coarsest first; the first candidate that verifies and saves vertices wins per family.
-  const IRings plain = flatten(raw);
-  for (const IRings* rings_ptr : std::array<const IRings*, 2>{&capped, &plain}) {
-    const IRings& rings = *rings_ptr;
-    for (double tol = eps / 2.0; tol >= d / 16.0; tol /= 2.0) {
-      if (cancel && cancel()) throw Cancelled();
-      const IRegion candidate = simplify(rings, tol);
-      const std::size_t count = vertex_count(candidate);
-      if (candidate.empty() || count >= best_count) continue;
-      if (verify_yes(in, candidate, cancel)) {
-        best = candidate;
-        best_count = count;
-        break;
-      }
-    }
-  }
-  if (!best) return std::nullopt;
-  // Then single vertices: at most two checks per vertex, within the work cap.
   std::size_t q_count = 0;
   for (const IRing& ring : grid.rings) q_count += ring.size();
+  // Whole checks of Douglas-Peucker candidates, within the same work cap as the drops below.
+  std::size_t checks = std::max<std::size_t>(1, kDropWork / (q_count + vertex_count(raw)));
+  std::optional<IRegion> best = coarsest_verified(in, raw, eps, d, checks, cancel);
+  if (!best) return std::nullopt;
+  // Then single vertices: at most two checks per vertex, within the work cap.
   std::size_t budget =
       std::min(2 * vertex_count(*best), kDropWork / (q_count + vertex_count(*best)));
   while (budget > 0 && drop_vertices(in, *best, budget, cancel)) {

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 
+#include <optional>
 #include "certified.hpp"
+#include "douglas_peucker.hpp"
 #include "grid_frame.hpp"
 #include "level_set_check.hpp"
 
@@ -17,7 +19,17 @@ bool within(const SegmentIndex& region, IPt v, double bound) {
 
 } // namespace
 
-bool verify_yes(const YesCheckInput& in, const IRegion& p, const CancelHook& cancel) {
+namespace {
+
+// A box around `t` grown by `by` on every side.
+Window grown(const Window& t, double by) {
+  return {t.lo_x - by, t.lo_y - by, t.hi_x + by, t.hi_y + by};
+}
+
+// verify_yes, with the level-set walks limited to the neighbourhood of `changed` when given
+// (verify_yes_after_drop says why that suffices).
+bool verify(const YesCheckInput& in, const IRegion& p, const Window* changed,
+            const CancelHook& cancel) {
   if (p.empty()) return false;
   const SegmentIndex pi(flatten(p), in.radius.lo / 2.0);
   if (!is_certifiable_region(pi)) return false;
@@ -38,12 +50,52 @@ bool verify_yes(const YesCheckInput& in, const IRegion& p, const CancelHook& can
     if (!within(pi, v, level_b_vertex)) return false;
   }
   // (A1) the level set {d(·, Q_s) = level_a} keeps distance > r (r <= radius.hi) from P.
-  if (!level_set_avoids({in.q, level_a, &pi, in.radius.hi, in.max_sagitta}, cancel)) {
+  const Window near_a = changed ? grown(*changed, in.radius.hi) : Window{};
+  if (!level_set_avoids(
+          {in.q, level_a, &pi, in.radius.hi, in.max_sagitta, changed ? &near_a : nullptr},
+          cancel)) {
     return false;
   }
   // (B1) the level set {d(·, P) = level_b} stays outside Q: farther than η0 from Q̃ (the
   // unsimplified grid input, so the simplification does not eat into this margin).
-  return level_set_avoids({&pi, level_b, in.q_grid, kInputRounding, in.max_sagitta}, cancel);
+  const Window near_b = changed ? grown(*changed, level_b) : Window{};
+  return level_set_avoids(
+      {&pi, level_b, in.q_grid, kInputRounding, in.max_sagitta, changed ? &near_b : nullptr},
+      cancel);
+}
+
+} // namespace
+
+bool verify_yes(const YesCheckInput& in, const IRegion& p, const CancelHook& cancel) {
+  return verify(in, p, nullptr, cancel);
+}
+
+bool verify_yes_after_drop(const YesCheckInput& in, const IRegion& p, IPt a, IPt v, IPt b,
+                           const CancelHook& cancel) {
+  const Window triangle{static_cast<double>(std::min({a.x, v.x, b.x})),
+                        static_cast<double>(std::min({a.y, v.y, b.y})),
+                        static_cast<double>(std::max({a.x, v.x, b.x})),
+                        static_cast<double>(std::max({a.y, v.y, b.y}))};
+  return verify(in, p, &triangle, cancel);
+}
+
+CertifiedInput certified_input(const IRings& q_grid, double tolerance, double cell) {
+  CertifiedInput out;
+  if (q_grid.empty()) return out;
+  // Narrow features can make a coarse simplification cross itself: retry finer.
+  for (double tol = tolerance; tol >= tolerance / 8.0 && !out.index; tol /= 2.0) {
+    if (auto q_dp = simplify_rings_checked(q_grid, tol)) {
+      out.index.emplace(*q_dp, cell);
+      out.eta = add_up(kInputRounding, tol);
+      if (!is_certifiable_region(*out.index)) out.index.reset();
+    }
+  }
+  if (!out.index) {
+    out.eta = kInputRounding;
+    out.index.emplace(q_grid, cell);
+    if (!is_certifiable_region(*out.index)) out.index.reset();
+  }
+  return out;
 }
 
 } // namespace penshape::fast
