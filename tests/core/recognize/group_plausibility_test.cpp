@@ -1,5 +1,6 @@
 // Groups that certify but are not drawn as their shape is drawn in pieces (group_plausibility):
-// a T, a row of dashes. Each stroke keeps its own answer; no union of them snaps.
+// a T, a row of dashes; and an arrow whose head is drawn apart from its shaft. Each stroke
+// keeps its own answer; no union of them snaps.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -61,6 +62,16 @@ TEST(GroupPlausibility, AnLInTwoStrokesIsStillAPolyline) {
   const auto out = recognize_strokes(s);
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(out[0].recognition.shape, ShapeClass::kPolyline);
+}
+
+TEST(GroupPlausibility, AHeadDrawnApartMayBeAsLongAsTheShaft) {
+  // The shaft, then the head in one stroke, its barbs 0.83 shafts long (people draw a head apart
+  // large): an arrow, since the strokes tell the shaft from the head.
+  std::vector<StrokeInput> s{stroke_along({{0, 0}, {100, 0}}, 0.0)};
+  s.push_back(stroke_along({{30, -45}, {100, 0}, {30, 45}}, next_start(s)));
+  const auto out = recognize_strokes(s);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].recognition.shape, ShapeClass::kArrow);
 }
 
 } // namespace
