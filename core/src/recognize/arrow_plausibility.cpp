@@ -55,8 +55,8 @@ PieceRole piece_role(const std::vector<PointD>& piece, const std::vector<PointD>
   const PointD a = piece.front(), b = piece.back();
   if (on_shaft && !on_head && (near(a, 0) || near(b, 0))) return PieceRole::kShaft;
   if (on_head && !on_shaft) {
-    for (const std::size_t i : {1, 2, 3}) {
-      for (const std::size_t j : {1, 2, 3}) {
+    for (const std::size_t i : {std::size_t{1}, std::size_t{2}, std::size_t{3}}) {
+      for (const std::size_t j : {std::size_t{1}, std::size_t{2}, std::size_t{3}}) {
         if (i == j || !near(a, i) || !near(b, j)) continue;
         // A head drawn from barb end to barb end turns at the tip: the stroke itself stands out
         // from its chord by more than epsilon (else a straight stroke passes for a head, the
@@ -104,7 +104,7 @@ bool head_drawn_apart(const Fit& f, const UnionStroke& u, double epsilon) {
         shaft_seen = true;
         break;
       case PieceRole::kHead:
-        for (const std::size_t k : {2, 3}) {
+        for (const std::size_t k : {std::size_t{2}, std::size_t{3}}) {
           const bool ends_there =
               distance(piece.front(), v[k]) <= epsilon || distance(piece.back(), v[k]) <= epsilon;
           barb_drawn[k - 2] = barb_drawn[k - 2] || ends_there;

@@ -18,16 +18,6 @@ namespace {
 // Fits above this many epsilons are not certified (as evaluate() does).
 constexpr double kCertifyIfBelow = 1.25;
 
-std::vector<PointD> distinct_path(const std::vector<StrokePoint>& samples) {
-  std::vector<PointD> out;
-  out.reserve(samples.size());
-  for (const StrokePoint& s : samples) {
-    const PointD q{s.x, s.y};
-    if (out.empty() || !(out.back() == q)) out.push_back(q);
-  }
-  return out;
-}
-
 double rank_of(const Candidate& c, const Fit& f, double epsilon) {
   return (c.certificate.bound + kRmsWeight * c.rms) / epsilon +
          kPricePerParameter * degrees_of_freedom(f);
@@ -178,6 +168,16 @@ UnionRecognition dot_union(std::span<const StrokeInput> strokes, const Recognize
 }
 
 } // namespace
+
+std::vector<PointD> distinct_path(const std::vector<StrokePoint>& samples) {
+  std::vector<PointD> out;
+  out.reserve(samples.size());
+  for (const StrokePoint& s : samples) {
+    const PointD q{s.x, s.y};
+    if (out.empty() || !(out.back() == q)) out.push_back(q);
+  }
+  return out;
+}
 
 UnionRecognition recognize_union_detail(std::span<const StrokeInput> strokes,
                                         const RecognizerConfig& config_in) {

@@ -4,22 +4,13 @@
 #include <algorithm>
 #include <vector>
 
+#include "group_classifier.hpp"
 #include "stroke_chain.hpp"
 
 namespace penshape::recognize_detail {
 namespace {
 
-std::vector<PointD> path_of(const std::vector<StrokePoint>& samples) {
-  std::vector<PointD> p;
-  p.reserve(samples.size());
-  for (const StrokePoint& s : samples) {
-    const PointD q{s.x, s.y};
-    if (p.empty() || !(p.back() == q)) p.push_back(q);
-  }
-  return p;
-}
-
-bool round(ShapeClass c) {
+bool is_round(ShapeClass c) {
   return c == ShapeClass::kCircle || c == ShapeClass::kEllipse || c == ShapeClass::kArc;
 }
 
@@ -29,9 +20,9 @@ bool straight(ShapeClass c) { return c == ShapeClass::kSegment || c == ShapeClas
 
 // Why a piece recognized alone as `own` is no piece of a `group` (empty when it may be one).
 std::string kind_mismatch(ShapeClass group, ShapeClass own) {
-  if (round(group) && straight(own)) return "a round shape has a straight stroke among its pieces";
+  if (is_round(group) && straight(own)) return "a round shape has a straight stroke among its pieces";
   // Not an arc: a side and a rounded corner drawn alone often read as one.
-  if (!round(group) && closed_round(own)) {
+  if (!is_round(group) && closed_round(own)) {
     return "a straight-sided shape has a circle or ellipse among its pieces";
   }
   return {};
@@ -47,7 +38,7 @@ std::string group_implausibility(const Recognition& r, std::span<const StrokeInp
   std::vector<std::vector<PointD>> paths;
   double stroke_epsilon = 0.0;
   for (const StrokeInput& s : strokes) {
-    paths.push_back(path_of(s.samples));
+    paths.push_back(distinct_path(s.samples));
     // The tolerance of the stroke alone: a gap between pieces is measured against the pieces
     // drawn, not against the whole group, whose epsilon grows with every piece added.
     stroke_epsilon = std::max(stroke_epsilon, choose_tolerance(s.samples, config).epsilon);
