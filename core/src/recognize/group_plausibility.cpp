@@ -20,7 +20,8 @@ bool straight(ShapeClass c) { return c == ShapeClass::kSegment || c == ShapeClas
 
 // Why a piece recognized alone as `own` is no piece of a `group` (empty when it may be one).
 std::string kind_mismatch(ShapeClass group, ShapeClass own) {
-  if (is_round(group) && straight(own)) return "a round shape has a straight stroke among its pieces";
+  if (is_round(group) && straight(own))
+    return "a round shape has a straight stroke among its pieces";
   // Not an arc: a side and a rounded corner drawn alone often read as one.
   if (!is_round(group) && closed_round(own)) {
     return "a straight-sided shape has a circle or ellipse among its pieces";
