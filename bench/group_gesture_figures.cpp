@@ -1,6 +1,7 @@
 // Grouping figures on other people's drawings (group_gesture_figures.hpp).
 #include "group_gesture_figures.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 #include <set>
@@ -26,6 +27,16 @@ struct Rate {
   [[nodiscard]] double percent() const { return total ? 100.0 * hits / total : 0.0; }
 };
 
+// A figure with its per-writer rates, to show the spread over writers beside the whole.
+struct Figure {
+  Rate all;
+  std::map<std::string, Rate> by_subject;
+  void add(const std::string& subject, bool hit) {
+    all.add(hit);
+    by_subject[subject].add(hit);
+  }
+};
+
 std::vector<StrokeInput> inputs_of(const Drawing& d) {
   std::vector<StrokeInput> in;
   for (const auto& s : d.strokes) in.push_back({s, nullptr, nullptr, 0.0, {}});
@@ -38,6 +49,12 @@ std::string source_of(const Drawing& d) {
   return s.substr(0, s.rfind('-'));
 }
 
+std::string strokes_of(std::size_t n) {
+  std::string s = std::to_string(n);
+  s.append(n == 1 ? " stroke" : " strokes");
+  return s;
+}
+
 void print_row(const std::string& what, const Rate& r, const char* target, bool json) {
   if (json) {
     std::printf("{\"row\":\"%s\",\"right\":%d,\"total\":%d,\"percent\":%.2f}\n", what.c_str(),
@@ -48,42 +65,103 @@ void print_row(const std::string& what, const Rate& r, const char* target, bool 
   }
 }
 
+// The whole, then the writers' median and worst (best for a rate that must stay low).
+void print_figure(const std::string& what, const Figure& f, const char* target, bool low,
+                  bool json) {
+  print_row(what, f.all, target, json);
+  std::vector<double> p;
+  for (const auto& [s, r] : f.by_subject) p.push_back(r.percent());
+  if (p.size() < 2 || json) return;
+  std::sort(p.begin(), p.end());
+  std::printf("%-44s median %.1f%%, worst %.1f%% (%zu writers)\n", "    per writer",
+              p[p.size() / 2], low ? p.back() : p.front(), p.size());
+}
+
+struct Tally {
+  Figure shapes, non_shapes, chevrons_as_arrows;
+  std::map<std::string, Figure> rows; // "square in 2 strokes (LowVision)", ...
+  std::map<std::string, int> misses;  // "arrow in 2 strokes (MMG) -> polyline polyline"
+};
+
+std::string answer_of(const std::vector<GroupedShape>& out) {
+  std::string s = std::to_string(out.size());
+  s.append(out.size() == 1 ? " group:" : " groups:");
+  for (const GroupedShape& g : out) {
+    s.append(" ").append(to_string(g.recognition.shape));
+    if (g.strokes.size() > 1) s.append("(").append(std::to_string(g.strokes.size())).append(")");
+  }
+  return s;
+}
+
+// Why the union of an arrow's strokes is not an arrow: its best arrow candidate's refusal.
+std::string why_no_arrow(const Drawing& d, bool arrow) {
+  if (!arrow) return {};
+  const Recognition r = recognize_union(inputs_of(d));
+  for (const Candidate& c : r.alternatives) {
+    if (c.shape != ShapeClass::kArrow) continue;
+    if (!c.rejected.empty()) return " [" + c.rejected + "]";
+    return c.certificate.certified ? " [arrow ranked lower]" : " [arrow not certified]";
+  }
+  return r.shape == ShapeClass::kArrow ? " [union is an arrow]" : " [no arrow candidate]";
+}
+
+void tally(const Drawing& d, Tally& t) {
+  // LowVision's "arrow_right" is the touch gesture ">" (a chevron, no shaft): never an arrow.
+  const bool chevron = d.label == "arrow_right";
+  const bool square = d.label == "square";
+  const bool arrow = d.label == "arrowhead";
+  const bool non_shape = kNonShapes.contains(d.label) && d.strokes.size() >= 2;
+  if (!square && !arrow && !non_shape && !chevron) return;
+  const std::vector<GroupedShape> out = recognize_strokes(inputs_of(d));
+  if (chevron) {
+    bool as_arrow = false;
+    for (const GroupedShape& g : out)
+      as_arrow = as_arrow || kArrow.contains(to_string(g.recognition.shape));
+    t.chevrons_as_arrows.add(d.subject, as_arrow);
+    ++t.misses["chevron (" + source_of(d) + ") -> " + answer_of(out)];
+    return;
+  }
+  if (non_shape) {
+    bool merged = false;
+    for (const GroupedShape& g : out) {
+      merged = merged || (g.strokes.size() > 1 && g.recognition.shape != ShapeClass::kFreeform);
+    }
+    t.non_shapes.add(d.subject, merged);
+    t.rows["non-shape " + d.label + " (" + source_of(d) + ")"].add(d.subject, merged);
+    if (merged)
+      ++t.misses[d.label + " in " + strokes_of(d.strokes.size()) + " -> " + answer_of(out)];
+    return;
+  }
+  const std::set<std::string>& targets = square ? kRectangle : kArrow;
+  const bool ok = out.size() == 1 && targets.contains(to_string(out[0].recognition.shape));
+  const std::string row = std::string(square ? "square" : "arrow") + " in " +
+                          strokes_of(d.strokes.size()) + " (" + source_of(d) + ")";
+  t.rows[row].add(d.subject, ok);
+  t.shapes.add(d.subject, ok);
+  if (!ok) ++t.misses[row + " -> " + answer_of(out) + why_no_arrow(d, arrow)];
+}
+
 } // namespace
 
 void print_group_gesture_figures(const std::filesystem::path& gestures_root, bool json) {
   const std::vector<Drawing> drawings = load_gestures(gestures_root);
   if (drawings.empty()) return;
-  std::map<std::string, Rate> shapes;     // "square in 2 strokes", "arrow in 1 stroke"
-  std::map<std::string, Rate> non_shapes; // snapped together, by class
-  Rate shapes_all, non_shapes_all;
-  for (const Drawing& d : drawings) {
-    const bool square = d.label == "square";
-    const bool arrow = d.label == "arrow_right" || d.label == "arrowhead";
-    const bool non_shape = kNonShapes.contains(d.label) && d.strokes.size() >= 2;
-    if (!square && !arrow && !non_shape) continue;
-    const std::vector<GroupedShape> out = recognize_strokes(inputs_of(d));
-    if (non_shape) {
-      bool merged = false;
-      for (const GroupedShape& g : out) {
-        merged = merged || (g.strokes.size() > 1 && g.recognition.shape != ShapeClass::kFreeform);
-      }
-      non_shapes[d.label].add(merged);
-      non_shapes_all.add(merged);
-      continue;
-    }
-    const std::set<std::string>& targets = square ? kRectangle : kArrow;
-    const bool ok = out.size() == 1 && targets.contains(to_string(out[0].recognition.shape));
-    const std::size_t n = d.strokes.size();
-    shapes[std::string(square ? "square" : "arrow") + " in " + std::to_string(n) + " stroke" +
-           (n == 1 ? "" : "s") + " (" + source_of(d) + ")"]
-        .add(ok);
-    shapes_all.add(ok);
-  }
+  Tally t;
+  for (const Drawing& d : drawings) tally(d, t);
   if (!json) std::printf("\nother people's drawings (%s; never tuned on):\n", "gestures");
-  print_row("shapes right (squares, arrows), all strokes", shapes_all, ">= 95%", json);
-  for (const auto& [k, r] : shapes) print_row("  " + k, r, "", json);
-  print_row("non-shape drawings snapped together", non_shapes_all, "<= 2%", json);
-  for (const auto& [k, r] : non_shapes) print_row("  " + k, r, "", json);
+  print_figure("shapes right (squares, arrows), all strokes", t.shapes, ">= 95%", false, json);
+  for (const auto& [k, r] : t.rows) {
+    if (k.rfind("non-shape", 0) != 0) print_figure("  " + k, r, "", false, json);
+  }
+  print_figure("non-shape drawings snapped together", t.non_shapes, "<= 2%", true, json);
+  for (const auto& [k, r] : t.rows) {
+    if (k.rfind("non-shape", 0) == 0) print_row("  " + k.substr(10), r.all, "", json);
+  }
+  print_figure("chevrons '>' read as arrows (LowVision)", t.chevrons_as_arrows, "<= 2%", true,
+               json);
+  if (json) return;
+  std::printf("\nanswers on other people's drawings (misses; chevrons: every answer):\n");
+  for (const auto& [k, n] : t.misses) std::printf("  %4d  %s\n", n, k.c_str());
 }
 
 } // namespace penshape::bench

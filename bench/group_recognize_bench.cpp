@@ -14,7 +14,9 @@
 //   other people's drawings   the gestures corpus (group_gesture_figures.hpp): squares and
 //                             arrows in several strokes, non-shape drawings of several strokes,
 //                             by writers the rules were never tuned on (the held-out figures).
-// Usage: group_recognize_bench [--json] [--svg-dir DIR]   (data dir: $PENSHAPE_SHARED_DATA_DIR)
+// Usage: group_recognize_bench [--json] [--gestures-only] [--svg-dir DIR]
+//   (data dir: $PENSHAPE_SHARED_DATA_DIR)
+//   --gestures-only: only the figures on other people's drawings.
 //   --svg-dir: every arrow missed is drawn to DIR (strokes, and the best arrow candidate with why
 //              it was refused), to look at the failures.
 #include <time.h>
@@ -158,16 +160,19 @@ double quantile(std::vector<double> v, double q) {
 } // namespace
 
 int main(int argc, char** argv) {
-  bool json = false;
+  bool json = false, gestures_only = false;
   std::filesystem::path svg_dir;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--json") == 0) {
       json = true;
+    } else if (std::strcmp(argv[i], "--gestures-only") == 0) {
+      gestures_only = true;
     } else if (std::strcmp(argv[i], "--svg-dir") == 0 && i + 1 < argc) {
       svg_dir = argv[++i];
       std::filesystem::create_directories(svg_dir);
     } else {
-      std::fprintf(stderr, "usage: group_recognize_bench [--json] [--svg-dir DIR]\n");
+      std::fprintf(stderr,
+                   "usage: group_recognize_bench [--json] [--gestures-only] [--svg-dir DIR]\n");
       return 2;
     }
   }
@@ -177,6 +182,10 @@ int main(int argc, char** argv) {
   if (!std::filesystem::exists(root)) {
     std::fprintf(stderr, "group_recognize_bench: no $1 logs under %s\n", root.c_str());
     return 2;
+  }
+  if (gestures_only) {
+    penshape::bench::print_group_gesture_figures(root.parent_path() / "gestures", json);
+    return 0;
   }
   const std::vector<Gesture> gestures = penshape::cases::dollar_gestures(root);
 

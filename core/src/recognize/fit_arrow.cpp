@@ -9,20 +9,13 @@
 #include <numbers>
 #include <optional>
 
+#include "arrow_limits.hpp"
 #include "classifier.hpp"
 
 namespace penshape::recognize_detail {
 namespace {
 
 constexpr std::size_t kCloudPoints = 64;
-constexpr double kDegree = std::numbers::pi / 180.0;
-constexpr double kMinHeadAngle = 10.0 * kDegree;
-constexpr double kMaxHeadAngle = 80.0 * kDegree;
-constexpr double kMaxBarbFraction = 0.8; // of the shaft
-constexpr double kMaxTracingArrow = 1.6;
-// An arrow is made of straight pieces: like segments and polylines it must fit more tightly than
-// round shapes (recognize.hpp, straight_fraction), a little looser since the head is small.
-constexpr double kStraightFraction = 0.6;
 // The second start is polished too when the first ends above this many epsilons: well below
 // the straight fraction, since the certificate adds its sampling and thinning margins.
 constexpr double kSecondStartAbove = 0.4;
@@ -32,15 +25,6 @@ constexpr double kMaxBulge = 0.25;
 // what each bend of a bent shaft adds.
 constexpr double kStraightParameters = 8, kCurvedParameters = 9, kDoubleParameters = 12;
 constexpr double kBendParameters = 2;
-// A bend must stand out from its neighbours' chord by this many epsilons (as a polyline's
-// corner), and the shaft may turn by at most this much at a bend: beyond a right angle (with a
-// hand's slack) it doubles back, a hook or a letter rather than a shaft that leads to its tip.
-constexpr double kMinBendOffset = 0.5;
-constexpr double kMaxBendTurn = 100.0 * kDegree;
-// The angle between a bent shaft's last piece and the head's axis (the bisector of the barbs) is
-// at most this (straight and curved shafts are not held to it: the whole drawing sets their
-// direction, not one fitted bend).
-constexpr double kMaxBentHeadSkew = 25.0 * kDegree;
 // A bent shaft's seed is polished only when it fits within this many epsilons, and polished
 // again only when it ends below this many (fits above 1.25 epsilons are not certified).
 constexpr double kSeedWithin = 2.0, kRepolishBelow = 1.25;
@@ -62,21 +46,6 @@ std::vector<PointD> cloud_of(const UnionStroke& u) {
 }
 
 namespace {
-
-double angle_between(PointD a, PointD b) { return std::abs(std::atan2(cross(a, b), dot(a, b))); }
-
-// The direction back along the shaft from the tip (the tangent of a curved shaft, nearly; a bent
-// shaft's last piece).
-PointD shaft_back(PointD tail, PointD tip, double bulge, const std::vector<PointD>& bends) {
-  const std::vector<PointD> shaft = shaft_path(tail, tip, bulge, bends);
-  return shaft[shaft.size() - 2] - tip;
-}
-
-// The same from the tail (towards the tip).
-PointD shaft_forward(PointD tail, PointD tip, double bulge, const std::vector<PointD>& bends) {
-  const std::vector<PointD> shaft = shaft_path(tail, tip, bulge, bends);
-  return shaft[1] - tail;
-}
 
 // The barb ends at `head` for a shaft from `other` to `head`: on each side, the point farthest
 // from the shaft's line among those that leave the shaft at 10..90 degrees and by more than
@@ -572,73 +541,6 @@ std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon, double rank_to
     }
   }
   return out;
-}
-
-namespace {
-
-// Why a bent shaft tail -> bends -> tip is not plausible (empty when it is).
-std::string bend_implausibility(PointD tail, PointD tip, const std::vector<PointD>& bends,
-                                double epsilon) {
-  const std::vector<PointD> shaft = shaft_path(tail, tip, 0.0, bends);
-  for (std::size_t i = 1; i + 1 < shaft.size(); ++i) {
-    if (segment_distance(shaft[i], shaft[i - 1], shaft[i + 1]) < kMinBendOffset * epsilon) {
-      return "a shaft bend is within epsilon / 2 of its neighbours' chord (not a bend)";
-    }
-    if (angle_between(shaft[i] - shaft[i - 1], shaft[i + 1] - shaft[i]) > kMaxBendTurn) {
-      return "the shaft turns by more than 100 degrees at a bend (it doubles back)";
-    }
-  }
-  return {};
-}
-
-} // namespace
-
-std::string arrow_implausibility(const Fit& f, const Certificate& c, double drawn_length) {
-  const std::vector<PointD>& v = f.params.vertices;
-  const double eps = c.epsilon;
-  if (c.bound > kStraightFraction * eps) {
-    return "an arrow is straight pieces: it must fit within 0.6 epsilon";
-  }
-  if (drawn_length > kMaxTracingArrow * path_length(f.clean.path)) {
-    return "the strokes are much longer than the arrow (traced over, a scribble or writing)";
-  }
-  const double shaft = distance(v[0], v[1]);
-  const double bulge = f.params.shaft_bulge;
-  const std::vector<PointD>& bends = f.params.shaft_bends;
-  if (std::string why = bend_implausibility(v[0], v[1], bends, eps); !why.empty()) return why;
-  auto head_ok = [&](PointD head, PointD back, PointD b1, PointD b2) -> std::string {
-    for (const PointD& b : {b1, b2}) {
-      const double len = distance(b, head);
-      if (len < eps) return "a barb is shorter than epsilon";
-      if (len > kMaxBarbFraction * shaft) return "a barb is longer than 0.8 shafts";
-      // A bent shaft's end piece is fitted to the ink it follows, so ink along the shaft near
-      // the head can pass for a barb: its barbs' ends must leave the end piece's line by
-      // epsilon / 2 (as find_barbs asks of a barb, and a polyline of its corners).
-      if (!bends.empty() && std::abs(cross(back, b - head)) < kMinBendOffset * eps * norm(back)) {
-        return "a barb's end is within epsilon / 2 of a bent shaft's end piece";
-      }
-      const double angle = angle_between(back, b - head);
-      if (angle < kMinHeadAngle || angle > kMaxHeadAngle) {
-        return "a barb leaves the shaft at less than 10 or more than 80 degrees";
-      }
-    }
-    if (cross(back, b1 - head) * cross(back, b2 - head) >= 0) {
-      return "both barbs lie on the same side of the shaft";
-    }
-    // A bent shaft's last piece turns freely with its bend: it must lead into the head, along
-    // the head's axis (the barbs' bisector), or a "barb" may be the drawing's own continuation.
-    const double skew =
-        0.5 * std::abs(angle_between(back, b1 - head) - angle_between(back, b2 - head));
-    if (!bends.empty() && skew > kMaxBentHeadSkew) {
-      return "a bent shaft's last piece is more than 25 degrees off the head's axis";
-    }
-    return {};
-  };
-  std::string why = head_ok(v[1], shaft_back(v[0], v[1], bulge, bends), v[2], v[3]);
-  if (why.empty() && f.shape == ShapeClass::kDoubleArrow) {
-    why = head_ok(v[0], shaft_forward(v[0], v[1], bulge, bends), v[4], v[5]);
-  }
-  return why;
 }
 
 } // namespace penshape::recognize_detail

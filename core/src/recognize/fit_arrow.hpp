@@ -19,8 +19,17 @@ std::vector<PointD> cloud_of(const UnionStroke& u);
 // `rank_to_beat` are not fitted: they could never win over the snap that set it.
 std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon, double rank_to_beat = INFINITY);
 
+// Whether a single arrow fitted to several strokes has its head drawn apart from its shaft: every
+// stroke lies within epsilon of the shaft or of the head, some only of the shaft and some only of
+// the head (the shaft, then the head, or the head first). The strokes then tell the shaft from
+// the head, which a tight fit must tell otherwise.
+bool head_drawn_apart(const Fit& f, const UnionStroke& u, double epsilon);
+
 // Why a certified arrow is not a plausible snap (empty when it is); `drawn_length` is the summed
-// length of the strokes.
-std::string arrow_implausibility(const Fit& f, const Certificate& c, double drawn_length);
+// length of the strokes. An arrow must fit within 0.6 epsilon (it is straight pieces) with
+// barbs up to 0.8 shafts; with its head drawn apart, within epsilon (the certificate) with
+// barbs up to one shaft.
+std::string arrow_implausibility(const Fit& f, const Certificate& c, double drawn_length,
+                                 bool head_apart = false);
 
 } // namespace penshape::recognize_detail

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "arrow_limits.hpp"
 #include "classifier.hpp"
 #include "dot.hpp"
 #include "fit_arrow.hpp"
@@ -16,16 +17,6 @@ namespace {
 
 // Fits above this many epsilons are not certified (as evaluate() does).
 constexpr double kCertifyIfBelow = 1.25;
-
-std::vector<PointD> distinct_path(const std::vector<StrokePoint>& samples) {
-  std::vector<PointD> out;
-  out.reserve(samples.size());
-  for (const StrokePoint& s : samples) {
-    const PointD q{s.x, s.y};
-    if (out.empty() || !(out.back() == q)) out.push_back(q);
-  }
-  return out;
-}
 
 double rank_of(const Candidate& c, const Fit& f, double epsilon) {
   return (c.certificate.bound + kRmsWeight * c.rms) / epsilon +
@@ -39,11 +30,14 @@ void sort_scored(std::vector<Scored>& scored) {
   });
 }
 
-// The tidiest shape wins: when an arrow with a straight or curved shaft is a snap, no arrow of
-// the same class with a bent shaft is one.
-void prefer_unbent_shafts(std::vector<Scored>& arrows) {
+// The tidiest shape wins: when an arrow with a straight or curved shaft is a snap within 0.6
+// epsilon (as every arrow must fit unless its head is drawn apart), no arrow of the same class
+// with a bent shaft is one. A looser one leaves the ranks to decide: a head drawn apart excuses
+// a loose head, not a shaft that misses its bend.
+void prefer_unbent_shafts(std::vector<Scored>& arrows, double epsilon) {
   for (const Scored& a : arrows) {
     if (!a.snap || !a.fit.params.shaft_bends.empty()) continue;
+    if (a.candidate.certificate.bound > kStraightFraction * epsilon) continue;
     for (Scored& b : arrows) {
       if (b.snap && b.fit.shape == a.fit.shape && !b.fit.params.shaft_bends.empty()) {
         b.snap = false;
@@ -71,14 +65,17 @@ std::vector<Scored> score_arrows(const UnionStroke& u, const std::vector<PointD>
       c.certificate.pen_radius = pen_radius;
       c.certificate.bound = f.fit_error;
     }
-    if (c.certificate.certified) c.rejected = arrow_implausibility(f, c.certificate, drawn_length);
+    if (c.certificate.certified) {
+      c.rejected =
+          arrow_implausibility(f, c.certificate, drawn_length, head_drawn_apart(f, u, epsilon));
+    }
     c.rms = rms_distance(cloud, f.clean);
     sc.rank = rank_of(c, f, epsilon);
     sc.snap = c.certificate.certified && c.rejected.empty();
     sc.fit = std::move(f);
     out.push_back(std::move(sc));
   }
-  prefer_unbent_shafts(out);
+  prefer_unbent_shafts(out, epsilon);
   return out;
 }
 
@@ -171,6 +168,16 @@ UnionRecognition dot_union(std::span<const StrokeInput> strokes, const Recognize
 }
 
 } // namespace
+
+std::vector<PointD> distinct_path(const std::vector<StrokePoint>& samples) {
+  std::vector<PointD> out;
+  out.reserve(samples.size());
+  for (const StrokePoint& s : samples) {
+    const PointD q{s.x, s.y};
+    if (out.empty() || !(out.back() == q)) out.push_back(q);
+  }
+  return out;
+}
 
 UnionRecognition recognize_union_detail(std::span<const StrokeInput> strokes,
                                         const RecognizerConfig& config_in) {

@@ -85,26 +85,40 @@ bool segments_cross(PointD a, PointD b, PointD c, PointD d) {
   return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
 }
 
+// The order and directions of chain_pieces() (pieces must not be empty).
+Order best_order(const std::vector<std::vector<PointD>>& pieces) {
+  if (pieces.size() > kExhaustiveUpTo) return greedy_order(pieces);
+  Order best;
+  Order o;
+  o.index.resize(pieces.size());
+  std::iota(o.index.begin(), o.index.end(), std::size_t{0});
+  double best_cost = INFINITY;
+  do {
+    const double c = best_directions(pieces, o);
+    if (c < best_cost) {
+      best_cost = c;
+      best = o;
+    }
+  } while (std::next_permutation(o.index.begin(), o.index.end()));
+  return best;
+}
+
 } // namespace
+
+std::vector<double> chain_jumps(const std::vector<std::vector<PointD>>& pieces) {
+  std::vector<double> out;
+  if (pieces.empty()) return out;
+  const Order o = best_order(pieces);
+  for (std::size_t k = 1; k < o.index.size(); ++k) {
+    out.push_back(distance(end_of(pieces[o.index[k - 1]], o.reversed[k - 1]),
+                           start_of(pieces[o.index[k]], o.reversed[k])));
+  }
+  return out;
+}
 
 std::vector<PointD> chain_pieces(const std::vector<std::vector<PointD>>& pieces) {
   if (pieces.empty()) return {};
-  Order best;
-  if (pieces.size() <= kExhaustiveUpTo) {
-    Order o;
-    o.index.resize(pieces.size());
-    std::iota(o.index.begin(), o.index.end(), std::size_t{0});
-    double best_cost = INFINITY;
-    do {
-      const double c = best_directions(pieces, o);
-      if (c < best_cost) {
-        best_cost = c;
-        best = o;
-      }
-    } while (std::next_permutation(o.index.begin(), o.index.end()));
-  } else {
-    best = greedy_order(pieces);
-  }
+  const Order best = best_order(pieces);
   std::vector<PointD> out;
   for (std::size_t k = 0; k < best.index.size(); ++k) {
     const std::vector<PointD>& p = pieces[best.index[k]];

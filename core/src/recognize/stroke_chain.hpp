@@ -11,6 +11,9 @@ namespace penshape::recognize_detail {
 // (every order and direction for up to 6 pieces, greedily beyond).
 std::vector<PointD> chain_pieces(const std::vector<std::vector<PointD>>& pieces);
 
+// The pen-up jumps of chain_pieces()'s order, in that order (one fewer than the pieces).
+std::vector<double> chain_jumps(const std::vector<std::vector<PointD>>& pieces);
+
 // The smallest distance between two polylines (0 when they cross).
 double polyline_gap(const std::vector<PointD>& a, const std::vector<PointD>& b);
 

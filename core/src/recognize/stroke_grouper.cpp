@@ -7,6 +7,7 @@
 
 #include "dot.hpp"
 #include "group_classifier.hpp"
+#include "group_plausibility.hpp"
 #include "penshape/core/group_recognize.hpp"
 #include "prepared_stroke.hpp"
 #include "stroke_chain.hpp"
@@ -209,6 +210,8 @@ GroupUpdate StrokeGrouper::add(const StrokeInput& stroke) {
     if (!connected(t, 2.0 * tol.pen_radius + tol.epsilon)) continue;
     UnionRecognition u = recognize_detail::recognize_union_detail(inputs, recognizer_);
     if (!snaps(u.recognition)) continue;
+    // Certified, but not drawn as that shape is drawn in pieces (group_plausibility.hpp).
+    if (!recognize_detail::group_implausibility(u.recognition, inputs, config).empty()) continue;
     const std::size_t count = members.size() + 1;
     if (!best || count > best_count || (count == best_count && u.rank < best->rank)) {
       best = std::move(u);

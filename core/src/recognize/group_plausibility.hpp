@@ -1,0 +1,21 @@
+#pragma once
+// Whether a union of several strokes that certifies as a shape is drawn the way people draw that
+// shape in pieces (group_recognize.hpp, "Grouping"): the grouper keeps a union only when it is.
+#include <span>
+#include <string>
+
+#include "penshape/core/group_recognize.hpp"
+
+namespace penshape::recognize_detail {
+
+// Why the strokes are not a drawing of `r` in pieces (empty when they are, and for one stroke).
+// A shape other than an arrow is its pieces drawn one after the other: the strokes chain end to
+// end, every pen-up jump of the chain within 2 r + the epsilon of the largest stroke alone.
+// Strokes that meet at a junction (a T, an H, the bar of an A) or a row of dashes are no
+// polyline, polygon or segment even when the union's band covers them. And no stroke alone is
+// of the other kind: no circle or ellipse in a straight-sided shape, no segment or polyline in
+// a round one (circle, ellipse, arc). An arc alone may be a side and a rounded corner.
+std::string group_implausibility(const Recognition& r, std::span<const StrokeInput> strokes,
+                                 const RecognizerConfig& config);
+
+} // namespace penshape::recognize_detail
