@@ -11,13 +11,6 @@
 namespace penshape::bench {
 namespace {
 
-std::string read_all(const std::filesystem::path& f) {
-  std::ifstream in(f);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 std::vector<std::filesystem::path> files_under(const std::filesystem::path& root,
                                                const std::string& extension) {
   std::vector<std::filesystem::path> files;

@@ -12,6 +12,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <thread>
 #include <vector>
 
@@ -148,6 +149,17 @@ std::optional<int> parse_command_line(int argc, char** argv, CommandLine& cli) {
   app.add_option("--replay", cli.replays)->expected(1)->take_all()->allow_extra_args(false);
   app.add_option("--replay-delay", delay)->take_last();
   app.add_flag("--replay-loop", cli.replay_loop);
+  // A flag takes no value: CLI11 would read `--replay-loop=true` as the flag.
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    const std::string_view name = arg.substr(0, arg.find('='));
+    if (name.size() < arg.size() && name.starts_with("-") &&
+        app.get_option_no_throw(std::string(name)) != nullptr &&
+        app.get_option_no_throw(std::string(name))->get_expected_min() == 0) {
+      std::fprintf(stderr, "penshaped: unknown or incomplete option '%s' (see --help)\n", argv[i]);
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

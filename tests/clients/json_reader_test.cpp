@@ -58,8 +58,9 @@ TEST(JsonReader, ErrorsNameLineAndColumn) {
 // nlohmann's parser reads one value at a time: values must be whole and apart, numbers keep the
 // exact text they were written with (verify reads decimals as rationals).
 TEST(JsonReader, ValuesAreWholeAndNumbersKeepTheirText) {
-  const auto values = parse_json_values("12 3\n1.50e+3 -0.1000000000000000055511151231257827\n"
-                                        "{\"a\": [18446744073709551616]}");
+  const auto values = parse_json_values(
+      "12 3\n1.50e+3 -0.1000000000000000055511151231257827\n"
+      "{\"a\": [18446744073709551616]}");
   ASSERT_EQ(values.size(), 5U);
   EXPECT_EQ(values[0].text, "12");
   EXPECT_EQ(values[1].text, "3");
