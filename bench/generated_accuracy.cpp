@@ -9,6 +9,7 @@
 #include <regex>
 #include <sstream>
 
+#include "dollar_xml.hpp"
 #include "generated_corpus.hpp"
 #include "stroke_gen.hpp"
 
@@ -54,20 +55,12 @@ std::vector<LabelledStroke> real_dollar_strokes(const std::string& root) {
     if (e.is_regular_file() && e.path().extension() == ".xml") files.push_back(e.path());
   }
   std::sort(files.begin(), files.end());
-  const std::regex point("<Point X=\"(-?[0-9.]+)\" Y=\"(-?[0-9.]+)\" T=\"(-?[0-9.]+)\"");
   for (const auto& f : files) {
     LabelledStroke s;
     s.kind = std::regex_replace(f.stem().string(), std::regex("[0-9]+$"), "");
     s.subject = f.parent_path().parent_path().filename().string();
     if (const auto it = real_truth().find(s.kind); it != real_truth().end()) s.truth = it->second;
-    std::ifstream in(f);
-    std::stringstream text;
-    text << in.rdbuf();
-    const std::string t = text.str();
-    for (auto it = std::sregex_iterator(t.begin(), t.end(), point); it != std::sregex_iterator();
-         ++it) {
-      s.points.push_back({std::stod((*it)[1]), std::stod((*it)[2]), std::stod((*it)[3]) / 1000.0});
-    }
+    s.points = dollar::read_dollar_xml(f).points;
     out.push_back(std::move(s));
   }
   return out;

@@ -22,12 +22,12 @@
 #include <filesystem>
 #include <fstream>
 #include <numeric>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "bench_data.hpp"
+#include "dollar_xml.hpp"
 #include "penshape/core/live_recognizer.hpp"
 #include "penshape/core/recognize.hpp"
 
@@ -54,23 +54,12 @@ std::vector<Stroke> load_strokes(const std::filesystem::path& root) {
     if (e.is_regular_file() && e.path().extension() == ".xml") files.push_back(e.path());
   }
   std::sort(files.begin(), files.end());
-  const std::regex name("Name=\"([^\"]*)\"");
-  const std::regex point("<Point X=\"(-?[0-9.]+)\" Y=\"(-?[0-9.]+)\" T=\"(-?[0-9.]+)\"");
   std::vector<Stroke> out;
   for (const auto& f : files) {
-    std::ifstream in(f);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    const std::string text = ss.str();
+    penshape::dollar::Gesture g = penshape::dollar::read_dollar_xml(f);
     Stroke s;
-    std::smatch m;
-    if (std::regex_search(text, m, name)) {
-      s.kind = std::regex_replace(std::string(m[1]), std::regex("[0-9]+$"), "");
-    }
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), point);
-         it != std::sregex_iterator(); ++it) {
-      s.points.push_back({std::stod((*it)[1]), std::stod((*it)[2]), std::stod((*it)[3]) / 1e3});
-    }
+    s.kind = g.kind();
+    s.points = std::move(g.points);
     out.push_back(std::move(s));
   }
   return out;

@@ -6,15 +6,10 @@
 #include <regex>
 #include <sstream>
 
+#include "dollar_xml.hpp"
+
 namespace penshape::bench {
 namespace {
-
-std::string read_all(const std::filesystem::path& f) {
-  std::ifstream in(f);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 std::vector<std::filesystem::path> files_under(const std::filesystem::path& root,
                                                const std::string& extension) {
@@ -41,24 +36,15 @@ std::vector<StrokePoint> json_points(const std::string& line) {
 } // namespace
 
 std::vector<Drawing> load_dollar1(const std::filesystem::path& root) {
-  static const std::regex point("<Point X=\"(-?[0-9.]+)\" Y=\"(-?[0-9.]+)\" T=\"(-?[0-9.]+)\"");
-  static const std::regex name("Name=\"([^\"0-9]*)[0-9]*\"");
-  static const std::regex subject("Subject=\"([^\"]*)\"");
   std::vector<Drawing> out;
   for (const auto& f : files_under(root, ".xml")) {
-    const std::string text = read_all(f);
+    dollar::Gesture g = dollar::read_dollar_xml(f);
     Drawing d;
     d.corpus = "dollar1";
     d.file = f.string();
-    std::smatch m;
-    if (std::regex_search(text, m, name)) d.label = m[1];
-    d.subject = "dollar1/s" + (std::regex_search(text, m, subject) ? m[1].str() : "?");
-    std::vector<StrokePoint> pts;
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), point);
-         it != std::sregex_iterator(); ++it) {
-      pts.push_back({std::stod((*it)[1]), std::stod((*it)[2]), std::stod((*it)[3]) / 1000.0});
-    }
-    d.strokes.push_back(std::move(pts));
+    d.label = g.kind();
+    d.subject = "dollar1/s" + (g.subject.empty() ? std::string("?") : g.subject);
+    d.strokes.push_back(std::move(g.points));
     out.push_back(std::move(d));
   }
   return out;

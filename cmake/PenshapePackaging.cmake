@@ -44,7 +44,10 @@ its command-line client and an offline tool on polygon and stroke files.")
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT) # penshape_<version>_<arch>.deb
 set(CPACK_DEBIAN_PACKAGE_SECTION graphics)
-set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON) # the shared libraries the binaries link, by dpkg-shlibdeps
+# Runtime dependencies: the shared libraries the binaries link (gRPC, protobuf, hidapi, libusb,
+# pugixml, libzip...), found by dpkg-shlibdeps. The header-only libraries (CGAL, nlohmann-json,
+# CLI11) are build dependencies only, installed by scripts/setup.sh.
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # The Python client's imports, and the apps the extensions plug into.
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "python3-grpcio, python3-protobuf")
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "inkscape, xournalpp")

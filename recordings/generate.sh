@@ -31,7 +31,7 @@ record() {
     echo "# (tests/support/gen, seed $seed: $*) on a pen descriptor penshape writes ($descriptor),"
     echo "# made into reports by penshape synthesize-recording. No outside data; rerun the script."
     # A physical path as the kernel names one (synthesize-recording writes none).
-    sed '1,2d; /^N: /a P: usb-penshape-generated/input0' "$work/$name/recording.hidrec"
+    sed '1,2d; s|^P: $|P: usb-penshape-generated/input0|' "$work/$name/recording.hidrec"
   } >"$out/$name.hidrec"
   {
     echo "# Expected strokes and shapes of $name.hidrec, one stroke a line: the classes a correct"

@@ -46,7 +46,8 @@ copy_all "$work/seeds-descriptor" "" "${descriptors[@]}"
 mapfile -t texts < <({ ls recordings/*.hidrec; find "$shared/hid" \( -name 'hidrecord.txt' -o \
   -name '*.hidrec.txt' -o -path '*dumps*' -name 'pen_*.txt' -size -64k \) 2>/dev/null; } | sort)
 copy_all "$work/seeds-text" "" "${texts[@]}" drivers/data/tablets.tsv
-# File readers: the first byte picks the reader (0 polygon, 1 JSON lines, 2 $1 XML, 3 config).
+# File readers: the first byte picks the reader (0 polygon, 1 JSON lines, 2 $1 XML, 3 config,
+# 4 verify's JSON answers).
 mapfile -t polygons < <(find "$work/generated/polygons" tests/data/adversarial -name '*.txt' \
   -size -8k | sort)
 copy_all "$work/seeds-readers" '\x00' "${polygons[@]}"
@@ -56,6 +57,8 @@ printf '\x01{"points": [[0, 0, 0], [10, 0, 0.1], [10, 10, 0.2, 0.5]], "name": "a
   >"$work/seeds-readers/jsonl"
 printf '\x03listen = unix:/tmp/p.sock\npen_radius_mm = 1.0\n[device 056a:0010]\ntolerance_fraction = 0.5\n' \
   >"$work/seeds-readers/config"
+printf '\x04{"answer": "YES", "params": {"r": 1.25, "eps": "5/8"}, "p": [[0, 1e-3], [-2, 3.5]]}\n[1]\n' \
+  >"$work/seeds-readers/json"
 
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"

@@ -1,7 +1,8 @@
 // libFuzzer: arbitrary bytes through every file reader of the CLI and the daemon's config. The
 // first byte chooses the reader (polygon text: x-y or WKT; stroke file as JSON lines or as a $1
-// XML log; penshaped config); the rest is the file. Each reader must return or throw its own
-// documented error (which names the line); anything else, or a crash, is a finding.
+// XML log; penshaped config; the JSON answers `penshape verify` reads); the rest is the file. Each
+// reader must return or throw its own documented error (which names the line); anything else, or a
+// crash, is a finding.
 #include <unistd.h>
 
 #include <cstddef>
@@ -10,6 +11,7 @@
 #include <string>
 #include <string_view>
 
+#include "json_value.hpp"
 #include "penshape/core/polygon_io.hpp"
 #include "penshape/daemon/config.hpp"
 #include "stroke_files.hpp"
@@ -42,7 +44,7 @@ void read_strokes(std::string_view bytes, const char* extension) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
   const std::string_view text(reinterpret_cast<const char*>(data) + 1, size - 1);
-  switch (data[0] % 4) {
+  switch (data[0] % 5) {
     case 0:
       try {
         (void)penshape::read_polygon_text(text);
@@ -54,6 +56,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       break;
     case 2:
       read_strokes(text, ".xml");
+      break;
+    case 4:
+      try {
+        (void)penshape::cli::parse_json_values(text);
+      } catch (const penshape::cli::JsonError&) {
+      }
       break;
     default:
       try {

@@ -1,44 +1,66 @@
 #include "args.hpp"
 
+#include <CLI/CLI.hpp>
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
 namespace penshape::cli {
 
+namespace {
+
+// The option's name in a CLI11 error ("--radius: 1 required TEXT missing").
+std::string option_in(const CLI::Error& e) {
+  const std::string what = e.what();
+  return what.substr(0, what.find(':'));
+}
+
+} // namespace
+
 ParsedArgs::ParsedArgs(std::span<const std::string_view> args, const ArgSpec& spec) {
-  bool only_positionals = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string_view arg = args[i];
-    if (!only_positionals && arg == "-h" && spec.flags.contains("--help")) {
-      flags_.insert("--help"); // the short form every subcommand's help answers to
-      continue;
+  CLI::App app;
+  app.set_help_flag(); // each subcommand prints its own help text
+  app.allow_extras();  // unknown options are named in our own message
+  std::map<std::string, CLI::Option*, std::less<>> options;
+  for (const std::string& name : spec.flags) {
+    options[name] = app.add_flag(name == "--help" ? "-h,--help" : name);
+  }
+  for (const std::string& name : spec.options) options[name] = app.add_option(name)->take_last();
+  app.add_option("positionals", positionals_);
+  // After `--` everything is a positional: those are kept apart from CLI11 (whose extras would
+  // take them), then appended.
+  const auto dash_dash = std::find(args.begin(), args.end(), std::string_view("--"));
+  const std::vector<std::string> after(dash_dash == args.end() ? dash_dash : dash_dash + 1,
+                                       args.end());
+  std::vector<std::string> reversed; // CLI11 takes the arguments last first
+  for (auto it = std::make_reverse_iterator(dash_dash); it != args.rend(); ++it) {
+    const std::string_view arg = *it;
+    // CLI11 would read `--flag=true` as the flag: a flag takes no value at all.
+    const std::size_t eq = arg.find('=');
+    if (arg.starts_with("--") && eq != std::string_view::npos &&
+        spec.flags.contains(arg.substr(0, eq))) {
+      throw UsageError("option '" + std::string(arg.substr(0, eq)) + "' takes no value");
     }
-    if (only_positionals || arg.size() < 2 || arg.substr(0, 2) != "--") {
-      if (!only_positionals && arg.size() > 1 && arg[0] == '-' && arg != "-") {
-        throw UsageError("unknown option '" + std::string(arg) + "'");
-      }
-      positionals_.emplace_back(arg);
-      continue;
-    }
-    if (arg == "--") {
-      only_positionals = true;
-      continue;
-    }
-    const auto eq = arg.find('=');
-    const std::string name(arg.substr(0, eq));
+    reversed.emplace_back(arg);
+  }
+  try {
+    app.parse(reversed);
+  } catch (const CLI::ArgumentMismatch& e) {
+    throw UsageError("option '" + option_in(e) + "' needs a value");
+  } catch (const CLI::ParseError& e) {
+    throw UsageError(e.what());
+  }
+  if (!app.remaining().empty()) {
+    const std::string unknown = app.remaining().front(); // remaining() is a copy
+    throw UsageError("unknown option '" + unknown.substr(0, unknown.find('=')) + "'");
+  }
+  positionals_.insert(positionals_.end(), after.begin(), after.end());
+  for (const auto& [name, option] : options) {
+    if (option->count() == 0) continue;
     if (spec.flags.contains(name)) {
-      if (eq != std::string_view::npos) throw UsageError("option '" + name + "' takes no value");
       flags_.insert(name);
-    } else if (spec.options.contains(name)) {
-      if (eq != std::string_view::npos) {
-        values_[name] = std::string(arg.substr(eq + 1));
-      } else if (i + 1 < args.size()) {
-        values_[name] = std::string(args[++i]);
-      } else {
-        throw UsageError("option '" + name + "' needs a value");
-      }
     } else {
-      throw UsageError("unknown option '" + name + "'");
+      values_[name] = option->results().back();
     }
   }
 }

@@ -1,6 +1,7 @@
 #pragma once
-// A small, strict command-line parser shared by the subcommands: `--name value`,
-// `--name=value`, boolean `--flag`, and positionals. Unknown options are errors.
+// The command-line parser shared by the subcommands, on CLI11: `--name value`, `--name=value`,
+// boolean `--flag`, and positionals (all of them after `--`). Unknown options are errors, and so
+// is a value given to a flag; an option given twice keeps its last value.
 #include <map>
 #include <optional>
 #include <set>

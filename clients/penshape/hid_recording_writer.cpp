@@ -3,36 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+
+#include "penshape/drivers/pen_descriptor_writer.hpp"
+#include "penshape/drivers/recording.hpp"
 
 namespace penshape::cli {
 namespace {
-
-// Short items of the HID report descriptor: prefix (tag | type | size) then 0, 1, 2 or 4 bytes.
-class Items {
- public:
-  void item(std::uint8_t prefix) { bytes.push_back(prefix); }
-  void item1(std::uint8_t prefix, std::uint8_t v) {
-    bytes.push_back(static_cast<std::uint8_t>(prefix | 1U));
-    bytes.push_back(v);
-  }
-  void item4(std::uint8_t prefix, std::uint32_t v) {
-    bytes.push_back(static_cast<std::uint8_t>(prefix | 3U));
-    for (int i = 0; i < 4; ++i) bytes.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
-  }
-  std::vector<std::uint8_t> bytes;
-};
-
-// Item prefixes without their size bits.
-constexpr std::uint8_t kUsagePage = 0x04, kUsage = 0x08, kCollection = 0xA0, kEndCollection = 0xC0,
-                       kInput = 0x80, kLogicalMin = 0x14, kLogicalMax = 0x24, kPhysicalMin = 0x34,
-                       kPhysicalMax = 0x44, kUnitExponent = 0x54, kUnit = 0x64, kReportSize = 0x74,
-                       kReportId = 0x84, kReportCount = 0x94;
-
-std::uint32_t physical_extent(std::int32_t max, double resolution) {
-  if (!(resolution > 0) || max <= 0) return 0;
-  const double hundredths_mm = std::round(static_cast<double>(max) / resolution * 100.0);
-  return static_cast<std::uint32_t>(std::clamp(hundredths_mm, 0.0, 4.0e9));
-}
 
 void put32(std::vector<std::uint8_t>& out, std::uint32_t v) {
   for (int i = 0; i < 4; ++i) out.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
@@ -50,60 +27,25 @@ std::uint8_t tilt_byte(std::int16_t degrees) {
 } // namespace
 
 std::vector<std::uint8_t> synthetic_pen_descriptor(const TabletInfo& tablet) {
-  Items d;
-  d.item1(kUsagePage, 0x0D);  // Digitizer
-  d.item1(kUsage, 0x02);      // Pen
-  d.item1(kCollection, 0x01); // Application
-  d.item1(kReportId, kRecordedReportId);
-  d.item1(kUsage, 0x20);      // Stylus
-  d.item1(kCollection, 0x00); // Physical
-  d.item1(kUsage, 0x42);      // Tip Switch
-  d.item1(kUsage, 0x44);      // Barrel Switch
-  d.item1(kUsage, 0x5A);      // Secondary Barrel Switch
-  d.item1(kUsage, 0x45);      // Eraser
-  d.item1(kUsage, 0x32);      // In Range
-  d.item1(kLogicalMin, 0);
-  d.item1(kLogicalMax, 1);
-  d.item1(kReportSize, 1);
-  d.item1(kReportCount, 5);
-  d.item1(kInput, 0x02); // Data, Variable, Absolute
-  d.item1(kReportCount, 3);
-  d.item1(kInput, 0x03);     // Constant padding
-  d.item1(kUsagePage, 0x01); // Generic Desktop
-  const bool physical = tablet.x_resolution > 0 && tablet.y_resolution > 0;
-  d.item1(kUnit, physical ? 0x11 : 0x00);         // SI linear, centimetre
-  d.item1(kUnitExponent, physical ? 0x0D : 0x00); // 10^-3 (4-bit two's complement)
-  d.item1(kReportSize, 32);
-  d.item1(kReportCount, 1);
-  d.item1(kPhysicalMin, 0);
-  d.item1(kUsage, 0x30); // X
-  d.item4(kLogicalMax, static_cast<std::uint32_t>(std::max(tablet.x_max, 0)));
-  d.item4(kPhysicalMax, physical_extent(tablet.x_max, tablet.x_resolution));
-  d.item1(kInput, 0x02);
-  d.item1(kUsage, 0x31); // Y
-  d.item4(kLogicalMax, static_cast<std::uint32_t>(std::max(tablet.y_max, 0)));
-  d.item4(kPhysicalMax, physical_extent(tablet.y_max, tablet.y_resolution));
-  d.item1(kInput, 0x02);
-  d.item1(kUsagePage, 0x0D); // Digitizer
-  d.item1(kUnit, 0x00);
-  d.item1(kUnitExponent, 0x00);
-  d.item1(kPhysicalMax, 0);
-  d.item1(kUsage, 0x30); // Tip Pressure
-  d.item4(kLogicalMax, tablet.pressure_max);
-  d.item1(kInput, 0x02);
-  d.item1(kUsage, 0x3D);      // X Tilt
-  d.item1(kUsage, 0x3E);      // Y Tilt
-  d.item1(kLogicalMin, 0x81); // -127
-  d.item1(kLogicalMax, 0x7F); // 127
-  d.item1(kPhysicalMin, 0x81);
-  d.item1(kPhysicalMax, 0x7F);
-  d.item1(kUnit, 0x14); // English rotation, degrees
-  d.item1(kReportSize, 8);
-  d.item1(kReportCount, 2);
-  d.item1(kInput, 0x02);
-  d.item(kEndCollection);
-  d.item(kEndCollection);
-  return d.bytes;
+  // The layout encode_pen_report writes (hid_recording_writer.hpp), by the drivers' writer.
+  drivers::PenDescriptorSpec spec;
+  spec.name = "penshape recorded pen";
+  spec.report_id = kRecordedReportId;
+  spec.x_max = std::max(tablet.x_max, 0);
+  spec.y_max = std::max(tablet.y_max, 0);
+  if (tablet.x_resolution > 0 && tablet.y_resolution > 0) {
+    spec.width_mm = tablet.width_mm();
+    spec.height_mm = tablet.height_mm();
+  }
+  spec.coordinate_bits = 32;
+  spec.pressure_max = static_cast<std::int32_t>(
+      std::min<std::uint32_t>(tablet.pressure_max, std::numeric_limits<std::int32_t>::max()));
+  spec.pressure_bits = 32;
+  spec.tilt = true;
+  spec.tilt_degrees = 127;
+  spec.eraser = true;
+  spec.fine_units = true;
+  return drivers::pen_descriptor(spec);
 }
 
 std::vector<std::uint8_t> encode_pen_report(const PenSample& s, const TabletInfo& tablet) {
@@ -125,40 +67,20 @@ std::vector<std::uint8_t> encode_pen_report(const PenSample& s, const TabletInfo
   return out;
 }
 
-namespace {
-
-std::string hex_bytes(const std::vector<std::uint8_t>& bytes) {
-  std::string out;
-  char buf[4];
-  for (const auto b : bytes) {
-    std::snprintf(buf, sizeof buf, " %02x", b);
-    out += buf;
-  }
-  return out;
-}
-
-std::string one_line(std::string text) {
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  std::replace(text.begin(), text.end(), '\r', ' ');
-  return text;
-}
-
-} // namespace
-
 HidRecordingWriter::HidRecordingWriter(std::ostream& out, const TabletInfo& tablet,
                                        const std::string& phys, const std::string& comment)
     : out_(out), tablet_(tablet) {
-  out_ << "# " << one_line(comment) << "\n";
+  out_ << "# " << drivers::single_line(comment) << "\n";
   out_ << "# penshape record: decoded samples re-encoded with a synthetic HID pen descriptor\n";
-  const auto descriptor = synthetic_pen_descriptor(tablet);
-  out_ << "D: 0\n";
-  out_ << "R: " << descriptor.size() << hex_bytes(descriptor) << "\n";
-  out_ << "N: " << one_line(tablet.name.empty() ? "penshape recorded pen" : tablet.name) << "\n";
-  out_ << "P: " << one_line(phys) << "\n";
-  char ids[32];
-  std::snprintf(ids, sizeof ids, "I: %x %04x %04x", static_cast<unsigned>(tablet.bus),
-                tablet.vendor_id, tablet.product_id);
-  out_ << ids << "\nD: 0\n";
+  drivers::Recording header;
+  header.descriptor = synthetic_pen_descriptor(tablet);
+  header.identity.name = tablet.name.empty() ? "penshape recorded pen" : tablet.name;
+  header.identity.bus = tablet.bus;
+  header.identity.vendor_id = tablet.vendor_id;
+  header.identity.product_id = tablet.product_id;
+  header.has_identity = true;
+  header.phys = phys;
+  out_ << drivers::hid_recorder_header(header);
 }
 
 void HidRecordingWriter::write(const PenSample& sample) {
@@ -166,11 +88,10 @@ void HidRecordingWriter::write(const PenSample& sample) {
     have_epoch_ = true;
     epoch_us_ = sample.time_us;
   }
-  const std::int64_t t = std::max<std::int64_t>(sample.time_us - epoch_us_, 0);
-  char stamp[48];
-  std::snprintf(stamp, sizeof stamp, "E: %lld.%06lld %zu", static_cast<long long>(t / 1'000'000),
-                static_cast<long long>(t % 1'000'000), kRecordedReportBytes);
-  out_ << stamp << hex_bytes(encode_pen_report(sample, tablet_)) << "\n";
+  drivers::HidEvent event;
+  event.time_us = std::max<std::int64_t>(sample.time_us - epoch_us_, 0);
+  event.bytes = encode_pen_report(sample, tablet_);
+  out_ << drivers::hid_recorder_event_line(event);
   ++reports_;
 }
 

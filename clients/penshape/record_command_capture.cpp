@@ -9,32 +9,12 @@
 namespace penshape::cli {
 namespace {
 
-// hid-recorder lines end at '\n': a name or path must not start a new line.
-std::string one_line(std::string text) {
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  std::replace(text.begin(), text.end(), '\r', ' ');
-  return text;
-}
-
 std::uint16_t usb_id(std::uint32_t value, const char* field) {
   if (value > 0xffff) {
     throw std::invalid_argument(std::string("DeviceInfo.hid.") + field + " " +
                                 std::to_string(value) + " is not a 16-bit id");
   }
   return static_cast<std::uint16_t>(value);
-}
-
-// " 05 0d …": hid-recorder's byte lists.
-std::string hex(const std::vector<std::uint8_t>& bytes) {
-  std::string out;
-  out.reserve(bytes.size() * 3);
-  constexpr const char* kDigits = "0123456789abcdef";
-  for (const std::uint8_t b : bytes) {
-    out += ' ';
-    out += kDigits[b >> 4U];
-    out += kDigits[b & 15U];
-  }
-  return out;
 }
 
 } // namespace
@@ -49,8 +29,8 @@ std::optional<drivers::Recording> capture_header(const v1::DeviceInfo& device) {
   }
   drivers::Recording header;
   header.descriptor.assign(hid.report_descriptor().begin(), hid.report_descriptor().end());
-  header.identity.name = one_line(hid.name());
-  header.phys = one_line(hid.phys());
+  header.identity.name = drivers::single_line(hid.name());
+  header.phys = drivers::single_line(hid.phys());
   header.identity.bus = static_cast<Bus>(usb_id(hid.bus(), "bus"));
   header.identity.vendor_id = usb_id(hid.vendor_id(), "vendor_id");
   header.identity.product_id = usb_id(hid.product_id(), "product_id");
@@ -75,26 +55,10 @@ CaptureWriter::CaptureWriter(std::ostream& out, const drivers::Recording& header
   std::size_t begin = 0;
   while (begin <= comment.size()) {
     const std::size_t end = std::min(comment.find('\n', begin), comment.size());
-    text += "# " + one_line(comment.substr(begin, end - begin)) + "\n";
+    text += "# " + drivers::single_line(comment.substr(begin, end - begin)) + "\n";
     begin = end + 1;
   }
-  // hid-recorder's own order (D:, R:, N:, P:, I:, then the events after a second D:), so a
-  // capture diffs cleanly against one made by hid-recorder; vendor strings are penshape comments.
-  text += "D: 0\n";
-  text += "R: " + std::to_string(header.descriptor.size()) + hex(header.descriptor) + "\n";
-  text += "N: " + header.identity.name + "\n";
-  text += "P: " + header.phys + "\n";
-  if (header.has_identity) {
-    char ids[48];
-    std::snprintf(ids, sizeof ids, "I: %x %04x %04x\n", static_cast<unsigned>(header.identity.bus),
-                  static_cast<unsigned>(header.identity.vendor_id),
-                  static_cast<unsigned>(header.identity.product_id));
-    text += ids;
-  }
-  for (const auto& [index, bytes] : header.vendor_strings) {
-    text += "# penshape-string: " + std::to_string(index) + hex(bytes) + "\n";
-  }
-  text += "D: 0\n";
+  text += drivers::hid_recorder_header(header);
   put(text);
   header_bytes_ = bytes_;
 }

@@ -10,41 +10,10 @@
 #include "daemon_channel.hpp"
 #include "device_events.hpp"
 #include "hid_recording_writer.hpp"
+#include "penshape/proto/pen_types.hpp"
 #include "record_command.hpp"
 
 namespace penshape::cli {
-namespace {
-
-TabletInfo tablet_from(const v1::TabletInfo& t) {
-  TabletInfo out;
-  out.bus = static_cast<Bus>(t.bus());
-  out.vendor_id = static_cast<std::uint16_t>(t.vendor_id());
-  out.product_id = static_cast<std::uint16_t>(t.product_id());
-  out.name = t.name();
-  out.x_max = t.x_max();
-  out.y_max = t.y_max();
-  out.pressure_max = t.pressure_max();
-  out.x_resolution = t.x_resolution();
-  out.y_resolution = t.y_resolution();
-  out.has_tilt = t.has_tilt();
-  return out;
-}
-
-PenSample sample_from(const v1::PenSample& s) {
-  PenSample out;
-  out.time_us = s.time_us();
-  out.x = s.x();
-  out.y = s.y();
-  out.pressure = s.pressure();
-  out.tilt_x = static_cast<std::int16_t>(std::clamp(s.tilt_x(), -32768, 32767));
-  out.tilt_y = static_cast<std::int16_t>(std::clamp(s.tilt_y(), -32768, 32767));
-  out.buttons = s.buttons();
-  out.in_range = s.in_range();
-  out.tip = s.tip();
-  return out;
-}
-
-} // namespace
 
 int record_decoded(v1::Live::Stub& stub, const RecordOptions& options, CancelOnSignal& cancel) {
   int exit_code = kExitOk;
@@ -53,7 +22,7 @@ int record_decoded(v1::Live::Stub& stub, const RecordOptions& options, CancelOnS
 
   std::ofstream out(options.path, std::ios::trunc);
   if (!out) return record_fail("cannot write " + options.path, kExitBadInput);
-  const TabletInfo tablet = tablet_from(device->tablet());
+  const TabletInfo tablet = proto::from_proto(device->tablet());
   HidRecordingWriter writer(
       out, tablet, "penshaped:" + device->id(),
       "recorded by penshape from device " + device->id() + " (" + device->source() + ")");
@@ -96,7 +65,7 @@ int record_decoded(v1::Live::Stub& stub, const RecordOptions& options, CancelOnS
   while (!done && reader->Read(&event)) {
     if (event.has_samples()) {
       for (const auto& s : event.samples().samples()) {
-        writer.write(sample_from(s));
+        writer.write(proto::from_proto(s));
         if (options.max_samples && writer.reports() >= *options.max_samples) {
           done = true;
           break;

@@ -1,4 +1,5 @@
-// $1 gesture-log XML and JSON-lines stroke readers (formats in stroke_files.hpp).
+// Stroke files (formats in stroke_files.hpp): JSON lines through nlohmann-json, $1 gesture logs
+// through dollar_xml.hpp.
 #include "stroke_files.hpp"
 
 #include <algorithm>
@@ -10,6 +11,8 @@
 #include <sstream>
 
 #include <nlohmann/json.hpp>
+
+#include "dollar_xml.hpp"
 
 namespace penshape::cli {
 namespace {
@@ -25,88 +28,22 @@ std::string lower_extension(const std::string& path) {
   return ext;
 }
 
-std::optional<double> parse_double(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '+')) s.remove_prefix(1);
-  double v = 0;
-  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (ec != std::errc() || end != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
-  return v;
-}
-
-// Value of attribute `name` in an XML tag's text, if present.
-std::optional<std::string> attribute(const std::string& tag, const std::string& name) {
-  std::size_t pos = 0;
-  while ((pos = tag.find(name, pos)) != std::string::npos) {
-    const bool starts = pos > 0 && std::isspace(static_cast<unsigned char>(tag[pos - 1]));
-    std::size_t q = pos + name.size();
-    while (q < tag.size() && tag[q] == ' ') ++q;
-    if (starts && q < tag.size() && tag[q] == '=') {
-      ++q;
-      while (q < tag.size() && tag[q] == ' ') ++q;
-      if (q >= tag.size() || (tag[q] != '"' && tag[q] != '\'')) return std::nullopt;
-      const char quote = tag[q];
-      const std::size_t end = tag.find(quote, q + 1);
-      if (end == std::string::npos) return std::nullopt;
-      return tag.substr(q + 1, end - q - 1);
-    }
-    pos += name.size();
-  }
-  return std::nullopt;
-}
-
+// A $1 gesture log, through the one reader (dollar_xml.hpp).
 std::vector<FileStroke> read_dollar_xml(const std::string& path, const std::string& text) {
+  dollar::Gesture g;
+  try {
+    g = dollar::parse_dollar_xml(text, path);
+  } catch (const dollar::DollarXmlError& e) {
+    throw StrokeFileError(e.what());
+  }
   FileStroke stroke;
   stroke.file = path;
-  bool in_gesture = false;
-  bool closed = false;
-  std::size_t line = 1;
-  std::size_t pos = 0;
-  std::size_t counted = 0; // newlines before `counted` are in `line`
-  while ((pos = text.find('<', pos)) != std::string::npos) {
-    line +=
-        static_cast<std::size_t>(std::count(text.begin() + static_cast<std::ptrdiff_t>(counted),
-                                            text.begin() + static_cast<std::ptrdiff_t>(pos), '\n'));
-    counted = pos;
-    const std::size_t end = text.find('>', pos);
-    if (end == std::string::npos) fail(path, line, "unterminated XML tag");
-    const std::string tag = text.substr(pos + 1, end - pos - 1);
-    const std::size_t tag_line = line;
-    pos = end + 1;
-    if (tag.rfind("Gesture", 0) == 0) {
-      if (in_gesture || closed) fail(path, tag_line, "more than one <Gesture> element");
-      in_gesture = true;
-      stroke.line = tag_line;
-      stroke.name = attribute(tag, "Name").value_or("");
-    } else if (tag.rfind("/Gesture", 0) == 0) {
-      if (!in_gesture) fail(path, tag_line, "</Gesture> without <Gesture>");
-      in_gesture = false;
-      closed = true;
-    } else if (tag.rfind("Point", 0) == 0) {
-      if (!in_gesture) fail(path, tag_line, "<Point> outside <Gesture>");
-      StrokePoint p;
-      for (const char* key : {"X", "Y"}) {
-        const std::optional<std::string> v = attribute(tag, key);
-        if (!v) fail(path, tag_line, std::string("<Point> without attribute ") + key);
-        const std::optional<double> d = parse_double(*v);
-        if (!d)
-          fail(path, tag_line,
-               std::string("attribute ") + key + "=\"" + *v + "\" is not a finite number");
-        (key[0] == 'X' ? p.x : p.y) = *d;
-      }
-      if (const std::optional<std::string> t = attribute(tag, "T")) {
-        const std::optional<double> d = parse_double(*t);
-        if (!d) fail(path, tag_line, "attribute T=\"" + *t + "\" is not a finite number");
-        p.t = *d / 1000.0;
-      }
-      stroke.points.push_back(p);
-    }
-  }
-  if (in_gesture) fail(path, line, "missing </Gesture> (truncated file?)");
-  if (!closed) fail(path, line, "no <Gesture> element");
+  stroke.line = g.line;
+  stroke.name = std::move(g.name);
+  stroke.points = std::move(g.points);
   return {stroke};
 }
 
-// One point [x, y], [x, y, t] or [x, y, t, pressure] of the stroke on `line`.
 StrokePoint json_point(const nlohmann::json& v, std::size_t index, FileStroke& out) {
   const std::string where = "\"points\"[" + std::to_string(index) + "]";
   if (!v.is_array() || v.size() < 2 || v.size() > 4) {

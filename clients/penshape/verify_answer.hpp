@@ -4,7 +4,7 @@
 #include <string>
 #include <string_view>
 
-#include "json_reader.hpp"
+#include "json_value.hpp"
 #include "penshape/core/verify.hpp"
 
 namespace penshape::cli {

@@ -11,7 +11,7 @@
 #include "args.hpp"
 #include "command.hpp"
 #include "geometry_cli.hpp"
-#include "json_reader.hpp"
+#include "json_value.hpp"
 #include "json_writer.hpp"
 #include "penshape/core/verify.hpp"
 #include "stroke_files.hpp"

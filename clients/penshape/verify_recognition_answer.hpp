@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "json_reader.hpp"
+#include "json_value.hpp"
 #include "penshape/core/verify.hpp"
 
 namespace penshape::cli {

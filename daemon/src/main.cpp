@@ -9,11 +9,14 @@
 #include <cstring>
 #include <exception>
 #include <future>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <thread>
 #include <vector>
+
+#include <CLI/CLI.hpp>
 
 #include "log.hpp"
 #include "penshape/core/version.hpp"
@@ -128,55 +131,71 @@ std::string default_config_path() {
   return ::access(path.c_str(), F_OK) == 0 ? path : "";
 }
 
-} // namespace
-
-int main(int argc, char** argv) {
-  CommandLine cli;
+// Reads the command line into `cli` with CLI11. Returns an exit code when the program ends here
+// (--help, --version: 0; a bad command line: 2 with the message on stderr), else nullopt.
+std::optional<int> parse_command_line(int argc, char** argv, CommandLine& cli) {
+  CLI::App app("penshaped");
+  app.set_help_flag(); // the help is kUsage, the man page's source
+  app.allow_extras();  // unknown arguments are named in our own message below
+  bool help = false;
+  bool version = false;
+  std::string delay;
+  app.add_flag("-h,--help", help);
+  app.add_flag("--version", version);
+  app.add_option("--config", cli.config_path)->take_last();
+  app.add_option("--listen", cli.listen)->take_last();
+  app.add_option("--tcp", cli.tcp)->take_last();
+  app.add_flag("--tcp-allow-non-loopback", cli.tcp_allow_non_loopback);
+  app.add_option("--replay", cli.replays)->expected(1)->take_all()->allow_extra_args(false);
+  app.add_option("--replay-delay", delay)->take_last();
+  app.add_flag("--replay-loop", cli.replay_loop);
+  // A flag takes no value: CLI11 would read `--replay-loop=true` as the flag.
   for (int i = 1; i < argc; ++i) {
     const std::string_view arg = argv[i];
-    auto value = [&](std::string* out) {
-      if (i + 1 >= argc) return false;
-      *out = argv[++i];
-      return true;
-    };
-    if (arg == "--help" || arg == "-h") {
-      std::fputs(kUsage, stdout);
-      return 0;
+    const std::string_view name = arg.substr(0, arg.find('='));
+    if (name.size() < arg.size() && name.starts_with("-") &&
+        app.get_option_no_throw(std::string(name)) != nullptr &&
+        app.get_option_no_throw(std::string(name))->get_expected_min() == 0) {
+      std::fprintf(stderr, "penshaped: unknown or incomplete option '%s' (see --help)\n", argv[i]);
+      return 2;
     }
-    if (arg == "--version") {
-      std::printf("penshaped %s\n", penshape::version().c_str());
-      return 0;
-    }
-    if (arg == "--tcp-allow-non-loopback") {
-      cli.tcp_allow_non_loopback = true;
-      continue;
-    }
-    if (arg == "--replay-loop") {
-      cli.replay_loop = true;
-      continue;
-    }
-    if (arg == "--replay" && i + 1 < argc) {
-      cli.replays.emplace_back(argv[++i]);
-      continue;
-    }
-    if (arg == "--replay-delay" && i + 1 < argc) {
-      char* end = nullptr;
-      cli.replay_delay_seconds = std::strtod(argv[++i], &end);
-      if (*end != '\0' || !(cli.replay_delay_seconds >= 0 && cli.replay_delay_seconds <= 3600)) {
-        std::fprintf(stderr, "penshaped: --replay-delay wants seconds in [0, 3600], got '%s'\n",
-                     argv[i]);
-        return 2;
-      }
-      continue;
-    }
-    if ((arg == "--config" && value(&cli.config_path)) ||
-        (arg == "--listen" && value(&cli.listen)) || (arg == "--tcp" && value(&cli.tcp))) {
-      continue;
-    }
-    std::fprintf(stderr, "penshaped: unknown or incomplete option '%s' (see --help)\n", argv[i]);
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // A value missing after an option: CLI11 names the option before ':'.
+    const std::string what = e.what();
+    std::fprintf(stderr, "penshaped: unknown or incomplete option '%s' (see --help)\n",
+                 what.substr(0, what.find(':')).c_str());
     return 2;
   }
+  if (help) {
+    std::fputs(kUsage, stdout);
+    return 0;
+  }
+  if (version) {
+    std::printf("penshaped %s\n", penshape::version().c_str());
+    return 0;
+  }
+  if (!app.remaining().empty()) {
+    std::fprintf(stderr, "penshaped: unknown or incomplete option '%s' (see --help)\n",
+                 app.remaining().front().c_str());
+    return 2;
+  }
+  if (!delay.empty()) {
+    char* end = nullptr;
+    cli.replay_delay_seconds = std::strtod(delay.c_str(), &end);
+    if (*end != '\0' || !(cli.replay_delay_seconds >= 0 && cli.replay_delay_seconds <= 3600)) {
+      std::fprintf(stderr, "penshaped: --replay-delay wants seconds in [0, 3600], got '%s'\n",
+                   delay.c_str());
+      return 2;
+    }
+  }
+  return std::nullopt;
+}
 
+// The config file and the command line's overrides; nullopt (logged) when they are bad.
+std::optional<penshape::daemon::ServerOptions> server_options(CommandLine& cli) {
   penshape::daemon::ServerOptions options;
   try {
     if (cli.config_path.empty()) cli.config_path = default_config_path();
@@ -192,28 +211,37 @@ int main(int argc, char** argv) {
     }
   } catch (const penshape::daemon::ConfigError& e) {
     log(LogLevel::kError, e.what());
-    return 2;
+    return std::nullopt;
   }
   options.address = !cli.listen.empty()              ? cli.listen
                     : !options.config.listen.empty() ? options.config.listen
                                                      : penshape::daemon::default_address();
+  return options;
+}
 
-  // With --replay the recording is the only device (read and checked now, so a bad file is bad
-  // input before the daemon serves); otherwise the tablets attached to this machine, with hotplug.
+// With --replay the recordings are the only device (read and checked now, so a bad file is bad
+// input before the daemon serves); nullopt (logged) when one is bad.
+std::optional<std::vector<penshape::drivers::Recording>> load_recordings(const CommandLine& cli) {
   std::vector<penshape::drivers::Recording> recordings;
   for (const std::string& file : cli.replays) {
     try {
       recordings.push_back(penshape::daemon::load_replay_file(file));
     } catch (const penshape::daemon::BadReplayFile& e) {
       log(LogLevel::kError, std::string("--replay ") + e.what());
-      return 2;
+      return std::nullopt;
     }
   }
   if (cli.replay_loop && recordings.empty()) {
     std::fputs("penshaped: --replay-loop needs --replay FILE\n", stderr);
-    return 2;
+    return std::nullopt;
   }
+  return recordings;
+}
 
+// Serves until SIGINT/SIGTERM: the recordings as the only tablet, or the tablets attached to this
+// machine (with hotplug) when there are none. Returns the exit code.
+int serve(const penshape::daemon::ServerOptions& options,
+          const std::vector<penshape::drivers::Recording>& recordings, const CommandLine& cli) {
   const sigset_t signals = block_termination_signals();
   try {
     auto source = std::make_shared<penshape::daemon::DeviceManagerSource>(
@@ -256,4 +284,16 @@ int main(int argc, char** argv) {
     return 1;
   }
   return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  CommandLine cli;
+  if (const std::optional<int> done = parse_command_line(argc, argv, cli)) return *done;
+  const std::optional<penshape::daemon::ServerOptions> options = server_options(cli);
+  if (!options) return 2;
+  const auto recordings = load_recordings(cli);
+  if (!recordings) return 2;
+  return serve(*options, *recordings, cli);
 }

@@ -183,18 +183,10 @@ EngineKind engine_from_proto(v1::Engine engine, const std::string& field) {
 
 TabletInfo tablet_from_proto(const v1::TabletInfo& message, const std::string& field,
                              bool needs_resolution) {
-  TabletInfo t;
-  t.bus = static_cast<Bus>(message.bus());
   if (message.vendor_id() > 0xffff) throw FieldError(field + ".vendor_id is beyond 0xffff");
   if (message.product_id() > 0xffff) throw FieldError(field + ".product_id is beyond 0xffff");
-  t.vendor_id = static_cast<std::uint16_t>(message.vendor_id());
-  t.product_id = static_cast<std::uint16_t>(message.product_id());
-  t.name = message.name();
   if (message.x_max() < 0) throw FieldError(field + ".x_max is negative");
   if (message.y_max() < 0) throw FieldError(field + ".y_max is negative");
-  t.x_max = message.x_max();
-  t.y_max = message.y_max();
-  t.pressure_max = message.pressure_max();
   const std::pair<double, const char*> resolutions[] = {{message.x_resolution(), "x_resolution"},
                                                         {message.y_resolution(), "y_resolution"}};
   for (const auto& [value, name] : resolutions) {
@@ -205,25 +197,10 @@ TabletInfo tablet_from_proto(const v1::TabletInfo& message, const std::string& f
       throw FieldError(at + " must be > 0 (device units per millimetre)");
     }
   }
-  t.x_resolution = message.x_resolution();
-  t.y_resolution = message.y_resolution();
-  t.has_tilt = message.has_tilt();
-  return t;
+  return proto::from_proto(message);
 }
 
-PenSample sample_from_proto(const v1::PenSample& m) {
-  PenSample s;
-  s.time_us = m.time_us();
-  s.x = m.x();
-  s.y = m.y();
-  s.pressure = m.pressure();
-  s.tilt_x = static_cast<std::int16_t>(std::clamp(m.tilt_x(), -90, 90));
-  s.tilt_y = static_cast<std::int16_t>(std::clamp(m.tilt_y(), -90, 90));
-  s.buttons = m.buttons();
-  s.in_range = m.in_range();
-  s.tip = m.tip();
-  return s;
-}
+PenSample sample_from_proto(const v1::PenSample& message) { return proto::from_proto(message); }
 
 Stroke stroke_from_proto(const v1::Stroke& message, const std::string& field, const Limits& limits,
                          bool needs_resolution) {
@@ -329,38 +306,6 @@ void to_proto(const PolygonSet& set, v1::PolygonSet* out) {
     ring_to_proto(polygon.outer, p->mutable_outer());
     for (const Ring& hole : polygon.holes) ring_to_proto(hole, p->add_holes());
   }
-}
-
-void to_proto(const PenSample& s, v1::PenSample* out) {
-  out->set_time_us(s.time_us);
-  out->set_x(s.x);
-  out->set_y(s.y);
-  out->set_pressure(s.pressure);
-  out->set_tilt_x(s.tilt_x);
-  out->set_tilt_y(s.tilt_y);
-  out->set_buttons(s.buttons);
-  out->set_in_range(s.in_range);
-  out->set_tip(s.tip);
-}
-
-void to_proto(const TabletInfo& t, v1::TabletInfo* out) {
-  out->set_bus(static_cast<v1::Bus>(t.bus));
-  out->set_vendor_id(t.vendor_id);
-  out->set_product_id(t.product_id);
-  out->set_name(t.name);
-  out->set_x_max(t.x_max);
-  out->set_y_max(t.y_max);
-  out->set_pressure_max(t.pressure_max);
-  out->set_x_resolution(t.x_resolution);
-  out->set_y_resolution(t.y_resolution);
-  out->set_has_tilt(t.has_tilt);
-}
-
-void to_proto(const Stroke& stroke, v1::Stroke* out) {
-  out->set_id(stroke.id);
-  to_proto(stroke.tablet, out->mutable_tablet());
-  out->mutable_samples()->Reserve(static_cast<int>(stroke.samples.size()));
-  for (const PenSample& s : stroke.samples) to_proto(s, out->add_samples());
 }
 
 void to_proto(const PenSettings& settings, v1::PenSettings* out) {

@@ -204,10 +204,18 @@ std::string hid_recorder_event_line(const HidEvent& e) {
   return out;
 }
 
+std::string single_line(std::string text) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  std::replace(text.begin(), text.end(), '\r', ' ');
+  return text;
+}
+
 std::string hid_recorder_header(const Recording& r) {
-  std::string out;
-  if (!r.identity.name.empty()) out += "N: " + r.identity.name + "\n";
-  if (!r.phys.empty()) out += "P: " + r.phys + "\n";
+  // hid-recorder's own order, so a file diffs cleanly against one hid-recorder made: D: 0, R:, N:,
+  // P:, I:, then (penshape's comments) the vendor strings, and D: 0 before the events.
+  std::string out = "D: 0\nR: " + std::to_string(r.descriptor.size());
+  append_hex(out, r.descriptor);
+  out += "\nN: " + single_line(r.identity.name) + "\nP: " + single_line(r.phys) + "\n";
   if (r.has_identity) {
     char buf[48];
     std::snprintf(buf, sizeof buf, "I: %x %04x %04x\n", static_cast<unsigned>(r.identity.bus),
@@ -220,10 +228,7 @@ std::string hid_recorder_header(const Recording& r) {
     append_hex(out, bytes);
     out += '\n';
   }
-  out += "R: " + std::to_string(r.descriptor.size());
-  append_hex(out, r.descriptor);
-  out += '\n';
-  return out;
+  return out + "D: 0\n";
 }
 
 std::string write_hid_recorder(const Recording& r) {

@@ -2,14 +2,13 @@
 // Reads a gesture in the $1 Unistroke data set's format (../shared/data/strokes/dollar1, or the
 // project's generated strokes written the same way): integer pixel points with millisecond times.
 // Tests use these hand-drawn strokes as pen input.
+#include <cmath>
 #include <cstdint>
-#include <fstream>
-#include <regex>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "dollar_xml.hpp"
 #include "generated_files.hpp"
 #include "test_data.hpp"
 
@@ -22,16 +21,10 @@ struct DollarPoint {
 };
 
 inline std::vector<DollarPoint> read_dollar_gesture(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot read " + path);
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string s = text.str();
-  static const std::regex point(R"re(<Point X="(-?\d+)" Y="(-?\d+)" T="(\d+)")re");
   std::vector<DollarPoint> out;
-  for (auto it = std::sregex_iterator(s.begin(), s.end(), point); it != std::sregex_iterator();
-       ++it) {
-    out.push_back({std::stoi((*it)[1]), std::stoi((*it)[2]), std::stoll((*it)[3])});
+  for (const StrokePoint& p : dollar::read_dollar_xml(path).points) {
+    out.push_back({static_cast<int>(std::lround(p.x)), static_cast<int>(std::lround(p.y)),
+                   std::llround(p.t * 1000.0)});
   }
   if (out.empty()) throw std::runtime_error(path + ": no <Point> elements");
   return out;

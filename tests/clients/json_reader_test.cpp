@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "json_reader.hpp"
+#include "json_value.hpp"
 #include "json_writer.hpp"
 
 namespace penshape::cli {
@@ -52,6 +52,23 @@ TEST(JsonReader, ErrorsNameLineAndColumn) {
     FAIL() << "no error";
   } catch (const JsonError& e) {
     EXPECT_NE(std::string(e.what()).find("JSON line 2, column 8"), std::string::npos) << e.what();
+  }
+}
+
+// nlohmann's parser reads one value at a time: values must be whole and apart, numbers keep the
+// exact text they were written with (verify reads decimals as rationals).
+TEST(JsonReader, ValuesAreWholeAndNumbersKeepTheirText) {
+  const auto values = parse_json_values(
+      "12 3\n1.50e+3 -0.1000000000000000055511151231257827\n"
+      "{\"a\": [18446744073709551616]}");
+  ASSERT_EQ(values.size(), 5U);
+  EXPECT_EQ(values[0].text, "12");
+  EXPECT_EQ(values[1].text, "3");
+  EXPECT_EQ(values[2].text, "1.50e+3");
+  EXPECT_EQ(values[3].text, "-0.1000000000000000055511151231257827");
+  EXPECT_EQ(values[4].find("a")->items[0].text, "18446744073709551616");
+  for (const char* bad : {"1x", "[1]x", "truex", "{} ]", "1 2 ,"}) {
+    EXPECT_THROW((void)parse_json_values(bad), JsonError) << bad;
   }
 }
 

@@ -12,11 +12,11 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
-#include <regex>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "dollar_xml.hpp"
 #include "hold_recording.hpp"
 #include "penshape/daemon/device_manager_source.hpp"
 #include "penshape/daemon/recognizing_analyzer.hpp"
@@ -451,14 +451,10 @@ TEST(HoldConfigRpc, PerDeviceSettingsAndBadValues) {
 
 // A $1 gesture log's points (pixels, milliseconds) as a path from t = 0 (seconds).
 TimedPath dollar_path(const fs::path& file) {
-  const std::string text = penshape::test::read_file(file);
-  static const std::regex point(R"re(<Point X="([-0-9.]+)" Y="([-0-9.]+)" T="([0-9]+)")re");
   TimedPath out;
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), point);
-       it != std::sregex_iterator(); ++it) {
-    const double t = std::stod((*it)[3]) / 1000;
-    if (!out.empty() && t <= out.back().t) continue; // a repeated time
-    out.push_back({std::stod((*it)[1]), std::stod((*it)[2]), t});
+  for (const penshape::StrokePoint& p : penshape::dollar::read_dollar_xml(file).points) {
+    if (!out.empty() && p.t <= out.back().t) continue; // a repeated time
+    out.push_back({p.x, p.y, p.t});
   }
   const double t0 = out.empty() ? 0 : out.front().t;
   for (TimedPoint& p : out) p.t -= t0;

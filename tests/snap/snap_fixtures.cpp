@@ -7,12 +7,12 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <pugixml.hpp>
 #include <sstream>
 #include <stdexcept>
 
 #include <unistd.h>
 
+#include "dollar_xml.hpp"
 #include "stroke_files.hpp"
 #include "stroke_gen.hpp"
 #include "test_data.hpp"
@@ -110,11 +110,9 @@ std::string points_text(const std::vector<PointD>& p) {
 } // namespace
 
 std::vector<PointD> placed_gesture(const std::string& file, double x0, double y0, double size) {
-  pugi::xml_document doc;
-  if (!doc.load_file(file.c_str())) throw std::runtime_error("cannot read gesture " + file);
   std::vector<PointD> pts;
-  for (const auto& p : doc.child("Gesture").children("Point")) {
-    const PointD q{p.attribute("X").as_double(), p.attribute("Y").as_double()};
+  for (const StrokePoint& p : dollar::read_dollar_xml(file).points) {
+    const PointD q{p.x, p.y};
     // A pixel repeated at once or after one step back (a pause, a jitter) gives a Calligraphy
     // outline no direction there: drop it.
     const auto same = [&](std::size_t back) {

@@ -8,12 +8,12 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "dollar_xml.hpp"
 #include "penshape/core/recognize.hpp"
 
 namespace penshape::cases {
@@ -27,21 +27,11 @@ struct Gesture {
 };
 
 inline Gesture read_dollar(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
+  dollar::Gesture read = dollar::read_dollar_xml(path);
   Gesture g;
   g.file = path.string();
-  std::smatch m;
-  if (std::regex_search(text, m, std::regex("Name=\"([^\"]*)\""))) {
-    g.kind = std::regex_replace(std::string(m[1]), std::regex("[0-9]+$"), "");
-  }
-  const std::regex point("<Point X=\"(-?[0-9.]+)\" Y=\"(-?[0-9.]+)\" T=\"(-?[0-9.]+)\"");
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), point);
-       it != std::sregex_iterator(); ++it) {
-    g.points.push_back({std::stod((*it)[1]), std::stod((*it)[2]), std::stod((*it)[3]) / 1000.0});
-  }
+  g.kind = read.kind();
+  g.points = std::move(read.points);
   return g;
 }
 

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "annulus_oracle.hpp"
+#include "dollar_xml.hpp"
 #include "penshape/core/annulus/online.hpp"
 #include "penshape/core/annulus/rotation.hpp"
 #include "penshape/core/annulus/translation.hpp"
@@ -27,17 +28,8 @@ std::filesystem::path data_dir() {
 }
 
 std::vector<PointD> read_gesture(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
   std::vector<PointD> pts;
-  for (std::size_t pos = text.find("<Point "); pos != std::string::npos;
-       pos = text.find("<Point ", pos + 1)) {
-    const std::size_t x = text.find("X=\"", pos);
-    const std::size_t y = text.find("Y=\"", pos);
-    pts.push_back({std::stod(text.substr(x + 3)), std::stod(text.substr(y + 3))});
-  }
+  for (const StrokePoint& p : dollar::read_dollar_xml(file).points) pts.push_back({p.x, p.y});
   return pts;
 }
 

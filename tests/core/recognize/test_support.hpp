@@ -9,12 +9,12 @@
 #include <fstream>
 #include <map>
 #include <numbers>
-#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "dollar_xml.hpp"
 #include "generated_corpus.hpp"
 #include "penshape/core/recognize.hpp"
 #include "test_data.hpp"
@@ -82,20 +82,12 @@ struct Gesture {
 };
 
 inline Gesture read_gesture(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
+  dollar::Gesture read = dollar::read_dollar_xml(path);
   Gesture g;
   g.file = path.string();
-  std::smatch m;
-  if (std::regex_search(text, m, std::regex("Name=\"([^\"]*)\""))) g.name = m[1];
-  g.kind = std::regex_replace(g.name, std::regex("[0-9]+$"), "");
-  const std::regex point("<Point X=\"(-?[0-9.]+)\" Y=\"(-?[0-9.]+)\" T=\"(-?[0-9.]+)\"");
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), point);
-       it != std::sregex_iterator(); ++it) {
-    g.points.push_back({std::stod((*it)[1]), std::stod((*it)[2]), std::stod((*it)[3]) / 1000.0});
-  }
+  g.name = read.name;
+  g.kind = read.kind();
+  g.points = std::move(read.points);
   return g;
 }
 

@@ -8,25 +8,16 @@
 #include <string>
 #include <vector>
 
+#include "penshape/drivers/pen_descriptor_writer.hpp"
+
 namespace penshape::gen {
 
-struct PenDescriptorSpec {
-  std::string name;           // for messages and file names
-  std::uint8_t report_id = 0; // 0: no report ID byte
-  std::int32_t x_max = 0;     // logical maxima (minima are 0)
-  std::int32_t y_max = 0;
-  double width_mm = 0.0; // the active area
-  double height_mm = 0.0;
-  std::uint32_t coordinate_bits = 16;
-  std::int32_t pressure_max = 0;
-  std::uint32_t pressure_bits = 16;
-  bool tilt = false;          // X/Y tilt in degrees, -60..60, 8 bits each
-  bool inches = false;        // physical size in inches (else centimetres)
-  bool barrel_buttons = true; // barrel switch and secondary barrel switch
-};
+// The drivers' pen descriptor spec (pen_descriptor_writer.hpp); the tests' layouts use its
+// defaults for the re-encoding options (tilt ±60, Invert, 0.1 mm steps).
+using PenDescriptorSpec = drivers::PenDescriptorSpec;
 
 // The descriptor's bytes.
-std::vector<std::uint8_t> pen_descriptor(const PenDescriptorSpec& spec);
+using drivers::pen_descriptor;
 
 // A digitizer whose pen reports the descriptor does not describe: one vendor-defined input
 // report of `report_bytes` bytes (ID byte included) with this ID. Tablets like this speak a

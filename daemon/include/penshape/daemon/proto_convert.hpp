@@ -9,6 +9,7 @@
 #include "penshape/core/polygon_set.hpp"
 #include "penshape/daemon/limits.hpp"
 #include "penshape/daemon/pen_settings.hpp"
+#include "penshape/proto/pen_types.hpp"
 #include "penshape/types/stroke.hpp"
 #include "penshape/v1/geometry.pb.h"
 #include "penshape/v1/types.pb.h"
@@ -47,7 +48,7 @@ Stroke stroke_from_proto(const v1::Stroke& message, const std::string& field, co
                          bool needs_resolution);
 TabletInfo tablet_from_proto(const v1::TabletInfo& message, const std::string& field,
                              bool needs_resolution);
-PenSample sample_from_proto(const v1::PenSample& message);
+PenSample sample_from_proto(const v1::PenSample& message); // proto::from_proto, tilt rule there
 
 // The fields present; values validated (ranges in pen_settings.hpp).
 PenSettingsUpdate settings_update_from_proto(const v1::PenSettings& message,
@@ -57,9 +58,7 @@ PenSettingsUpdate settings_update_from_proto(const v1::PenSettings& message,
 
 void to_proto(const PolygonSet& set, v1::PolygonSet* out); // exact and display coordinates
 void to_proto(const Rational& value, v1::ExactScalar* out);
-void to_proto(const PenSample& sample, v1::PenSample* out);
-void to_proto(const TabletInfo& tablet, v1::TabletInfo* out);
-void to_proto(const Stroke& stroke, v1::Stroke* out);
+using proto::to_proto; // PenSample, TabletInfo, Stroke: the proto library's one conversion
 void to_proto(const PenSettings& settings, v1::PenSettings* out);
 v1::Answer to_proto(Answer answer);
 v1::Engine to_proto(EngineKind engine);

@@ -59,8 +59,13 @@ Recording read_hid_recorder(std::string_view text);
 std::string write_hid_recorder(const Recording& recording);
 // One `E:` line, as the live recorder appends it.
 std::string hid_recorder_event_line(const HidEvent& event);
-// The header (everything before the events).
+// The header (everything before the events), in hid-recorder's own order: `D: 0`, R:, N:, P:,
+// I: (only with has_identity), the vendor strings, `D: 0`. Line breaks in the name and the
+// physical path become blanks. The one writer of hid-recorder headers: the live recorder, the
+// CLI's captures and its re-encoded recordings all use it.
 std::string hid_recorder_header(const Recording& recording);
+// `text` with its line breaks as blanks: hid-recorder lines (and comments) end at '\n'.
+std::string single_line(std::string text);
 
 struct UsbhidDump {
   std::map<int, std::vector<std::uint8_t>> descriptors; // per interface number

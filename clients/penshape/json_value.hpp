@@ -1,7 +1,7 @@
 #pragma once
-// A minimal strict JSON reader for files the CLI's own `--json` output wrote (penshape verify
-// reads answers back). Numbers keep their text, so a decimal is read exactly (as a rational) by
-// whoever needs it. Errors name the line and column.
+// JSON values as `penshape verify` reads answers back (the CLI's own `--json` output), parsed by
+// nlohmann-json's SAX parser. Unlike nlohmann's own tree, numbers keep their text, so a decimal
+// is read exactly (as a rational) by whoever needs it. Errors name the line and column.
 #include <cstddef>
 #include <map>
 #include <memory>
