@@ -4,7 +4,9 @@
 // beside wall time: the steps the daemon's grouping session runs for each finished stroke, each
 // timed on its own on the same strokes, added in drawing order as the daemon's strand adds them.
 //   ink      the ink polygon Q and its proto form (core ink_polygon + to_proto)
-//   intent   the writing/drawing decision with the 24 strokes before it as context
+//   intent   the writing/drawing decision with the 24 strokes before it as context: as before
+//            (decide_intent on that page, every stroke measured again), and as the daemon now
+//            decides it (LiveIntent: each stroke measured once)
 //   alone    the stroke recognized alone, certified on its ink (core recognize() with Q)
 //   grouper  core StrokeGrouper::add with Q given: unions with recent strokes, the stroke alone
 //            (arrows included), tidy-up
@@ -75,7 +77,8 @@ inline void print_penup_stages(bool json, const std::string& tag,
   const InkOptions ink_options = daemon::ink_options_for(settings);
   RecognizerConfig config;
   config.pen_radius = settings.pen_radius_mm;
-  StepTime ink, intent, alone, grouper, session, strand;
+  StepTime ink, intent, live_intent, alone, grouper, session, strand;
+  LiveIntent live_context;
   StrokeGrouper core_grouper(GroupingConfig{}, config);
   auto whole = analyzer.group_session(settings, GroupingConfig{});
   auto live = analyzer.group_session(settings, GroupingConfig{});
@@ -102,6 +105,7 @@ inline void print_penup_stages(bool json, const std::string& tag,
       page.emplace_back(input.samples);
       (void)decide_intent(page);
     });
+    live_intent.time([&] { (void)live_context.add(input.samples); });
     context.emplace_back(input.samples);
     if (context.size() > 24) context.pop_front();
     input.ink = &q;
@@ -117,7 +121,8 @@ inline void print_penup_stages(bool json, const std::string& tag,
   }
   const std::pair<const char*, StepTime*> steps[] = {
       {"ink polygon + proto", &ink},
-      {"intent decision", &intent},
+      {"intent decision, page (as before)", &intent},
+      {"intent decision, LiveIntent", &live_intent},
       {"stroke alone, ink certificate", &alone},
       {"StrokeGrouper::add (unions+alone)", &grouper},
       {"whole session add, one thread", &session},

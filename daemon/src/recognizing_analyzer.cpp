@@ -1,6 +1,5 @@
 #include "penshape/daemon/recognizing_analyzer.hpp"
 
-#include <deque>
 #include <functional>
 #include <map>
 #include <memory>
@@ -157,15 +156,9 @@ class GroupSession final : public StrokeGroupSession {
   // The new stroke's intent, decided with the recent strokes before it as its context (which it
   // then joins). A held stroke is drawing: the hold asks for a snap.
   IntentDecision decide(const std::vector<StrokePoint>& path, bool held) {
-    IntentDecision d;
-    if (!held) {
-      std::vector<IntentStroke> page(recent_.begin(), recent_.end());
-      page.emplace_back(path);
-      d = decide_intent(page).back();
-    }
-    recent_.push_back(path);
-    if (recent_.size() > kIntentContext) recent_.pop_front();
-    return d;
+    if (!held) return intent_.add(path);
+    intent_.remember(path);
+    return {};
   }
 
   // Q's proto form into the answer, or (InkOffload::shape_first, Q not built yet: the answer read
@@ -226,12 +219,11 @@ class GroupSession final : public StrokeGroupSession {
     return out;
   }
 
-  // Strokes before a new one that form its intent context (core's default).
-  static constexpr std::size_t kIntentContext = 24;
   PenSettings settings_;
   StrokeGrouper grouper_;
   std::function<void(std::uint64_t)> finished_;
-  std::deque<std::vector<StrokePoint>> recent_; // the last strokes' paths in mm (intent context)
+  // The last 24 strokes' measures (core's default context), each measured once.
+  LiveIntent intent_;
 };
 
 class RecognizingAnalyzer final : public StrokeAnalyzer,
