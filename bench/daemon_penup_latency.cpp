@@ -55,6 +55,7 @@
 #include "penshape/drivers/recording.hpp"
 #include "penshape/drivers/replay.hpp"
 #include "penshape/v1/live.grpc.pb.h"
+#include "penup_stages.hpp"
 
 namespace {
 
@@ -375,6 +376,19 @@ std::vector<double> grouping_session_ms(penshape::daemon::StrokeAnalyzer& analyz
   return out;
 }
 
+// Each step of the pen-up analysis in thread CPU time (penup_stages.hpp), on the set's strokes
+// back to back in time, `rounds` times.
+void print_stages(bool json, const StrokeSet& set, int rounds,
+                  penshape::daemon::StrokeAnalyzer& analyzer) {
+  std::vector<penshape::Stroke> timed;
+  std::int64_t clock_us = 0;
+  for (int r = 0; r < rounds; ++r) {
+    for (const auto& s : set.strokes) timed.push_back(back_to_back(s, &clock_us));
+  }
+  penshape::bench::print_penup_stages(json, set.name == "resampled to 1 kHz" ? " [1 kHz]" : "",
+                                      timed, analyzer);
+}
+
 void print_phase(bool json, const std::string& t, const PhaseResult& phase) {
   print_row(json, ("pen-up -> shape at gRPC subscriber" + t).c_str(), percentiles(phase.penup_ms),
             "ms", "(target p99 <= 16 ms)");
@@ -405,15 +419,18 @@ int main(int argc, char** argv) {
                           static_cast<std::size_t>(std::atol(argv[4])));
   }
   bool json = false;
+  bool stages_only = false;
   int rounds = 13;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--json") {
       json = true;
+    } else if (a == "--stages-only") {
+      stages_only = true;
     } else if (a == "--rounds" && i + 1 < argc) {
       rounds = std::max(1, std::atoi(argv[++i]));
     } else {
-      std::fprintf(stderr, "usage: daemon_penup_latency [--rounds N] [--json]\n");
+      std::fprintf(stderr, "usage: daemon_penup_latency [--rounds N] [--json] [--stages-only]\n");
       return 2;
     }
   }
@@ -429,6 +446,10 @@ int main(int argc, char** argv) {
   auto analyzer = penshape::daemon::make_recognizing_analyzer();
   const std::string dir = penshape::bench::make_scratch_dir();
   if (!json) std::printf("%-48s %6s %10s %10s %10s\n", "case", "n", "p50", "p99", "max");
+  if (stages_only) {
+    for (const StrokeSet* set : {&recorded, &dense}) print_stages(json, *set, rounds, *analyzer);
+    return 0;
+  }
   print_row(json, "baseline: this machine's 1 ms wake-up lateness",
             percentiles(penshape::bench::wakeup_lateness_us(5000)), "us", "(no delivery beats it)");
   for (const StrokeSet* set : {&recorded, &dense}) {
@@ -461,6 +482,7 @@ int main(int argc, char** argv) {
                   set->strokes.size(), set->name.c_str(), max_samples, rounds);
     }
     const std::string tag = set == &dense ? " [1 kHz]" : "";
+    print_stages(json, *set, rounds, *analyzer);
     print_row(json, ("baseline: analyzer called directly" + tag).c_str(), percentiles(direct_ms),
               "ms", "");
     print_row(json, ("baseline: grouping session, one thread" + tag).c_str(),

@@ -126,19 +126,31 @@ void LiveGrouping::analyse(Lane& lane, const std::string& device_id, const Pendi
   // New settings (Config RPC): start afresh with the values now in force.
   h.ensure(*state_.analyzer, settings, state_.grouping.get());
   const StopCondition stop(started + std::chrono::seconds(state_.limits.max_call_seconds), {});
+  InkOffload offload = ink_offload(state_.stroke_pool);
+  offload.shape_first = true; // an answer that read no Q does not wait for it
+  bool shape_out = false;
   try {
-    GroupedStrokeAnalysis result =
-        h.add(stroke, true, cancel_hook(stop), ink_offload(state_.stroke_pool));
+    GroupedStrokeAnalysis result = h.add(stroke, true, cancel_hook(stop), offload);
     const auto now = std::chrono::steady_clock::now();
     timings.set_compute_us(micros(now - started));
     timings.set_total_us(micros(now - pending.submitted));
+    const bool ink_later = static_cast<bool>(result.ink_later);
+    if (!ink_later) publish_finished(device_id, stroke, result.analysis.ink_polygon);
     publish(device_id, stroke, result, timings, h, !pending.hold_only);
+    shape_out = true;
+    // The shape did not read Q: StrokeFinished follows as soon as Q exists. Should Q fail now,
+    // the shape stands (certified on the path) and StrokeFinished carries the error instead.
+    if (ink_later) {
+      result.wait_ink();
+      publish_finished(device_id, stroke, result.analysis.ink_polygon);
+    }
     if (published_) published_(device_id, stroke.id, result.analysis.ink_polygon, settings);
   } catch (const std::exception& e) {
-    publish_stroke(state_.hub, device_id, stroke, nullptr,
-                   std::string("analysis failed: ") + e.what(), timings);
+    const char* what = shape_out ? "ink polygon failed: " : "analysis failed: ";
+    publish_stroke(state_.hub, device_id, stroke, nullptr, std::string(what) + e.what(), timings);
   } catch (...) {
-    publish_stroke(state_.hub, device_id, stroke, nullptr, "analysis failed", timings);
+    publish_stroke(state_.hub, device_id, stroke, nullptr,
+                   shape_out ? "ink polygon failed" : "analysis failed", timings);
   }
 }
 
@@ -205,16 +217,19 @@ void LiveGrouping::release(Lane& lane, const std::string& device_id, const Pendi
   }
 }
 
-void LiveGrouping::publish(const std::string& device_id, const Stroke& stroke,
-                           GroupedStrokeAnalysis& result, const v1::Timings& timings,
-                           GroupHistory& history, bool publish_shape) {
+void LiveGrouping::publish_finished(const std::string& device_id, const Stroke& stroke,
+                                    const v1::PolygonSet& ink) {
   v1::LiveEvent finished;
   finished.set_device_id(device_id);
   v1::StrokeFinished* f = finished.mutable_stroke_finished();
   to_proto(stroke, f->mutable_stroke());
-  *f->mutable_ink_polygon() = result.analysis.ink_polygon; // kept for the deconstruction
+  *f->mutable_ink_polygon() = ink; // kept for the deconstruction
   state_.hub.publish(std::move(finished));
+}
 
+void LiveGrouping::publish(const std::string& device_id, const Stroke& stroke,
+                           GroupedStrokeAnalysis& result, const v1::Timings& timings,
+                           GroupHistory& history, bool publish_shape) {
   const GroupAnswer answer = history.take(result, stroke.id); // reads the shape: before the swap
   v1::LiveEvent event;
   event.set_device_id(device_id);

@@ -9,9 +9,12 @@
 //
 // Each answer is published as StrokeFinished then ShapeRecognized with its shape_id, the ids of
 // the strokes whose ink it replaces and the shape_ids (and LiveEvent sequences) of the earlier
-// answers it supersedes. While previews are wanted, a copy of each device's grouping is kept
-// after every stroke, so a preview can add the stroke in progress to a copy of its own (on the
-// preview lane, without touching the strand's state).
+// answers it supersedes. When the answer read no ink polygon (nothing snapped alone, or a union
+// certified on the strokes' paths) and Q is not built yet, the shape goes first and StrokeFinished
+// follows as soon as Q exists; should Q then fail, the shape stands and StrokeFinished carries the
+// error (not_analysed) without an ink polygon. While previews are wanted, a copy of each device's
+// grouping is kept after every stroke, so a preview can add the stroke in progress to a copy of its
+// own (on the preview lane, without touching the strand's state).
 //
 // Hold to snap runs on the same strand: the stroke so far of a hold is queued after the strokes
 // finished before it and recognized with the grouping (hold_snap.hpp), its HOLD shape published at
@@ -91,7 +94,9 @@ class LiveGrouping {
   void analyse(Lane& lane, const std::string& device_id, const Pending& pending);
   void snap_hold(Lane& lane, const std::string& device_id, const Pending& pending);
   void release(Lane& lane, const std::string& device_id, const Pending& pending);
-  // Publishes StrokeFinished, then (unless `publish_shape` is false) the ShapeRecognized.
+  void publish_finished(const std::string& device_id, const Stroke& stroke,
+                        const v1::PolygonSet& ink);
+  // Publishes the ShapeRecognized (unless `publish_shape` is false) and remembers the answer.
   void publish(const std::string& device_id, const Stroke& stroke, GroupedStrokeAnalysis& result,
                const v1::Timings& timings, GroupHistory& history, bool publish_shape);
 

@@ -1,6 +1,5 @@
 #include "penshape/daemon/recognizing_analyzer.hpp"
 
-#include <deque>
 #include <functional>
 #include <map>
 #include <memory>
@@ -157,15 +156,21 @@ class GroupSession final : public StrokeGroupSession {
   // The new stroke's intent, decided with the recent strokes before it as its context (which it
   // then joins). A held stroke is drawing: the hold asks for a snap.
   IntentDecision decide(const std::vector<StrokePoint>& path, bool held) {
-    IntentDecision d;
-    if (!held) {
-      std::vector<IntentStroke> page(recent_.begin(), recent_.end());
-      page.emplace_back(path);
-      d = decide_intent(page).back();
+    if (!held) return intent_.add(path);
+    intent_.remember(path);
+    return {};
+  }
+
+  // Q's proto form into the answer, or (InkOffload::shape_first, Q not built yet: the answer read
+  // no Q) handed over as ink_later, so that the shape need not wait for it.
+  static void hand_over_ink(const std::shared_ptr<BuildOnce<BuiltInk>>& ink,
+                            const InkOffload& offload, GroupedStrokeAnalysis& out) {
+    if (!ink) return;
+    if (offload.shape_first && !ink->built()) {
+      out.ink_later = [ink] { return std::move(ink->get().proto); };
+    } else {
+      out.analysis.ink_polygon = std::move(ink->get().proto);
     }
-    recent_.push_back(path);
-    if (recent_.size() > kIntentContext) recent_.pop_front();
-    return d;
   }
 
   GroupedStrokeAnalysis add_stroke(const Stroke& stroke, bool with_ink, bool held,
@@ -177,18 +182,8 @@ class GroupSession final : public StrokeGroupSession {
     input.pen_radius = settings_.pen_radius_mm;
     if (cancel && cancel()) throw Cancelled();
     const bool no_path = input.samples.empty(); // no tip-down sample: nothing to recognize
-    const IntentDecision intent = no_path ? IntentDecision{} : decide(input.samples, held);
-    const bool writing = intent.intent == Intent::kWriting && !settings_.snap_writing;
-    if (no_path || writing) { // alone, as drawn (a dot is a shape)
-      if (with_ink) {
-        const InkOptions options = ink_options_for(settings_);
-        out.analysis.ink_polygon = build_ink(ink_samples(stroke, options), options).proto;
-      }
-      out.analysis.shape.set_kind(v1::SHAPE_KIND_NONE);
-      if (!no_path) set_intent(intent, &out.analysis.shape);
-      return out;
-    }
-    // Q is built on another worker while the path is fitted, or here once the recognizer needs it.
+    // Q is built on another worker while the stroke is judged and fitted, or here once the
+    // recognizer (or the answer) needs it.
     std::shared_ptr<BuildOnce<BuiltInk>> ink;
     if (with_ink) {
       // The job owns what it reads: a helper may start it after this session is gone.
@@ -201,8 +196,16 @@ class GroupSession final : public StrokeGroupSession {
         (void)offload.run_elsewhere([ink] { ink->build_if_not_started(); });
       input.ink_when_needed = [&ink] { return &ink->get().ink; };
     }
+    const IntentDecision intent = no_path ? IntentDecision{} : decide(input.samples, held);
+    const bool writing = intent.intent == Intent::kWriting && !settings_.snap_writing;
+    if (no_path || writing) { // alone, as drawn (a dot is a shape)
+      hand_over_ink(ink, offload, out);
+      out.analysis.shape.set_kind(v1::SHAPE_KIND_NONE);
+      if (!no_path) set_intent(intent, &out.analysis.shape);
+      return out;
+    }
     const GroupUpdate u = grouper_.add(input);
-    if (ink) out.analysis.ink_polygon = std::move(ink->get().proto);
+    hand_over_ink(ink, offload, out);
     grouper_.forget_unreachable(); // memory follows the grouping window, however long the session
     const Recognition& r = u.shape.recognition;
     out.analysis.shape = to_proto_shape(r.shape, r.params, r.clean, r.certificate, r.confidence);
@@ -216,12 +219,11 @@ class GroupSession final : public StrokeGroupSession {
     return out;
   }
 
-  // Strokes before a new one that form its intent context (core's default).
-  static constexpr std::size_t kIntentContext = 24;
   PenSettings settings_;
   StrokeGrouper grouper_;
   std::function<void(std::uint64_t)> finished_;
-  std::deque<std::vector<StrokePoint>> recent_; // the last strokes' paths in mm (intent context)
+  // The last 24 strokes' measures (core's default context), each measured once.
+  LiveIntent intent_;
 };
 
 class RecognizingAnalyzer final : public StrokeAnalyzer,

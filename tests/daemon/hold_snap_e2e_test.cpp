@@ -6,7 +6,9 @@
 // from ../shared/data/strokes/dollar1 run when the corpus is there.
 #include <grpcpp/grpcpp.h>
 #include <gtest/gtest.h>
+
 #include <unistd.h>
+#include <algorithm>
 
 #include <chrono>
 #include <cmath>
@@ -76,13 +78,21 @@ std::vector<StrokeEvents> replay(const fs::path& recording, d::SnapTrigger trigg
       by_id[event.stroke_finished().stroke().id()].finished = true;
       ++finished;
     }
-    if (!event.has_shape()) continue;
-    const v1::ShapeRecognized& s = event.shape();
-    StrokeEvents& e = by_id[s.stroke_id()];
-    (e.finished ? e.after : e.before).push_back(s);
-    const bool final_answer =
-        s.trigger() == v1::SHAPE_TRIGGER_PEN_UP || s.trigger() == v1::SHAPE_TRIGGER_RELEASE;
-    if (finished >= strokes && final_answer && !ids.empty() && s.stroke_id() == ids.back()) break;
+    if (event.has_shape()) {
+      const v1::ShapeRecognized& s = event.shape();
+      StrokeEvents& e = by_id[s.stroke_id()];
+      // A pen-up answer may come before its StrokeFinished (the shape does not wait for the ink
+      // it did not read): it is after pen-up all the same.
+      const bool pen_up = s.trigger() == v1::SHAPE_TRIGGER_PEN_UP;
+      (e.finished || pen_up ? e.after : e.before).push_back(s);
+    }
+    const auto final_answer = [](const v1::ShapeRecognized& s) {
+      return s.trigger() == v1::SHAPE_TRIGGER_PEN_UP || s.trigger() == v1::SHAPE_TRIGGER_RELEASE;
+    };
+    if (finished >= strokes && !ids.empty() &&
+        std::any_of(by_id[ids.back()].after.begin(), by_id[ids.back()].after.end(), final_answer)) {
+      break;
+    }
   }
   ctx.TryCancel();
   std::vector<StrokeEvents> out;

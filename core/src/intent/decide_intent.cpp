@@ -1,10 +1,13 @@
 // The writing/drawing decision: the learned model (one hidden layer) over the page's features
 // (intent.hpp; weights from scripts/intent_learn.py in intent_weights.hpp).
 #include <cmath>
+#include <memory>
+#include <vector>
 
 #include "intent_weights.hpp"
 #include "penshape/core/deconstruct.hpp"
 #include "penshape/core/intent.hpp"
+#include "stroke_measures.hpp"
 
 namespace penshape {
 namespace {
@@ -63,6 +66,40 @@ std::vector<IntentDecision> decide_intent(const std::vector<std::vector<StrokePo
                                           const IntentConfig& config) {
   const std::vector<IntentStroke> spans(page.begin(), page.end());
   return decide_intent(spans, config);
+}
+
+LiveIntent::LiveIntent(const IntentConfig& config) : config_(config) {
+  if (!(config.writing_threshold >= 0 && config.writing_threshold <= 1)) {
+    throw InvalidInput("intent: writing_threshold must be in [0, 1]");
+  }
+  if (!(config.mm_per_unit > 0) || !std::isfinite(config.mm_per_unit)) {
+    throw InvalidInput("intent: mm_per_unit must be positive and finite");
+  }
+}
+
+IntentDecision LiveIntent::add(IntentStroke stroke) {
+  auto m = std::make_shared<const intent::StrokeMeasures>(
+      intent::measure_stroke(stroke, config_.mm_per_unit));
+  // The page decide_intent would see: the context's measures, then this stroke's.
+  std::vector<intent::StrokeMeasures> page;
+  page.reserve(recent_.size() + 1);
+  for (const auto& r : recent_) page.push_back(*r);
+  page.push_back(*m);
+  const double score =
+      is_dot(stroke) ? 1.0
+                     : writing_score(intent::features_at(page, page.size() - 1, config_.context));
+  join(std::move(m));
+  return {score >= config_.writing_threshold ? Intent::kWriting : Intent::kDrawing, score};
+}
+
+void LiveIntent::remember(IntentStroke stroke) {
+  join(std::make_shared<const intent::StrokeMeasures>(
+      intent::measure_stroke(stroke, config_.mm_per_unit)));
+}
+
+void LiveIntent::join(std::shared_ptr<const intent::StrokeMeasures> measures) {
+  recent_.push_back(std::move(measures));
+  if (recent_.size() > config_.context) recent_.erase(recent_.begin());
 }
 
 } // namespace penshape

@@ -56,6 +56,11 @@ const std::array<std::string_view, kIntentFeatureCount>& intent_feature_names() 
   return kNames;
 }
 
+IntentFeatures intent::features_at(std::span<const StrokeMeasures> all, std::size_t i,
+                                   std::size_t window) {
+  return features_of(all[i], context_of(all, i, window));
+}
+
 std::vector<IntentFeatures> intent_features(std::span<const IntentStroke> page,
                                             const IntentConfig& config) {
   if (!(config.mm_per_unit > 0) || !std::isfinite(config.mm_per_unit)) {
@@ -68,7 +73,7 @@ std::vector<IntentFeatures> intent_features(std::span<const IntentStroke> page,
   std::vector<IntentFeatures> out;
   out.reserve(page.size());
   for (std::size_t i = 0; i < page.size(); ++i) {
-    out.push_back(features_of(measures[i], intent::context_of(measures, i, config.context)));
+    out.push_back(intent::features_at(measures, i, config.context));
   }
   return out;
 }

@@ -2,6 +2,7 @@
 // What the writing/drawing decision measures on one stroke alone (in millimetres and seconds):
 // its box, path length, turning, straightness and speed.
 #include <limits>
+#include <span>
 
 #include "penshape/core/intent.hpp"
 
@@ -34,5 +35,9 @@ struct StrokeMeasures {
 
 // Throws InvalidInput for a coordinate or time that is not finite.
 StrokeMeasures measure_stroke(IntentStroke stroke, double mm_per_unit);
+
+// The model's features of stroke `i` among `all` (the page's measures), its context within
+// `window` strokes (intent_features.cpp).
+IntentFeatures features_at(std::span<const StrokeMeasures> all, std::size_t i, std::size_t window);
 
 } // namespace penshape::intent

@@ -364,11 +364,10 @@ Recognition recognize(const StrokeInput& stroke, const RecognizerConfig& config_
   RecognizerConfig config = config_in;
   if (stroke.pen_radius > 0) config.pen_radius = stroke.pen_radius;
   recognize_detail::validate_samples(stroke.samples, config);
-  // A given ink is checked at once; one still being built once the path is fitted.
+  // A given ink is checked at once; one still being built only once a certificate reads it.
   if (stroke.ink != nullptr) (void)recognize_detail::given_ink(stroke);
   const ToleranceChoice tol = choose_tolerance(stroke.samples, config);
   if (recognize_detail::is_dot(stroke.samples)) {
-    (void)recognize_detail::given_ink(stroke); // its errors are this call's
     return recognize_detail::dot_recognition(stroke.samples, tol);
   }
   const PreparedStroke s = recognize_detail::prepare(
@@ -382,13 +381,15 @@ Recognition recognize(const StrokeInput& stroke, const RecognizerConfig& config_
   if (!scored.empty() && scored.front().snap) {
     recognize_detail::polish_with_annulus(s, scored.front(), config);
   }
-  const InkPolygon* ink = recognize_detail::given_ink(stroke);
-  if (ink != nullptr && !scored.empty() && scored.front().snap) {
+  // Q is read only to confirm a snap: nothing else waits for an ink still being built.
+  const bool snap = !scored.empty() && scored.front().snap;
+  const InkPolygon* ink = snap ? recognize_detail::given_ink(stroke) : nullptr;
+  if (ink != nullptr) {
     const recognize_detail::InkRegion q = recognize_detail::prepare_ink(*ink, tol.epsilon);
     recognize_detail::confirm_on_ink(q, scored);
   }
   Recognition out = recognize_detail::choose(std::move(scored), tol.epsilon, tol.pen_radius);
-  if (ink != nullptr)
+  if (stroke.ink != nullptr || stroke.ink_when_needed)
     out.certificate.method = "ink"; // freeform too: the ink decided (or screening)
   return out;
 }

@@ -222,8 +222,12 @@ GroupUpdate StrokeGrouper::add(const StrokeInput& stroke) {
 
   // The new stroke alone (ink certificate when its ink is given), arrows included.
   if (!best) best = recognize_detail::recognize_union_detail({&stroke, 1}, recognizer_);
-  // Obtained before anything changes (when still being built, its errors refuse the stroke).
-  const InkPolygon* stroke_ink = recognize_detail::given_ink(stroke);
+  // A lone stroke certified on its ink keeps being certified on it (tidy-up): Q is obtained
+  // then only, before anything changes (when still being built, its errors refuse the stroke).
+  const Recognition& won = best->recognition;
+  const bool tidy_on_ink = best_groups.empty() && won.certificate.method == "ink" && snaps(won) &&
+                           won.shape != ShapeClass::kDot;
+  const InkPolygon* stroke_ink = tidy_on_ink ? recognize_detail::given_ink(stroke) : nullptr;
 
   GroupUpdate update;
   GroupedShape& shape = update.shape;

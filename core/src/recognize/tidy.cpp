@@ -3,6 +3,7 @@
 #include "tidy.hpp"
 
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <optional>
 
@@ -268,7 +269,7 @@ std::optional<Proposal> connection_of(const Recognition& r,
 }
 
 // Certifies a proposal on the strokes; applies it to r when certified.
-bool try_apply(Recognition& r, const UnionStroke& u, const InkRegion* ink,
+bool try_apply(Recognition& r, const UnionStroke& u, const std::function<const InkRegion*()>& ink,
                const std::optional<Proposal>& proposal) {
   if (!proposal) return false;
   CleanShape clean;
@@ -279,8 +280,8 @@ bool try_apply(Recognition& r, const UnionStroke& u, const InkRegion* ink,
   }
   Certificate cert = certify_union(u, clean, r.epsilon, r.pen_radius);
   if (!cert.certified) return false;
-  if (ink != nullptr) {
-    cert = certify_ink(*ink, clean, r.epsilon, r.pen_radius);
+  if (const InkRegion* q = ink()) {
+    cert = certify_ink(*q, clean, r.epsilon, r.pen_radius);
     if (!cert.certified) return false;
   }
   r.shape = proposal->shape;
@@ -298,9 +299,13 @@ std::vector<std::string> tidy_up(Recognition& r, const UnionStroke& u, const Tid
                                  const InkPolygon* ink) {
   std::vector<std::string> applied;
   if (r.shape == ShapeClass::kFreeform || r.shape == ShapeClass::kDot) return applied;
+  // Q is prepared once, and only when a proposal certified on the strokes is checked on it.
   std::optional<InkRegion> region;
-  if (ink != nullptr) region = prepare_ink(*ink, r.epsilon);
-  const InkRegion* q = region ? &*region : nullptr;
+  const std::function<const InkRegion*()> q = [&]() -> const InkRegion* {
+    if (ink == nullptr) return nullptr;
+    if (!region) region = prepare_ink(*ink, r.epsilon);
+    return &*region;
+  };
   auto step = [&](bool enabled, const char* name, auto&& propose) {
     if (enabled && try_apply(r, u, q, propose())) applied.emplace_back(name);
   };

@@ -1,6 +1,6 @@
 // The writing/drawing decision (core intent.hpp): generated writing and shapes (a bare clone),
-// dots, untimed strokes, bad input, units, the grouper that leaves writing alone; real UNIPEN
-// handwriting and $1 shapes (alone, untimed) under the shared-data skip.
+// live use one stroke at a time, dots, untimed strokes, bad input, units, the grouper that leaves
+// writing alone; real UNIPEN handwriting and $1 shapes (alone, untimed) under the shared-data skip.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -65,6 +65,30 @@ TEST(Intent, GeneratedShapesBetweenLinesAreDrawing) {
   ASSERT_EQ(e.drawing, 15);
   EXPECT_EQ(e.drawing_as_writing, 0);
   EXPECT_EQ(e.writing_as_drawing, 0) << "of " << e.writing;
+}
+
+// Live use: LiveIntent's decision of each stroke is decide_intent's on the last 24 strokes and it
+// (bit for bit), with a stroke remembered without a decision (a held one) in the context too.
+TEST(Intent, LiveIntentDecidesAsThePageOfRecentStrokes) {
+  const std::vector<Points> strokes = points_of(penshape::test::ink::note_page(6, true));
+  ASSERT_GT(strokes.size(), 40U);
+  penshape::LiveIntent live;
+  std::vector<Points> recent;
+  for (std::size_t i = 0; i < strokes.size(); ++i) {
+    if (i % 7 == 3) {
+      live.remember(strokes[i]);
+    } else {
+      std::vector<Points> page = recent;
+      page.push_back(strokes[i]);
+      const penshape::IntentDecision want = penshape::decide_intent(page).back();
+      const penshape::IntentDecision got = live.add(strokes[i]);
+      EXPECT_EQ(got.intent, want.intent) << "stroke " << i;
+      EXPECT_EQ(got.writing_score, want.writing_score) << "stroke " << i;
+    }
+    recent.push_back(strokes[i]);
+    if (recent.size() > 24) recent.erase(recent.begin());
+  }
+  EXPECT_THROW(penshape::LiveIntent({.writing_threshold = 2.0}), penshape::InvalidInput);
 }
 
 TEST(Intent, ShapesAloneAreDrawing) {

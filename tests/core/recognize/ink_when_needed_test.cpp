@@ -1,6 +1,7 @@
 // StrokeInput::ink_when_needed: an ink polygon still being built when recognition starts. It must
 // be used exactly as a given ink (a bulging ink refuses the circle its path certifies), its
-// errors must be recognize()'s and StrokeGrouper::add()'s, and a refused stroke is not added.
+// errors must be recognize()'s and StrokeGrouper::add()'s when Q is read, and a refused stroke is
+// not added; an answer that reads no Q (freeform, a union of strokes) never asks for it.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -83,12 +84,49 @@ TEST(InkWhenNeeded, AStrokeWhoseInkFailsIsNotAddedToItsGroup) {
   EXPECT_EQ(u.shape.recognition.shape, ShapeClass::kCircle);
   EXPECT_EQ(u.shape.recognition.certificate.method, "ink");
 
-  StrokeInput refused = path_of(s, 1.0);
+  // Drawn after the grouping's pause: alone, its circle is confirmed on its (failing) ink.
+  StrokeInput refused = path_of(s, 10.0);
   refused.ink_when_needed = []() -> const InkPolygon* { throw std::runtime_error("ink failed"); };
   EXPECT_THROW(grouper.add(refused), std::runtime_error);
   EXPECT_EQ(grouper.stroke_count(), 1U);
   ASSERT_EQ(grouper.shapes().size(), 1U);
   EXPECT_EQ(grouper.shapes().front().id, u.shape.id);
+}
+
+// What reads no Q does not wait for it: a freeform scribble, and a stroke that completes a union
+// (certified on the strokes' paths) with the stroke before it.
+TEST(InkWhenNeeded, AnAnswerThatReadsNoInkNeverAsksForIt) {
+  int calls = 0;
+  auto failing = [&calls]() -> const InkPolygon* {
+    ++calls;
+    throw std::runtime_error("ink failed");
+  };
+  StrokeInput scribble;
+  for (int k = 0; k < 200; ++k) {
+    const double t = 0.31 * k;
+    scribble.samples.push_back({50 + 20 * std::sin(t) + 7 * std::sin(5.3 * t),
+                                50 + 0.5 * k + 9 * std::cos(3.1 * t), 0.002 * k});
+  }
+  scribble.pen_radius = 2.0;
+  scribble.ink_when_needed = failing;
+  EXPECT_EQ(recognize(scribble).shape, ShapeClass::kFreeform);
+  EXPECT_EQ(calls, 0);
+
+  // Two halves of one circle: the second completes the circle with the first.
+  std::vector<InkSample> s = circle_stroke(0);
+  const std::vector<InkSample> first_half(s.begin(), s.begin() + 201);
+  const std::vector<InkSample> second_half(s.begin() + 200, s.end());
+  const InkPolygon ink = ink_polygon(first_half, InkOptions{.radius_mm = 2.0});
+  StrokeGrouper grouper;
+  StrokeInput first = path_of(first_half);
+  first.ink_when_needed = [&] { return &ink; };
+  (void)grouper.add(first);
+  StrokeInput second = path_of(second_half, 1.0);
+  second.ink_when_needed = failing;
+  const GroupUpdate u = grouper.add(second);
+  EXPECT_EQ(u.shape.recognition.shape, ShapeClass::kCircle);
+  EXPECT_EQ(u.shape.strokes.size(), 2U);
+  EXPECT_EQ(calls, 0);
 }
 
 } // namespace

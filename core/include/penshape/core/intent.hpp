@@ -15,6 +15,7 @@
 // before it only.
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -62,5 +63,27 @@ std::vector<IntentDecision> decide_intent(std::span<const IntentStroke> page,
 // The same, for strokes held as vectors.
 std::vector<IntentDecision> decide_intent(const std::vector<std::vector<StrokePoint>>& page,
                                           const IntentConfig& config = {});
+
+namespace intent {
+struct StrokeMeasures;
+}
+
+// Live use without measuring the recent strokes again for every new one: add() gives what
+// decide_intent(the last `context` strokes, then this one).back() gives, and the stroke then
+// joins the context; remember() lets a stroke join without a decision. Copies share the
+// (immutable) measures.
+class LiveIntent {
+ public:
+  // Throws InvalidInput for the settings decide_intent refuses.
+  explicit LiveIntent(const IntentConfig& config = {});
+  // Throws InvalidInput as decide_intent does (the stroke then does not join the context).
+  IntentDecision add(IntentStroke stroke);
+  void remember(IntentStroke stroke);
+
+ private:
+  void join(std::shared_ptr<const intent::StrokeMeasures> measures);
+  IntentConfig config_;
+  std::vector<std::shared_ptr<const intent::StrokeMeasures>> recent_; // oldest first
+};
 
 } // namespace penshape

@@ -274,11 +274,13 @@ struct StrokeInput {
   // the stroke's typical radius); <= 0 uses RecognizerConfig::pen_radius and its default rule.
   double pen_radius = 0.0;
   // Q while it is still being built (say on another thread, so that building Q overlaps fitting
-  // the path): used only when `ink` is null. recognize() and StrokeGrouper::add() call it when
-  // they first need Q (after the path is fitted), and always before they return, so that its
-  // errors are theirs (an exception from it propagates; a stroke refused so is not added). It must
-  // return Q of these samples (non-null), the same one on every call, valid until the call that
-  // asked for it returns.
+  // the path): used only when `ink` is null. recognize() and StrokeGrouper::add() call it only
+  // when a certificate reads Q (a candidate that snaps on the path is confirmed on the ink, or a
+  // lone stroke's tidy-up), after the path is fitted; an answer that reads no Q (nothing snaps,
+  // a dot, a union of strokes) never waits for it. When called, its errors are theirs (an
+  // exception from it propagates; a stroke refused so is not added); when not, they are the
+  // caller's. It must return Q of these samples (non-null), the same one on every call, valid
+  // until the call that asked for it returns.
   std::function<const InkPolygon*()> ink_when_needed;
 };
 

@@ -29,6 +29,11 @@ class BuildOnce {
     return *value_;
   }
 
+  // Whether the value (or its error) is there: get() would not wait or build.
+  bool built() {
+    std::lock_guard lock(mutex_);
+    return state_ == State::kBuilt;
+  }
   // The helper's side: builds the value unless somebody has started; never waits.
   void build_if_not_started() {
     std::unique_lock lock(mutex_);

@@ -37,6 +37,15 @@ struct GroupedStrokeAnalysis {
   std::vector<std::size_t> strokes;    // session indices of the strokes it covers, ascending
   std::vector<std::size_t> superseded; // session ids of the earlier answers it replaces
   std::vector<std::string> tidy;       // tidy-up constraints applied
+  // Set only with InkOffload::shape_first when add() returned before the new stroke's ink
+  // polygon was built (its answer read no Q): gives that ink (waits for or builds it; throws
+  // its error). wait_ink() moves it into analysis.ink_polygon.
+  std::function<v1::PolygonSet()> ink_later;
+  void wait_ink() {
+    if (!ink_later) return;
+    analysis.ink_polygon = ink_later();
+    ink_later = nullptr;
+  }
 };
 
 // Where StrokeGroupSession::add() may build the new stroke's ink polygon while it fits the
@@ -45,6 +54,9 @@ struct InkOffload {
   // Runs a job on another worker; false when none takes it. Empty, or a job not started by the
   // time Q is needed: add() builds Q itself.
   std::function<bool(std::function<void()>)> run_elsewhere;
+  // add() may return before Q is built when its answer did not read Q (GroupedStrokeAnalysis::
+  // ink_later): the shape goes out first, the ink when it exists.
+  bool shape_first = false;
 };
 
 // One tablet's grouping of recent strokes (core's StrokeGrouper): strokes are added in drawing

@@ -1,0 +1,146 @@
+#pragma once
+// Where a live stroke's pen-up analysis spends its time, step by step, in thread CPU time (the
+// figure that stays meaningful on a loaded machine, where wall time measures the other programs)
+// beside wall time: the steps the daemon's grouping session runs for each finished stroke, each
+// timed on its own on the same strokes, added in drawing order as the daemon's strand adds them.
+//   ink      the ink polygon Q and its proto form (core ink_polygon + to_proto)
+//   intent   the writing/drawing decision with the 24 strokes before it as context: as before
+//            (decide_intent on that page, every stroke measured again), and as the daemon now
+//            decides it (LiveIntent: each stroke measured once)
+//   alone    the stroke recognized alone, certified on its ink (core recognize() with Q)
+//   grouper  core StrokeGrouper::add with Q given: unions with recent strokes, the stroke alone
+//            (arrows included), tidy-up
+//   session  the daemon's whole grouping session add() on one thread (all of the above)
+//   strand   the same add() as the daemon's strand runs it: Q on a second worker, the shape
+//            returned first when it read no Q (InkOffload::shape_first); the strand's CPU
+//            time and its wall time up to the shape (Q's own CPU is the helper's)
+// Used by daemon_penup_latency (and its hold twin) so that a change is judged by CPU time per
+// step, printed beside the wall-time rows of the same run.
+#include <time.h>
+
+#include <chrono>
+#include <cstdio>
+#include <deque>
+#include <string>
+#include <vector>
+
+#include "bench_support.hpp"
+#include "penshape/core/group_recognize.hpp"
+#include "penshape/core/ink.hpp"
+#include "penshape/core/intent.hpp"
+#include "penshape/core/recognize.hpp"
+#include "penshape/daemon/ink_analyzer.hpp"
+#include "penshape/daemon/proto_convert.hpp"
+#include "penshape/daemon/stroke_analyzer.hpp"
+#include "penshape/daemon/worker_pool.hpp"
+
+namespace penshape::bench {
+
+// This thread's CPU time, ms.
+inline double thread_cpu_ms() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) * 1e-6;
+}
+
+// Thread CPU and wall time of one call, ms.
+struct StepTime {
+  std::vector<double> cpu_ms, wall_ms;
+  template <typename F>
+  void time(F&& f) {
+    const double c0 = thread_cpu_ms();
+    const auto w0 = std::chrono::steady_clock::now();
+    f();
+    wall_ms.push_back(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - w0).count());
+    cpu_ms.push_back(thread_cpu_ms() - c0);
+  }
+};
+
+// The tip-down path in millimetres, as the daemon's analyzer reads a stroke.
+inline std::vector<StrokePoint> stage_path_mm(const Stroke& stroke) {
+  const double rx = stroke.tablet.x_resolution > 0 ? stroke.tablet.x_resolution : 1.0;
+  const double ry = stroke.tablet.y_resolution > 0 ? stroke.tablet.y_resolution : 1.0;
+  std::vector<StrokePoint> out;
+  for (const PenSample& s : stroke.samples) {
+    if (s.tip) out.push_back({s.x / rx, s.y / ry, static_cast<double>(s.time_us) * 1e-6});
+  }
+  return out;
+}
+
+// Times each step on `strokes` (already back to back in time, in drawing order) and prints one
+// row per step: thread CPU p50/p99/max, then wall p50/p99.
+inline void print_penup_stages(bool json, const std::string& tag,
+                               const std::vector<Stroke>& strokes,
+                               daemon::StrokeAnalyzer& analyzer) {
+  const daemon::PenSettings settings{};
+  const InkOptions ink_options = daemon::ink_options_for(settings);
+  RecognizerConfig config;
+  config.pen_radius = settings.pen_radius_mm;
+  StepTime ink, intent, live_intent, alone, grouper, session, strand;
+  LiveIntent live_context;
+  StrokeGrouper core_grouper(GroupingConfig{}, config);
+  auto whole = analyzer.group_session(settings, GroupingConfig{});
+  auto live = analyzer.group_session(settings, GroupingConfig{});
+  daemon::WorkerPool helper(1, 16, daemon::WorkerPriority::kNormal);
+  daemon::InkOffload offload;
+  offload.run_elsewhere = [&helper](std::function<void()> job) {
+    return helper.submit([job = std::move(job)](const auto& /*stop*/) { job(); });
+  };
+  offload.shape_first = true;
+  std::deque<std::vector<StrokePoint>> context; // IntentStroke is a view: the paths stay here
+  for (const Stroke& stroke : strokes) {
+    StrokeInput input;
+    input.samples = stage_path_mm(stroke);
+    input.pen_radius = settings.pen_radius_mm;
+    if (input.samples.empty()) continue;
+    InkPolygon q;
+    ink.time([&] {
+      q = ink_polygon(ink_samples(stroke, ink_options), ink_options);
+      v1::PolygonSet proto;
+      daemon::to_proto(q.region, &proto);
+    });
+    intent.time([&] {
+      std::vector<IntentStroke> page(context.begin(), context.end());
+      page.emplace_back(input.samples);
+      (void)decide_intent(page);
+    });
+    live_intent.time([&] { (void)live_context.add(input.samples); });
+    context.emplace_back(input.samples);
+    if (context.size() > 24) context.pop_front();
+    input.ink = &q;
+    alone.time([&] { (void)recognize(input, config); });
+    grouper.time([&] {
+      (void)core_grouper.add(input);
+      core_grouper.forget_unreachable();
+    });
+    session.time([&] { (void)whole->add(stroke, true, {}, {}); });
+    daemon::GroupedStrokeAnalysis result;
+    strand.time([&] { result = live->add(stroke, true, {}, offload); });
+    result.wait_ink(); // after the shape, as the strand publishes StrokeFinished
+  }
+  const std::pair<const char*, StepTime*> steps[] = {
+      {"ink polygon + proto", &ink},
+      {"intent decision, page (as before)", &intent},
+      {"intent decision, LiveIntent", &live_intent},
+      {"stroke alone, ink certificate", &alone},
+      {"StrokeGrouper::add (unions+alone)", &grouper},
+      {"whole session add, one thread", &session},
+      {"strand to the shape, ink on 2nd worker", &strand}};
+  for (const auto& [name, step] : steps) {
+    const Percentiles c = percentiles(step->cpu_ms);
+    const Percentiles w = percentiles(step->wall_ms);
+    if (json) {
+      std::printf(
+          "{\"case\":\"step: %s%s\",\"n\":%zu,\"cpu_p50\":%.4f,\"cpu_p99\":%.4f,"
+          "\"cpu_max\":%.4f,\"wall_p50\":%.4f,\"wall_p99\":%.4f,\"unit\":\"ms\"}\n",
+          name, tag.c_str(), c.n, c.p50, c.p99, c.max, w.p50, w.p99);
+    } else {
+      std::printf("%-48s %6zu %10.3f %10.3f %10.3f ms  thread CPU (wall p50 %.3f, p99 %.3f)\n",
+                  ("step: " + std::string(name) + tag).c_str(), c.n, c.p50, c.p99, c.max, w.p50,
+                  w.p99);
+    }
+  }
+}
+
+} // namespace penshape::bench
