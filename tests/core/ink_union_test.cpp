@@ -178,6 +178,7 @@ TEST(InkUnion, InkBoundCountsEveryUnion) {
   std::vector<std::vector<InkSample>> strokes;
   for (int s = 0; s < 2; ++s) {
     std::vector<InkSample> stroke;
+    stroke.reserve(20);
     for (int i = 0; i < 20; ++i)
       stroke.push_back({1e8 + i * 1e-5, 1e8 + s * 2e-6 + i * 1e-7, 1e-6});
     strokes.push_back(stroke);
