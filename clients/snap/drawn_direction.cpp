@@ -32,7 +32,7 @@ void reverse_double_arrow(Recognition& r) {
 
 } // namespace
 
-void orient_like_drawn(Recognition& r, PointD start, PointD end) {
+bool orient_like_drawn(Recognition& r, PointD start, PointD end) {
   ShapeParams& p = r.params;
   switch (r.shape) {
     case ShapeClass::kSegment:
@@ -41,7 +41,7 @@ void orient_like_drawn(Recognition& r, PointD start, PointD end) {
         std::reverse(p.vertices.begin(), p.vertices.end());
         std::reverse(r.clean.begin(), r.clean.end());
       }
-      return;
+      return false;
     case ShapeClass::kArc:
       if (backwards(arc_point(p, p.start_angle), arc_point(p, p.start_angle + p.sweep_angle), start,
                     end)) {
@@ -49,14 +49,16 @@ void orient_like_drawn(Recognition& r, PointD start, PointD end) {
         p.sweep_angle = -p.sweep_angle;
         std::reverse(r.clean.begin(), r.clean.end());
       }
-      return;
+      return false;
     case ShapeClass::kDoubleArrow:
       if (p.vertices.size() == 6 && backwards(p.vertices[0], p.vertices[1], start, end)) {
         reverse_double_arrow(r);
       }
-      return;
+      return false;
+    case ShapeClass::kArrow: // the head stays where it was drawn; the writing order follows the pen
+      return p.vertices.size() == 4 && backwards(p.vertices[0], p.vertices[1], start, end);
     default:
-      return;
+      return false;
   }
 }
 

@@ -8,6 +8,7 @@
 #include "snap_error.hpp"
 #include "splice.hpp"
 #include "svg_writer.hpp"
+#include "width_profile.hpp"
 #include "xopp_strokes.hpp"
 #include "xopp_zip.hpp"
 
@@ -50,6 +51,27 @@ std::vector<std::vector<IntentDecision>> intents_of(
   return intents;
 }
 
+// The pen radii the replacement is written with (width_profile.hpp): a pressure stroke's own, an
+// SVG pencil stroke's own stroke width; else the clean pen radius.
+std::vector<double> written_radii(const XoppStroke& s, double pen) {
+  return s.pressure ? s.ink.radii : std::vector<double>{pen};
+}
+std::vector<double> written_radii(const SvgStroke& s, double pen) {
+  return s.calligraphy ? std::vector<double>{pen} : s.ink.radii;
+}
+
+// Whether the snap's certificate holds for the widths drawn and written (widened to them).
+template <typename Stroke>
+bool certified_as_written(PageSnap& ps, const std::vector<std::vector<Stroke>>& pages) {
+  const std::vector<Stroke>& page = pages[ps.page];
+  std::vector<double> drawn;
+  for (const std::size_t i : ps.strokes) {
+    drawn.insert(drawn.end(), page[i].ink.radii.begin(), page[i].ink.radii.end());
+  }
+  return certify_width_profile(ps.snap.recognition,
+                               written_radii(page[ps.strokes.front()], ps.pen_radius), drawn);
+}
+
 // The replacement of one snap; writing when every stroke it covers is writing.
 template <typename Stroke>
 Replacement replacement_of(const PageSnap& ps, const std::vector<std::vector<Stroke>>& pages,
@@ -79,6 +101,12 @@ void snap_pages(const std::vector<std::vector<Stroke>>& pages, double mm_per_uni
   const auto intents = intents_of(pages, inks, mm_per_unit, result);
   for (PageSnap& ps : recognize_pages(inks, intents, options.settings, recognize_page,
                                       options.progress, options.threads, result.warnings)) {
+    if (!certified_as_written(ps, pages)) {
+      result.warnings.push_back(pages[ps.page][ps.strokes.front()].ink.where + ": " +
+                                to_string(ps.snap.recognition.shape) +
+                                " not within the tolerance with the widths drawn: left as drawn");
+      continue;
+    }
     Replacement rep = replacement_of(ps, pages, intents);
     for (const std::size_t i : ps.strokes) {
       edits.push_back(splice.by_offsets ? element_range(splice.text, pages[ps.page][i].element)
@@ -86,8 +114,8 @@ void snap_pages(const std::vector<std::vector<Stroke>>& pages, double mm_per_uni
     }
     // The group's first element becomes the shape; the others go (from the tree too, for a
     // document saved whole).
-    edits[edits.size() - ps.strokes.size()].text =
-        node_text(replace(pages[ps.page][ps.strokes.front()], rep.recognition, ps.pen_radius));
+    edits[edits.size() - ps.strokes.size()].text = node_text(
+        replace(pages[ps.page][ps.strokes.front()], rep.recognition, ps.pen_radius, ps.backwards));
     for (std::size_t k = 1; k < ps.strokes.size(); ++k) {
       pugi::xml_node gone = pages[ps.page][ps.strokes[k]].element;
       gone.parent().remove_child(gone);
@@ -104,8 +132,8 @@ void snap_svg(pugi::xml_document& doc, const std::string& text, const SnapOption
     pages.push_back(std::move(page.strokes));
   }
   snap_pages(pages, svg_mm_per_unit(doc.document_element()), options, recognize_page, result,
-             splice, [](const SvgStroke& s, const Recognition& r, double pen) {
-               return replace_svg_stroke(s, r, pen);
+             splice, [](const SvgStroke& s, const Recognition& r, double pen, bool backwards) {
+               return replace_svg_stroke(s, r, pen, backwards);
              });
 }
 
@@ -120,8 +148,8 @@ void snap_xopp(pugi::xml_document& doc, const std::string& text, const SnapOptio
     pages.push_back(std::move(layer.strokes));
   }
   snap_pages(pages, kXoppMmPerUnit, options, recognize_page, result, splice,
-             [](const XoppStroke& s, const Recognition& r, double pen) {
-               replace_xopp_stroke(s, r, pen);
+             [](const XoppStroke& s, const Recognition& r, double pen, bool backwards) {
+               replace_xopp_stroke(s, r, pen, backwards);
                return s.element;
              });
 }

@@ -120,9 +120,9 @@ std::vector<PageSnap> recognize_pages(const std::vector<std::vector<const InkStr
       const InkStroke& first = *pages[run.page][strokes.front()];
       const InkStroke& last = *pages[run.page][strokes.back()];
       const StrokePoint a = first.points.front(), b = last.points.back();
-      orient_like_drawn(snap.recognition, {a.x, a.y}, {b.x, b.y});
+      const bool backwards = orient_like_drawn(snap.recognition, {a.x, a.y}, {b.x, b.y});
       const double pen = clean_pen_radius(first, settings);
-      out.push_back({run.page, std::move(strokes), std::move(snap), pen});
+      out.push_back({run.page, std::move(strokes), std::move(snap), pen, backwards});
     }
   }
   return out;

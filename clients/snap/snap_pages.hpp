@@ -28,6 +28,8 @@ struct PageSnap {
   std::vector<std::size_t> strokes; // indices into the page, ascending and consecutive
   StrokeSnap snap;
   double pen_radius = 0.0; // the clean shape's
+  bool backwards =
+      false; // written end to start: an arrow drawn from its head (drawn_direction.hpp)
 };
 
 // `pages[p]` are the strokes of page p in drawing order, `intents[p]` their decisions (one per

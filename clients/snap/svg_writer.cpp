@@ -3,6 +3,7 @@
 // other transforms), so circles stay circles.
 #include "svg_writer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -115,10 +116,16 @@ Element arc_element(const Recognition& r, const Affine& to_local) {
                      "," + num(e.y)}}};
 }
 
-// An arrow as one path: a subpath per piece (shaft through its bends, head, tail head).
-Element arrow_element(const Recognition& r, const Affine& to_local) {
+// An arrow as one path: a subpath per piece (shaft through its bends, head, tail head), or all of
+// it end to start.
+Element arrow_element(const Recognition& r, const Affine& to_local, bool backwards) {
+  std::vector<std::vector<PointD>> pieces = arrow_pieces(r);
+  if (backwards) {
+    std::reverse(pieces.begin(), pieces.end());
+    for (std::vector<PointD>& piece : pieces) std::reverse(piece.begin(), piece.end());
+  }
   std::string d;
-  for (const std::vector<PointD>& piece : arrow_pieces(r)) {
+  for (const std::vector<PointD>& piece : pieces) {
     for (std::size_t i = 0; i < piece.size(); ++i) {
       const PointD q = to_local.apply(piece[i]);
       if (!d.empty()) d += ' ';
@@ -128,7 +135,7 @@ Element arrow_element(const Recognition& r, const Affine& to_local) {
   return {"path", {{"d", d}}};
 }
 
-Element shape_element(const Recognition& r, const Affine& to_local) {
+Element shape_element(const Recognition& r, const Affine& to_local, bool backwards) {
   const ShapeParams& p = r.params;
   std::vector<PointD> v;
   for (const PointD& q : p.vertices) v.push_back(to_local.apply(q));
@@ -153,7 +160,7 @@ Element shape_element(const Recognition& r, const Affine& to_local) {
       return arc_element(r, to_local);
     case ShapeClass::kArrow:
     case ShapeClass::kDoubleArrow:
-      return arrow_element(r, to_local);
+      return arrow_element(r, to_local, backwards);
     default:
       return polygon_or_rect(v, false);
   }
@@ -184,12 +191,12 @@ std::string stroked_style(const pugi::xml_node& old, double local_width) {
 
 } // namespace
 
-pugi::xml_node replace_svg_stroke(const SvgStroke& stroke, const Recognition& r,
-                                  double pen_radius) {
+pugi::xml_node replace_svg_stroke(const SvgStroke& stroke, const Recognition& r, double pen_radius,
+                                  bool backwards) {
   const pugi::xml_node old = stroke.element;
   // The element's coordinates are its parent's after its own transform: to_root includes it.
   const Affine to_local = stroke.to_root.inverse();
-  const Element e = shape_element(r, to_local);
+  const Element e = shape_element(r, to_local, backwards);
   pugi::xml_node parent = old.parent();
   pugi::xml_node out = parent.insert_child_before(e.tag.c_str(), old);
   for (const pugi::xml_attribute& a : old.attributes()) {

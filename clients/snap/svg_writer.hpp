@@ -11,7 +11,10 @@
 
 namespace penshape::snap {
 
-// `pen_radius` is the clean shape's pen radius (root units). Returns the new element.
-pugi::xml_node replace_svg_stroke(const SvgStroke& stroke, const Recognition& r, double pen_radius);
+// `pen_radius` is the clean shape's pen radius (root units). `backwards`: an arrow's path is
+// written end to start (drawn head first, drawn_direction.hpp: the head's piece, reversed, then
+// the shaft from tip to tail). Returns the new element.
+pugi::xml_node replace_svg_stroke(const SvgStroke& stroke, const Recognition& r, double pen_radius,
+                                  bool backwards = false);
 
 } // namespace penshape::snap

@@ -162,9 +162,11 @@ std::vector<XoppLayer> read_xopp_strokes(const pugi::xml_document& doc, const st
   return out;
 }
 
-void replace_xopp_stroke(const XoppStroke& stroke, const Recognition& r, double pen_radius) {
+void replace_xopp_stroke(const XoppStroke& stroke, const Recognition& r, double pen_radius,
+                         bool backwards) {
   pugi::xml_node n = stroke.element;
-  const std::vector<PointD> clean = clean_polyline(r);
+  std::vector<PointD> clean = clean_polyline(r);
+  if (backwards) std::reverse(clean.begin(), clean.end());
   std::string pts;
   for (const PointD& p : clean) {
     if (!pts.empty()) pts += ' ';

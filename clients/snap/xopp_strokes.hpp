@@ -37,6 +37,9 @@ std::vector<XoppLayer> read_xopp_strokes(const pugi::xml_document& doc, const st
 // The stroke becomes the clean shape's polyline (clean_polyline) with the pen width 2
 // pen_radius; a pressure stroke keeps its width profile (each new point takes the width found
 // at the same fraction of the old stroke's length). Tool, colour and every other attribute stay.
-void replace_xopp_stroke(const XoppStroke& stroke, const Recognition& r, double pen_radius);
+// `backwards`: the polyline is written end to start (an arrow drawn head first,
+// drawn_direction.hpp).
+void replace_xopp_stroke(const XoppStroke& stroke, const Recognition& r, double pen_radius,
+                         bool backwards = false);
 
 } // namespace penshape::snap

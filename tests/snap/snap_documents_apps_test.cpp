@@ -3,9 +3,9 @@
 // pressure widths of -1 and 0, a tap dot, text and a freeform stroke, and on 200 pages; Inkscape
 // (`inkscape --export-type=png`) on an SVG with a closed square, a stroke with an arrowhead marker
 // drawn right to left, sides of different colours, variable-width calligraphy and text, and on
-// 10,000 nested groups. Every output must open; the pixels of untouched parts must not change.
-// Each test skips, saying why, when its app is absent. The files stay in the build folder
-// (tests/snap/apps-documents/).
+// 10,000 nested groups; and an arrow drawn head first, in both. Every output must open; the pixels
+// of untouched parts must not change. Each test skips, saying why, when its app is absent. The
+// files stay in the build folder (tests/snap/apps-documents/).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -215,6 +215,60 @@ TEST(InkscapeDocuments, DrawersIntentionsRenderAndTheRestStays) {
   // Untouched: the calligraphy and the text.
   EXPECT_TRUE(same_region(before, after, 30, 220, 215, 275)) << "calligraphy";
   EXPECT_TRUE(same_region(before, after, 245, 240, 320, 270)) << "text";
+}
+
+// An arrow drawn head first (the barbs meeting at (100, 150), then the shaft to the tail at
+// (300, 150)), both strokes with an arrowhead marker at their end: the snapped arrow opens in
+// both apps with its head drawn where the drawer drew it, and in Inkscape the one path's marker
+// sits at the tail, where the pen stopped, and nowhere near the head.
+std::vector<std::vector<PointD>> head_first_arrow() {
+  std::vector<PointD> head = wobbly_line({120, 135}, {100, 150}, 8);
+  const auto barb = wobbly_line({100, 150}, {120, 165}, 8);
+  head.insert(head.end(), barb.begin() + 1, barb.end());
+  return {head, wobbly_line({100, 150}, {300, 150}, 24)};
+}
+
+// Points along the drawn head's barbs and the shaft.
+std::vector<PointD> arrow_ink_points() {
+  std::vector<PointD> out;
+  for (int i = 2; i <= 8; ++i) {
+    out.push_back({100 + 2.0 * i, 150 - 1.5 * i});
+    out.push_back({100 + 2.0 * i, 150 + 1.5 * i});
+  }
+  for (int x = 140; x <= 280; x += 10) out.push_back({static_cast<double>(x), 150});
+  return out;
+}
+
+TEST(InkscapeDocuments, ArrowDrawnHeadFirstPointsWhereItWasDrawn) {
+  if (!have("inkscape")) GTEST_SKIP() << "inkscape is not installed (scripts/setup.sh installs it)";
+  const fs::path dir = out_dir();
+  std::string body;
+  for (const auto& stroke : head_first_arrow()) {
+    body +=
+        "<polyline fill=\"none\" stroke=\"#000\" stroke-width=\"2\" marker-end=\"url(#arrow)\" "
+        "points=\"" +
+        coordinates(stroke, ",") + "\"/>\n";
+  }
+  write_bytes(dir / "arrow.svg", svg_document(body));
+  const BeforeAfter pictures = snap_and_render(dir, "arrow", ".svg", inkscape_png);
+  ASSERT_EQ(pictures.failure, "");
+  EXPECT_NE(pictures.snap_output.find("arrow"), std::string::npos) << pictures.snap_output;
+  EXPECT_GE(inked_share(pictures.after, arrow_ink_points()), 0.9);
+  EXPECT_GT(red_pixels(pictures.after, 290, 138, 312, 162), 5) << "the marker at the tail";
+  EXPECT_EQ(red_pixels(pictures.after, 90, 125, 130, 175), 0) << "a marker at the head";
+}
+
+TEST(XournalDocuments, ArrowDrawnHeadFirstPointsWhereItWasDrawn) {
+  std::string why;
+  if (skip_without_xournal(why)) GTEST_SKIP() << why;
+  const fs::path dir = out_dir();
+  std::string layer;
+  for (const auto& stroke : head_first_arrow()) layer += xopp_stroke(stroke, "2");
+  write_bytes(dir / "arrow.xopp", gzip_bytes(xopp_document({layer})));
+  const BeforeAfter pictures = snap_and_render(dir, "arrow", ".xopp", xournal_png);
+  ASSERT_EQ(pictures.failure, "");
+  EXPECT_NE(pictures.snap_output.find("arrow"), std::string::npos) << pictures.snap_output;
+  EXPECT_GE(inked_share(pictures.after, arrow_ink_points()), 0.9);
 }
 
 TEST(InkscapeDocuments, DeepNestingOpens) {

@@ -202,6 +202,88 @@ TEST_F(SnapDocuments, MarkedStrokesKeepTheirDirection) {
   EXPECT_NEAR(pts.back().y, 150, 2);
 }
 
+// The points of an SVG path's data (M/L commands, "x,y" pairs).
+std::vector<PointD> path_points(std::string d) {
+  for (char& c : d) c = c == 'M' || c == 'L' || c == ',' ? ' ' : c;
+  return pairs_of(d);
+}
+
+bool near(PointD a, PointD b, double within) { return std::hypot(a.x - b.x, a.y - b.y) <= within; }
+
+// An arrow drawn in two strokes, the shaft (100, 200) -> (300, 200) and the head's barbs meeting
+// at (300, 200): shaft first, or head first and then the shaft back to the tail. Either way the
+// clean arrow points where the head was drawn, and its path runs as the pen did: from the tail to
+// the head, or from the head (its barbs first) to the tail, so marker-end sits where the drawer
+// stopped. In both formats.
+TEST_F(SnapDocuments, ArrowsPointWhereTheirHeadWasDrawn) {
+  const PointD tail{100, 200}, tip{300, 200}, barb1{280, 185}, barb2{280, 215};
+  std::vector<PointD> head = wobbly_line(barb1, tip, 8);
+  const auto second_barb = wobbly_line(tip, barb2, 8);
+  head.insert(head.end(), second_barb.begin() + 1, second_barb.end());
+  for (const bool head_first : {false, true}) {
+    const std::vector<std::vector<PointD>> strokes =
+        head_first ? std::vector{head, wobbly_line(tip, tail, 24)}
+                   : std::vector{wobbly_line(tail, tip, 24), head};
+    std::string svg, xopp;
+    for (std::size_t i = 0; i < strokes.size(); ++i) {
+      svg += "<polyline id=\"s" + std::to_string(i) +
+             "\" marker-end=\"url(#arrow)\" fill=\"none\" stroke=\"#000\" stroke-width=\"2\" "
+             "points=\"" +
+             coordinates(strokes[i], ",") + "\"/>\n";
+      xopp += xopp_stroke(strokes[i], "2");
+    }
+    const std::string name = head_first ? "head-first" : "shaft-first";
+    const auto r = snap(name + ".svg", svg_document(svg));
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    const pugi::xml_node e = out_element(name + ".svg", "s0");
+    ASSERT_STREQ(e.attribute("data-penshape-class").value(), "arrow") << name << ": " << r.out;
+    EXPECT_STREQ(e.attribute("marker-end").value(), "url(#arrow)");
+    const auto svg_pts = path_points(e.attribute("d").value());
+    const auto x = snap(name + ".xopp", xopp_document({xopp}));
+    ASSERT_EQ(x.exit_code, 0) << x.out;
+    ASSERT_TRUE(contains(x.out, "stroke 1 (line 7): arrow")) << name << ": " << x.out;
+    const std::string text = out(name + ".xopp");
+    const auto stroke_at = text.find("<stroke");
+    const auto xopp_pts = pairs_of(text.substr(text.find('>', stroke_at) + 1));
+    for (const auto& pts : {svg_pts, xopp_pts}) {
+      ASSERT_EQ(pts.size(), 5u) << name; // shaft (2) and head (3), as subpaths or one line
+      // The head where it was drawn: the point its barbs meet is the tip.
+      const std::size_t at_tip = head_first ? 1 : pts.size() - 2;
+      EXPECT_TRUE(near(pts[at_tip], tip, 3)) << name << " tip at " << pts[at_tip].x;
+      EXPECT_TRUE(near(pts[at_tip - 1], barb1, 4) || near(pts[at_tip - 1], barb2, 4)) << name;
+      // The path runs as drawn: it ends at the tail when the head came first.
+      EXPECT_TRUE(near(head_first ? pts.back() : pts.front(), tail, 3)) << name;
+    }
+  }
+}
+
+// A pressure stroke keeps its width profile in Xournal++, so its certificate covers the widths
+// written and drawn (width_profile.hpp): a circle whose widths vary a little snaps with the
+// widened bound; one with a stretch drawn 18 times as wide as the rest snaps no more, since the
+// written widths' spread around the median pen no longer fits the tolerance.
+TEST_F(SnapDocuments, PressureCertificateCoversTheWidthsDrawn) {
+  const auto circle = wobbly_circle(200, 150, 80);
+  for (const double wide : {2.8, 36.0}) {
+    std::string widths = "2";
+    for (std::size_t i = 0; i + 1 < circle.size(); ++i) {
+      widths.append(" ").append(i >= 20 && i < 28 ? std::to_string(wide) : "2");
+    }
+    const std::string name = std::string("pressure").append(wide < 3 ? "-thin" : "-wide") + ".xopp";
+    const auto r = snap(name, gzip_bytes(xopp_document({xopp_stroke(circle, widths)})));
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    if (wide < 3) {
+      EXPECT_TRUE(contains(r.out, "stroke 1 (line 7): circle")) << r.out;
+      EXPECT_TRUE(contains(r.out, "+width_profile)")) << r.out;
+    } else {
+      EXPECT_TRUE(contains(r.out,
+                           "circle not within the tolerance with the widths drawn: left "
+                           "as drawn"))
+          << r.out;
+      EXPECT_TRUE(contains(r.out, "0 of 1 strokes snapped")) << r.out;
+    }
+  }
+}
+
 // The four sides of a rectangle, drawn one after the other: one rectangle when they share colour
 // and width; with alternating colours nothing is merged and every colour survives.
 TEST_F(SnapDocuments, StrokesOfDifferentStylesNeverMerge) {

@@ -10,6 +10,7 @@
 #include <numbers>
 #include <string>
 
+#include "ink_union.hpp"
 #include "penshape/core/base.hpp"
 
 namespace penshape {
@@ -185,6 +186,22 @@ std::vector<InkSample> simplify(const std::vector<InkSample>& in, double tau) {
 
 } // namespace
 
+namespace ink_detail {
+
+double clipper_union_arithmetic(double magnitude) {
+  const double above_doubles_half_units = magnitude >= 0x1p52 ? std::numbers::sqrt2 / 2 : 0.0;
+  return up(up(64.0 * 0x1p-53 * magnitude) + above_doubles_half_units);
+}
+
+bool clipper_union(const Paths& pieces, ClipperLib::PolyTree& tree) {
+  ClipperLib::Clipper clipper;
+  clipper.StrictlySimple(true);
+  clipper.AddPaths(pieces, ClipperLib::ptSubject, true);
+  return clipper.Execute(ClipperLib::ctUnion, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+}
+
+} // namespace ink_detail
+
 std::vector<InkSample> ink_samples(const Stroke& stroke, const InkOptions& options) {
   const TabletInfo& t = stroke.tablet;
   const double sx = t.x_resolution > 0 ? 1.0 / t.x_resolution : 1.0;
@@ -268,12 +285,18 @@ InkPolygon ink_polygon(const std::vector<std::vector<InkSample>>& strokes,
   // operations, the distance's hypot and the radius term on top): that much is added too.
   const double arithmetic = up(16.0 * std::ldexp(extent + r_max, -52));
   const double diagonal = up(up(std::numbers::sqrt2) * result.grid);
-  const double hull_bound = sum_up({disk_sagitta_up(r_max, k), tau, diagonal, arithmetic});
+  // Clipper's doubles in each union's intersection points (ink_union.hpp): hulls meet in one
+  // union, an offset stroke in its own union and, with several strokes, the final one.
+  const double per_union =
+      up(ink_detail::clipper_union_arithmetic((extent + r_max) * grid.scale) * result.grid);
+  const double hull_bound =
+      sum_up({disk_sagitta_up(r_max, k), tau, diagonal, arithmetic, per_union});
   // Clipper rounds the number of arc steps, so a last chord may span 1.5 nominal steps: its
   // sagitta is at most 2.25 times the arc tolerance.
   const double arc_tolerance = max_error / 2 / 2.25;
-  const double offset_bound = sum_up({max_error / 2, tau, up(halves / 2 * diagonal), arithmetic,
-                                      clipper_turning(r_max, arc_tolerance)});
+  const double offset_bound =
+      sum_up({max_error / 2, tau, up(halves / 2 * diagonal), arithmetic,
+              clipper_turning(r_max, arc_tolerance), up((halves - 2) * per_union)});
 
   std::vector<double> cos_k(k);
   std::vector<double> sin_k(k);
@@ -325,11 +348,8 @@ InkPolygon ink_polygon(const std::vector<std::vector<InkSample>>& strokes,
       result.hausdorff_bound = std::max(result.hausdorff_bound, hull_bound);
     }
   }
-  ClipperLib::Clipper clipper;
-  clipper.StrictlySimple(true);
-  clipper.AddPaths(pieces, ClipperLib::ptSubject, true);
   ClipperLib::PolyTree tree;
-  if (!clipper.Execute(ClipperLib::ctUnion, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero)) {
+  if (!ink_detail::clipper_union(pieces, tree)) {
     throw InvalidInput("the union of the pen hulls failed (coordinates out of range)");
   }
   for (const ClipperLib::PolyNode* node : tree.Childs) collect(*node, result.grid, result.region);

@@ -24,7 +24,11 @@
 // The sum is computed with outward rounding, plus 16 ulps of (extent + radius) for the double
 // arithmetic that places the vertices and measures the simplification's distances, plus
 // Clipper's own arithmetic in round joins and ends (it turns a unit vector step by step in
-// doubles: 32 ulps of the radius per step, ink.cpp clipper_turning).
+// doubles: 32 ulps of the radius per step, ink.cpp clipper_turning), plus, for each union (an
+// offset stroke's own, and the final one of several strokes or of hulls), Clipper's double
+// arithmetic in its intersection points: 64·2^-53 of the largest grid coordinate (and half a grid
+// diagonal more beyond 2^52 grid units), derived from Clipper 6.4's IntersectPoint in
+// core/src/ink/ink_union.hpp, which also says what that derivation assumes of Clipper's sweep.
 // max_error splits as 1/2 (disk), 1/4 (simplification), 1/4 (grid). The disk polygon may have at
 // most 4096 vertices (a smaller max_error relative to the radius is InvalidInput). Q's coordinates
 // are exact dyadic rationals (integers times the grid).
