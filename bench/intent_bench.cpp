@@ -11,7 +11,9 @@
 //   decision time per stroke        decide_intent on the stroke and the 24 before it (a live
 //                                   pen-up), thread CPU time p50/p99/max, and how often that
 //                                   live decision (no strokes after it) is right
-// Usage: intent_bench [--pages DIR] [--logo-scores FILE] [--quick]
+// Usage: intent_bench [--pages DIR] [--logo-scores FILE] [--quick] [--wrong]
+//        (--wrong lists the mixed pages' shapes named wrong: the page's class and the stroke's
+//        class alone, which tells a grouping error from a single-stroke one)
 //        intent_bench --features DIR   (the model's inputs, one TSV row per stroke, for
 //                                       scripts/intent_learn.py)
 // Data: $PENSHAPE_SHARED_DATA_DIR (else the build's ../shared/data); skips, saying so, without it.
@@ -34,6 +36,7 @@
 #include "penshape/core/deconstruct.hpp"
 #include "penshape/core/intent.hpp"
 #include "penshape/core/intent_grouper.hpp"
+#include "penshape/core/recognize.hpp"
 
 namespace {
 
@@ -47,6 +50,7 @@ struct Stroke {
   bool writing = false;
   std::string kind;  // text | words | characters | shape
   std::string label; // the class a shape should be recognized as
+  std::string name;  // where the stroke came from (the shared corpus's file)
   int fold = 0;
 };
 
@@ -71,6 +75,7 @@ Page read_page(const fs::path& file, const std::string& set) {
     s.kind = j.value("kind", "");
     s.label = j.value("label", "freeform");
     s.fold = j.value("fold", 0);
+    s.name = j.value("name", "");
     page.strokes.push_back(std::move(s));
   }
   return page;
@@ -149,6 +154,7 @@ struct Rate {
 
 struct Tally {
   std::map<std::string, Rate> rows; // figure -> rate
+  std::vector<std::string> wrong;   // named-class shapes on mixed pages named wrong (--wrong)
 };
 
 // The class every stroke of the page ends up in, recognized with the given intents.
@@ -176,6 +182,21 @@ std::vector<std::string> classes_of(const Page& page, const std::vector<Intent>&
   return classes;
 }
 
+// A wrong shape: where it is, what it should be, what the page made of it and what the stroke
+// alone is (a grouping error when the stroke alone is right).
+std::string wrong_line(const Page& page, std::size_t i, const std::string& got) {
+  const Stroke& s = page.strokes[i];
+  penshape::RecognizerConfig config;
+  config.pen_radius = 0.35;
+  std::string alone = "refused";
+  try {
+    alone = penshape::to_string(penshape::recognize(s.points, config).shape);
+  } catch (const penshape::InvalidInput&) {
+  }
+  return page.id + " #" + std::to_string(i) + "  " + s.name + "  want " + s.label + ", page " +
+         got + ", alone " + alone;
+}
+
 void tally_page(const Page& page, const std::vector<Intent>& intents, bool snap_writing, Tally& t) {
   const std::vector<std::string> classes = classes_of(page, intents, snap_writing);
   const bool mixed = page.id.starts_with("mixed/");
@@ -188,8 +209,10 @@ void tally_page(const Page& page, const std::vector<Intent>& intents, bool snap_
     } else if (s.writing) {
       t.rows["mixed pages: writing strokes snapped"].add(snapped);
     } else if (mixed) {
-      if (s.label != "freeform")
+      if (s.label != "freeform") {
         t.rows["mixed pages: shapes right (named classes)"].add(accepted(s.label, classes[i]));
+        if (!accepted(s.label, classes[i])) t.wrong.push_back(wrong_line(page, i, classes[i]));
+      }
       t.rows["mixed pages: shapes right (all, freeform ones unsnapped)"].add(
           accepted(s.label, classes[i]));
       if (!snap_writing) {
@@ -316,6 +339,7 @@ void print_table(const Tally& off, const Tally& on, const Tally& logo,
 
 int main(int argc, char** argv) {
   Inputs in;
+  bool list_wrong = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--features" && i + 1 < argc) return print_features(argv[i + 1]);
@@ -325,9 +349,11 @@ int main(int argc, char** argv) {
       in.logo = argv[++i];
     } else if (a == "--quick") {
       in.limit = 40;
+    } else if (a == "--wrong") {
+      list_wrong = true;
     } else {
       std::fprintf(stderr,
-                   "usage: intent_bench [--pages DIR] [--logo-scores FILE] [--quick] | "
+                   "usage: intent_bench [--pages DIR] [--logo-scores FILE] [--quick] [--wrong] | "
                    "--features DIR\n");
       return 2;
     }
@@ -349,6 +375,10 @@ int main(int argc, char** argv) {
     }
   }
   print_table(off, on, logo, penshape::bench::percentiles(ms));
+  if (list_wrong) {
+    std::printf("\nmixed pages, named shapes named wrong (filter on, leave-one-group-out):\n");
+    for (const std::string& w : logo.wrong) std::printf("  %s\n", w.c_str());
+  }
   if (in.made_pages) fs::remove_all(in.pages);
   return 0;
 }

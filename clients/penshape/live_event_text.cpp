@@ -127,6 +127,8 @@ std::string shape_kind_name(v1::ShapeKind kind) {
       return "double_arrow";
     case v1::SHAPE_KIND_DOT:
       return "dot";
+    case v1::SHAPE_KIND_POLYGON:
+      return "polygon";
     default:
       return "unspecified";
   }

@@ -46,6 +46,8 @@ ShapeClass class_of(v1::ShapeKind k) {
       return ShapeClass::kDoubleArrow;
     case v1::SHAPE_KIND_DOT:
       return ShapeClass::kDot;
+    case v1::SHAPE_KIND_POLYGON:
+      return ShapeClass::kPolygon;
     default:
       return ShapeClass::kFreeform;
   }

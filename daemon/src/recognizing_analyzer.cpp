@@ -49,6 +49,8 @@ v1::ShapeKind kind_of(ShapeClass c) {
       return v1::SHAPE_KIND_DOUBLE_ARROW;
     case ShapeClass::kDot:
       return v1::SHAPE_KIND_DOT;
+    case ShapeClass::kPolygon:
+      return v1::SHAPE_KIND_POLYGON;
   }
   return v1::SHAPE_KIND_UNSPECIFIED;
 }

@@ -32,6 +32,14 @@ TEST(LiveEventText, ShapeLineNamesReplacedStrokesAndSupersededShapes) {
       << line;
 }
 
+TEST(LiveEventText, APolygonIsNamed) {
+  v1::LiveEvent event = rectangle_upgrade();
+  event.mutable_shape()->mutable_shape()->set_kind(v1::SHAPE_KIND_POLYGON);
+  const std::string line = penshape::cli::event_line(event);
+  EXPECT_NE(line.find("stroke 4 (shape 9) is a polygon"), std::string::npos) << line;
+  EXPECT_EQ(penshape::cli::shape_kind_name(v1::SHAPE_KIND_POLYGON), "polygon");
+}
+
 TEST(LiveEventText, ShapeJsonNamesReplacedStrokesAndSupersededShapes) {
   const std::string json = penshape::cli::event_json(rectangle_upgrade());
   EXPECT_NE(json.find("\"shape_id\":9"), std::string::npos) << json;

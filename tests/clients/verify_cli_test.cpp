@@ -316,3 +316,36 @@ TEST(VerifyCli, BentArrowAnswerVerifiesAndAMovedBendDoesNot) {
 }
 
 } // namespace
+
+// An L-shaped hexagon in one stroke: `recognize --json` names it a `polygon` with its six
+// corners, `verify` accepts the answer, and the same answer with a corner moved 80 to the right
+// (epsilon is about 35) is refuted.
+TEST(VerifyCli, PolygonAnswerVerifiesAndAMovedCornerDoesNot) {
+  const double corners[][2] = {{0, 0}, {200, 0}, {200, 80}, {80, 80}, {80, 200}, {0, 200}, {0, 0}};
+  std::string text = "{\"points\": [";
+  double t = 0;
+  for (std::size_t i = 0; i + 1 < std::size(corners); ++i) {
+    for (int k = i == 0 ? 0 : 1; k <= 30; ++k, t += 0.01) {
+      const double f = k / 30.0;
+      char buf[96];
+      std::snprintf(buf, sizeof buf, "%s[%.6f, %.6f, %.3f]", text.back() == '[' ? "" : ", ",
+                    corners[i][0] + f * (corners[i + 1][0] - corners[i][0]),
+                    corners[i][1] + f * (corners[i + 1][1] - corners[i][1]), t);
+      text += buf;
+    }
+  }
+  text += "]}\n";
+  const std::string strokes = write("l_hexagon.jsonl", text);
+  std::string answer;
+  const Result ok = recognize_and_verify(strokes, &answer);
+  ASSERT_NE(answer.find("\"class\":\"polygon\""), std::string::npos) << answer;
+  EXPECT_EQ(ok.exit_code, 0) << ok.out;
+  EXPECT_EQ(ok.out, "verified\n");
+  const auto v = answer.find("\"vertices\":[[") + 13;
+  const auto comma = answer.find(',', v);
+  const double x = std::stod(answer.substr(v, comma - v));
+  const std::string moved = answer.substr(0, v) + std::to_string(x + 80.0) + answer.substr(comma);
+  const Result bad = penshape::test::run_command(cli() + " verify " + strokes + " " +
+                                                 write("l_hexagon_moved.json", moved));
+  EXPECT_EQ(bad.exit_code, 1) << bad.out;
+}

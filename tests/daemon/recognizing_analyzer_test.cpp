@@ -53,6 +53,28 @@ TEST(RecognizingAnalyzer, CircleIsCertifiedOnTheInk) {
   EXPECT_DOUBLE_EQ(a.shape.certificate().pen_radius().approx(), 0.8);
 }
 
+TEST(RecognizingAnalyzer, AnLShapedHexagonIsAPolygon) {
+  const std::vector<PointD> corners{{20, 20}, {80, 20}, {80, 44}, {44, 44},
+                                    {44, 80}, {20, 80}, {20, 20}};
+  std::vector<PointD> mm;
+  for (std::size_t i = 0; i + 1 < corners.size(); ++i) {
+    for (int k = 0; k < 40; ++k) {
+      const double f = k / 40.0;
+      mm.push_back({corners[i].x + f * (corners[i + 1].x - corners[i].x),
+                    corners[i].y + f * (corners[i + 1].y - corners[i].y)});
+    }
+  }
+  mm.push_back(corners.back());
+  const auto analyzer = make_recognizing_analyzer();
+  PenSettings settings;
+  settings.pen_radius_mm = 0.5;
+  const StrokeAnalysis a = analyzer->analyze(stroke_from(mm), settings, {});
+  ASSERT_EQ(a.shape.kind(), v1::SHAPE_KIND_POLYGON);
+  EXPECT_EQ(a.shape.vertices().vertices_size(), 6);
+  EXPECT_LE(a.shape.certificate().hausdorff_bound().approx(),
+            a.shape.certificate().tolerance().approx());
+}
+
 TEST(RecognizingAnalyzer, ScribbleStaysInk) {
   std::vector<PointD> mm;
   for (int k = 0; k <= 400; ++k) {

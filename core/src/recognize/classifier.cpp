@@ -17,6 +17,14 @@ namespace {
 // ... and turns at most half a turn more than the clean shape does (end hooks, a closing
 // overlap), measured on 16 points along the stroke (pen jitter averages out).
 constexpr double kMaxExtraTurning = std::numbers::pi;
+// A polygon of 5..8 corners turns by at most this much at a corner (interior angle >= 30 deg):
+// a sharper corner is a line drawn down and back (the stems of P, D, b drawn in one stroke).
+constexpr double kMaxPolygonTurn = 5.0 * std::numbers::pi / 6.0;
+// A polygon of 5..8 corners (10..16 free parameters) must certify within this fraction of
+// epsilon: polygons are drawn as straight sides, and 99% of the real one-stroke triangles,
+// rectangles and squares named right certify within 0.84 epsilon ($1 and gesture writers;
+// leaving one writer out 0.68..0.85). A looser fit with that many parameters is a scribble.
+constexpr double kPolygonFraction = 0.85;
 // Fits whose estimate exceeds this many epsilons are not certified at all (saves time; their
 // certificate could not pass because the estimate is measured on points of the stroke).
 constexpr double kCertifyIfBelow = 1.25;
@@ -27,9 +35,13 @@ bool segments_cross(PointD a, PointD b, PointD c, PointD d) {
   return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
 }
 
+// Whether two non-adjacent segments of the path cross (a closed path's first and last segments
+// are adjacent too).
 bool self_crossing(const std::vector<PointD>& path) {
+  const bool closed = path.size() > 3 && path.front() == path.back();
   for (std::size_t i = 0; i + 1 < path.size(); ++i) {
     for (std::size_t j = i + 2; j + 1 < path.size(); ++j) {
+      if (closed && i == 0 && j + 2 == path.size()) continue;
       if (segments_cross(path[i], path[i + 1], path[j], path[j + 1])) return true;
     }
   }
@@ -63,6 +75,17 @@ double stroke_turning(const PreparedStroke& s, double epsilon) {
     total += std::abs(std::atan2(cross(u, v), dot(u, v)));
   }
   return total;
+}
+
+// The largest turn at a corner of a closed polygon (radians).
+double sharpest_turn(const std::vector<PointD>& v) {
+  double out = 0;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const PointD u = v[i] - v[(i + v.size() - 1) % v.size()];
+    const PointD w = v[(i + 1) % v.size()] - v[i];
+    out = std::max(out, std::abs(std::atan2(cross(u, w), dot(u, w))));
+  }
+  return out;
 }
 
 // Total absolute turning of the clean shape (radians).
@@ -108,9 +131,18 @@ std::string implausibility(const PreparedStroke& s, const Fit& f, const Certific
   if (f.shape == ShapeClass::kPolyline && self_crossing(f.clean.path)) {
     return "the open polyline crosses itself (a gesture, not a shape)";
   }
+  if (f.shape == ShapeClass::kPolygon && self_crossing(f.clean.path)) {
+    return "the polygon crosses itself (a star or a scribble, not a polygon)";
+  }
+  if (f.shape == ShapeClass::kPolygon && c.bound - s.thinning > kPolygonFraction * c.epsilon) {
+    return "a polygon of 5..8 corners must fit within 0.85 epsilon (drawn as straight sides)";
+  }
+  if (f.shape == ShapeClass::kPolygon && sharpest_turn(f.params.vertices) > kMaxPolygonTurn) {
+    return "a polygon corner turns back by more than 150 degrees (a line drawn down and back)";
+  }
   if (f.shape == ShapeClass::kTriangle || f.shape == ShapeClass::kQuadrilateral ||
       f.shape == ShapeClass::kRectangle || f.shape == ShapeClass::kSquare ||
-      f.shape == ShapeClass::kDiamond) {
+      f.shape == ShapeClass::kDiamond || f.shape == ShapeClass::kPolygon) {
     const std::vector<PointD>& v = f.params.vertices;
     for (std::size_t i = 0; i < v.size(); ++i) {
       if (distance(v[i], v[(i + 1) % v.size()]) < c.epsilon) {
@@ -146,6 +178,7 @@ double degrees_of_freedom(const Fit& fit) {
     case ShapeClass::kSegment:
       return 4;
     case ShapeClass::kPolyline:
+    case ShapeClass::kPolygon:
       return 2.0 * static_cast<double>(fit.params.vertices.size());
     case ShapeClass::kTriangle:
       return 6;
@@ -198,6 +231,9 @@ std::vector<Family> all_families(const RecognizerConfig& config) {
   for (std::size_t k = 2; k <= config.max_polyline_segments; ++k) {
     out.push_back({ShapeClass::kPolyline, k + 1});
   }
+  for (std::size_t k = kMinPolygonCorners; k <= kMaxPolygonCorners; ++k) {
+    out.push_back({ShapeClass::kPolygon, k});
+  }
   return out;
 }
 
@@ -209,7 +245,8 @@ double minimum_rank(const Family& family) {
 }
 
 Family family_of(const Fit& f) {
-  if (f.shape == ShapeClass::kPolyline || f.shape == ShapeClass::kRegularPolygon) {
+  if (f.shape == ShapeClass::kPolyline || f.shape == ShapeClass::kRegularPolygon ||
+      f.shape == ShapeClass::kPolygon) {
     return {f.shape, f.params.vertices.size()};
   }
   return {f.shape, 0};
@@ -245,6 +282,9 @@ std::vector<Fit> fit_all(const PreparedStroke& s, const RecognizerConfig& config
       }
       if (wanted(ShapeClass::kQuadrilateral)) add(std::move(quad));
     }
+  }
+  for (std::size_t k = kMinPolygonCorners; k <= kMaxPolygonCorners; ++k) {
+    if (wanted(ShapeClass::kPolygon, k)) add(fit_polygon(s, k));
   }
   std::optional<Fit> circle = fit_circle(s);
   if (circle) {

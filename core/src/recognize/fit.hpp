@@ -47,7 +47,11 @@ Line fit_line(std::span<const PointD> pts);
 
 std::optional<Fit> fit_segment(const PreparedStroke& s);
 std::optional<Fit> fit_polyline(const PreparedStroke& s, std::size_t segments);
-std::optional<Fit> fit_polygon(const PreparedStroke& s, std::size_t corners); // 3 or 4
+// A closed polygon of 3..kMaxPolygonCorners corners: triangle, quadrilateral, else polygon.
+inline constexpr std::size_t kMinPolygonCorners = 5;
+inline constexpr std::size_t kMaxPolygonCorners = 8;
+ShapeClass polygon_class(std::size_t corners);
+std::optional<Fit> fit_polygon(const PreparedStroke& s, std::size_t corners);
 // A triangle or quadrilateral refined from given corners (3 or 4, e.g. skeleton seeds).
 std::optional<Fit> fit_polygon_from_corners(const PreparedStroke& s,
                                             const std::vector<PointD>& corners);

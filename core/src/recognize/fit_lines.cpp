@@ -1,4 +1,5 @@
-// Straight families: the segment, open polylines and closed polygons (triangle, quadrilateral).
+// Straight families: the segment, open polylines and closed polygons (triangle, quadrilateral,
+// polygon of 5..8 corners).
 // Corners come from the dynamic-programming partition; each side is then re-fitted as a
 // total-least-squares line over the middle of its points (hand-drawn corners are rounded, the
 // sides' lines meet where the intended corner was), and the vertices are refined by minimax.
@@ -72,6 +73,11 @@ Fit finish(const PreparedStroke& s, ShapeClass shape, const std::vector<PointD>&
 
 } // namespace
 
+ShapeClass polygon_class(std::size_t corners) {
+  if (corners == 3) return ShapeClass::kTriangle;
+  return corners == 4 ? ShapeClass::kQuadrilateral : ShapeClass::kPolygon;
+}
+
 std::optional<Fit> fit_segment(const PreparedStroke& s) {
   const Line l = fit_line(s.fit_points);
   double lo = INFINITY, hi = -INFINITY;
@@ -111,7 +117,7 @@ std::optional<Fit> fit_polygon(const PreparedStroke& s, std::size_t corners) {
   for (std::size_t i = 0; i < corners; ++i) {
     v.push_back(meet(lines[(i + corners - 1) % corners], lines[i], s.fit_points[idx[i]], s.size));
   }
-  return finish(s, corners == 3 ? ShapeClass::kTriangle : ShapeClass::kQuadrilateral, v, true);
+  return finish(s, polygon_class(corners), v, true);
 }
 
 std::optional<Fit> fit_polygon_from_corners(const PreparedStroke& s,

@@ -6,7 +6,7 @@
 
 namespace penshape {
 namespace {
-constexpr std::array<std::pair<ShapeClass, const char*>, 15> kNames{{
+constexpr std::array<std::pair<ShapeClass, const char*>, 16> kNames{{
     {ShapeClass::kFreeform, "freeform"},
     {ShapeClass::kSegment, "segment"},
     {ShapeClass::kPolyline, "polyline"},
@@ -22,6 +22,7 @@ constexpr std::array<std::pair<ShapeClass, const char*>, 15> kNames{{
     {ShapeClass::kArrow, "arrow"},
     {ShapeClass::kDoubleArrow, "double_arrow"},
     {ShapeClass::kDot, "dot"},
+    {ShapeClass::kPolygon, "polygon"},
 }};
 } // namespace
 

@@ -84,6 +84,12 @@ std::vector<Case> clean_cases(double noise, unsigned seed) {
       {"quadrilateral", along({{0, 0}, {220, 30}, {160, 160}, {30, 200}, {0, 0}}, 2, noise, seed),
        ShapeClass::kQuadrilateral},
       {"pentagon", regular(100, 100, 100, 5, 0.3, noise, seed), ShapeClass::kRegularPolygon},
+      {"house pentagon",
+       along({{0, 80}, {100, 0}, {200, 80}, {200, 200}, {0, 200}, {0, 80}}, 2, noise, seed),
+       ShapeClass::kPolygon},
+      {"L hexagon",
+       along({{0, 0}, {200, 0}, {200, 80}, {80, 80}, {80, 200}, {0, 200}, {0, 0}}, 2, noise, seed),
+       ShapeClass::kPolygon},
       {"circle", ellipse(100, 100, 80, 80, 0, 1.0, noise, seed), ShapeClass::kCircle},
       {"ellipse", ellipse(100, 100, 120, 50, 0.5, 1.0, noise, seed), ShapeClass::kEllipse},
       {"arc", ellipse(100, 100, 90, 90, 0, 0.45, noise, seed), ShapeClass::kArc},
@@ -161,6 +167,24 @@ TEST(RecognizeSynthetic, ScribblesDoNotSnap) {
     if (recognize(p).shape != ShapeClass::kFreeform) ++snaps;
   }
   EXPECT_LE(snaps, 1) << "random scribbles must stay ink";
+}
+
+TEST(RecognizeSynthetic, AStarIsNoPolygon) {
+  // A five-pointed star drawn in one stroke visits its points in star order: the closed path of
+  // its five corners crosses itself, so no polygon (a polygon does not cross itself).
+  std::vector<PointD> c;
+  for (int k = 0; k <= 5; ++k) {
+    const double a = -std::numbers::pi / 2 + 4 * std::numbers::pi * k / 5;
+    c.push_back({100 + 100 * std::cos(a), 100 + 100 * std::sin(a)});
+  }
+  const Recognition r = recognize(along(c, 2, 0.0, 1));
+  EXPECT_NE(r.shape, ShapeClass::kPolygon);
+  bool refused = false;
+  for (const Candidate& a : r.alternatives) {
+    refused = refused || (a.shape == ShapeClass::kPolygon && a.params.vertices.size() == 5 &&
+                          a.rejected.find("crosses itself") != std::string::npos);
+  }
+  EXPECT_TRUE(refused) << "the five-corner polygon is refused for crossing itself";
 }
 
 TEST(RecognizeSynthetic, HandwritingDoesNotSnap) {

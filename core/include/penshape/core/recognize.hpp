@@ -67,8 +67,9 @@
 // Classes. A stroke is closed when its end comes back near its start: the last point is within
 // 2 epsilon of the first fifth of the path, or the first point within 2 epsilon of the last fifth
 // (an overshooting circle passes its start). Closed strokes try the closed families (triangle,
-// quadrilateral, rectangle, square, diamond, regular polygon, circle, ellipse), open strokes the
-// open ones (segment, polyline of 2..max_polyline_segments segments, arc).
+// quadrilateral, rectangle, square, diamond, regular polygon, polygon of 5..8 corners, circle,
+// ellipse), open strokes the open ones (segment, polyline of 2..max_polyline_segments segments,
+// arc).
 //
 // A snap needs the certificate AND a plausible reading (so handwriting and gestures stay ink):
 //   - the shape is drawn once: the stroke is at most 1.6 times as long as the clean shape
@@ -81,8 +82,9 @@
 //   - every interior corner of an open polyline is at least epsilon / 2 from the chord of its
 //     neighbours;
 //   - an open polyline must not cross itself (x, alpha, delete marks are gestures);
-//   - every side of a polygon (triangle, quadrilateral, rectangle, square, diamond) is at least
-//     epsilon long, and every corner is at least epsilon from the chord of its two neighbours
+//   - a polygon of 5..8 corners does not cross itself (a star drawn in one stroke is no polygon);
+//   - every side of a polygon (triangle, quadrilateral, rectangle, square, diamond, polygon) is at
+//     least epsilon long, and every corner is at least epsilon from the chord of its two neighbours
 //     (otherwise the polygon with one corner less says the same within tolerance: a corner drawn
 //     round, or a bump on a side);
 //   - a regular polygon's corners must stand out from its circumcircle by at least epsilon / 2
@@ -93,9 +95,10 @@
 //     rank = (bound + 2 rms) / epsilon + 0.15 * (free parameters),
 // with rms the root-mean-square distance of the stroke to the clean shape (the mean error tells
 // a sloppy circle from a sloppy square better than the worst error does): a square (4) before a
-// rectangle (5) before a quadrilateral (8), a circle (3) before an ellipse (5), unless the richer
-// shape fits clearly better. `alternatives` lists every other candidate with its certificate (and
-// why it was rejected). Strokes with no plausible certified candidate are `freeform`.
+// rectangle (5) before a quadrilateral (8) before a polygon (2 per corner), a circle (3) before an
+// ellipse (5), unless the richer shape fits clearly better. `alternatives` lists every other
+// candidate with its certificate (and why it was rejected). Strokes with no plausible certified
+// candidate are `freeform`.
 //
 // Dots. A stroke whose samples all sit at one position is a `dot` (never an error): its clean
 // shape is that point, certified with bound 0 (the two paths coincide), in every entry
@@ -153,7 +156,8 @@ enum class ShapeClass {
   kArc,         // an open circular arc
   kArrow,       // a shaft and a head of two barbs (group_recognize.hpp, "Arrows")
   kDoubleArrow, // a shaft with a head at both ends
-  kDot          // every sample at one position (a full stop, a tap): the point itself
+  kDot,         // every sample at one position (a full stop, a tap): the point itself
+  kPolygon      // any other closed polygon of 5..8 corners (hexagons, pentagons as drawn)
 };
 
 const char* to_string(ShapeClass c); // "freeform", "segment", ..., "regular_polygon", ...
