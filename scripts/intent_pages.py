@@ -31,8 +31,10 @@ DOLLAR1 = {"arrow": "arrow", "circle": "circle", "rectangle": "rectangle", "tria
            "star": "freeform", "delete_mark": "freeform", "pigtail": "freeform",
            "left_sq_bracket": "freeform", "right_sq_bracket": "freeform",
            "left_curly_brace": "freeform", "right_curly_brace": "freeform"}
+# LowVision's "arrow_right" is the touch gesture ">" (a chevron with no shaft, as plotted): the
+# same glyph as MMG's "arrowhead", so labelled as that one is, not as an arrow.
 GESTURES = {"lowvision-circle": "circle", "lowvision-square": "rectangle",
-            "lowvision-arrow_right": "arrow", "lowvision-star": "freeform",
+            "lowvision-arrow_right": "freeform", "lowvision-star": "freeform",
             "lowvision-spiral": "freeform", "mmg-line": "segment", "mmgplus-line": "segment",
             "mmg-arrowhead": "freeform", "mmg-five_point_star": "freeform",
             "mmg-six_point_star": "freeform", "mmg-X": "freeform", "mmg-asterisk": "freeform",
