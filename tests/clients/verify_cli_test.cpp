@@ -3,11 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "generated_corpus.hpp"
 #include "generated_files.hpp"
@@ -15,6 +17,23 @@
 #include "test_data.hpp"
 
 namespace {
+
+// One stroke drawn through the corners in order, 30 samples a side, 10 ms apart (a JSON line).
+std::string polyline_stroke_json(const std::vector<std::array<double, 2>>& corners) {
+  std::string text = "{\"points\": [";
+  double t = 0;
+  for (std::size_t i = 0; i + 1 < corners.size(); ++i) {
+    for (int k = i == 0 ? 0 : 1; k <= 30; ++k, t += 0.01) {
+      const double f = k / 30.0;
+      char buf[96];
+      std::snprintf(buf, sizeof buf, "%s[%.6f, %.6f, %.3f]", text.back() == '[' ? "" : ", ",
+                    corners[i][0] + f * (corners[i + 1][0] - corners[i][0]),
+                    corners[i][1] + f * (corners[i + 1][1] - corners[i][1]), t);
+      text += buf;
+    }
+  }
+  return text + "]}\n";
+}
 
 using Result = penshape::test::CommandResult;
 
@@ -279,20 +298,12 @@ TEST(VerifyCli, BentArrowAnswerVerifiesAndAMovedBendDoesNot) {
                            tip[1] + 45 * std::sin(back + pi / 6)};
   const double barb2[2] = {tip[0] + 45 * std::cos(back - pi / 6),
                            tip[1] + 45 * std::sin(back - pi / 6)};
-  const double* corners[] = {tail, bend, tip, barb1, tip, barb2};
-  std::string text = "{\"points\": [";
-  double t = 0;
-  for (std::size_t i = 0; i + 1 < 6; ++i) {
-    for (int k = i == 0 ? 0 : 1; k <= 30; ++k, t += 0.01) {
-      const double f = k / 30.0;
-      char buf[96];
-      std::snprintf(buf, sizeof buf, "%s[%.6f, %.6f, %.3f]", text.back() == '[' ? "" : ", ",
-                    corners[i][0] + f * (corners[i + 1][0] - corners[i][0]),
-                    corners[i][1] + f * (corners[i + 1][1] - corners[i][1]), t);
-      text += buf;
-    }
-  }
-  text += "]}\n";
+  const std::string text = polyline_stroke_json({{tail[0], tail[1]},
+                                                 {bend[0], bend[1]},
+                                                 {tip[0], tip[1]},
+                                                 {barb1[0], barb1[1]},
+                                                 {tip[0], tip[1]},
+                                                 {barb2[0], barb2[1]}});
   const std::string strokes = write("hockey_stick.jsonl", text);
   const Result rec =
       penshape::test::run_command(cli() + " recognize --pen-radius 2 --tolerance 10 " + strokes +
@@ -321,20 +332,8 @@ TEST(VerifyCli, BentArrowAnswerVerifiesAndAMovedBendDoesNot) {
 // corners, `verify` accepts the answer, and the same answer with a corner moved 80 to the right
 // (epsilon is about 35) is refuted.
 TEST(VerifyCli, PolygonAnswerVerifiesAndAMovedCornerDoesNot) {
-  const double corners[][2] = {{0, 0}, {200, 0}, {200, 80}, {80, 80}, {80, 200}, {0, 200}, {0, 0}};
-  std::string text = "{\"points\": [";
-  double t = 0;
-  for (std::size_t i = 0; i + 1 < std::size(corners); ++i) {
-    for (int k = i == 0 ? 0 : 1; k <= 30; ++k, t += 0.01) {
-      const double f = k / 30.0;
-      char buf[96];
-      std::snprintf(buf, sizeof buf, "%s[%.6f, %.6f, %.3f]", text.back() == '[' ? "" : ", ",
-                    corners[i][0] + f * (corners[i + 1][0] - corners[i][0]),
-                    corners[i][1] + f * (corners[i + 1][1] - corners[i][1]), t);
-      text += buf;
-    }
-  }
-  text += "]}\n";
+  const std::string text =
+      polyline_stroke_json({{0, 0}, {200, 0}, {200, 80}, {80, 80}, {80, 200}, {0, 200}, {0, 0}});
   const std::string strokes = write("l_hexagon.jsonl", text);
   std::string answer;
   const Result ok = recognize_and_verify(strokes, &answer);

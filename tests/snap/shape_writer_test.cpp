@@ -1,0 +1,138 @@
+// Shapes written back by penshape snap (clients/snap/svg_writer.hpp, xopp_strokes.hpp), read
+// back and compared with the shape's known vertices (in the element's own coordinates): an
+// arrow's bent shaft keeps its bends; a polygon (ShapeClass::kPolygon, 5..8 corners) is an SVG
+// <polygon> through its corners and a Xournal++ stroke that closes on its first corner.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <pugixml.hpp>
+
+#include "snap/path_data.hpp"
+#include "snap/svg_strokes.hpp"
+#include "snap/svg_writer.hpp"
+#include "snap/xopp_strokes.hpp"
+
+namespace penshape::snap {
+namespace {
+
+// A certified recognition of `shape` with these vertices (root coordinates), ε 5, bound 1.
+Recognition certified(ShapeClass shape, std::vector<PointD> vertices) {
+  Recognition r;
+  r.shape = shape;
+  r.params.vertices = std::move(vertices);
+  r.certificate.certified = true;
+  r.certificate.epsilon = 5;
+  r.certificate.bound = 1;
+  r.certificate.pen_radius = 1;
+  return r;
+}
+
+// An arrow: shaft (20, 10) -> (80, 10) -> (120, -20), barbs at the tip.
+Recognition bent_arrow() {
+  Recognition r = certified(ShapeClass::kArrow, {{20, 10}, {120, -20}, {110, -6}, {104, -14}});
+  r.params.shaft_bends = {{80, 10}};
+  return r;
+}
+
+// An L-shaped hexagon.
+Recognition l_hexagon() {
+  return certified(ShapeClass::kPolygon, {{0, 0}, {40, 0}, {40, 16}, {16, 16}, {16, 40}, {0, 40}});
+}
+
+// The one stroke of an SVG document, replaced by `r`.
+pugi::xml_node replaced_svg(pugi::xml_document& doc, const std::string& text,
+                            const Recognition& r) {
+  EXPECT_TRUE(doc.load_string(text.c_str()));
+  std::vector<std::string> warnings;
+  const std::vector<SvgPage> pages = read_svg_strokes(doc, text, {}, warnings);
+  if (pages.size() != 1 || pages[0].strokes.size() != 1) {
+    ADD_FAILURE() << "expected one stroke";
+    return {};
+  }
+  return replace_svg_stroke(pages[0].strokes[0], r, 1.0);
+}
+
+// The one stroke of a Xournal++ page, replaced by `r`: its points as written.
+std::string replaced_xopp(const std::string& text, const Recognition& r) {
+  pugi::xml_document doc;
+  EXPECT_TRUE(doc.load_string(text.c_str()));
+  std::vector<std::string> warnings;
+  const std::vector<XoppLayer> layers = read_xopp_strokes(doc, text, warnings);
+  if (layers.size() != 1 || layers[0].strokes.size() != 1) {
+    ADD_FAILURE() << "expected one stroke";
+    return {};
+  }
+  replace_xopp_stroke(layers[0].strokes[0], r, 0.75);
+  return doc.child("xournal").child("page").child("layer").child("stroke").child_value();
+}
+
+// The numbers of a list separated by spaces or commas.
+std::vector<double> numbers(const std::string& text) {
+  std::vector<double> out;
+  std::size_t at = 0;
+  double v = 0;
+  int used = 0;
+  while (std::sscanf(text.c_str() + at, "%lf%n", &v, &used) == 1 ||
+         std::sscanf(text.c_str() + at, ",%lf%n", &v, &used) == 1) {
+    out.push_back(v);
+    at += static_cast<std::size_t>(used);
+  }
+  return out;
+}
+
+std::string xopp_page(const std::string& points) {
+  return "<xournal><page width='200' height='200'><layer>"
+         "<stroke tool='pen' color='#000000ff' width='1.5'>" +
+         points + "</stroke></layer></page></xournal>";
+}
+
+TEST(ArrowWriter, SvgPathHoldsTheShaftsBend) {
+  // The stroke sits in a group moved by (10, 5): the path is written in its own coordinates.
+  pugi::xml_document doc;
+  const pugi::xml_node out = replaced_svg(
+      doc,
+      "<svg xmlns='http://www.w3.org/2000/svg'><g transform='translate(10,5)'>"
+      "<path id='s' d='M 10,5 L 70,5 L 110,-25' style='fill:none;stroke:#000;stroke-width:2'/>"
+      "</g></svg>",
+      bent_arrow());
+  EXPECT_STREQ(out.name(), "path");
+  EXPECT_STREQ(out.attribute("id").value(), "s");
+  EXPECT_STREQ(out.attribute("data-penshape-class").value(), "arrow");
+  const std::vector<Subpath> sub = parse_path_data(out.attribute("d").value(), 0.01);
+  ASSERT_EQ(sub.size(), 2u); // the shaft, the head
+  EXPECT_EQ(sub[0].points, (std::vector<PointD>{{10, 5}, {70, 5}, {110, -25}}));
+  EXPECT_EQ(sub[1].points, (std::vector<PointD>{{100, -11}, {110, -25}, {94, -19}}));
+}
+
+TEST(ArrowWriter, XournalStrokeHoldsTheShaftsBend) {
+  const std::string pts = replaced_xopp(xopp_page("20 10 80 10 120 -20"), bent_arrow());
+  // One line through every piece: shaft with its bend, then the head (the tip retraced).
+  EXPECT_EQ(numbers(pts),
+            (std::vector<double>{20, 10, 80, 10, 120, -20, 110, -6, 120, -20, 104, -14}));
+}
+
+TEST(PolygonWriter, SvgPolygonThroughTheCorners) {
+  pugi::xml_document doc;
+  const pugi::xml_node out =
+      replaced_svg(doc,
+                   "<svg xmlns='http://www.w3.org/2000/svg'>"
+                   "<path id='s' d='M 0,0 L 40,1 L 39,16 L 16,15 L 16,40 L 0,39 Z' "
+                   "style='fill:none;stroke:#000;stroke-width:2'/></svg>",
+                   l_hexagon());
+  EXPECT_STREQ(out.name(), "polygon");
+  EXPECT_STREQ(out.attribute("data-penshape-class").value(), "polygon");
+  const std::string pts = out.attribute("points").value();
+  EXPECT_EQ(numbers(pts), (std::vector<double>{0, 0, 40, 0, 40, 16, 16, 16, 16, 40, 0, 40})) << pts;
+}
+
+TEST(PolygonWriter, XournalStrokeClosesOnItsFirstCorner) {
+  const std::string pts =
+      replaced_xopp(xopp_page("0 0 40 1 39 16 16 15 16 40 0 39 0 0"), l_hexagon());
+  EXPECT_EQ(numbers(pts), (std::vector<double>{0, 0, 40, 0, 40, 16, 16, 16, 16, 40, 0, 40, 0, 0}));
+}
+
+} // namespace
+} // namespace penshape::snap
