@@ -1,10 +1,10 @@
-// Clipper's union as the ink polygon runs it (core/src/ink/ink_union.hpp) measured against the exact
-// union with exact rational arithmetic. On adversarial unions (thin strips crossing at every angle,
-// nearly parallel ones, coordinates up to 10^17 grid units) a lower bound on the Hausdorff distance
-// between Clipper's output O and the exact union S of its inputs is computed exactly: the distance
-// of every vertex of O outside S to S, and of every exact crossing of input edges and every input
-// vertex outside O to O. At 10^17 that distance exceeds the half grid diagonal the grid term counts
-// (so the union needs its arithmetic term), and it stays within the half diagonal plus
+// Clipper's union as the ink polygon runs it (core/src/ink/ink_union.hpp) measured against the
+// exact union with exact rational arithmetic. On adversarial unions (thin strips crossing at every
+// angle, nearly parallel ones, coordinates up to 10^17 grid units) a lower bound on the Hausdorff
+// distance between Clipper's output O and the exact union S of its inputs is computed exactly: the
+// distance of every vertex of O outside S to S, and of every exact crossing of input edges and
+// every input vertex outside O to O. At 10^17 that distance exceeds the half grid diagonal the grid
+// term counts (so the union needs its arithmetic term), and it stays within the half diagonal plus
 // clipper_union_arithmetic; at drawing-sized coordinates within the half diagonal alone. The ink
 // bound itself adds the term once per union.
 #include <gtest/gtest.h>
