@@ -151,6 +151,15 @@ TEST(PolygonText, XyRingsNestIntoHolesAndIslands) {
   EXPECT_NO_THROW(validate_region(q));
 }
 
+// Rings whose first points lie on each other's edges each count as inside the other: no ring
+// is an outer one. Found by the file readers' fuzzer (an out-of-range index); now each ring
+// stands alone, and validation says the region is invalid.
+TEST(PolygonText, RingsInsideEachOtherAreReadAndRefusedByValidation) {
+  const PolygonSet q = read_xy("0 0\n1.5 0\n1.5 12\n\n0 0\n1.5 0\n1.5 12\n0 12\n");
+  ASSERT_EQ(q.polygons.size(), 2U);
+  EXPECT_THROW(validate_region(q), InvalidInput);
+}
+
 TEST(PolygonText, NumbersAreExact) {
   EXPECT_EQ(parse_rational("0.1"), Rational(1, 10));
   EXPECT_EQ(parse_rational("-2.5e-3"), Rational(-1, 400));

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <optional>
 #include <vector>
 
 namespace penshape {
@@ -118,12 +119,17 @@ PolygonSet assemble_by_nesting(std::vector<Ring> rings) {
   }
   for (std::size_t i = 0; i < n; ++i) {
     if (depth[i] % 2 == 1) {
-      // The parent is the container one level up.
-      std::size_t parent = 0;
+      // The parent is the container one level up. Rings that contain each other (they touch
+      // or overlap: invalid, and said so by validation) may leave none: the ring stands alone.
+      std::optional<std::size_t> parent;
       for (std::size_t c : containers[i]) {
         if (depth[c] + 1 == depth[i]) parent = c;
       }
-      set.polygons[polygon_of[parent]].holes.push_back(std::move(rings[i]));
+      if (parent) {
+        set.polygons[polygon_of[*parent]].holes.push_back(std::move(rings[i]));
+      } else {
+        set.polygons.push_back({std::move(rings[i]), {}});
+      }
     }
   }
   normalize_orientation(set);
