@@ -162,7 +162,8 @@ Recording read_hid_recorder(std::string_view text) {
       while (!rest.empty() && (is_space(rest.back()) || rest.back() == '\r')) {
         rest.remove_suffix(1);
       }
-      (tag == "N:" ? rec.identity.name : rec.phys) = std::string(rest);
+      // A lone carriage return inside reads as the blank the writer makes of it (round trips).
+      (tag == "N:" ? rec.identity.name : rec.phys) = single_line(std::string(rest));
     } else if (tag == "I:") {
       if (tokens.size() != 4) throw RecordingError(line.offset, "I: needs bus, vid and pid");
       rec.identity.bus = static_cast<Bus>(parse_number<std::uint16_t>(tokens[1], 16, "bus"));

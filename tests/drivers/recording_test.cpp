@@ -54,6 +54,15 @@ TEST(Recording, WriteThenReadIsIdentical) {
   EXPECT_EQ(write_hid_recorder(back), text);
 }
 
+// A carriage return inside a name or physical path reads as the blank the writer writes for it,
+// so the file round trips (found by the recording fuzzer).
+TEST(Recording, CarriageReturnInsideAHeaderValueRoundTrips) {
+  const Recording r = read_hid_recorder("P: usb 1\r2 x\nN: pen\rone\nE: 0 0\n");
+  EXPECT_EQ(r.phys, "usb 1 2 x");
+  EXPECT_EQ(r.identity.name, "pen one");
+  EXPECT_EQ(read_hid_recorder(write_hid_recorder(r)), r);
+}
+
 TEST(Recording, DigimendDumpRoundTripsThroughHidRecorder) {
   PENSHAPE_SHARED_OR_SKIP(file, "hid/digimend-tablets/Huion_HS610/dumps/enabled/pen_pressure.txt");
   const auto dump = read_usbhid_dump(read_file(file));
