@@ -391,7 +391,7 @@ void print_stages(bool json, const StrokeSet& set, int rounds,
 
 void print_phase(bool json, const std::string& t, const PhaseResult& phase) {
   print_row(json, ("pen-up -> shape at gRPC subscriber" + t).c_str(), percentiles(phase.penup_ms),
-            "ms", "(target p99 <= 16 ms)");
+            "ms", "(target p99 <= 8 ms)");
   print_row(json, ("  of it: stroke waiting for its strand" + t).c_str(),
             percentiles(phase.queued_ms), "ms", "");
   print_row(json, ("  of it: strand analysing and grouping" + t).c_str(),

@@ -1,6 +1,8 @@
 // Stroke and shape ids behind a grouping session's indices (group_history.hpp).
 #include "group_history.hpp"
 
+#include <atomic>
+
 #include "penshape/daemon/grouping_settings.hpp"
 
 namespace penshape::daemon {
@@ -8,7 +10,9 @@ namespace penshape::daemon {
 bool GroupHistory::ensure(StrokeAnalyzer& analyzer, const PenSettings& settings,
                           const GroupingConfig& grouping) {
   if (session_ && settings_ == settings && same_grouping(grouping_, grouping)) return true;
+  static std::atomic<std::uint64_t> epochs{0};
   *this = GroupHistory{};
+  epoch_ = ++epochs;
   session_ = analyzer.group_session(settings, grouping);
   settings_ = settings;
   grouping_ = grouping;
@@ -64,6 +68,7 @@ GroupHistory GroupHistory::copy() const {
   out.session_ = session_ ? session_->clone() : nullptr;
   out.settings_ = settings_;
   out.grouping_ = grouping_;
+  out.epoch_ = epoch_;
   out.stroke_ids_ = stroke_ids_;
   out.answers_ = answers_;
   return out;

@@ -51,6 +51,9 @@ class GroupHistory {
   // For previews: a copy whose session is independent, and what its indices stand for.
   [[nodiscard]] GroupHistory copy() const;
   [[nodiscard]] StrokeGroupSession* session() const { return session_.get(); }
+  // Which start afresh this history (or the one it was copied from) is on: ensure() changes it
+  // whenever it starts afresh, so work prepared on an older history is known to be stale.
+  [[nodiscard]] std::uint64_t epoch() const { return epoch_; }
   // The stroke id at a session index, or `otherwise` when not known.
   [[nodiscard]] std::uint64_t stroke_id(std::size_t index, std::uint64_t otherwise) const;
   // The shape id of a session answer, or 0 when not known.
@@ -68,6 +71,7 @@ class GroupHistory {
     std::uint64_t sequence = 0;
   };
   std::unique_ptr<StrokeGroupSession> session_;
+  std::uint64_t epoch_ = 0;
   PenSettings settings_;
   GroupingConfig grouping_;
   std::map<std::size_t, std::uint64_t> stroke_ids_; // by session stroke index

@@ -12,6 +12,21 @@
 
 namespace penshape::daemon {
 
+// The stroke up to a hold recognized on a copy of a grouping (not yet taken: nothing published).
+struct HoldTrial {
+  GroupHistory history; // the copy, with the stroke added
+  GroupedStrokeAnalysis result;
+};
+// Recognizes `partial` with `history`'s recent strokes, on a copy. Throws as
+// StrokeGroupSession::add. `history` must group (session() non-null).
+HoldTrial try_hold(const GroupHistory& history, const Stroke& partial, const CancelHook& cancel,
+                   const InkOffload& offload);
+// snap_at_hold's second half: `trial` (of `history` as it is now, for the stroke `stroke_id`)
+// taken as the hold's answer when it is a certified shape.
+std::optional<v1::LiveEvent> take_hold(GroupHistory& history, HoldTrial trial,
+                                       std::uint64_t stroke_id, HoldState& hold,
+                                       std::atomic<std::uint64_t>& next_shape_id);
+
 // Recognizes `partial` (the stroke up to the hold) with `history`'s recent strokes. On a certified
 // shape, fills `hold` (the shape, its certificate's scope "drawn_part", its new shape_id, replaced
 // strokes, tidy-up, ink) and returns its HOLD event (device id and timings left to the caller, who

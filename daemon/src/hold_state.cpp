@@ -17,15 +17,23 @@ PointMm sample_mm(const PenSample& s, const TabletInfo& tablet) {
 }
 
 bool HoldDetector::add(const PenSample& s) {
+  last_us_ = s.time_us;
   const PointMm p = sample_mm(s, tablet_);
   if (!anchored_ || distance(p, anchor_) > radius_mm_ || s.time_us < anchor_us_) {
     anchored_ = true; // the pen moved: a hold starts here at the earliest
+    settle_told_ = false;
     anchor_ = p;
     anchor_us_ = s.time_us;
     return false;
   }
   if (s.time_us - anchor_us_ < hold_us_) return false;
   anchored_ = false;
+  return true;
+}
+
+bool HoldDetector::settled() {
+  if (!anchored_ || settle_told_ || last_us_ - anchor_us_ < hold_us_ / 4) return false;
+  settle_told_ = true;
   return true;
 }
 

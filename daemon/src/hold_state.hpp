@@ -5,6 +5,7 @@
 // final shape) and the reader thread (which makes the snapped shape follow the pen meanwhile).
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -33,14 +34,21 @@ class HoldDetector {
   // A tip-down sample: true when the pen has now stayed within hold_radius_mm of one point for
   // hold_ms; the next hold then needs hold_ms more from the following sample.
   bool add(const PenSample& s);
-  // After add() said true: when the pen came to rest (the hold's first sample's time).
+  // After add() said true: when the pen came to rest (the hold's first sample's time). Also
+  // while it rests (settled()).
   [[nodiscard]] std::int64_t held_since_us() const { return anchor_us_; }
+  // True once per rest, after the add() at which the pen has rested a quarter of hold_ms: the
+  // stroke drawn before the rest is then what a hold would snap, so the strand may recognize it
+  // ahead (LiveGrouping::prepare_hold) and the hold publish at once.
+  bool settled();
 
  private:
   std::int64_t hold_us_;
   double radius_mm_;
   TabletInfo tablet_;
   bool anchored_ = false;
+  bool settle_told_ = false; // settled() said true for this rest
+  std::int64_t last_us_ = 0; // the last add()'s sample time
   PointMm anchor_;
   std::int64_t anchor_us_ = 0;
 };
@@ -60,7 +68,12 @@ struct HoldState {
   std::uint64_t sequence = 0; // its LiveEvent sequence
   std::vector<std::uint64_t> replaced_stroke_ids;
   std::vector<std::string> tidy;
-  v1::PolygonSet ink; // of the stroke up to the hold
+  // The ink of the stroke up to the hold. A tablet's strand publishes the HOLD shape before Q is
+  // built when the shape did not read it (ink_later), then fills `ink` after kSnapped: only that
+  // strand reads `ink` (at release), never the reader thread's follow updates.
+  v1::PolygonSet ink;
+  std::function<v1::PolygonSet()> ink_later;
+  std::string ink_error; // when building Q failed after the shape was out
   bool grouped = false;
   std::size_t answer = 0; // the grouping's id of this answer (when grouped)
 };

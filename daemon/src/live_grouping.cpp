@@ -38,6 +38,12 @@ void LiveGrouping::hold(const std::string& device_id, Stroke partial,
           {std::move(partial), std::chrono::steady_clock::now(), std::move(hold), true, false});
 }
 
+void LiveGrouping::prepare_hold(const std::string& device_id, Stroke partial) {
+  Pending pending{std::move(partial), std::chrono::steady_clock::now(), nullptr, false, false};
+  pending.is_prepare = true;
+  enqueue(device_id, std::move(pending));
+}
+
 void LiveGrouping::enqueue(const std::string& device_id, Pending pending) {
   std::shared_ptr<Lane> lane;
   {
@@ -67,6 +73,7 @@ void LiveGrouping::enqueue(const std::string& device_id, Pending pending) {
     lane->running = false;
   }
   for (const Pending& p : refused) {
+    if (p.is_prepare) continue; // work ahead only
     if (p.is_hold) {
       std::lock_guard hold_lock(p.hold->mutex);
       p.hold->phase = HoldState::Phase::kNothing; // not snapped: the stroke goes on
@@ -100,8 +107,14 @@ void LiveGrouping::process(Lane& lane, const std::string& device_id, const Pendi
     std::lock_guard lock(pending.hold->mutex);
     snapped_hold = pending.hold->phase == HoldState::Phase::kSnapped;
   }
+  if (pending.is_prepare) { // work ahead: publishes nothing, changes no grouping
+    prepare(lane, device_id, pending);
+    return;
+  }
+  // Anything but the hold it was prepared for changes the grouping it was prepared on.
+  std::optional<PreparedHold> prepared = std::exchange(lane.prepared, std::nullopt);
   if (pending.is_hold) {
-    snap_hold(lane, device_id, pending);
+    snap_hold(lane, device_id, pending, std::move(prepared));
   } else if (snapped_hold) {
     release(lane, device_id, pending);
   } else {
@@ -156,16 +169,53 @@ void LiveGrouping::analyse(Lane& lane, const std::string& device_id, const Pendi
 
 // The stroke so far is added to a copy of the grouping; only a certified shape makes the copy
 // the device's grouping (the stroke then counts as drawn up to the hold), else nothing changed.
-void LiveGrouping::snap_hold(Lane& lane, const std::string& device_id, const Pending& pending) {
+// The hold's stroke recognized ahead, on a copy of the grouping; kept in lane.prepared for the
+// hold. Given up (nothing kept) when a pen-up or another rest is queued behind it.
+void LiveGrouping::prepare(Lane& lane, const std::string& /*device_id*/, const Pending& pending) {
+  lane.prepared.reset();
+  GroupHistory& h = lane.history;
+  const Stroke& partial = pending.stroke;
+  if (partial.samples.empty()) return;
+  if (!h.ensure(*state_.analyzer, settings_for(state_, partial.tablet), state_.grouping.get())) {
+    return;
+  }
+  const auto started = std::chrono::steady_clock::now();
+  const StopCondition stop(started + std::chrono::seconds(state_.limits.max_call_seconds), {});
+  const CancelHook stopped = cancel_hook(stop);
+  const CancelHook cancel = [&lane, stopped] {
+    if (stopped && stopped()) return true;
+    std::lock_guard lock(lane.mutex);
+    return !lane.queue.empty() && !lane.queue.front().is_hold;
+  };
+  InkOffload offload = ink_offload(state_.stroke_pool);
+  offload.shape_first = true; // Q is waited for once the shape is out
+  try {
+    lane.prepared = PreparedHold{partial.id, partial.samples.size(), partial.samples.back().time_us,
+                                 h.epoch(), try_hold(h, partial, cancel, offload)};
+  } catch (...) {
+    lane.prepared.reset(); // cancelled or refused: the hold (if any) recognizes anew
+  }
+}
+
+void LiveGrouping::snap_hold(Lane& lane, const std::string& device_id, const Pending& pending,
+                             std::optional<PreparedHold> prepared) {
   const auto started = std::chrono::steady_clock::now();
   HoldState& hold = *pending.hold;
   GroupHistory& h = lane.history;
   h.ensure(*state_.analyzer, settings_for(state_, pending.stroke.tablet), state_.grouping.get());
+  const Stroke& partial = pending.stroke;
+  const bool ready = prepared && prepared->stroke_id == partial.id &&
+                     prepared->samples == partial.samples.size() && !partial.samples.empty() &&
+                     prepared->last_time_us == partial.samples.back().time_us &&
+                     prepared->epoch == h.epoch() && h.session() != nullptr;
   const StopCondition stop(started + std::chrono::seconds(state_.limits.max_call_seconds), {});
   std::optional<v1::LiveEvent> event;
   try {
-    event = snap_at_hold(h, pending.stroke, hold, state_.next_shape_id, cancel_hook(stop),
-                         ink_offload(state_.stroke_pool));
+    InkOffload offload = ink_offload(state_.stroke_pool);
+    offload.shape_first = true; // as at pen-up: a shape that read no Q does not wait for it
+    event = ready
+                ? take_hold(h, std::move(prepared->trial), partial.id, hold, state_.next_shape_id)
+                : snap_at_hold(h, partial, hold, state_.next_shape_id, cancel_hook(stop), offload);
   } catch (...) {
     event.reset(); // cancelled or refused: as if the pen had not held
   }
@@ -180,8 +230,23 @@ void LiveGrouping::snap_hold(Lane& lane, const std::string& device_id, const Pen
     hold.sequence = state_.hub.publish(std::move(*event));
     h.rename(hold.answer, hold.shape_id, hold.sequence);
   }
-  std::lock_guard lock(hold.mutex);
-  hold.phase = snapped ? HoldState::Phase::kSnapped : HoldState::Phase::kNothing;
+  {
+    std::lock_guard lock(hold.mutex);
+    hold.phase = snapped ? HoldState::Phase::kSnapped : HoldState::Phase::kNothing;
+  }
+  if (snapped) wait_hold_ink(hold);
+}
+
+// The held shape is out (and may already follow the pen): now the ink it did not read, for the
+// StrokeFinished at release. Should Q fail, the shape stands (certified on the path).
+void LiveGrouping::wait_hold_ink(HoldState& hold) {
+  if (!hold.ink_later) return;
+  try {
+    hold.ink = hold.ink_later();
+  } catch (const std::exception& e) {
+    hold.ink_error = std::string("ink polygon failed: ") + e.what();
+  }
+  hold.ink_later = nullptr;
 }
 
 // Pen-up after a snapped hold: the final shape is the held one moved by the drag, if any.
@@ -194,6 +259,7 @@ void LiveGrouping::release(Lane& lane, const std::string& device_id, const Pendi
   v1::StrokeFinished* f = finished.mutable_stroke_finished();
   to_proto(stroke, f->mutable_stroke());
   *f->mutable_ink_polygon() = hold.ink; // the ink the shape certifies: drawn up to the hold
+  f->set_not_analysed(hold.ink_error);
   state_.hub.publish(std::move(finished));
 
   const Drag drag = drag_after_hold(stroke, hold);

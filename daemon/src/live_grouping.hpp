@@ -63,6 +63,11 @@ class LiveGrouping {
   // finished before it: its grouped, certified shape is published at once (HOLD) and `hold`
   // told what it snapped (HoldState::Phase).
   void hold(const std::string& device_id, Stroke partial, std::shared_ptr<HoldState> hold);
+  // Queues the stroke drawn before the pen came to rest (it has rested a while, not yet a hold):
+  // the strand recognizes it ahead, unpublished, and a hold that follows on the same rest, with
+  // nothing else run on the strand between, publishes that answer at once. A pen-up or another
+  // rest queued meanwhile cancels the work (it never delays a pen-up by more than a check).
+  void prepare_hold(const std::string& device_id, Stroke partial);
   // The device is gone: its grouping is forgotten (unless its strand still runs).
   void forget_device(const std::string& device_id);
   // The certified group the stroke in progress would complete with its device's recent strokes
@@ -77,6 +82,15 @@ class LiveGrouping {
     std::shared_ptr<HoldState> hold; // the stroke's hold, if any
     bool is_hold = false;            // the stroke so far of `hold` (else a finished stroke)
     bool hold_only = false;          // snap_trigger = hold
+    bool is_prepare = false;         // the stroke before a rest, to recognize ahead
+  };
+  // A rest's stroke recognized ahead (prepare_hold), for the hold that may follow.
+  struct PreparedHold {
+    std::uint64_t stroke_id = 0;
+    std::size_t samples = 0;
+    std::int64_t last_time_us = 0;
+    std::uint64_t epoch = 0; // the grouping's (GroupHistory::epoch)
+    HoldTrial trial;
   };
   struct Lane {
     std::mutex mutex;
@@ -86,13 +100,17 @@ class LiveGrouping {
     // grouping window can reach, so a long session's memory (and a preview's copy) stay bounded.
     GroupHistory history;
     std::shared_ptr<const GroupHistory> snapshot; // for previews, guarded by mutex
+    std::optional<PreparedHold> prepared;         // used by the running strand job only
   };
 
   void enqueue(const std::string& device_id, Pending pending);
   void run_strand(const std::shared_ptr<Lane>& lane, const std::string& device_id);
   void process(Lane& lane, const std::string& device_id, const Pending& pending);
   void analyse(Lane& lane, const std::string& device_id, const Pending& pending);
-  void snap_hold(Lane& lane, const std::string& device_id, const Pending& pending);
+  void prepare(Lane& lane, const std::string& device_id, const Pending& pending);
+  void snap_hold(Lane& lane, const std::string& device_id, const Pending& pending,
+                 std::optional<PreparedHold> prepared);
+  static void wait_hold_ink(HoldState& hold);
   void release(Lane& lane, const std::string& device_id, const Pending& pending);
   void publish_finished(const std::string& device_id, const Stroke& stroke,
                         const v1::PolygonSet& ink);

@@ -97,8 +97,18 @@ void Pipeline::sample(const std::string& device_id, std::uint64_t stroke_id,
     work = on_hold_sample(device_id, it->second, sample);
   }
   // Outside mutex_: the strand's accounting takes it (job_started).
+  if (work.prepare) grouping_.prepare_hold(device_id, std::move(*work.prepare));
   if (work.snap) grouping_.hold(device_id, std::move(*work.snap), std::move(work.hold));
   if (work.follow) state_.hub.publish(std::move(*work.follow));
+}
+
+// Called with mutex_ held: the stroke drawn before the pen came to rest (its tremor while it
+// rests is not drawing).
+Stroke Pipeline::drawn_before_rest(Drawing& drawing) {
+  Stroke drawn = assemble(drawing.stroke_id, drawing.tablet, drawing.seal(), drawing.samples);
+  const std::int64_t rest = drawing.detector->held_since_us();
+  while (drawn.samples.size() > 2 && drawn.samples.back().time_us > rest) drawn.samples.pop_back();
+  return drawn;
 }
 
 // Called with mutex_ held, for each sample kept. Before the hold: is it satisfied now? After a
@@ -110,18 +120,17 @@ Pipeline::HoldWork Pipeline::on_hold_sample(const std::string& device_id, Drawin
   if (!drawing.detector || !sample.tip) return work;
   const PointMm tip = sample_mm(sample, drawing.tablet);
   if (!drawing.hold) {
-    if (!drawing.detector->add(sample)) return work;
+    if (!drawing.detector->add(sample)) {
+      if (drawing.detector->settled()) work.prepare = drawn_before_rest(drawing);
+      return work;
+    }
     drawing.hold = std::make_shared<HoldState>();
     drawing.hold->time_us = sample.time_us;
     drawing.hold->point = tip;
     drawing.hold->radius_mm = drawing.hold_radius_mm;
     drawing.gate = {};
-    work.snap = assemble(drawing.stroke_id, drawing.tablet, drawing.seal(), drawing.samples);
-    // The stroke drawn is what came before the pen rested (its tremor while held is not drawing).
-    std::vector<PenSample>& drawn = work.snap->samples;
-    const std::int64_t rest = drawing.detector->held_since_us();
-    while (drawn.size() > 2 && drawn.back().time_us > rest) drawn.pop_back();
-    drawing.hold->samples = drawn.size();
+    work.snap = drawn_before_rest(drawing);
+    drawing.hold->samples = work.snap->samples.size();
     work.hold = drawing.hold;
     return work;
   }

@@ -99,9 +99,11 @@ class Pipeline final : public SampleSink {
   struct HoldWork {
     std::optional<v1::LiveEvent> follow; // a FOLLOW update to publish
     std::optional<Stroke> snap;          // the stroke so far to snap (the hold is satisfied)
+    std::optional<Stroke> prepare;       // the same, to recognize ahead (the pen settled)
     std::shared_ptr<HoldState> hold;
   };
   HoldWork on_hold_sample(const std::string& device_id, Drawing& drawing, const PenSample& sample);
+  static Stroke drawn_before_rest(Drawing& drawing);
   void job_started();
   void job_done();
   void maybe_preview(const std::string& device_id, Drawing& drawing);

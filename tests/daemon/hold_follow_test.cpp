@@ -76,6 +76,27 @@ TEST(HoldDetector, MovingPenNeverHolds) {
   }
 }
 
+TEST(HoldDetector, SettlesOncePerRestAfterAQuarterOfHoldMs) {
+  d::PenSettings settings; // hold_ms 500, hold_radius_mm 1
+  d::HoldDetector detector(settings, tablet_mm(100));
+  std::vector<std::int64_t> settled; // the rest's age (us) at each settled()
+  std::int64_t rest = 0;
+  std::int64_t t = 0;
+  const auto add = [&](double x_mm) {
+    EXPECT_FALSE(detector.add(at(x_mm, 10, t, 100)));
+    if (detector.settled()) settled.push_back(t - rest);
+  };
+  for (; t < 200000; t += 1000) add(10 + 0.1 * static_cast<double>(t) / 1000); // moving
+  EXPECT_TRUE(settled.empty()) << "a moving pen never settles";
+  rest = t;
+  for (; t < rest + 300000; t += 1000) add(40); // rests 0.3 s: settles once
+  rest = t;
+  for (; t < rest + 300000; t += 1000) add(45); // rests again elsewhere: once more
+  ASSERT_EQ(settled.size(), 2U);
+  EXPECT_EQ(settled[0], 125000);
+  EXPECT_EQ(settled[1], 125000);
+}
+
 TEST(HoldDrag, TremorIsNotADragLeavingTheRadiusIs) {
   d::HoldState hold;
   hold.point = {40, 10};
