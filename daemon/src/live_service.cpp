@@ -9,7 +9,7 @@
 #include "geometry_service.hpp"
 #include "penshape/daemon/proto_convert.hpp"
 #include "pipeline.hpp"
-#include "stream_hold.hpp"
+#include "sample_stream.hpp"
 #include "thread_scheduling.hpp"
 
 namespace penshape::daemon {
@@ -210,148 +210,7 @@ grpc::Status LiveServiceImpl::StreamSamples(
   nothing.strokes = false;
   std::unique_ptr<Subscription> slot;
   if (grpc::Status s = subscribe(nothing, 1, &slot); !s.ok()) return s;
-
-  v1::StreamSamplesRequest message;
-  if (!stream->Read(&message)) return grpc::Status::OK;
-  if (message.kind_case() != v1::StreamSamplesRequest::kStart) {
-    return {grpc::StatusCode::INVALID_ARGUMENT, "start: the first message must be a StreamStart"};
-  }
-  TabletInfo tablet;
-  PenSettings settings;
-  try {
-    tablet = tablet_from_proto(message.start().tablet(), "start.tablet", true);
-    settings = apply(settings_for(state_, tablet),
-                     settings_update_from_proto(message.start().settings(), "start.settings"));
-  } catch (...) {
-    return status_from_current_exception(nullptr);
-  }
-
-  // Strokes run from tip down to tip up (stroke.hpp), the segmenter's rule for one pen.
-  std::optional<Stroke> current;
-  std::int64_t last_time = INT64_MIN;
-  auto write_event = [&](v1::LiveEvent event) {
-    event.set_published_us(monotonic_us());
-    event.set_device_id("stream");
-    return stream->Write(event);
-  };
-  // The stream's own grouping: its strokes group with each other only.
-  GroupHistory grouping;
-  StreamHold hold(settings, state_.analyzer != nullptr); // hold to snap (StreamStart settings)
-  auto finish_stroke = [&]() -> grpc::Status {
-    Stroke stroke = std::move(*current);
-    current.reset();
-    // A stroke that snapped at a hold: its final shape stands for the analysis.
-    std::vector<v1::LiveEvent> released = hold.release(stroke, grouping, state_.next_shape_id);
-    for (auto& e : released) {
-      if (!write_event(std::move(e))) return grpc::Status::CANCELLED;
-    }
-    if (!released.empty()) return grpc::Status::OK;
-    GroupedStrokeAnalysis result;
-    StrokeAnalysis& analysis = result.analysis;
-    v1::Timings timings;
-    std::string not_analysed;
-    if (state_.analyzer) {
-      const grpc::Status s =
-          analyze_grouped(state_, context, grouping, stroke, settings, &result, &timings);
-      if (!s.ok()) return s;
-    } else {
-      not_analysed = "this build has no stroke analyzer (ink polygon and recognizer)";
-    }
-    v1::LiveEvent finished;
-    v1::StrokeFinished* f = finished.mutable_stroke_finished();
-    to_proto(stroke, f->mutable_stroke());
-    f->set_not_analysed(not_analysed);
-    if (state_.analyzer) *f->mutable_ink_polygon() = analysis.ink_polygon;
-    if (!write_event(std::move(finished))) return grpc::Status::CANCELLED;
-    if (state_.analyzer && analysis.shape.kind() != v1::SHAPE_KIND_UNSPECIFIED) {
-      v1::LiveEvent shape;
-      v1::ShapeRecognized* r = shape.mutable_shape();
-      const GroupAnswer answer = grouping.take(result, stroke.id); // reads the shape: first
-      r->set_stroke_id(stroke.id);
-      *r->mutable_shape() = std::move(analysis.shape);
-      for (auto& alternative : analysis.alternatives) *r->add_alternatives() = alternative;
-      *r->mutable_timings() = timings;
-      const std::uint64_t shape_id = ++state_.next_shape_id;
-      set_group_fields(answer, result.tidy, shape_id, r);
-      for (std::size_t i = 0; i < answer.supersedes_shape_ids.size(); ++i) {
-        r->add_supersedes_sequences(0); // the stream's events are not published
-      }
-      r->set_trigger(v1::SHAPE_TRIGGER_PEN_UP);
-      grouping.remember(result, shape_id, 0);
-      // snap_trigger = hold: grouped (a later held stroke may complete a shape), not snapped.
-      if (!hold.hold_only() && !write_event(std::move(shape))) return grpc::Status::CANCELLED;
-    }
-    return grpc::Status::OK;
-  };
-
-  // Previews: the stroke in progress after a batch, at the pipeline's pace.
-  const bool previews = message.start().include_previews() && state_.analyzer;
-  auto last_preview = std::chrono::steady_clock::time_point{};
-  auto maybe_preview = [&]() -> bool {
-    const auto now = std::chrono::steady_clock::now();
-    if (!previews || !current || now - last_preview < Pipeline::kPreviewInterval) return true;
-    last_preview = now;
-    std::vector<v1::Shape> candidates;
-    try {
-      candidates = state_.analyzer->preview(*current, settings,
-                                            [context] { return context->IsCancelled(); });
-    } catch (...) {
-      return true; // a hint: a failed preview is skipped, the stroke still gets its shape
-    }
-    if (candidates.empty()) return true;
-    v1::LiveEvent event;
-    v1::PreviewCandidates* preview = event.mutable_preview();
-    preview->set_stroke_id(current->id);
-    for (auto& c : candidates) *preview->add_candidates() = std::move(c);
-    return write_event(std::move(event));
-  };
-
-  std::size_t batch_index = 0;
-  while (stream->Read(&message)) {
-    ++batch_index;
-    const std::string field = "samples (message " + std::to_string(batch_index) + ")";
-    if (message.kind_case() != v1::StreamSamplesRequest::kSamples) {
-      return {grpc::StatusCode::INVALID_ARGUMENT, field + ": only the first message is a start"};
-    }
-    for (int i = 0; i < message.samples().samples_size(); ++i) {
-      const PenSample sample = sample_from_proto(message.samples().samples(i));
-      const std::string at = field + ".samples[" + std::to_string(i) + "]";
-      if (sample.time_us < last_time) {
-        return {grpc::StatusCode::INVALID_ARGUMENT, at + ".time_us goes back in time"};
-      }
-      last_time = sample.time_us;
-      if (sample.tip && !current) {
-        current.emplace();
-        current->id = state_.next_stroke_id.fetch_add(1);
-        current->tablet = tablet;
-        hold.start(tablet);
-        v1::LiveEvent started;
-        started.mutable_stroke_started()->set_stroke_id(current->id);
-        to_proto(tablet, started.mutable_stroke_started()->mutable_tablet());
-        if (!write_event(std::move(started))) return grpc::Status::CANCELLED;
-      }
-      if (!current) continue;
-      if (current->samples.size() >= state_.limits.max_stroke_samples) {
-        return {grpc::StatusCode::INVALID_ARGUMENT,
-                at + ": the stroke exceeds the limit max_stroke_samples = " +
-                    std::to_string(state_.limits.max_stroke_samples)};
-      }
-      current->samples.push_back(sample);
-      if (sample.tip && state_.analyzer &&
-          grouping.ensure(*state_.analyzer, settings, state_.grouping.get())) {
-        std::optional<v1::LiveEvent> held = hold.on_sample(
-            *current, grouping, state_.next_shape_id, [context] { return context->IsCancelled(); });
-        if (held && !write_event(std::move(*held))) return grpc::Status::CANCELLED;
-      }
-      if (!sample.tip) {
-        if (grpc::Status s = finish_stroke(); !s.ok()) return s;
-      }
-    }
-    if (!maybe_preview()) return grpc::Status::CANCELLED;
-  }
-  // The client finished sending: a stroke still down ends here.
-  if (current) return finish_stroke();
-  return grpc::Status::OK;
+  return SampleStream(state_, context, stream).run();
 }
 
 } // namespace penshape::daemon
