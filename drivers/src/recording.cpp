@@ -129,62 +129,74 @@ void append_hex(std::string& out, const std::vector<std::uint8_t>& bytes) {
 
 } // namespace
 
+namespace {
+
+// "# penshape-string: N bytes...": a vendor string the device answered (other comments skipped).
+void read_comment(const std::vector<Line>& tokens, Recording& rec) {
+  if (tokens[0].text != "#" || tokens.size() < 3 || tokens[1].text != "penshape-string:") return;
+  const auto index = parse_number<unsigned>(tokens[2], 10, "string index");
+  if (index > 255) throw RecordingError(tokens[2].offset, "string index over 255");
+  std::vector<std::uint8_t> bytes;
+  for (std::size_t i = 3; i < tokens.size(); ++i) bytes.push_back(hex_byte(tokens[i]));
+  rec.vendor_strings[static_cast<std::uint8_t>(index)] = std::move(bytes);
+}
+
+// The rest of an N: or P: line, without the blanks around it; a lone carriage return inside reads
+// as the blank the writer makes of it (round trips).
+std::string text_value(const Line& line, const Line& tag) {
+  std::string_view rest = line.text.substr(tag.offset - line.offset + 2);
+  while (!rest.empty() && (is_space(rest.front()) || rest.front() == '\r')) rest.remove_prefix(1);
+  while (!rest.empty() && (is_space(rest.back()) || rest.back() == '\r')) rest.remove_suffix(1);
+  return single_line(std::string(rest));
+}
+
+void read_identity(const std::vector<Line>& tokens, const Line& line, Recording& rec) {
+  if (tokens.size() != 4) throw RecordingError(line.offset, "I: needs bus, vid and pid");
+  rec.identity.bus = static_cast<Bus>(parse_number<std::uint16_t>(tokens[1], 16, "bus"));
+  rec.identity.vendor_id = parse_number<std::uint16_t>(tokens[2], 16, "vendor id");
+  rec.identity.product_id = parse_number<std::uint16_t>(tokens[3], 16, "product id");
+  rec.has_identity = true;
+}
+
+void read_event(const std::vector<Line>& tokens, const Line& line, Recording& rec) {
+  if (tokens.size() < 2) throw RecordingError(line.offset, "E: needs a timestamp");
+  HidEvent e;
+  e.time_us = parse_timestamp(tokens[1]);
+  e.bytes = counted_bytes(tokens, 2, line);
+  if (e.bytes.size() > kMaxReportBytes) throw RecordingError(line.offset, "report too long");
+  if (!rec.events.empty() && e.time_us < rec.events.back().time_us) {
+    throw RecordingError(tokens[1].offset, "timestamps go backwards");
+  }
+  rec.events.push_back(std::move(e));
+}
+
+} // namespace
+
 Recording read_hid_recorder(std::string_view text) {
   check_size(text);
   Recording rec;
   bool have_descriptor = false;
-  bool other_device = false;
+  bool other_device = false; // lines after "D: n", n != 0, belong to another device
   for (const Line& line : lines_of(text)) {
     const auto tokens = tokens_of(line);
     if (tokens.empty()) continue;
     const std::string_view tag = tokens[0].text;
     if (tag.front() == '#') {
-      if (tag == "#" && tokens.size() >= 3 && tokens[1].text == "penshape-string:") {
-        const auto index = parse_number<unsigned>(tokens[2], 10, "string index");
-        if (index > 255) throw RecordingError(tokens[2].offset, "string index over 255");
-        std::vector<std::uint8_t> bytes;
-        for (std::size_t i = 3; i < tokens.size(); ++i) bytes.push_back(hex_byte(tokens[i]));
-        rec.vendor_strings[static_cast<std::uint8_t>(index)] = std::move(bytes);
-      }
-      continue;
-    }
-    if (tag == "D:") {
+      read_comment(tokens, rec);
+    } else if (tag == "D:") {
       other_device = tokens.size() >= 2 && tokens[1].text != "0";
+    } else if (other_device) {
       continue;
-    }
-    if (other_device) continue;
-    if (tag == "N:" || tag == "P:") {
-      // The rest of the line, without the blanks around it.
-      std::string_view rest = line.text.substr(tokens[0].offset - line.offset + 2);
-      while (!rest.empty() && (is_space(rest.front()) || rest.front() == '\r')) {
-        rest.remove_prefix(1);
-      }
-      while (!rest.empty() && (is_space(rest.back()) || rest.back() == '\r')) {
-        rest.remove_suffix(1);
-      }
-      // A lone carriage return inside reads as the blank the writer makes of it (round trips).
-      (tag == "N:" ? rec.identity.name : rec.phys) = single_line(std::string(rest));
+    } else if (tag == "N:" || tag == "P:") {
+      (tag == "N:" ? rec.identity.name : rec.phys) = text_value(line, tokens[0]);
     } else if (tag == "I:") {
-      if (tokens.size() != 4) throw RecordingError(line.offset, "I: needs bus, vid and pid");
-      rec.identity.bus = static_cast<Bus>(parse_number<std::uint16_t>(tokens[1], 16, "bus"));
-      rec.identity.vendor_id = parse_number<std::uint16_t>(tokens[2], 16, "vendor id");
-      rec.identity.product_id = parse_number<std::uint16_t>(tokens[3], 16, "product id");
-      rec.has_identity = true;
+      read_identity(tokens, line, rec);
     } else if (tag == "R:") {
       if (have_descriptor) throw RecordingError(line.offset, "second R: line for one device");
       rec.descriptor = counted_bytes(tokens, 1, line);
       have_descriptor = true;
     } else if (tag == "E:") {
-      if (tokens.size() < 2) throw RecordingError(line.offset, "E: needs a timestamp");
-      HidEvent e;
-      const std::int64_t t = parse_timestamp(tokens[1]);
-      e.time_us = t;
-      e.bytes = counted_bytes(tokens, 2, line);
-      if (e.bytes.size() > kMaxReportBytes) throw RecordingError(line.offset, "report too long");
-      if (!rec.events.empty() && t < rec.events.back().time_us) {
-        throw RecordingError(tokens[1].offset, "timestamps go backwards");
-      }
-      rec.events.push_back(std::move(e));
+      read_event(tokens, line, rec);
     } else {
       throw RecordingError(line.offset, "unknown line tag '" + std::string(tag.substr(0, 8)) + "'");
     }
@@ -248,77 +260,99 @@ std::vector<std::uint8_t> parse_hex_bytes(std::string_view text, std::size_t bas
   return out;
 }
 
-UsbhidDump read_usbhid_dump(std::string_view text) {
-  check_size(text);
-  UsbhidDump dump;
-  enum class Kind { kNone, kStream, kDescriptor, kDamaged, kHeaderless };
-  Kind kind = Kind::kNone;
-  int iface = -1;
-  std::int64_t ts = 0;
-  std::vector<std::uint8_t> block;
-  std::size_t block_offset = 0;
-  const auto flush = [&] {
-    if (kind == Kind::kStream && !block.empty()) {
-      if (block.size() > kMaxReportBytes) throw RecordingError(block_offset, "report too long");
-      auto& stream = dump.streams[iface];
-      auto first = dump.first_timestamp_us.try_emplace(iface, ts).first->second;
-      stream.push_back({ts - first, block});
-    } else if ((kind == Kind::kDescriptor || kind == Kind::kHeaderless) && !block.empty()) {
-      dump.descriptors[kind == Kind::kHeaderless ? -1 : iface] = block;
-    }
-    block.clear();
-    kind = Kind::kNone;
-  };
-  bool any = false;
-  for (Line line : lines_of(text)) {
+namespace {
+
+// usbhid-dump's blocks: a header "BBB:DDD:III:STREAM|DESCRIPTOR timestamp" then hex lines, a blank
+// line between blocks; hex lines without a header form a descriptor of interface -1.
+class DumpReader {
+ public:
+  void line(Line line) {
     // Capture files sometimes start with a run of NUL bytes (a cut-off buffer): skip them.
     std::size_t skip = 0;
     while (skip < line.text.size() && line.text[skip] == '\0') ++skip;
-    const bool damaged = skip > 0;
     line.text.remove_prefix(skip);
     line.offset += skip;
     const auto tokens = tokens_of(line);
     if (tokens.empty()) {
       flush();
-      continue;
+      return;
     }
     const std::string_view head = tokens[0].text;
     const auto colon = head.rfind(':');
     if (colon != std::string_view::npos &&
         (head.substr(colon + 1) == "STREAM" || head.substr(colon + 1) == "DESCRIPTOR")) {
-      flush();
-      any = true;
-      // BBB:DDD:III:KIND
-      const auto parts_end = colon;
-      const auto iface_start = head.rfind(':', parts_end - 1);
-      const bool well_formed = !damaged && iface_start != std::string_view::npos &&
-                               std::count(head.begin(), head.end(), ':') == 3 &&
-                               hex_digit(head[0]) >= 0;
-      if (!well_formed) {
-        kind = Kind::kDamaged;
-        ++dump.damaged_blocks;
-        continue;
-      }
-      iface = parse_number<int>({head.substr(iface_start + 1, parts_end - iface_start - 1),
-                                 tokens[0].offset + iface_start + 1},
-                                10, "interface number");
-      if (tokens.size() < 2) throw RecordingError(line.offset, "dump header without timestamp");
-      ts = parse_timestamp(tokens[1]);
-      kind = head.substr(colon + 1) == "STREAM" ? Kind::kStream : Kind::kDescriptor;
-      block_offset = line.offset;
-      continue;
+      header(tokens, line, colon, skip > 0);
+      return;
     }
-    if (kind == Kind::kDamaged) continue;
-    if (kind == Kind::kNone) {
-      kind = Kind::kHeaderless;
-      block_offset = line.offset;
-      any = true;
+    if (kind_ == Kind::kDamaged) return;
+    if (kind_ == Kind::kNone) {
+      kind_ = Kind::kHeaderless;
+      block_offset_ = line.offset;
+      any_ = true;
     }
-    for (const Line& tok : tokens) block.push_back(hex_byte(tok));
+    for (const Line& tok : tokens) block_.push_back(hex_byte(tok));
   }
-  flush();
-  if (!any) throw RecordingError(0, "no usbhid-dump block");
-  return dump;
+
+  UsbhidDump finish() {
+    flush();
+    if (!any_) throw RecordingError(0, "no usbhid-dump block");
+    return std::move(dump_);
+  }
+
+ private:
+  enum class Kind : std::uint8_t { kNone, kStream, kDescriptor, kDamaged, kHeaderless };
+
+  void header(const std::vector<Line>& tokens, const Line& line, std::size_t colon, bool damaged) {
+    flush();
+    any_ = true;
+    const std::string_view head = tokens[0].text;
+    const auto iface_start = head.rfind(':', colon - 1);
+    const bool well_formed = !damaged && iface_start != std::string_view::npos &&
+                             std::count(head.begin(), head.end(), ':') == 3 &&
+                             hex_digit(head[0]) >= 0;
+    if (!well_formed) {
+      kind_ = Kind::kDamaged;
+      ++dump_.damaged_blocks;
+      return;
+    }
+    iface_ = parse_number<int>(
+        {head.substr(iface_start + 1, colon - iface_start - 1), tokens[0].offset + iface_start + 1},
+        10, "interface number");
+    if (tokens.size() < 2) throw RecordingError(line.offset, "dump header without timestamp");
+    ts_ = parse_timestamp(tokens[1]);
+    kind_ = head.substr(colon + 1) == "STREAM" ? Kind::kStream : Kind::kDescriptor;
+    block_offset_ = line.offset;
+  }
+
+  void flush() {
+    if (kind_ == Kind::kStream && !block_.empty()) {
+      if (block_.size() > kMaxReportBytes) throw RecordingError(block_offset_, "report too long");
+      auto& stream = dump_.streams[iface_];
+      const auto first = dump_.first_timestamp_us.try_emplace(iface_, ts_).first->second;
+      stream.push_back({ts_ - first, block_});
+    } else if ((kind_ == Kind::kDescriptor || kind_ == Kind::kHeaderless) && !block_.empty()) {
+      dump_.descriptors[kind_ == Kind::kHeaderless ? -1 : iface_] = block_;
+    }
+    block_.clear();
+    kind_ = Kind::kNone;
+  }
+
+  UsbhidDump dump_;
+  Kind kind_ = Kind::kNone;
+  int iface_ = -1;
+  std::int64_t ts_ = 0;
+  std::vector<std::uint8_t> block_;
+  std::size_t block_offset_ = 0;
+  bool any_ = false;
+};
+
+} // namespace
+
+UsbhidDump read_usbhid_dump(std::string_view text) {
+  check_size(text);
+  DumpReader reader;
+  for (const Line& line : lines_of(text)) reader.line(line);
+  return reader.finish();
 }
 
 RecordingFormat detect_format(std::string_view contents) {
