@@ -54,6 +54,180 @@ std::uint16_t hex_option(const ParsedArgs& parsed, const char* name) {
   return static_cast<std::uint16_t>(v);
 }
 
+// The options beyond the paths, checked.
+struct Synthesis {
+  double mm_per_unit = 0.2;
+  double rate = 200;
+  std::size_t columns = 3;
+  drivers::DeviceIdentity identity;
+};
+
+Synthesis read_synthesis(const ParsedArgs& parsed) {
+  Synthesis out;
+  out.mm_per_unit = parsed.number("--mm-per-unit").value_or(0.2);
+  out.rate = parsed.number("--rate").value_or(200);
+  const double columns = parsed.number("--columns").value_or(3);
+  if (out.mm_per_unit <= 0 || out.rate < 10 || out.rate > 2000 || columns < 1 || columns > 50) {
+    throw UsageError("--mm-per-unit must be > 0, --rate in [10, 2000], --columns in [1, 50]");
+  }
+  out.columns = static_cast<std::size_t>(columns);
+  out.identity.bus = Bus::kUsb;
+  out.identity.vendor_id = hex_option(parsed, "--vid");
+  out.identity.product_id = hex_option(parsed, "--pid");
+  out.identity.name = parsed.value("--name").value_or("penshape synthesized tablet");
+  return out;
+}
+
+// The tablet the reports are for: its descriptor, its pen and its size.
+struct Tablet {
+  std::vector<std::uint8_t> descriptor;
+  drivers::DeviceProfile profile;
+  double x_resolution = 0, y_resolution = 0; // units per mm
+  double width_mm = 0, height_mm = 0;
+  [[nodiscard]] const drivers::PenLayout& pen() const { return profile.decoder.layouts().front(); }
+};
+
+// The device's profile, as the drivers build it: the descriptor's pen, or the vendor protocol's
+// layout (with the tablet table's size) for tablets known by VID/PID.
+Tablet read_tablet(const std::string& descriptor_path, const drivers::DeviceIdentity& identity) {
+  Tablet t;
+  t.descriptor = drivers::load_recording_file(descriptor_path).descriptor;
+  t.profile = drivers::build_profile(identity, t.descriptor);
+  if (!t.profile.has_pen()) throw InputError(descriptor_path + ": the descriptor declares no pen");
+  t.x_resolution = t.profile.info.x_resolution;
+  t.y_resolution = t.profile.info.y_resolution;
+  if (t.x_resolution <= 0 || t.y_resolution <= 0) {
+    throw InputError(descriptor_path + ": the pen has no physical size (resolution unknown)");
+  }
+  t.width_mm = t.pen().x_max() / t.x_resolution;
+  t.height_mm = t.pen().y_max() / t.y_resolution;
+  return t;
+}
+
+std::vector<Placed> read_strokes(const std::vector<std::string>& paths) {
+  std::vector<Placed> strokes;
+  for (const auto& file : collect_stroke_files(paths)) {
+    for (auto& s : read_stroke_file(file)) {
+      if (s.points.empty()) continue;
+      strokes.push_back({std::move(s.points), s.name.empty() ? file : file + " (" + s.name + ")"});
+    }
+  }
+  if (strokes.empty()) throw InputError("no strokes in the given files");
+  return strokes;
+}
+
+struct Box {
+  double xmin, xmax, ymin, ymax;
+};
+Box box_of(const std::vector<StrokePoint>& pts) {
+  Box b{pts[0].x, pts[0].x, pts[0].y, pts[0].y};
+  for (const auto& p : pts) {
+    b.xmin = std::min(b.xmin, p.x);
+    b.xmax = std::max(b.xmax, p.x);
+    b.ymin = std::min(b.ymin, p.y);
+    b.ymax = std::max(b.ymax, p.y);
+  }
+  return b;
+}
+
+// Plays strokes as the tablet's reports, one after another on one clock.
+class ReportPlayer {
+ public:
+  ReportPlayer(const Tablet& tablet, double rate, drivers::Recording& rec)
+      : tablet_(tablet), rate_(rate), rec_(rec) {}
+
+  // The stroke (its box `box`) centred on `center` (mm) and scaled by `scale` mm per its unit:
+  // hovering in,
+  // resampled at the rate with a pressure ramp, lifting, then 300 ms out of range.
+  void play(const std::vector<StrokePoint>& pts, const Box& box, PointD center, double scale) {
+    mid_ = {0.5 * (box.xmin + box.xmax), 0.5 * (box.ymin + box.ymax)};
+    center_ = center;
+    scale_ = scale;
+    PenSample s;
+    s.in_range = true;
+    place(pts.front().x, pts.front().y, s);
+    for (int h = 0; h < 5; ++h) emit(s); // hovering in
+    draw(pts, s);
+    s.tip = false;
+    s.pressure = 0;
+    for (int h = 0; h < 5; ++h) emit(s); // lifting, still in range
+    s.in_range = false;
+    emit(s);
+    clock_us_ += 300'000; // out of range between strokes
+  }
+  [[nodiscard]] std::int64_t clock_us() const { return clock_us_; }
+
+ private:
+  void draw(const std::vector<StrokePoint>& pts, PenSample& s) {
+    const double t0 = pts.front().t;
+    const double duration = std::max(pts.back().t - t0, 1.0 / rate_);
+    const auto steps = static_cast<std::size_t>(std::ceil(duration * rate_));
+    std::size_t seg = 0;
+    for (std::size_t i = 0; i <= steps; ++i) {
+      const double t = t0 + duration * static_cast<double>(i) / static_cast<double>(steps);
+      while (seg + 1 < pts.size() && pts[seg + 1].t < t) ++seg;
+      const auto& a = pts[seg];
+      const auto& b = pts[std::min(seg + 1, pts.size() - 1)];
+      const double u = b.t > a.t ? std::clamp((t - a.t) / (b.t - a.t), 0.0, 1.0) : 0.0;
+      place(a.x + u * (b.x - a.x), a.y + u * (b.y - a.y), s);
+      // Pressure rises over the first 10% of the stroke and falls over the last 10%.
+      const double f = static_cast<double>(i) / static_cast<double>(steps);
+      const double ramp = std::clamp(std::min(f, 1.0 - f) * 10.0, 0.2, 1.0);
+      s.pressure =
+          static_cast<std::uint32_t>(std::lround(0.6 * ramp * tablet_.pen().pressure_max()));
+      s.tip = true;
+      emit(s);
+    }
+  }
+  void place(double x, double y, PenSample& s) const {
+    s.x = static_cast<std::int32_t>(
+        std::lround((center_.x + (x - mid_.x) * scale_) * tablet_.x_resolution));
+    s.y = static_cast<std::int32_t>(
+        std::lround((center_.y + (y - mid_.y) * scale_) * tablet_.y_resolution));
+  }
+  void emit(const PenSample& s) {
+    rec_.events.push_back({clock_us_, drivers::encode_pen_report(tablet_.pen(), s)});
+    clock_us_ += static_cast<std::int64_t>(std::llround(1e6 / rate_));
+  }
+
+  const Tablet& tablet_;
+  double rate_;
+  drivers::Recording& rec_;
+  std::int64_t clock_us_ = 0;
+  PointD mid_, center_;
+  double scale_ = 1;
+};
+
+// Each stroke centred in its own cell of a grid of `columns` on the tablet; returns the file's
+// header comments naming the sources.
+std::string play_strokes(const std::vector<Placed>& strokes, const Tablet& tablet,
+                         const Synthesis& how, ReportPlayer& player) {
+  const std::size_t rows = (strokes.size() + how.columns - 1) / how.columns;
+  const double cell_w = tablet.width_mm / static_cast<double>(how.columns);
+  const double cell_h = tablet.height_mm / static_cast<double>(rows);
+  std::string comments =
+      "# Synthesized by `penshape synthesize-recording`: real strokes replayed as this tablet's\n"
+      "# reports (" +
+      std::to_string(static_cast<int>(how.rate)) + " Hz, linear resampling, synthetic pressure).\n";
+  for (std::size_t k = 0; k < strokes.size(); ++k) {
+    const auto& pts = strokes[k].points;
+    const Box box = box_of(pts);
+    const PointD center{cell_w * (static_cast<double>(k % how.columns) + 0.5),
+                        cell_h * (static_cast<double>(k / how.columns) + 0.5)};
+    const double scale =
+        std::min({how.mm_per_unit, 0.9 * cell_w / std::max(box.xmax - box.xmin, 1e-9),
+                  0.9 * cell_h / std::max(box.ymax - box.ymin, 1e-9)});
+    comments += "# stroke " + std::to_string(k) + ": " + strokes[k].source + "\n";
+    player.play(pts, box, center, scale);
+  }
+  return comments;
+}
+
+int report_error(const char* what) {
+  std::fprintf(stderr, "penshape synthesize-recording: %s\n", what);
+  return kExitBadInput;
+}
+
 } // namespace
 
 int run_synthesize_recording(std::span<const std::string_view> args) {
@@ -68,130 +242,31 @@ int run_synthesize_recording(std::span<const std::string_view> args) {
   const auto out_path = parsed.value("--out");
   if (!descriptor_path || !out_path) throw UsageError("--descriptor and --out are required");
   if (parsed.positionals().empty()) throw UsageError("expected stroke files or directories");
-  const double mm_per_unit = parsed.number("--mm-per-unit").value_or(0.2);
-  const double rate = parsed.number("--rate").value_or(200);
-  const double columns_d = parsed.number("--columns").value_or(3);
-  if (mm_per_unit <= 0 || rate < 10 || rate > 2000 || columns_d < 1 || columns_d > 50) {
-    throw UsageError("--mm-per-unit must be > 0, --rate in [10, 2000], --columns in [1, 50]");
-  }
-  const auto columns = static_cast<std::size_t>(columns_d);
-
-  drivers::DeviceIdentity identity;
-  identity.bus = Bus::kUsb;
-  identity.vendor_id = hex_option(parsed, "--vid");
-  identity.product_id = hex_option(parsed, "--pid");
-  identity.name = parsed.value("--name").value_or("penshape synthesized tablet");
+  const Synthesis how = read_synthesis(parsed);
   try {
-    const drivers::Recording source = drivers::load_recording_file(*descriptor_path);
-    // The device's profile, as the drivers build it: the descriptor's pen, or the vendor
-    // protocol's layout (with the tablet table's size) for tablets known by VID/PID.
-    const drivers::DeviceProfile profile = drivers::build_profile(identity, source.descriptor);
-    if (!profile.has_pen()) throw InputError(*descriptor_path + ": the descriptor declares no pen");
-    const drivers::PenLayout& pen = profile.decoder.layouts().front();
-    const double x_resolution = profile.info.x_resolution, y_resolution = profile.info.y_resolution;
-    if (x_resolution <= 0 || y_resolution <= 0) {
-      throw InputError(*descriptor_path + ": the pen has no physical size (resolution unknown)");
-    }
-    const double width_mm = pen.x_max() / x_resolution;
-    const double height_mm = pen.y_max() / y_resolution;
-
-    std::vector<Placed> strokes;
-    for (const auto& file : collect_stroke_files(parsed.positionals())) {
-      for (auto& s : read_stroke_file(file)) {
-        if (s.points.empty()) continue;
-        strokes.push_back(
-            {std::move(s.points), s.name.empty() ? file : file + " (" + s.name + ")"});
-      }
-    }
-    if (strokes.empty()) throw InputError("no strokes in the given files");
-    // Grid cells on the tablet; each stroke is centred in its own cell.
-    const std::size_t rows = (strokes.size() + columns - 1) / columns;
-    const double cell_w = width_mm / static_cast<double>(columns);
-    const double cell_h = height_mm / static_cast<double>(rows);
-
+    const Tablet tablet = read_tablet(*descriptor_path, how.identity);
+    const std::vector<Placed> strokes = read_strokes(parsed.positionals());
     drivers::Recording rec;
-    rec.identity = identity;
+    rec.identity = how.identity;
     rec.has_identity = true;
-    rec.descriptor = source.descriptor;
-    std::int64_t clock_us = 0;
-    std::string header_comments =
-        "# Synthesized by `penshape synthesize-recording`: real strokes replayed as this tablet's\n"
-        "# reports (" +
-        std::to_string(static_cast<int>(rate)) + " Hz, linear resampling, synthetic pressure).\n";
-    for (std::size_t k = 0; k < strokes.size(); ++k) {
-      auto& pts = strokes[k].points;
-      double xmin = pts[0].x, xmax = pts[0].x, ymin = pts[0].y, ymax = pts[0].y;
-      for (const auto& p : pts) {
-        xmin = std::min(xmin, p.x);
-        xmax = std::max(xmax, p.x);
-        ymin = std::min(ymin, p.y);
-        ymax = std::max(ymax, p.y);
-      }
-      const double cx = cell_w * (static_cast<double>(k % columns) + 0.5);
-      const double cy = cell_h * (static_cast<double>(k / columns) + 0.5);
-      const double scale = std::min({mm_per_unit, 0.9 * cell_w / std::max(xmax - xmin, 1e-9),
-                                     0.9 * cell_h / std::max(ymax - ymin, 1e-9)});
-      auto to_units = [&](double x, double y, PenSample& s) {
-        s.x = static_cast<std::int32_t>(
-            std::lround((cx + (x - 0.5 * (xmin + xmax)) * scale) * x_resolution));
-        s.y = static_cast<std::int32_t>(
-            std::lround((cy + (y - 0.5 * (ymin + ymax)) * scale) * y_resolution));
-      };
-      header_comments += "# stroke " + std::to_string(k) + ": " + strokes[k].source + "\n";
-      const double t0 = pts.front().t;
-      const double duration = std::max(pts.back().t - t0, 1.0 / rate);
-      const auto steps = static_cast<std::size_t>(std::ceil(duration * rate));
-      const auto period_us = static_cast<std::int64_t>(std::llround(1e6 / rate));
-      auto emit = [&](const PenSample& s) {
-        rec.events.push_back({clock_us, drivers::encode_pen_report(pen, s)});
-        clock_us += period_us;
-      };
-      PenSample s;
-      s.in_range = true;
-      to_units(pts.front().x, pts.front().y, s);
-      for (int h = 0; h < 5; ++h) emit(s); // hovering in
-      std::size_t seg = 0;
-      for (std::size_t i = 0; i <= steps; ++i) {
-        const double t = t0 + duration * static_cast<double>(i) / static_cast<double>(steps);
-        while (seg + 1 < pts.size() && pts[seg + 1].t < t) ++seg;
-        const auto& a = pts[seg];
-        const auto& b = pts[std::min(seg + 1, pts.size() - 1)];
-        const double u = b.t > a.t ? std::clamp((t - a.t) / (b.t - a.t), 0.0, 1.0) : 0.0;
-        to_units(a.x + u * (b.x - a.x), a.y + u * (b.y - a.y), s);
-        // Pressure rises over the first 10% of the stroke and falls over the last 10%.
-        const double f = static_cast<double>(i) / static_cast<double>(steps);
-        const double ramp = std::clamp(std::min(f, 1.0 - f) * 10.0, 0.2, 1.0);
-        s.pressure = static_cast<std::uint32_t>(std::lround(0.6 * ramp * pen.pressure_max()));
-        s.tip = true;
-        emit(s);
-      }
-      s.tip = false;
-      s.pressure = 0;
-      for (int h = 0; h < 5; ++h) emit(s); // lifting, still in range
-      s.in_range = false;
-      emit(s);
-      clock_us += 300'000; // out of range between strokes
-    }
+    rec.descriptor = tablet.descriptor;
+    ReportPlayer player(tablet, how.rate, rec);
+    const std::string comments = play_strokes(strokes, tablet, how, player);
     std::ofstream out(*out_path, std::ios::binary);
     if (!out) throw InputError("cannot write '" + *out_path + "'");
-    out << header_comments << drivers::write_hid_recorder(rec);
+    out << comments << drivers::write_hid_recorder(rec);
     if (!out) throw InputError("cannot write '" + *out_path + "'");
     std::printf("%zu strokes, %zu reports, %.1f s -> %s\n", strokes.size(), rec.events.size(),
-                static_cast<double>(clock_us) / 1e6, out_path->c_str());
+                static_cast<double>(player.clock_us()) / 1e6, out_path->c_str());
   } catch (const InputError& e) {
-    std::fprintf(stderr, "penshape synthesize-recording: %s\n", e.what());
-    return kExitBadInput;
+    return report_error(e.what());
   } catch (const StrokeFileError& e) {
-    std::fprintf(stderr, "penshape synthesize-recording: %s\n", e.what());
-    return kExitBadInput;
+    return report_error(e.what());
   } catch (const drivers::RecordingError& e) {
-    std::fprintf(stderr, "penshape synthesize-recording: %s: byte %zu: %s\n",
-                 descriptor_path->c_str(), e.offset(), e.what());
-    return kExitBadInput;
+    return report_error(
+        (*descriptor_path + ": byte " + std::to_string(e.offset()) + ": " + e.what()).c_str());
   } catch (const drivers::DescriptorError& e) {
-    std::fprintf(stderr, "penshape synthesize-recording: %s: %s\n", descriptor_path->c_str(),
-                 e.what());
-    return kExitBadInput;
+    return report_error((*descriptor_path + ": " + e.what()).c_str());
   }
   return kExitOk;
 }
