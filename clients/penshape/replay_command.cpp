@@ -86,46 +86,26 @@ std::string size_text(const drivers::ReplayResult& r) {
   return buf;
 }
 
-} // namespace
-
-int run_replay(std::span<const std::string_view> args) {
-  const ParsedArgs parsed(args, live_arg_spec({.flags = {"--json", "--local", "--original-speed"},
-                                               .options = {"--vid", "--pid", "--descriptor"}}));
-  if (parsed.flag("--help")) {
-    std::puts(kHelp);
-    return kExitOk;
-  }
-  if (parsed.flag("--local") && (parsed.value("--socket") || parsed.value("--address"))) {
-    throw UsageError("--local replays without penshaped: it takes no --socket or --address");
-  }
-  drivers::ReplayResult result;
+// The recording replayed through the drivers (no daemon); nothing on a file the drivers refuse
+// (the error printed).
+std::optional<drivers::ReplayResult> replay_file(const ParsedArgs& parsed) {
   try {
     const drivers::Recording rec = load_device_file(parsed);
     if (rec.events.empty()) throw drivers::RecordingError(0, "the file holds no reports");
-    result = drivers::replay(rec, parsed.flag("--original-speed")
-                                      ? drivers::ReplaySpeed::kOriginal
-                                      : drivers::ReplaySpeed::kAsFastAsPossible);
+    return drivers::replay(rec, parsed.flag("--original-speed")
+                                    ? drivers::ReplaySpeed::kOriginal
+                                    : drivers::ReplaySpeed::kAsFastAsPossible);
   } catch (const drivers::RecordingError& e) {
     std::fprintf(stderr, "penshape replay: %s: %s\n", device_file_name(parsed).c_str(), e.what());
-    return kExitBadInput;
   } catch (const drivers::DescriptorError& e) {
     std::fprintf(stderr, "penshape replay: %s: %s\n", device_file_name(parsed).c_str(), e.what());
-    return kExitBadInput;
   } catch (const std::invalid_argument& e) {
     std::fprintf(stderr, "penshape replay: %s: %s\n", device_file_name(parsed).c_str(), e.what());
-    return kExitBadInput;
   }
-  if (result.tablet.x_max == 0) {
-    std::fprintf(stderr,
-                 "penshape replay: %s: no pen report layout (give the descriptor in the file, or "
-                 "--vid/--pid of a known tablet)\n",
-                 device_file_name(parsed).c_str());
-    return kExitBadInput;
-  }
-  std::optional<ReplayDaemon> daemon = connect_unless_local(parsed);
-  // Samples and strokes interleaved in time: a stroke follows its last sample.
-  std::size_t next_stroke = 0;
-  const bool json = parsed.flag("--json");
+  return std::nullopt;
+}
+
+void print_header(const drivers::ReplayResult& result, bool json) {
   const std::string size = size_text(result);
   if (!json) {
     std::printf(
@@ -137,65 +117,60 @@ int run_replay(std::span<const std::string_view> args) {
   }
   std::fprintf(stderr, "penshape replay: family %s (layout %s), %s\n", result.family.c_str(),
                result.layout.c_str(), size.c_str());
-  const auto print_stroke = [&](const Stroke& s) {
-    if (json) {
-      JsonWriter w;
-      w.begin_object()
-          .key("stroke")
-          .integer(static_cast<std::int64_t>(s.id))
-          .key("t_start")
-          .number(seconds(s.samples.front().time_us))
-          .key("t_end")
-          .number(seconds(s.samples.back().time_us))
-          .key("samples")
-          .integer(static_cast<std::int64_t>(s.samples.size()))
-          .end_object();
-      std::puts(w.str().c_str());
-    } else {
-      std::printf("stroke %llu: %zu samples, %.6f .. %.6f s\n",
-                  static_cast<unsigned long long>(s.id), s.samples.size(),
-                  seconds(s.samples.front().time_us), seconds(s.samples.back().time_us));
-    }
-    if (daemon) print_daemon_shape(*daemon, s, result.tablet, json);
-  };
-  for (std::size_t i = 0; i < result.samples.size(); ++i) {
-    const PenSample& p = result.samples[i];
-    if (json) {
-      JsonWriter w;
-      w.begin_object()
-          .key("t")
-          .number(seconds(p.time_us))
-          .key("x")
-          .integer(p.x)
-          .key("y")
-          .integer(p.y)
-          .key("pressure")
-          .integer(p.pressure)
-          .key("tilt_x")
-          .integer(p.tilt_x)
-          .key("tilt_y")
-          .integer(p.tilt_y)
-          .key("tip")
-          .boolean(p.tip)
-          .key("in_range")
-          .boolean(p.in_range)
-          .key("buttons")
-          .integer(p.buttons)
-          .end_object();
-      std::puts(w.str().c_str());
-    } else {
-      std::printf("  %10.6f %7d %7d %6u %5d %5d %3d %3d %4u\n", seconds(p.time_us), p.x, p.y,
-                  p.pressure, p.tilt_x, p.tilt_y, p.tip ? 1 : 0, p.in_range ? 1 : 0, p.buttons);
-    }
-    // A stroke ends at or after this sample's time: print it once its last sample is out.
-    while (next_stroke < result.strokes.size() &&
-           result.strokes[next_stroke].samples.back().time_us <= p.time_us &&
-           (i + 1 == result.samples.size() ||
-            result.samples[i + 1].time_us > result.strokes[next_stroke].samples.back().time_us)) {
-      print_stroke(result.strokes[next_stroke++]);
-    }
+}
+
+void print_sample(const PenSample& p, bool json) {
+  if (!json) {
+    std::printf("  %10.6f %7d %7d %6u %5d %5d %3d %3d %4u\n", seconds(p.time_us), p.x, p.y,
+                p.pressure, p.tilt_x, p.tilt_y, p.tip ? 1 : 0, p.in_range ? 1 : 0, p.buttons);
+    return;
   }
-  while (next_stroke < result.strokes.size()) print_stroke(result.strokes[next_stroke++]);
+  JsonWriter w;
+  w.begin_object()
+      .key("t")
+      .number(seconds(p.time_us))
+      .key("x")
+      .integer(p.x)
+      .key("y")
+      .integer(p.y)
+      .key("pressure")
+      .integer(p.pressure)
+      .key("tilt_x")
+      .integer(p.tilt_x)
+      .key("tilt_y")
+      .integer(p.tilt_y)
+      .key("tip")
+      .boolean(p.tip)
+      .key("in_range")
+      .boolean(p.in_range)
+      .key("buttons")
+      .integer(p.buttons)
+      .end_object();
+  std::puts(w.str().c_str());
+}
+
+void print_stroke(const Stroke& s, bool json) {
+  if (!json) {
+    std::printf("stroke %llu: %zu samples, %.6f .. %.6f s\n", static_cast<unsigned long long>(s.id),
+                s.samples.size(), seconds(s.samples.front().time_us),
+                seconds(s.samples.back().time_us));
+    return;
+  }
+  JsonWriter w;
+  w.begin_object()
+      .key("stroke")
+      .integer(static_cast<std::int64_t>(s.id))
+      .key("t_start")
+      .number(seconds(s.samples.front().time_us))
+      .key("t_end")
+      .number(seconds(s.samples.back().time_us))
+      .key("samples")
+      .integer(static_cast<std::int64_t>(s.samples.size()))
+      .end_object();
+  std::puts(w.str().c_str());
+}
+
+void print_counters(const drivers::ReplayResult& result) {
   const auto& c = result.counters;
   std::fprintf(stderr,
                "penshape replay: %llu reports: %llu pen samples, %llu other, %llu junk, %llu out "
@@ -210,6 +185,56 @@ int run_replay(std::span<const std::string_view> args) {
                  "penshape replay: no report matched the pen layout (firmware-mode stream? give "
                  "--descriptor)\n");
   }
+}
+
+// Samples and strokes interleaved in time: a stroke is printed (with the daemon's shape, when
+// connected) once its last sample is out.
+void print_replay(const drivers::ReplayResult& result, std::optional<ReplayDaemon>& daemon,
+                  bool json) {
+  std::size_t next_stroke = 0;
+  const auto stroke_out = [&](const Stroke& s) {
+    print_stroke(s, json);
+    if (daemon) print_daemon_shape(*daemon, s, result.tablet, json);
+  };
+  for (std::size_t i = 0; i < result.samples.size(); ++i) {
+    const PenSample& p = result.samples[i];
+    print_sample(p, json);
+    while (next_stroke < result.strokes.size() &&
+           result.strokes[next_stroke].samples.back().time_us <= p.time_us &&
+           (i + 1 == result.samples.size() ||
+            result.samples[i + 1].time_us > result.strokes[next_stroke].samples.back().time_us)) {
+      stroke_out(result.strokes[next_stroke++]);
+    }
+  }
+  while (next_stroke < result.strokes.size()) stroke_out(result.strokes[next_stroke++]);
+}
+
+} // namespace
+
+int run_replay(std::span<const std::string_view> args) {
+  const ParsedArgs parsed(args, live_arg_spec({.flags = {"--json", "--local", "--original-speed"},
+                                               .options = {"--vid", "--pid", "--descriptor"}}));
+  if (parsed.flag("--help")) {
+    std::puts(kHelp);
+    return kExitOk;
+  }
+  if (parsed.flag("--local") && (parsed.value("--socket") || parsed.value("--address"))) {
+    throw UsageError("--local replays without penshaped: it takes no --socket or --address");
+  }
+  const std::optional<drivers::ReplayResult> result = replay_file(parsed);
+  if (!result) return kExitBadInput;
+  if (result->tablet.x_max == 0) {
+    std::fprintf(stderr,
+                 "penshape replay: %s: no pen report layout (give the descriptor in the file, or "
+                 "--vid/--pid of a known tablet)\n",
+                 device_file_name(parsed).c_str());
+    return kExitBadInput;
+  }
+  std::optional<ReplayDaemon> daemon = connect_unless_local(parsed);
+  const bool json = parsed.flag("--json");
+  print_header(*result, json);
+  print_replay(*result, daemon, json);
+  print_counters(*result);
   return kExitOk;
 }
 
