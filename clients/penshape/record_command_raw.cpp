@@ -112,6 +112,78 @@ class RawRecording {
   std::optional<CaptureWriter::Cut> cut_;
 };
 
+// --wait: a tablet attached already (after the subscription its reports are all queued) starts
+// the recording, or the first one the stream announces will. kExitOk, or why not.
+int start_attached(v1::Live::Stub& stub, const RecordOptions& options, RawRecording& recording) {
+  v1::ListDevicesResponse devices;
+  grpc::ClientContext list_context;
+  list_context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(10));
+  const grpc::Status listed = stub.ListDevices(&list_context, {}, &devices);
+  if (!listed.ok()) {
+    const RpcFailure f = describe_rpc_failure(listed, "ListDevices", options.address);
+    return record_fail(f.message, f.exit_code);
+  }
+  std::vector<const v1::DeviceInfo*> present;
+  for (const auto& d : devices.devices()) {
+    if (wanted(options, d.id())) present.push_back(&d);
+  }
+  if (present.size() > 1) {
+    return record_fail("several tablets are attached: choose one with --device ID", kExitInternal);
+  }
+  if (present.size() == 1) return recording.start(*present.front()) ? kExitOk : recording.error();
+  const std::string what = options.device ? "'" + *options.device + "'" : "a tablet";
+  std::fprintf(stderr, "penshape record: waiting for %s to be attached (Ctrl-C to stop)\n",
+               what.c_str());
+  return kExitOk;
+}
+
+// The subscription's raw reports for the recording (one device, or any with --wait).
+v1::SubscribeRequest raw_request(const RecordOptions& options,
+                                 const std::optional<v1::DeviceInfo>& device) {
+  v1::SubscribeRequest request;
+  if (device) {
+    request.add_device_ids(device->id());
+  } else if (options.device) {
+    request.add_device_ids(*options.device);
+  }
+  request.set_include_raw_reports(true);
+  return request;
+}
+
+// After the stream ended: the file complete (trimmed to the last stroke with --strokes), or why
+// not; `remove` is told whether the file must go (nothing captured).
+int close_recording(const RecordOptions& options, RawRecording& recording, std::ofstream& out,
+                    bool normal_end, const grpc::Status& status, bool& remove) {
+  out.flush();
+  const bool written = static_cast<bool>(out);
+  out.close();
+  if (!written) return record_fail("error while writing " + options.path, kExitInternal);
+  if (recording.cut()) {
+    std::error_code ec;
+    std::filesystem::resize_file(options.path, recording.cut()->bytes, ec);
+    if (ec) return record_fail("cannot trim " + options.path + ": " + ec.message(), kExitInternal);
+  }
+  if (!normal_end) {
+    const RpcFailure f = describe_rpc_failure(status, "Subscribe", options.address);
+    // A call refused or broken before any report (e.g. the raw-subscriber limit): no half file.
+    remove = recording.reports() == 0;
+    return record_fail(f.message, f.exit_code);
+  }
+  if (!recording.started()) {
+    remove = true;
+    return record_fail("no tablet was attached; nothing recorded", kExitInternal);
+  }
+  std::fprintf(stderr, "penshape record: %zu reports written to %s%s\n", recording.reports(),
+               options.path.c_str(), recording.detached() ? " (the tablet was unplugged)" : "");
+  if (recording.dropped() != 0) {
+    return record_fail("the daemon dropped " + std::to_string(recording.dropped()) +
+                           " events for this client (it read too slowly): " + options.path +
+                           " has gaps and does not replay like the tablet",
+                       kExitInternal);
+  }
+  return kExitOk;
+}
+
 } // namespace
 
 int record_raw(v1::Live::Stub& stub, const RecordOptions& options, CancelOnSignal& cancel) {
@@ -140,56 +212,15 @@ int record_raw(v1::Live::Stub& stub, const RecordOptions& options, CancelOnSigna
         std::chrono::system_clock::now() +
         std::chrono::microseconds(static_cast<std::int64_t>(*options.duration_seconds * 1e6)));
   }
-  v1::SubscribeRequest request;
-  if (device) {
-    request.add_device_ids(device->id());
-  } else if (options.device) {
-    request.add_device_ids(*options.device);
-  }
-  request.set_include_raw_reports(true);
-  auto reader = stub.Subscribe(&context, request);
+  auto reader = stub.Subscribe(&context, raw_request(options, device));
   const auto armed = cancel.arm(&context);
   reader->WaitForInitialMetadata(); // subscribed: nothing from now on is missed
-
-  if (device) {
-    if (!recording.start(*device)) {
-      context.TryCancel();
-      (void)reader->Finish();
-      return give_up(recording.error());
-    }
-  } else {
-    // --wait: a tablet attached already (after the subscription its reports are all queued), or
-    // the first one the stream announces.
-    v1::ListDevicesResponse devices;
-    grpc::ClientContext list_context;
-    list_context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(10));
-    const grpc::Status listed = stub.ListDevices(&list_context, {}, &devices);
-    if (!listed.ok()) {
-      context.TryCancel();
-      (void)reader->Finish();
-      const RpcFailure f = describe_rpc_failure(listed, "ListDevices", options.address);
-      return give_up(record_fail(f.message, f.exit_code));
-    }
-    std::vector<const v1::DeviceInfo*> present;
-    for (const auto& d : devices.devices()) {
-      if (wanted(options, d.id())) present.push_back(&d);
-    }
-    if (present.size() > 1) {
-      context.TryCancel();
-      (void)reader->Finish();
-      return give_up(
-          record_fail("several tablets are attached: choose one with --device ID", kExitInternal));
-    }
-    if (present.size() == 1 && !recording.start(*present.front())) {
-      context.TryCancel();
-      (void)reader->Finish();
-      return give_up(recording.error());
-    }
-    if (present.empty()) {
-      const std::string what = options.device ? "'" + *options.device + "'" : "a tablet";
-      std::fprintf(stderr, "penshape record: waiting for %s to be attached (Ctrl-C to stop)\n",
-                   what.c_str());
-    }
+  const int started = device ? (recording.start(*device) ? kExitOk : recording.error())
+                             : start_attached(stub, options, recording);
+  if (started != kExitOk) {
+    context.TryCancel();
+    (void)reader->Finish();
+    return give_up(started);
   }
 
   v1::LiveEvent event;
@@ -201,37 +232,13 @@ int record_raw(v1::Live::Stub& stub, const RecordOptions& options, CancelOnSigna
   if (done || recording.error() != kExitOk) context.TryCancel();
   const grpc::Status status = reader->Finish();
   if (recording.error() != kExitOk) return give_up(recording.error());
-  out.flush();
-  const bool written = static_cast<bool>(out);
-  out.close();
-  if (!written) return record_fail("error while writing " + options.path, kExitInternal);
-  if (recording.cut()) {
-    // --strokes: the capture ends with the report that ended the last stroke.
-    std::error_code ec;
-    std::filesystem::resize_file(options.path, recording.cut()->bytes, ec);
-    if (ec) return record_fail("cannot trim " + options.path + ": " + ec.message(), kExitInternal);
-  }
   const bool normal_end =
       done || cancel.fired() || status.ok() ||
       (options.duration_seconds && status.error_code() == grpc::StatusCode::DEADLINE_EXCEEDED);
-  if (!normal_end) {
-    const RpcFailure f = describe_rpc_failure(status, "Subscribe", options.address);
-    // A call refused or broken before any report (e.g. the raw-subscriber limit): no half file.
-    if (recording.reports() == 0) return give_up(record_fail(f.message, f.exit_code));
-    return record_fail(f.message, f.exit_code);
-  }
-  if (!recording.started()) {
-    return give_up(record_fail("no tablet was attached; nothing recorded", kExitInternal));
-  }
-  std::fprintf(stderr, "penshape record: %zu reports written to %s%s\n", recording.reports(),
-               options.path.c_str(), recording.detached() ? " (the tablet was unplugged)" : "");
-  if (recording.dropped() != 0) {
-    return record_fail("the daemon dropped " + std::to_string(recording.dropped()) +
-                           " events for this client (it read too slowly): " + options.path +
-                           " has gaps and does not replay like the tablet",
-                       kExitInternal);
-  }
-  return kExitOk;
+  bool remove = false;
+  const int code = close_recording(options, recording, out, normal_end, status, remove);
+  if (remove) std::filesystem::remove(options.path); // nothing captured: no half file
+  return code;
 }
 
 } // namespace penshape::cli
