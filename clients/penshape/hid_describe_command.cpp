@@ -3,6 +3,7 @@
 #include "hid_describe_command.hpp"
 
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include "args.hpp"
@@ -49,93 +50,87 @@ void print_pen_field(const char* name, const PenField& f) {
   std::printf("\n");
 }
 
-} // namespace
+std::string field_usage(const drivers::ReportField& f) {
+  if (f.is_constant()) return "padding";
+  if (f.is_variable()) return drivers::usage_name(f.usage);
+  return drivers::usage_name(f.usage_minimum) + ".." + drivers::usage_name(f.usage_maximum);
+}
 
-int run_hid_describe(std::span<const std::string_view> args) {
-  const ParsedArgs parsed(
-      args, {.flags = {"--json", "--help"}, .options = {"--vid", "--pid", "--descriptor"}});
-  if (parsed.flag("--help")) {
-    std::puts(kHelp);
-    return kExitOk;
-  }
-  drivers::DeviceProfile profile;
+// The device's profile from the file (and --vid/--pid), or nothing (the error printed).
+std::optional<drivers::DeviceProfile> load_profile(const ParsedArgs& parsed) {
   try {
     const drivers::Recording rec = load_device_file(parsed);
     if (rec.descriptor.empty()) throw drivers::RecordingError(0, "the file holds no descriptor");
-    profile = drivers::build_profile(rec.identity, rec.descriptor, rec.vendor_strings);
+    return drivers::build_profile(rec.identity, rec.descriptor, rec.vendor_strings);
   } catch (const drivers::RecordingError& e) {
     std::fprintf(stderr, "penshape hid describe: %s: %s\n", device_file_name(parsed).c_str(),
                  e.what());
-    return kExitBadInput;
   } catch (const drivers::DescriptorError& e) {
     std::fprintf(stderr, "penshape hid describe: %s: %s\n", device_file_name(parsed).c_str(),
                  e.what());
-    return kExitBadInput;
   } catch (const std::invalid_argument& e) {
     std::fprintf(stderr, "penshape hid describe: %s: %s\n", device_file_name(parsed).c_str(),
                  e.what());
-    return kExitBadInput;
   }
-  const auto& reports = profile.descriptor->reports;
+  return std::nullopt;
+}
+
+void json_pen(const drivers::DeviceProfile& profile, JsonWriter& json) {
   const auto& pens = profile.decoder.layouts();
-  if (parsed.flag("--json")) {
-    JsonWriter json;
-    json.begin_object().key("reports").begin_array();
-    for (const ReportLayout& r : reports) {
-      if (r.type != ReportType::kInput) continue;
-      json.begin_object().key("id").integer(r.report_id).key("fields").begin_array();
-      for (const auto& f : r.fields) {
-        json.begin_object();
-        json.key("usage").string(f.is_constant()   ? "padding"
-                                 : f.is_variable() ? drivers::usage_name(f.usage)
-                                                   : drivers::usage_name(f.usage_minimum) + ".." +
-                                                         drivers::usage_name(f.usage_maximum));
-        json.key("bit_offset").integer(f.bit_offset);
-        json.key("size").integer(static_cast<std::int64_t>(f.bit_size) * f.count);
-        json.key("logical_min").integer(f.logical_minimum);
-        json.key("logical_max").integer(f.logical_maximum);
-        json.end_object();
-      }
-      json.end_array().end_object();
-    }
-    json.end_array().key("pen");
-    if (pens.empty()) {
-      json.null();
-    } else {
+  if (pens.empty()) {
+    json.null();
+    return;
+  }
+  json.begin_object();
+  json.key("report_id").integer(pens.front().report_id);
+  json.key("x_max").integer(profile.info.x_max);
+  json.key("y_max").integer(profile.info.y_max);
+  json.key("pressure_max").integer(profile.info.pressure_max);
+  json.key("resolution").number(profile.info.x_resolution);
+  json.key("family").string(profile.family);
+  json.key("physical_size_known").boolean(profile.size_source != drivers::SizeSource::kUnknown);
+  json.key("width_mm").number(profile.info.width_mm());
+  json.key("height_mm").number(profile.info.height_mm());
+  json.key("size_source").string(drivers::size_source_name(profile.size_source));
+  json.end_object();
+}
+
+void print_json(const drivers::DeviceProfile& profile) {
+  JsonWriter json;
+  json.begin_object().key("reports").begin_array();
+  for (const ReportLayout& r : profile.descriptor->reports) {
+    if (r.type != ReportType::kInput) continue;
+    json.begin_object().key("id").integer(r.report_id).key("fields").begin_array();
+    for (const auto& f : r.fields) {
       json.begin_object();
-      json.key("report_id").integer(pens.front().report_id);
-      json.key("x_max").integer(profile.info.x_max);
-      json.key("y_max").integer(profile.info.y_max);
-      json.key("pressure_max").integer(profile.info.pressure_max);
-      json.key("resolution").number(profile.info.x_resolution);
-      json.key("family").string(profile.family);
-      json.key("physical_size_known").boolean(profile.size_source != drivers::SizeSource::kUnknown);
-      json.key("width_mm").number(profile.info.width_mm());
-      json.key("height_mm").number(profile.info.height_mm());
-      json.key("size_source").string(drivers::size_source_name(profile.size_source));
+      json.key("usage").string(field_usage(f));
+      json.key("bit_offset").integer(f.bit_offset);
+      json.key("size").integer(static_cast<std::int64_t>(f.bit_size) * f.count);
+      json.key("logical_min").integer(f.logical_minimum);
+      json.key("logical_max").integer(f.logical_maximum);
       json.end_object();
     }
-    json.end_object();
-    std::puts(json.str().c_str());
-    return kExitOk;
+    json.end_array().end_object();
   }
+  json.end_array().key("pen");
+  json_pen(profile, json);
+  json.end_object();
+  std::puts(json.str().c_str());
+}
+
+void print_reports(const drivers::DeviceProfile& profile) {
   const char* kTypes[] = {"input", "output", "feature"};
-  for (const ReportLayout& r : reports) {
+  for (const ReportLayout& r : profile.descriptor->reports) {
     std::printf("%s report %u: %u bytes\n", kTypes[static_cast<int>(r.type)], r.report_id,
                 r.size_bytes());
     for (const auto& f : r.fields) {
-      const std::string usage = f.is_constant()   ? "padding"
-                                : f.is_variable() ? drivers::usage_name(f.usage)
-                                                  : drivers::usage_name(f.usage_minimum) + ".." +
-                                                        drivers::usage_name(f.usage_maximum);
       std::printf("  bit %4u size %2u x%-3u %-40s logical %d..%d\n", f.bit_offset, f.bit_size,
-                  f.count, usage.c_str(), f.logical_minimum, f.logical_maximum);
+                  f.count, field_usage(f).c_str(), f.logical_minimum, f.logical_maximum);
     }
   }
-  if (pens.empty()) {
-    std::puts("no pen report");
-    return kExitOk;
-  }
+}
+
+void print_pens(const drivers::DeviceProfile& profile) {
   std::printf(
       "pen (%s protocol): x_max %d, y_max %d, pressure_max %u, resolution %.3f x %.3f "
       "units/mm%s\n",
@@ -150,7 +145,7 @@ int run_hid_describe(std::span<const std::string_view> args) {
                 profile.info.width_mm(), profile.info.height_mm(),
                 std::string(drivers::size_source_name(profile.size_source)).c_str());
   }
-  for (const PenLayout& l : pens) {
+  for (const PenLayout& l : profile.decoder.layouts()) {
     std::printf("  report %u (%s, at least %u bytes)\n", l.report_id, l.origin.c_str(),
                 l.min_report_bytes);
     print_pen_field("tip", l.tip);
@@ -167,6 +162,29 @@ int run_hid_describe(std::span<const std::string_view> args) {
     print_pen_field("tilt_y", l.tilt_y);
   }
   for (const auto& n : profile.notes) std::printf("  note: %s\n", n.c_str());
+}
+
+} // namespace
+
+int run_hid_describe(std::span<const std::string_view> args) {
+  const ParsedArgs parsed(
+      args, {.flags = {"--json", "--help"}, .options = {"--vid", "--pid", "--descriptor"}});
+  if (parsed.flag("--help")) {
+    std::puts(kHelp);
+    return kExitOk;
+  }
+  const std::optional<drivers::DeviceProfile> profile = load_profile(parsed);
+  if (!profile) return kExitBadInput;
+  if (parsed.flag("--json")) {
+    print_json(*profile);
+    return kExitOk;
+  }
+  print_reports(*profile);
+  if (profile->decoder.layouts().empty()) {
+    std::puts("no pen report");
+  } else {
+    print_pens(*profile);
+  }
   return kExitOk;
 }
 
