@@ -323,14 +323,72 @@ std::string hold_text(const v1::ShapeRecognized& r) {
   }
 }
 
-} // namespace
+void stroke_finished_json(JsonWriter& json, const v1::StrokeFinished& f) {
+  json.key("type").string("stroke_finished");
+  json.key("stroke_id").integer(static_cast<std::int64_t>(f.stroke().id()));
+  json.key("samples").integer(f.stroke().samples_size());
+  json.key("duration_us")
+      .integer(f.stroke().samples_size() < 2
+                   ? 0
+                   : f.stroke().samples(f.stroke().samples_size() - 1).time_us() -
+                         f.stroke().samples(0).time_us());
+  json.key("ink_polygons").integer(f.ink_polygon().polygons_size());
+  json.key("not_analysed").string(f.not_analysed());
+}
 
-std::string event_json(const v1::LiveEvent& event) {
-  JsonWriter json;
-  json.begin_object();
-  json.key("sequence").integer(static_cast<std::int64_t>(event.sequence()));
-  json.key("published_us").integer(event.published_us());
-  json.key("device_id").string(event.device_id());
+void preview_json(JsonWriter& json, const v1::PreviewCandidates& p) {
+  json.key("type").string("preview");
+  json.key("stroke_id").integer(static_cast<std::int64_t>(p.stroke_id()));
+  json.key("candidates").begin_array();
+  for (const auto& c : p.candidates()) write_shape_json(json, c);
+  json.end_array();
+  if (!p.has_group()) return;
+  const v1::PreviewGroup& g = p.group();
+  json.key("group").begin_object();
+  json.key("shape");
+  write_shape_json(json, g.shape());
+  write_ids(json, "replaced_stroke_ids", g.replaced_stroke_ids());
+  write_ids(json, "supersedes_shape_ids", g.supersedes_shape_ids());
+  write_tidy(json, g.tidy());
+  json.end_object();
+}
+
+void shape_json(JsonWriter& json, const v1::ShapeRecognized& s) {
+  json.key("type").string("shape");
+  json.key("stroke_id").integer(static_cast<std::int64_t>(s.stroke_id()));
+  json.key("shape");
+  write_shape_json(json, s.shape());
+  json.key("alternatives").begin_array();
+  for (const auto& c : s.alternatives()) write_shape_json(json, c);
+  json.end_array();
+  json.key("compute_us").integer(static_cast<std::int64_t>(s.timings().compute_us()));
+  json.key("shape_id").integer(static_cast<std::int64_t>(s.shape_id()));
+  write_ids(json, "replaced_stroke_ids", s.replaced_stroke_ids());
+  write_ids(json, "supersedes_shape_ids", s.supersedes_shape_ids());
+  write_ids(json, "supersedes_sequences", s.supersedes_sequences());
+  write_tidy(json, s.tidy());
+  json.key("trigger").string(trigger_name(s.trigger()));
+  if (s.has_hold()) write_hold_json(json, s.hold());
+}
+
+void deconstructed_json(JsonWriter& json, const v1::StrokeDeconstructed& d) {
+  const auto& r = d.result();
+  json.key("type").string("deconstructed");
+  json.key("stroke_id").integer(static_cast<std::int64_t>(d.stroke_id()));
+  json.key("not_deconstructed").string(d.not_deconstructed());
+  json.key("answer").string(d.not_deconstructed().empty() ? answer_word(r.answer()) : "");
+  json.key("pen_radius").number(r.params().radius().approx());
+  json.key("tolerance").number(r.params().tolerance().approx());
+  json.key("precision").number(r.params().precision().approx());
+  json.key("hausdorff_bound").number(r.certificate().hausdorff_bound().approx());
+  json.key("solution_vertices")
+      .integer(static_cast<std::int64_t>(r.simplification().solution_vertices()));
+  json.key("raw_vertices").integer(static_cast<std::int64_t>(r.simplification().raw_vertices()));
+  json.key("simplified").boolean(r.simplification().simplified());
+  json.key("compute_us").integer(static_cast<std::int64_t>(r.timings().compute_us()));
+}
+
+void event_body_json(JsonWriter& json, const v1::LiveEvent& event) {
   switch (event.kind_case()) {
     case v1::LiveEvent::kDeviceAttached:
       json.key("type").string("device_attached");
@@ -351,74 +409,18 @@ std::string event_json(const v1::LiveEvent& event) {
       for (const auto& s : event.samples().samples()) write_sample_json(json, s);
       json.end_array();
       break;
-    case v1::LiveEvent::kStrokeFinished: {
-      const auto& f = event.stroke_finished();
-      json.key("type").string("stroke_finished");
-      json.key("stroke_id").integer(static_cast<std::int64_t>(f.stroke().id()));
-      json.key("samples").integer(f.stroke().samples_size());
-      json.key("duration_us")
-          .integer(f.stroke().samples_size() < 2
-                       ? 0
-                       : f.stroke().samples(f.stroke().samples_size() - 1).time_us() -
-                             f.stroke().samples(0).time_us());
-      json.key("ink_polygons").integer(f.ink_polygon().polygons_size());
-      json.key("not_analysed").string(f.not_analysed());
+    case v1::LiveEvent::kStrokeFinished:
+      stroke_finished_json(json, event.stroke_finished());
       break;
-    }
     case v1::LiveEvent::kPreview:
-      json.key("type").string("preview");
-      json.key("stroke_id").integer(static_cast<std::int64_t>(event.preview().stroke_id()));
-      json.key("candidates").begin_array();
-      for (const auto& c : event.preview().candidates()) write_shape_json(json, c);
-      json.end_array();
-      if (event.preview().has_group()) {
-        const v1::PreviewGroup& g = event.preview().group();
-        json.key("group").begin_object();
-        json.key("shape");
-        write_shape_json(json, g.shape());
-        write_ids(json, "replaced_stroke_ids", g.replaced_stroke_ids());
-        write_ids(json, "supersedes_shape_ids", g.supersedes_shape_ids());
-        write_tidy(json, g.tidy());
-        json.end_object();
-      }
+      preview_json(json, event.preview());
       break;
     case v1::LiveEvent::kShape:
-      json.key("type").string("shape");
-      json.key("stroke_id").integer(static_cast<std::int64_t>(event.shape().stroke_id()));
-      json.key("shape");
-      write_shape_json(json, event.shape().shape());
-      json.key("alternatives").begin_array();
-      for (const auto& c : event.shape().alternatives()) write_shape_json(json, c);
-      json.end_array();
-      json.key("compute_us")
-          .integer(static_cast<std::int64_t>(event.shape().timings().compute_us()));
-      json.key("shape_id").integer(static_cast<std::int64_t>(event.shape().shape_id()));
-      write_ids(json, "replaced_stroke_ids", event.shape().replaced_stroke_ids());
-      write_ids(json, "supersedes_shape_ids", event.shape().supersedes_shape_ids());
-      write_ids(json, "supersedes_sequences", event.shape().supersedes_sequences());
-      write_tidy(json, event.shape().tidy());
-      json.key("trigger").string(trigger_name(event.shape().trigger()));
-      if (event.shape().has_hold()) write_hold_json(json, event.shape().hold());
+      shape_json(json, event.shape());
       break;
-    case v1::LiveEvent::kDeconstructed: {
-      const auto& d = event.deconstructed();
-      const auto& r = d.result();
-      json.key("type").string("deconstructed");
-      json.key("stroke_id").integer(static_cast<std::int64_t>(d.stroke_id()));
-      json.key("not_deconstructed").string(d.not_deconstructed());
-      json.key("answer").string(d.not_deconstructed().empty() ? answer_word(r.answer()) : "");
-      json.key("pen_radius").number(r.params().radius().approx());
-      json.key("tolerance").number(r.params().tolerance().approx());
-      json.key("precision").number(r.params().precision().approx());
-      json.key("hausdorff_bound").number(r.certificate().hausdorff_bound().approx());
-      json.key("solution_vertices")
-          .integer(static_cast<std::int64_t>(r.simplification().solution_vertices()));
-      json.key("raw_vertices")
-          .integer(static_cast<std::int64_t>(r.simplification().raw_vertices()));
-      json.key("simplified").boolean(r.simplification().simplified());
-      json.key("compute_us").integer(static_cast<std::int64_t>(r.timings().compute_us()));
+    case v1::LiveEvent::kDeconstructed:
+      deconstructed_json(json, event.deconstructed());
       break;
-    }
     case v1::LiveEvent::kDropped:
       json.key("type").string("dropped");
       json.key("count").integer(static_cast<std::int64_t>(event.dropped().count()));
@@ -428,6 +430,17 @@ std::string event_json(const v1::LiveEvent& event) {
       json.key("type").string("unknown");
       break;
   }
+}
+
+} // namespace
+
+std::string event_json(const v1::LiveEvent& event) {
+  JsonWriter json;
+  json.begin_object();
+  json.key("sequence").integer(static_cast<std::int64_t>(event.sequence()));
+  json.key("published_us").integer(event.published_us());
+  json.key("device_id").string(event.device_id());
+  event_body_json(json, event);
   json.end_object();
   return json.str();
 }
