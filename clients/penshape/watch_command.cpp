@@ -151,6 +151,44 @@ std::vector<std::string> split_ids(const std::string& text) {
   return ids;
 }
 
+v1::SubscribeRequest watch_request(const ParsedArgs& parsed) {
+  v1::SubscribeRequest request;
+  request.set_include_samples(parsed.flag("--samples"));
+  request.set_include_previews(parsed.flag("--previews"));
+  request.set_include_deconstruction(parsed.flag("--deconstructions"));
+  if (const auto ids = parsed.value("--device")) {
+    for (const auto& id : split_ids(*ids)) request.add_device_ids(id);
+  }
+  return request;
+}
+
+std::optional<SvgArchive> svg_archive(const ParsedArgs& parsed) {
+  const auto dir = parsed.value("--svg-dir");
+  if (!dir) return std::nullopt;
+  std::error_code ec;
+  std::filesystem::create_directories(*dir, ec);
+  if (ec || !std::filesystem::is_directory(*dir)) {
+    throw UsageError("--svg-dir " + *dir + ": cannot create the directory" +
+                     (ec ? " (" + ec.message() + ")" : ""));
+  }
+  return std::optional<SvgArchive>(std::in_place, *dir);
+}
+
+// How the subscription ended, as the exit code: a cancel on purpose (--count, Ctrl-C), the
+// --duration deadline and the daemon stopping are normal ends.
+int watch_exit(const grpc::Status& status, bool on_purpose, bool timed,
+               const std::string& address) {
+  if (on_purpose) return kExitOk;
+  if (timed && status.error_code() == grpc::StatusCode::DEADLINE_EXCEEDED) return kExitOk;
+  if (status.ok()) {
+    std::fprintf(stderr, "penshape watch: penshaped stopped; the subscription ended\n");
+    return kExitOk;
+  }
+  const RpcFailure failure = describe_rpc_failure(status, "Subscribe", address);
+  std::fprintf(stderr, "penshape watch: %s\n", failure.message.c_str());
+  return failure.exit_code;
+}
+
 } // namespace
 
 int run_watch(std::span<const std::string_view> args) {
@@ -171,23 +209,8 @@ int run_watch(std::span<const std::string_view> args) {
   if (duration && (*duration <= 0 || *duration > 1e7)) {
     throw UsageError("option '--duration' needs a number of seconds > 0");
   }
-  v1::SubscribeRequest request;
-  request.set_include_samples(parsed.flag("--samples"));
-  request.set_include_previews(parsed.flag("--previews"));
-  request.set_include_deconstruction(parsed.flag("--deconstructions"));
-  if (const auto ids = parsed.value("--device")) {
-    for (const auto& id : split_ids(*ids)) request.add_device_ids(id);
-  }
-  std::optional<SvgArchive> archive;
-  if (const auto dir = parsed.value("--svg-dir")) {
-    std::error_code ec;
-    std::filesystem::create_directories(*dir, ec);
-    if (ec || !std::filesystem::is_directory(*dir)) {
-      throw UsageError("--svg-dir " + *dir + ": cannot create the directory" +
-                       (ec ? " (" + ec.message() + ")" : ""));
-    }
-    archive.emplace(*dir);
-  }
+  const v1::SubscribeRequest request = watch_request(parsed);
+  std::optional<SvgArchive> archive = svg_archive(parsed);
   const bool json = parsed.flag("--json");
 
   CancelOnSignal cancel; // before any gRPC thread exists
@@ -228,15 +251,7 @@ int run_watch(std::span<const std::string_view> args) {
       std::fprintf(stderr, "penshape watch: %zu pictures in %s\n", archive->written(),
                    parsed.value("--svg-dir")->c_str());
     }
-    if (reached_count || cancel.fired()) return kExitOk; // both cancel the call on purpose
-    if (duration && status.error_code() == grpc::StatusCode::DEADLINE_EXCEEDED) return kExitOk;
-    if (status.ok()) {
-      std::fprintf(stderr, "penshape watch: penshaped stopped; the subscription ended\n");
-      return kExitOk;
-    }
-    const RpcFailure failure = describe_rpc_failure(status, "Subscribe", address);
-    std::fprintf(stderr, "penshape watch: %s\n", failure.message.c_str());
-    return failure.exit_code;
+    return watch_exit(status, reached_count || cancel.fired(), duration.has_value(), address);
   } catch (const DaemonUnavailable& e) {
     std::fprintf(stderr, "penshape watch: %s\n", e.what());
     return kExitInternal;
