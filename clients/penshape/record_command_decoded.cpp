@@ -14,6 +14,39 @@
 #include "record_command.hpp"
 
 namespace penshape::cli {
+namespace {
+
+struct ReadOutcome {
+  bool done = false;         // --samples or --strokes reached
+  std::uint64_t dropped = 0; // events the daemon dropped for this client
+};
+
+// The stream's samples into the file until it ends or a --samples / --strokes limit is reached.
+template <typename Reader>
+ReadOutcome write_samples(Reader& reader, HidRecordingWriter& writer,
+                          const RecordOptions& options) {
+  ReadOutcome out;
+  std::uint64_t strokes = 0;
+  v1::LiveEvent event;
+  while (!out.done && reader.Read(&event)) {
+    if (event.has_samples()) {
+      for (const auto& s : event.samples().samples()) {
+        writer.write(proto::from_proto(s));
+        if (options.max_samples && writer.reports() >= *options.max_samples) {
+          out.done = true;
+          break;
+        }
+      }
+    } else if (event.has_stroke_finished()) {
+      if (options.max_strokes && ++strokes >= *options.max_strokes) out.done = true;
+    } else if (event.has_dropped()) {
+      out.dropped += event.dropped().count();
+    }
+  }
+  return out;
+}
+
+} // namespace
 
 int record_decoded(v1::Live::Stub& stub, const RecordOptions& options, CancelOnSignal& cancel) {
   int exit_code = kExitOk;
@@ -58,25 +91,9 @@ int record_decoded(v1::Live::Stub& stub, const RecordOptions& options, CancelOnS
   reader->WaitForInitialMetadata();
   std::fprintf(stderr, "penshape record: recording %s into %s (decoded samples; Ctrl-C to stop)\n",
                device_id.c_str(), options.path.c_str());
-  std::uint64_t strokes = 0;
-  bool done = false;
-  std::uint64_t dropped = 0;
-  v1::LiveEvent event;
-  while (!done && reader->Read(&event)) {
-    if (event.has_samples()) {
-      for (const auto& s : event.samples().samples()) {
-        writer.write(proto::from_proto(s));
-        if (options.max_samples && writer.reports() >= *options.max_samples) {
-          done = true;
-          break;
-        }
-      }
-    } else if (event.has_stroke_finished()) {
-      if (options.max_strokes && ++strokes >= *options.max_strokes) done = true;
-    } else if (event.has_dropped()) {
-      dropped += event.dropped().count();
-    }
-  }
+  const ReadOutcome read = write_samples(*reader, writer, options);
+  const bool done = read.done;
+  const std::uint64_t dropped = read.dropped;
   if (done) context.TryCancel();
   const grpc::Status status = reader->Finish();
   out.flush();
