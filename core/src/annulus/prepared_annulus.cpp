@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "geometry/distance_kernel.hpp"
 
@@ -142,12 +143,10 @@ Box Piece::box() const {
 }
 
 namespace {
-PreparedAnnulus prepare_single(const TemplatePolygon& p, OuterOffset outer, double delta) {
-  PreparedAnnulus an;
-  an.convex = p.convex();
-  an.outer = outer;
-  an.delta = delta;
-  const auto& v = p.vertices();
+
+// P's edges (with their unit outer normals and lines) and each edge's stadium box; returns the
+// box of all stadiums.
+Box add_edges(const std::vector<PointD>& v, double delta, PreparedAnnulus& an) {
   const std::size_t m = v.size();
   for (std::size_t k = 0; k < m; ++k) {
     Edge e;
@@ -167,26 +166,28 @@ PreparedAnnulus prepare_single(const TemplatePolygon& p, OuterOffset outer, doub
     box = {std::min(box.x0, b.x0), std::min(box.y0, b.y0), std::max(box.x1, b.x1),
            std::max(box.y1, b.y1)};
   }
-  if (!p.convex()) {
-    // Every piece of every stadium boundary: a superset of the annulus boundary (Section 5).
-    for (const Edge& e : an.edges) {
-      const PointD b = e.a + e.v;
-      for (double side : {1.0, -1.0}) {
-        Piece s;
-        s.a = e.a + e.n * (side * delta);
-        s.b = b + e.n * (side * delta);
-        an.outer_curve.push_back(s);
-        if (delta == 0.0) break;
-      }
-      if (delta > 0.0) {
-        an.outer_curve.push_back(arc_piece(e.a, delta, -std::numbers::pi, std::numbers::pi));
-      }
+  return box;
+}
+
+// Every piece of every stadium boundary: a superset of the annulus boundary (Section 5).
+void add_stadium_pieces(double delta, PreparedAnnulus& an) {
+  for (const Edge& e : an.edges) {
+    const PointD b = e.a + e.v;
+    for (double side : {1.0, -1.0}) {
+      Piece s;
+      s.a = e.a + e.n * (side * delta);
+      s.b = b + e.n * (side * delta);
+      an.outer_curve.push_back(s);
+      if (delta == 0.0) break;
     }
-    an.outer_stride = 2.0;
-    an.box = box;
-    return an;
+    if (delta > 0.0) {
+      an.outer_curve.push_back(arc_piece(e.a, delta, -std::numbers::pi, std::numbers::pi));
+    }
   }
-  // Inner offset: P clipped by every edge line moved inwards by delta.
+}
+
+// Inner offset: P clipped by every edge line moved inwards by delta (kept when not degenerate).
+void add_inner_offset(const std::vector<PointD>& v, double delta, PreparedAnnulus& an) {
   std::vector<PointD> inner = v;
   for (const Edge& e : an.edges) {
     inner = clip(inner, e.n, e.h - delta);
@@ -198,6 +199,42 @@ PreparedAnnulus prepare_single(const TemplatePolygon& p, OuterOffset outer, doub
     an.inner = inner;
     an.inner_curve = polygon_curve(inner);
   }
+}
+
+// The exact outer offset's boundary: each edge moved outwards by delta, and the arc of radius
+// delta at each vertex between consecutive edges' normals.
+void add_round_outer(double delta, PreparedAnnulus& an) {
+  const std::size_t m = an.edges.size();
+  for (std::size_t k = 0; k < m; ++k) {
+    const Edge& e = an.edges[k];
+    const Edge& next = an.edges[(k + 1) % m];
+    Piece s;
+    s.a = e.a + e.n * delta;
+    s.b = (e.a + e.v) + e.n * delta;
+    an.outer_curve.push_back(s);
+    if (delta > 0.0) {
+      const double phi0 = std::atan2(e.n.y, e.n.x);
+      double phi1 = std::atan2(next.n.y, next.n.x);
+      if (phi1 < phi0) phi1 += 2.0 * std::numbers::pi;
+      an.outer_curve.push_back(arc_piece(next.a, delta, phi0, phi1));
+    }
+  }
+}
+
+PreparedAnnulus prepare_single(const TemplatePolygon& p, OuterOffset outer, double delta) {
+  PreparedAnnulus an;
+  an.convex = p.convex();
+  an.outer = outer;
+  an.delta = delta;
+  const auto& v = p.vertices();
+  const std::size_t m = v.size();
+  an.box = add_edges(v, delta, an);
+  if (!p.convex()) {
+    add_stadium_pieces(delta, an);
+    an.outer_stride = 2.0;
+    return an;
+  }
+  add_inner_offset(v, delta, an);
   // Linearized outer offset: consecutive edge lines moved outwards by delta meet at a miter.
   for (std::size_t k = 0; k < m; ++k) {
     const Edge& prev = an.edges[(k + m - 1) % m];
@@ -205,28 +242,15 @@ PreparedAnnulus prepare_single(const TemplatePolygon& p, OuterOffset outer, doub
     const double s = delta / (1.0 + dot(prev.n, cur.n));
     an.outer_poly.push_back(v[k] + (prev.n + cur.n) * s);
   }
-  if (outer == OuterOffset::kLinearized) {
-    an.outer_curve = polygon_curve(an.outer_poly);
-    box = {an.outer_poly[0].x, an.outer_poly[0].y, an.outer_poly[0].x, an.outer_poly[0].y};
-    for (const PointD& q : an.outer_poly) {
-      box = {std::min(box.x0, q.x), std::min(box.y0, q.y), std::max(box.x1, q.x),
-             std::max(box.y1, q.y)};
-    }
-  } else {
-    for (std::size_t k = 0; k < m; ++k) {
-      const Edge& e = an.edges[k];
-      const Edge& next = an.edges[(k + 1) % m];
-      Piece s;
-      s.a = e.a + e.n * delta;
-      s.b = (e.a + e.v) + e.n * delta;
-      an.outer_curve.push_back(s);
-      if (delta > 0.0) {
-        const double phi0 = std::atan2(e.n.y, e.n.x);
-        double phi1 = std::atan2(next.n.y, next.n.x);
-        if (phi1 < phi0) phi1 += 2.0 * std::numbers::pi;
-        an.outer_curve.push_back(arc_piece(next.a, delta, phi0, phi1));
-      }
-    }
+  if (outer != OuterOffset::kLinearized) {
+    add_round_outer(delta, an);
+    return an;
+  }
+  an.outer_curve = polygon_curve(an.outer_poly);
+  Box box{an.outer_poly[0].x, an.outer_poly[0].y, an.outer_poly[0].x, an.outer_poly[0].y};
+  for (const PointD& q : an.outer_poly) {
+    box = {std::min(box.x0, q.x), std::min(box.y0, q.y), std::max(box.x1, q.x),
+           std::max(box.y1, q.y)};
   }
   an.box = box;
   return an;
@@ -262,84 +286,92 @@ PreparedAnnulus prepare(const TemplatePolygon& p, OuterOffset outer, double delt
   return prepare(p, outer, delta, delta);
 }
 
-IntervalSet member_set(const PreparedAnnulus& an, const Piece& piece, PointD d) {
+namespace {
+
+// Every corner of the piece's box inside the hole's disk: the piece is inside the open hole.
+bool inside_hole_disk(const PreparedAnnulus& an, const Box& pb) {
+  if (an.hole_radius <= 0.0) return false;
+  const double r2 = an.hole_radius * an.hole_radius;
+  for (double x : {pb.x0, pb.x1}) {
+    for (double y : {pb.y0, pb.y1}) {
+      const double dx = x - an.hole_centre.x;
+      const double dy = y - an.hole_centre.y;
+      if (!(dx * dx + dy * dy < r2)) return false;
+    }
+  }
+  return true;
+}
+
+// Lipschitz filter: the annulus measure is 1-Lipschitz and every point of the piece is within
+// `reach` of its middle, so a middle far inside or far outside decides the whole piece.
+std::optional<IntervalSet> decided_by_middle(const PreparedAnnulus& an, const Piece& piece,
+                                             PointD d) {
+  const double mid_t = 0.5 * (piece.lo() + piece.hi());
+  const PointD z = piece.at(mid_t) + d;
+  const double reach = piece.arc ? piece.r * 0.5 * (piece.phi1 - piece.phi0)
+                                 : 0.5 * std::sqrt(dot(piece.b - piece.a, piece.b - piece.a));
+  const double m = prepared_measure(an, z);
+  const double slack = 1e-12 * (std::abs(z.x) + std::abs(z.y) + reach + an.delta) + 1e-300;
+  if (m + reach < an.delta - slack) return IntervalSet{{piece.lo(), piece.hi()}};
+  if (m - reach > an.delta + slack) return IntervalSet{};
+  return std::nullopt;
+}
+
+// A convex annulus's outer offset on the segment z0 + t w: one interval [lo, hi], or false.
+bool segment_in_convex_outer(const PreparedAnnulus& an, const Box& pb, PointD z0, PointD w,
+                             double& lo, double& hi) {
+  if (an.outer == OuterOffset::kLinearized) {
+    return segment_in_halfplanes(an.edges, an.delta, z0, w, lo, hi);
+  }
+  // P + disk(delta) is convex, so its trace on the segment is one interval: the hull of the
+  // traces of P and of the stadiums that make it up.
+  IntervalSet parts;
+  if (segment_in_halfplanes(an.edges, 0.0, z0, w, lo, hi)) parts.push_back({lo, hi});
+  for (std::size_t k = 0; k < an.edges.size(); ++k) {
+    if (overlaps(pb, an.stadium_boxes[k])) segment_in_stadium(an.edges[k], an.delta, z0, w, parts);
+  }
+  if (parts.empty()) return false;
+  lo = parts.front().lo;
+  hi = parts.front().hi;
+  for (const Interval& iv : parts) {
+    lo = std::min(lo, iv.lo);
+    hi = std::max(hi, iv.hi);
+  }
+  return true;
+}
+
+IntervalSet segment_members(const PreparedAnnulus& an, const Piece& piece, PointD d,
+                            const Box& pb) {
   IntervalSet result;
-  const Box pb = shifted(piece.box(), d);
-  if (!overlaps(pb, an.box)) return result;
-  if (an.hole_radius > 0.0) {
-    // Every corner of the piece's box inside the disk: the piece is inside the open hole.
-    const double r2 = an.hole_radius * an.hole_radius;
-    bool inside = true;
-    for (double x : {pb.x0, pb.x1}) {
-      for (double y : {pb.y0, pb.y1}) {
-        const double dx = x - an.hole_centre.x;
-        const double dy = y - an.hole_centre.y;
-        inside = inside && dx * dx + dy * dy < r2;
-      }
+  const PointD z0 = piece.a + d;
+  const PointD w = piece.b - piece.a;
+  if (!an.convex) {
+    for (std::size_t k = 0; k < an.edges.size(); ++k) {
+      if (overlaps(pb, an.stadium_boxes[k]))
+        segment_in_stadium(an.edges[k], an.delta, z0, w, result);
     }
-    if (inside) return result;
-  }
-  // Lipschitz filter: the annulus measure is 1-Lipschitz and every point of the piece is within
-  // `reach` of its middle, so a middle far inside or far outside decides the whole piece.
-  {
-    const double mid_t = 0.5 * (piece.lo() + piece.hi());
-    const PointD z = piece.at(mid_t) + d;
-    const double reach = piece.arc ? piece.r * 0.5 * (piece.phi1 - piece.phi0)
-                                   : 0.5 * std::sqrt(dot(piece.b - piece.a, piece.b - piece.a));
-    const double m = prepared_measure(an, z);
-    const double slack = 1e-12 * (std::abs(z.x) + std::abs(z.y) + reach + an.delta) + 1e-300;
-    if (m + reach < an.delta - slack) {
-      result.push_back({piece.lo(), piece.hi()});
-      return result;
-    }
-    if (m - reach > an.delta + slack) return result;
-  }
-  const double delta = an.delta;
-  if (!piece.arc) {
-    const PointD z0 = piece.a + d;
-    const PointD w = piece.b - piece.a;
-    if (!an.convex) {
-      for (std::size_t k = 0; k < an.edges.size(); ++k) {
-        if (overlaps(pb, an.stadium_boxes[k]))
-          segment_in_stadium(an.edges[k], delta, z0, w, result);
-      }
-      normalize(result);
-      return result;
-    }
-    double lo = 0.0;
-    double hi = 0.0;
-    if (an.outer == OuterOffset::kLinearized) {
-      if (!segment_in_halfplanes(an.edges, delta, z0, w, lo, hi)) return result;
-    } else {
-      // P + disk(delta) is convex, so its trace on the segment is one interval: the hull of the
-      // traces of P and of the stadiums that make it up.
-      IntervalSet parts;
-      if (segment_in_halfplanes(an.edges, 0.0, z0, w, lo, hi)) parts.push_back({lo, hi});
-      for (std::size_t k = 0; k < an.edges.size(); ++k) {
-        if (overlaps(pb, an.stadium_boxes[k])) segment_in_stadium(an.edges[k], delta, z0, w, parts);
-      }
-      if (parts.empty()) return result;
-      lo = parts.front().lo;
-      hi = parts.front().hi;
-      for (const Interval& iv : parts) {
-        lo = std::min(lo, iv.lo);
-        hi = std::max(hi, iv.hi);
-      }
-    }
-    result.push_back({lo, hi});
-    if (an.has_hole) {
-      double ilo = 0.0;
-      double ihi = 0.0;
-      if (segment_in_halfplanes(an.edges, -delta, z0, w, ilo, ihi)) {
-        // Ends clamped by the piece are not boundaries of the open hole: extend them past it.
-        result = subtract_interior(result,
-                                   IntervalSet{{ilo <= 0.0 ? -1.0 : ilo, ihi >= 1.0 ? 2.0 : ihi}});
-      }
-    }
+    normalize(result);
     return result;
   }
+  double lo = 0.0;
+  double hi = 0.0;
+  if (!segment_in_convex_outer(an, pb, z0, w, lo, hi)) return result;
+  result.push_back({lo, hi});
+  double ilo = 0.0;
+  double ihi = 0.0;
+  if (an.has_hole && segment_in_halfplanes(an.edges, -an.delta, z0, w, ilo, ihi)) {
+    // Ends clamped by the piece are not boundaries of the open hole: extend them past it.
+    result =
+        subtract_interior(result, IntervalSet{{ilo <= 0.0 ? -1.0 : ilo, ihi >= 1.0 ? 2.0 : ihi}});
+  }
+  return result;
+}
+
+IntervalSet arc_members(const PreparedAnnulus& an, const Piece& piece, PointD d, const Box& pb) {
+  IntervalSet result;
   const PointD z0 = piece.c + d;
   const double r = piece.r;
+  const double delta = an.delta;
   if (!an.convex) {
     for (std::size_t k = 0; k < an.edges.size(); ++k) {
       if (overlaps(pb, an.stadium_boxes[k])) {
@@ -369,6 +401,15 @@ IntervalSet member_set(const PreparedAnnulus& an, const Piece& piece, PointD d) 
     }
   }
   return result;
+}
+
+} // namespace
+
+IntervalSet member_set(const PreparedAnnulus& an, const Piece& piece, PointD d) {
+  const Box pb = shifted(piece.box(), d);
+  if (!overlaps(pb, an.box) || inside_hole_disk(an, pb)) return {};
+  if (std::optional<IntervalSet> decided = decided_by_middle(an, piece, d)) return *decided;
+  return piece.arc ? arc_members(an, piece, d, pb) : segment_members(an, piece, d, pb);
 }
 
 double annulus_measure(const TemplatePolygon& p, OuterOffset outer, PointD x) {
