@@ -95,6 +95,110 @@ std::vector<std::size_t> masks_by_size(const std::vector<std::size_t>& recent,
   return out;
 }
 
+// Indices of the recent groups that may still grow with a stroke starting at `start`, newest
+// first (at most kMaxRecentGroups); none for a dot or without grouping.
+template <typename Entries>
+std::vector<std::size_t> growable_groups(const Entries& groups, const GroupingConfig& grouping,
+                                         double start, bool dot) {
+  std::vector<std::size_t> recent;
+  if (!grouping.enabled || dot) return recent;
+  for (std::size_t g = groups.size(); g-- > 0 && recent.size() < kMaxRecentGroups;) {
+    const auto& e = groups[g];
+    if (!e.joinable || start - e.end_time > grouping.max_pause_seconds) continue;
+    if (e.shape.strokes.size() + 1 > grouping.max_strokes) continue;
+    recent.push_back(g);
+  }
+  return recent;
+}
+
+// The strokes' touch paths, each thinned once per add().
+class TouchCache {
+ public:
+  TouchCache(const std::map<std::size_t, StrokeInput>& strokes, const StrokeInput& stroke)
+      : strokes_(strokes), own_(touch_path(stroke.samples)) {}
+  const Touch& of(std::size_t s) {
+    auto it = cache_.find(s);
+    if (it == cache_.end()) it = cache_.emplace(s, touch_path(strokes_.at(s).samples)).first;
+    return it->second;
+  }
+  [[nodiscard]] const Touch& own() const { return own_; }
+
+ private:
+  const std::map<std::size_t, StrokeInput>& strokes_;
+  Touch own_;
+  std::map<std::size_t, Touch> cache_;
+};
+
+// The best union of recent groups with the new stroke: the most strokes, then the best rank,
+// among those that snap, touch end to end and are drawn as that shape is drawn in pieces.
+struct BestUnion {
+  std::optional<UnionRecognition> best;
+  std::vector<std::size_t> groups; // indices into the grouper's groups absorbed
+};
+
+struct UnionContext {
+  const StrokeInput& stroke;
+  const RecognizerConfig& config;     // with the stroke's pen radius
+  const RecognizerConfig& recognizer; // the grouper's own
+  const GroupingConfig& grouping;
+  const std::map<std::size_t, StrokeInput>& strokes;
+};
+
+template <typename Entries>
+BestUnion best_union(const UnionContext& c, const std::vector<std::size_t>& recent,
+                     const Entries& groups) {
+  BestUnion out;
+  TouchCache touches(c.strokes, c.stroke);
+  std::size_t best_count = 2;
+  for (const std::size_t mask : masks_by_size(recent, groups)) {
+    std::vector<std::size_t> members;
+    std::vector<std::size_t> chosen;
+    for (std::size_t k = 0; k < recent.size(); ++k) {
+      if (!(mask & (std::size_t{1} << k))) continue;
+      chosen.push_back(recent[k]);
+      const auto& s = groups[recent[k]].shape.strokes;
+      members.insert(members.end(), s.begin(), s.end());
+    }
+    if (members.size() + 1 > c.grouping.max_strokes || members.size() + 1 < best_count) continue;
+    std::sort(members.begin(), members.end());
+    std::vector<StrokeInput> inputs;
+    std::vector<StrokePoint> all;
+    std::vector<const Touch*> t;
+    for (const std::size_t s : members) {
+      const StrokeInput& kept = c.strokes.at(s);
+      inputs.push_back(kept);
+      all.insert(all.end(), kept.samples.begin(), kept.samples.end());
+      t.push_back(&touches.of(s));
+    }
+    inputs.push_back(path_only(c.stroke));
+    all.insert(all.end(), c.stroke.samples.begin(), c.stroke.samples.end());
+    t.push_back(&touches.own());
+    const ToleranceChoice tol = choose_tolerance(all, c.config);
+    if (!connected(t, 2.0 * tol.pen_radius + tol.epsilon)) continue;
+    UnionRecognition u = recognize_detail::recognize_union_detail(inputs, c.recognizer);
+    if (!snaps(u.recognition)) continue;
+    if (!recognize_detail::group_implausibility(u.recognition, inputs, c.config).empty()) continue;
+    const std::size_t count = members.size() + 1;
+    if (!out.best || count > best_count || (count == best_count && u.rank < out.best->rank)) {
+      out.best = std::move(u);
+      best_count = count;
+      out.groups = std::move(chosen);
+    }
+  }
+  return out;
+}
+
+// Recent shapes (newest first, at most max_strokes) that connection and parallelism refer to.
+template <typename Entries>
+std::vector<const Recognition*> neighbour_shapes(const Entries& groups, std::size_t max_strokes) {
+  std::vector<const Recognition*> neighbours;
+  for (std::size_t g = groups.size(); g-- > 0 && neighbours.size() < max_strokes;) {
+    const Recognition& n = groups[g].shape.recognition;
+    if (snaps(n) && n.shape != ShapeClass::kDot) neighbours.push_back(&n); // a dot aligns nothing
+  }
+  return neighbours;
+}
+
 } // namespace
 
 StrokeGrouper::StrokeGrouper(GroupingConfig grouping, RecognizerConfig recognizer)
@@ -159,72 +263,19 @@ GroupUpdate StrokeGrouper::add(const StrokeInput& stroke) {
   recognize_detail::validate_samples(stroke.samples, config);
   const std::size_t index = added_;
   const double start = stroke.samples.front().t;
-
-  // The best union with recent groups that snaps; else (below) the new stroke alone.
-  std::optional<UnionRecognition> best;
-  std::vector<std::size_t> best_groups; // indices into groups_ absorbed
-
-  // Recent groups that may still grow.
-  std::vector<std::size_t> recent;
   const bool dot = recognize_detail::is_dot(stroke.samples); // never joins other strokes
-  if (grouping_.enabled && !dot) {
-    for (std::size_t g = groups_.size(); g-- > 0 && recent.size() < kMaxRecentGroups;) {
-      const Entry& e = groups_[g];
-      if (!e.joinable || start - e.end_time > grouping_.max_pause_seconds) continue;
-      if (e.shape.strokes.size() + 1 > grouping_.max_strokes) continue;
-      recent.push_back(g);
-    }
-  }
-  const Touch own = touch_path(stroke.samples);
-  std::map<std::size_t, Touch> cache;
-  auto touch_of = [&](std::size_t s) -> const Touch& {
-    auto it = cache.find(s);
-    if (it == cache.end()) it = cache.emplace(s, touch_path(strokes_.at(s).samples)).first;
-    return it->second;
-  };
-  std::size_t best_count = 2;
-  for (const std::size_t mask : masks_by_size(recent, groups_)) {
-    std::vector<std::size_t> members;
-    std::vector<std::size_t> groups;
-    for (std::size_t k = 0; k < recent.size(); ++k) {
-      if (!(mask & (std::size_t{1} << k))) continue;
-      groups.push_back(recent[k]);
-      const auto& s = groups_[recent[k]].shape.strokes;
-      members.insert(members.end(), s.begin(), s.end());
-    }
-    if (members.size() + 1 > grouping_.max_strokes || members.size() + 1 < best_count) continue;
-    std::sort(members.begin(), members.end());
-    std::vector<StrokeInput> inputs;
-    std::vector<StrokePoint> all;
-    std::vector<const Touch*> t;
-    for (const std::size_t s : members) {
-      const StrokeInput& kept = strokes_.at(s);
-      inputs.push_back(kept);
-      all.insert(all.end(), kept.samples.begin(), kept.samples.end());
-      t.push_back(&touch_of(s));
-    }
-    inputs.push_back(path_only(stroke));
-    all.insert(all.end(), stroke.samples.begin(), stroke.samples.end());
-    t.push_back(&own);
-    const ToleranceChoice tol = choose_tolerance(all, config);
-    if (!connected(t, 2.0 * tol.pen_radius + tol.epsilon)) continue;
-    UnionRecognition u = recognize_detail::recognize_union_detail(inputs, recognizer_);
-    if (!snaps(u.recognition)) continue;
-    // Certified, but not drawn as that shape is drawn in pieces (group_plausibility.hpp).
-    if (!recognize_detail::group_implausibility(u.recognition, inputs, config).empty()) continue;
-    const std::size_t count = members.size() + 1;
-    if (!best || count > best_count || (count == best_count && u.rank < best->rank)) {
-      best = std::move(u);
-      best_count = count;
-      best_groups = std::move(groups);
-    }
-  }
 
-  // The new stroke alone (ink certificate when its ink is given), arrows included.
-  if (!best) best = recognize_detail::recognize_union_detail({&stroke, 1}, recognizer_);
+  // The best union with recent groups that snaps; else the new stroke alone (ink certificate
+  // when its ink is given), arrows included.
+  BestUnion chosen = best_union({stroke, config, recognizer_, grouping_, strokes_},
+                                growable_groups(groups_, grouping_, start, dot), groups_);
+  std::vector<std::size_t>& best_groups = chosen.groups;
+  if (!chosen.best)
+    chosen.best = recognize_detail::recognize_union_detail({&stroke, 1}, recognizer_);
+  UnionRecognition& best = *chosen.best;
   // A lone stroke certified on its ink keeps being certified on it (tidy-up): Q is obtained
   // then only, before anything changes (when still being built, its errors refuse the stroke).
-  const Recognition& won = best->recognition;
+  const Recognition& won = best.recognition;
   const bool tidy_on_ink = best_groups.empty() && won.certificate.method == "ink" && snaps(won) &&
                            won.shape != ShapeClass::kDot;
   const InkPolygon* stroke_ink = tidy_on_ink ? recognize_detail::given_ink(stroke) : nullptr;
@@ -243,19 +294,15 @@ GroupUpdate StrokeGrouper::add(const StrokeInput& stroke) {
   for (std::size_t k = best_groups.size(); k-- > 0;) {
     groups_.erase(groups_.begin() + static_cast<std::ptrdiff_t>(best_groups[k]));
   }
-  // Recent shapes other than this one: what connection and parallelism refer to.
-  std::vector<const Recognition*> neighbours;
-  for (std::size_t g = groups_.size(); g-- > 0 && neighbours.size() < grouping_.max_strokes;) {
-    const Recognition& n = groups_[g].shape.recognition;
-    if (snaps(n) && n.shape != ShapeClass::kDot) neighbours.push_back(&n); // a dot aligns nothing
-  }
-  shape.recognition = std::move(best->recognition);
+  const std::vector<const Recognition*> neighbours =
+      neighbour_shapes(groups_, grouping_.max_strokes);
+  shape.recognition = std::move(best.recognition);
   // A lone stroke recognized on its ink keeps being certified on it.
   const InkPolygon* ink = shape.strokes.size() == 1 && shape.recognition.certificate.method == "ink"
                               ? stroke_ink
                               : nullptr;
   shape.tidy =
-      recognize_detail::tidy_up(shape.recognition, best->strokes, grouping_.tidy, neighbours, ink);
+      recognize_detail::tidy_up(shape.recognition, best.strokes, grouping_.tidy, neighbours, ink);
   update.replaced_strokes = shape.strokes;
 
   // Groups too old for any later stroke (drawn later, so starting no earlier) drop their samples.
