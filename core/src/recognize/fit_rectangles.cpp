@@ -41,13 +41,14 @@ void normalise(double& theta, double& w, double& h) {
   }
 }
 
-} // namespace
+// A first rectangle for the quadrilateral q: orientation from its sides averaged modulo 90
+// degrees (angles times four, by length), extents and centre from its corners along those axes.
+struct RectangleStart {
+  PointD centre;
+  double w, h, theta;
+};
 
-std::vector<Fit> fit_rectangles(const PreparedStroke& s, const Fit& quad) {
-  const std::vector<PointD>& q = quad.params.vertices;
-  if (q.size() != 4) return {};
-  const double size = s.size;
-  // Orientation: the side directions averaged modulo 90 degrees (angles times four), by length.
+RectangleStart rectangle_start(const std::vector<PointD>& q, PointD c0) {
   PointD acc;
   for (std::size_t i = 0; i < 4; ++i) {
     const PointD d = q[(i + 1) % 4] - q[i];
@@ -56,7 +57,6 @@ std::vector<Fit> fit_rectangles(const PreparedStroke& s, const Fit& quad) {
     acc = acc + PointD{len * std::cos(4 * a), len * std::sin(4 * a)};
   }
   const double theta0 = std::atan2(acc.y, acc.x) / 4;
-  const PointD c0 = quad.params.center;
   const PointD u{std::cos(theta0), std::sin(theta0)};
   const PointD v{-u.y, u.x};
   std::vector<double> us, vs;
@@ -70,9 +70,12 @@ std::vector<Fit> fit_rectangles(const PreparedStroke& s, const Fit& quad) {
   const double h0 = (vs[2] + vs[3] - vs[0] - vs[1]) / 2;
   const PointD centre0 =
       c0 + ((us[0] + us[1] + us[2] + us[3]) / 4) * u + ((vs[0] + vs[1] + vs[2] + vs[3]) / 4) * v;
+  return {centre0, w0, h0, theta0};
+}
 
-  std::vector<Fit> out;
-  // Rectangle: centre, width, height, angle (scaled by the size so one step fits all).
+// Rectangle: centre, width, height, angle (scaled by the size so one step fits all).
+Fit fit_rectangle(const PreparedStroke& s, const RectangleStart& start) {
+  const double size = s.size;
   const ShapeBuilder rect = [size](const std::vector<double>& p) -> std::optional<CleanShape> {
     if (p[2] <= 0 || p[3] <= 0) return std::nullopt;
     CleanShape c;
@@ -80,7 +83,8 @@ std::vector<Fit> fit_rectangles(const PreparedStroke& s, const Fit& quad) {
     return c;
   };
   const Refinement r =
-      refine_minimax(s, {centre0.x, centre0.y, w0, h0, theta0 * size}, rect, 0.02 * size, true);
+      refine_minimax(s, {start.centre.x, start.centre.y, start.w, start.h, start.theta * size},
+                     rect, 0.02 * size, true);
   double theta = r.params[4] / size, w = r.params[2], h = r.params[3];
   normalise(theta, w, h);
   const PointD rc{r.params[0], r.params[1]};
@@ -88,26 +92,33 @@ std::vector<Fit> fit_rectangles(const PreparedStroke& s, const Fit& quad) {
       make_fit(ShapeClass::kRectangle, rectangle_corners(rc, w, h, theta), r.objective, rc, theta);
   rf.params.radius_x = w / 2;
   rf.params.radius_y = h / 2;
-  out.push_back(rf);
+  return rf;
+}
 
-  // Square: centre, side, angle.
+// Square: centre, side, angle, from the fitted rectangle.
+Fit fit_square(const PreparedStroke& s, const Fit& rectangle) {
+  const double size = s.size;
   const ShapeBuilder square = [size](const std::vector<double>& p) -> std::optional<CleanShape> {
     if (p[2] <= 0) return std::nullopt;
     CleanShape c;
     c.path = closed_ring(rectangle_corners({p[0], p[1]}, p[2], p[2], p[3] / size));
     return c;
   };
-  const Refinement sq =
-      refine_minimax(s, {rc.x, rc.y, (w + h) / 2, theta * size}, square, 0.02 * size, true);
+  const PointD rc = rectangle.params.center;
+  const double w = 2 * rectangle.params.radius_x, h = 2 * rectangle.params.radius_y;
+  const Refinement sq = refine_minimax(
+      s, {rc.x, rc.y, (w + h) / 2, rectangle.params.rotation * size}, square, 0.02 * size, true);
   double st = sq.params[3] / size, side = sq.params[2], side2 = side;
   normalise(st, side, side2);
   const PointD sc{sq.params[0], sq.params[1]};
   Fit sf =
       make_fit(ShapeClass::kSquare, rectangle_corners(sc, side, side, st), sq.objective, sc, st);
   sf.params.radius_x = sf.params.radius_y = side / 2;
-  out.push_back(sf);
+  return sf;
+}
 
-  // Diamond: a rhombus with axis-parallel diagonals: centre and the two half-diagonals.
+// Diamond: a rhombus with axis-parallel diagonals: centre and the two half-diagonals.
+Fit fit_diamond(const PreparedStroke& s, const std::vector<PointD>& q) {
   double xlo = INFINITY, xhi = -INFINITY, ylo = INFINITY, yhi = -INFINITY;
   for (const PointD& p : q) {
     xlo = std::min(xlo, p.x);
@@ -126,14 +137,22 @@ std::vector<Fit> fit_rectangles(const PreparedStroke& s, const Fit& quad) {
   };
   const Refinement d =
       refine_minimax(s, {(xlo + xhi) / 2, (ylo + yhi) / 2, (xhi - xlo) / 2, (yhi - ylo) / 2},
-                     diamond, 0.02 * size, true);
+                     diamond, 0.02 * s.size, true);
   const PointD dc{d.params[0], d.params[1]};
   Fit df = make_fit(ShapeClass::kDiamond, diamond_corners(dc, d.params[2], d.params[3]),
                     d.objective, dc, 0.0);
   df.params.radius_x = d.params[2];
   df.params.radius_y = d.params[3];
-  out.push_back(df);
-  return out;
+  return df;
+}
+
+} // namespace
+
+std::vector<Fit> fit_rectangles(const PreparedStroke& s, const Fit& quad) {
+  const std::vector<PointD>& q = quad.params.vertices;
+  if (q.size() != 4) return {};
+  const Fit rectangle = fit_rectangle(s, rectangle_start(q, quad.params.center));
+  return {rectangle, fit_square(s, rectangle), fit_diamond(s, q)};
 }
 
 std::optional<Fit> fit_regular_polygon(const PreparedStroke& s, std::size_t sides, PointD center,
