@@ -2,6 +2,7 @@
 
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include "penshape/core/polygon_io.hpp"
 
@@ -56,19 +57,22 @@ void check_coordinates(const PolygonSet& q) {
 
 } // namespace
 
-PolygonSet read_polygon_file(const std::string& path) {
+ValidatedRegion read_valid_polygon_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("cannot read '" + path + "'");
   std::ostringstream text;
   text << in.rdbuf();
   try {
-    PolygonSet q = read_polygon_text(text.str());
+    PolygonSet q = read_polygon_text(text.view());
     check_coordinates(q);
-    validate_region(q);
-    return q;
+    return ValidatedRegion::validate(std::move(q));
   } catch (const InvalidInput& e) {
     throw InputError(path + ": " + e.what());
   }
+}
+
+PolygonSet read_polygon_file(const std::string& path) {
+  return std::move(read_valid_polygon_file(path)).release();
 }
 
 Rational bounding_width(const PolygonSet& q) {
