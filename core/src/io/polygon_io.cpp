@@ -128,7 +128,8 @@ bool point_in_ring(const Ring& ring, const ExactPoint& p) {
 }
 
 // push_back that moves the points when the ring grows: mpq_class's move is not noexcept, so
-// std::vector would copy every point at each reallocation (a 200,000-vertex file copied ~2n).
+// std::vector would copy every point at each reallocation (and even a move allocates: callers
+// reserve what they know first).
 void push_moving(Ring& ring, ExactPoint p) {
   if (ring.size() == ring.capacity()) {
     Ring grown;
@@ -137,6 +138,23 @@ void push_moving(Ring& ring, ExactPoint p) {
     ring.swap(grown);
   }
   ring.push_back(std::move(p));
+}
+
+// Lines from `pos` up to the next blank one (or the end): at least the vertices of the x-y ring
+// starting there, so it is reserved once (one pass over its bytes).
+std::size_t lines_until_blank(std::string_view text, std::size_t pos) {
+  std::size_t lines = 0;
+  while (pos < text.size()) {
+    const std::size_t end = std::min(text.find('\n', pos), text.size());
+    const auto blank = std::all_of(text.begin() + static_cast<std::ptrdiff_t>(pos),
+                                   text.begin() + static_cast<std::ptrdiff_t>(end), [](char c) {
+                                     return std::isspace(static_cast<unsigned char>(c));
+                                   });
+    if (blank) break;
+    ++lines;
+    pos = end + 1;
+  }
+  return lines;
 }
 
 void drop_closing_repeat(Ring& ring) {
@@ -382,6 +400,7 @@ PolygonSet read_xy(std::string_view text) {
   std::size_t line_number = 0;
   std::size_t pos = 0;
   while (pos <= text.size()) {
+    const std::size_t line_start = pos;
     const std::size_t end = std::min(text.find('\n', pos), text.size());
     std::string_view line = text.substr(pos, end - pos);
     pos = end + 1;
@@ -397,6 +416,7 @@ PolygonSet read_xy(std::string_view text) {
       }
       continue;
     }
+    if (current.empty()) current.reserve(lines_until_blank(text, line_start));
     std::array<std::string_view, 2> fields;
     const std::size_t field_count = first_two_fields(line, fields);
     if (field_count != 2) {
