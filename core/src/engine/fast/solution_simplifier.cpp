@@ -193,9 +193,12 @@ std::optional<PolygonSet> simplify_fast_solution(const PolygonSet& q_any,
                                                  const DeconstructParams& params,
                                                  const PolygonSet& solution,
                                                  const CancelHook& cancel) {
-  // The grid keeps each ring's vertex order: orient Q exactly first.
-  PolygonSet q = q_any;
-  normalize_orientation(q);
+  // The grid keeps each ring's vertex order: orient Q exactly first (copying Q only when it
+  // needs it: deconstruct() hands the engines oriented input, and a copy of 200,000 exact
+  // vertices costs more than the check).
+  std::optional<PolygonSet> reoriented;
+  if (!has_normalized_orientation(q_any)) normalize_orientation(reoriented.emplace(q_any));
+  const PolygonSet& q = reoriented ? *reoriented : q_any;
   const GridFrame frame(q, params);
   const double eps = frame.units(params.tolerance);
   const double d = frame.units(params.precision);
