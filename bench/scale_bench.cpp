@@ -9,9 +9,11 @@
 // validate_region against the former test (bench/former_validation.hpp), in the same run; and
 // validation of a polygon with thousands of holes (the nesting sweep).
 //   scale_bench [--only N] [--former-offsets | --striped-offsets] [--validation] [--cli]
-// --cli runs only the CLI row. --only N runs only the
-// N-vertex star's deconstruction and prints its wall and thread CPU time (the shared build
-// machine's load inflates wall time) and how many predicates needed the exact fallback, with
+//               [--baseline-cli PATH]
+// --cli runs only the CLI rows (its stages in this process, then the child process);
+// --baseline-cli PATH runs a former build's penshape (e.g. main's) alternately beside it. --only N
+// runs only the N-vertex star's deconstruction and prints its wall and thread CPU time (the shared
+// build machine's load inflates wall time) and how many predicates needed the exact fallback, with
 // the former offsets (one Clipper sweep per offset, ClipperOffset insets) and the striped ones
 // (engine/fast/stripe_union.hpp) alternately, three times each; --former-offsets or
 // --striped-offsets runs only that one, once (for profiling). The table's deconstruction is timed
@@ -28,6 +30,7 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <numbers>
 #include <random>
 #include <string>
@@ -38,6 +41,9 @@
 #include "former_validation.hpp"
 #include "geometry/segment_sweep.hpp"
 #include "penshape/core/deconstruct.hpp"
+#include "penshape/core/polygon_io.hpp"
+#include "penshape/core/simplify.hpp"
+#include "penshape/core/validated_region.hpp"
 #include "penshape/core/verify.hpp"
 
 namespace {
@@ -151,26 +157,72 @@ int run_cli(const std::vector<std::string>& args, double& cpu) {
 }
 
 // The 200k star through the CLI (reading, validation, decision, simplification, output), median
-// CPU time of three runs; true when within the target.
-bool cli_row() {
+// CPU time of three runs; true when within the target. With `baseline` (a former build's
+// penshape, e.g. main's), it runs alternately with this build's, in the same load, and is
+// printed beside it.
+bool cli_row(const std::string& baseline) {
   const penshape::PolygonSet q = wavy_star(200'000);
   const std::string path = write_star(q);
+  const auto args = [&](const std::string& cli) {
+    return std::vector<std::string>{cli,           "deconstruct", path,          "--radius", "69",
+                                    "--tolerance", "34.5",        "--precision", "4.3125"};
+  };
   std::vector<double> cpu(3);
+  std::vector<double> former(3);
   int status = 0;
-  for (double& c : cpu) {
-    status = run_cli({PENSHAPE_CLI, "deconstruct", path, "--radius", "69", "--tolerance", "34.5",
-                      "--precision", "4.3125"},
-                     c);
+  int former_status = 0;
+  for (std::size_t i = 0; i < cpu.size(); ++i) {
+    if (!baseline.empty()) former_status = run_cli(args(baseline), former[i]);
+    status = run_cli(args(PENSHAPE_CLI), cpu[i]);
   }
   std::filesystem::remove(path);
   std::sort(cpu.begin(), cpu.end());
+  std::sort(former.begin(), former.end());
   const bool ok = status == 0 && cpu[1] <= kTargetMs;
   std::printf(
       "\npenshape deconstruct (CLI, default simplification), 200,000-vertex star, "
       "r = 69, eps = r/2, delta = eps/8:\n  exit %d, CPU %.1f ms median of 3 (target "
       "<= %.0f ms): %s\n",
       status, cpu[1], kTargetMs, ok ? "ok" : "FAIL");
+  if (!baseline.empty()) {
+    std::printf("  baseline %s: exit %d, CPU %.1f ms median of 3 (runs alternated)\n",
+                baseline.c_str(), former_status, former[1]);
+  }
   return ok;
+}
+
+// The CLI's stages on the 200k star in this process, thread CPU ms each: reading the text,
+// validating it (once: deconstruct() takes the ValidatedRegion), deciding, simplifying, and the
+// exact WKT of the answer; where `penshape deconstruct`'s time goes.
+void cli_stages() {
+  const penshape::PolygonSet star = wavy_star(200'000);
+  const std::string path = write_star(star);
+  std::ifstream in(path);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::filesystem::remove(path);
+  double c0 = cpu_ms();
+  penshape::PolygonSet q = penshape::read_polygon_text(text);
+  const double read = cpu_ms() - c0;
+  c0 = cpu_ms();
+  const penshape::ValidatedRegion valid = penshape::ValidatedRegion::validate(std::move(q));
+  const double validation = cpu_ms() - c0;
+  c0 = cpu_ms();
+  const penshape::DeconstructResult raw = penshape::deconstruct(
+      valid, {penshape::Rational(69), penshape::Rational(69, 2), penshape::Rational(69, 16)});
+  const double decision = cpu_ms() - c0;
+  c0 = cpu_ms();
+  const penshape::SimplifyResult simple = penshape::simplify_solution(valid.region(), raw);
+  const double simplification = cpu_ms() - c0;
+  c0 = cpu_ms();
+  const std::size_t wkt = penshape::to_wkt(simple.result.solution).size();
+  const double output = cpu_ms() - c0;
+  std::printf(
+      "\nthe CLI's stages in this process (200,000-vertex star, thread CPU ms):\n"
+      "  read text %.1f | validation (once) %.1f | deconstruct %.1f (%s) | simplification %.1f "
+      "(%zu -> %zu vertices) | WKT %.1f (%zu chars) | total %.1f\n",
+      read, validation, decision, penshape::to_string(raw.answer), simplification,
+      simple.raw_vertices, simple.solution_vertices, output, wkt,
+      read + validation + decision + simplification + output);
 }
 
 } // namespace
@@ -222,13 +274,20 @@ int main(int argc, char** argv) {
   bool former_only = false;
   bool striped_only = false;
   bool validation_only = false;
+  bool cli_only = false;
+  std::string baseline_cli;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--only" && i + 1 < argc) only = std::atoi(argv[++i]);
     if (a == "--former-offsets") former_only = true;
     if (a == "--striped-offsets") striped_only = true;
     if (a == "--validation") validation_only = true;
-    if (a == "--cli") return cli_row() ? 0 : 1;
+    if (a == "--baseline-cli" && i + 1 < argc) baseline_cli = argv[++i];
+    if (a == "--cli") cli_only = true;
+  }
+  if (cli_only) {
+    cli_stages();
+    return cli_row(baseline_cli) ? 0 : 1;
   }
   if (only > 0) {
     const penshape::PolygonSet q = wavy_star(only);
@@ -295,6 +354,7 @@ int main(int argc, char** argv) {
                 penshape::to_string(former_answer), check, penshape::to_string(rep.status));
     if (n == 200'000) ok = ok && decision_cpu <= kTargetMs;
   }
-  ok = cli_row() && ok;
+  cli_stages();
+  ok = cli_row(baseline_cli) && ok;
   return ok ? 0 : 1;
 }

@@ -14,6 +14,7 @@
 #include "penshape/core/arc_offset.hpp"
 #include "penshape/core/deconstruct.hpp"
 #include "penshape/core/polygon_io.hpp"
+#include "penshape/core/validated_region.hpp"
 #include "penshape/render/figure.hpp"
 
 namespace penshape::cli {
@@ -162,9 +163,10 @@ int run_deconstruct(std::span<const std::string_view> args) {
   params.precision = optional_rational(parsed, "--precision").value_or(params.tolerance / 8);
   params.engine = engine_option(parsed);
   try {
-    const PolygonSet q = read_polygon_file(path);
+    const ValidatedRegion valid = read_valid_polygon_file(path); // validated once, here
+    const PolygonSet& q = valid.region();
     const ReportedSolution rep =
-        report_solution(q, deconstruct(q, params), !parsed.flag("--no-simplify"));
+        report_solution(q, deconstruct(valid, params), !parsed.flag("--no-simplify"));
     std::optional<CurvedRegion> arcs;
     if (parsed.flag("--arcs") && rep.result.answer == Answer::kYes) {
       arcs = offset_with_arcs(rep.result.solution, to_double(params.radius));

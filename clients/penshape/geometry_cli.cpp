@@ -2,6 +2,7 @@
 
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include "penshape/core/polygon_io.hpp"
 
@@ -38,10 +39,13 @@ constexpr double kMaxAbsCoordinate = 1e12;
 
 void check_coordinates(const PolygonSet& q) {
   const Rational limit(kMaxAbsCoordinate);
+  const Rational negative_limit(-kMaxAbsCoordinate);
+  // Compared in place: abs() would build a temporary rational per coordinate.
+  const auto beyond = [&](const Rational& v) { return v > limit || v < negative_limit; };
   for (std::size_t i = 0; i < q.polygons.size(); ++i) {
     const auto check_ring = [&](const Ring& ring, const std::string& name) {
       for (std::size_t k = 0; k < ring.size(); ++k) {
-        if (abs(ring[k].x) > limit || abs(ring[k].y) > limit) {
+        if (beyond(ring[k].x) || beyond(ring[k].y)) {
           throw InvalidInput("polygon " + std::to_string(i) + ", " + name + ", vertex " +
                              std::to_string(k) + ": a coordinate beyond the limit of ±1e12");
         }
@@ -56,19 +60,22 @@ void check_coordinates(const PolygonSet& q) {
 
 } // namespace
 
-PolygonSet read_polygon_file(const std::string& path) {
+ValidatedRegion read_valid_polygon_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("cannot read '" + path + "'");
   std::ostringstream text;
   text << in.rdbuf();
   try {
-    PolygonSet q = read_polygon_text(text.str());
+    PolygonSet q = read_polygon_text(text.view());
     check_coordinates(q);
-    validate_region(q);
-    return q;
+    return ValidatedRegion::validate(std::move(q));
   } catch (const InvalidInput& e) {
     throw InputError(path + ": " + e.what());
   }
+}
+
+PolygonSet read_polygon_file(const std::string& path) {
+  return std::move(read_valid_polygon_file(path)).release();
 }
 
 Rational bounding_width(const PolygonSet& q) {

@@ -10,6 +10,7 @@
 #include "json_writer.hpp"
 #include "penshape/core/deconstruct.hpp"
 #include "penshape/core/simplify.hpp"
+#include "penshape/core/validated_region.hpp"
 
 namespace penshape::cli {
 
@@ -28,6 +29,8 @@ EngineKind engine_option(const ParsedArgs& parsed);
 // x-y text or WKT, checked as a region (validate_region) with coordinates within ±1e12 (as
 // penshaped's limit); InputError naming the file (and line) when unreadable or malformed.
 PolygonSet read_polygon_file(const std::string& path);
+// The same, as a ValidatedRegion: deconstruct() then does not validate the region again.
+ValidatedRegion read_valid_polygon_file(const std::string& path);
 
 // Width of the bounding box (x extent); 0 for an empty set.
 Rational bounding_width(const PolygonSet& q);

@@ -80,6 +80,26 @@ TEST(DeconstructCli, SelfIntersectingFileIsRejected) {
   EXPECT_NE(r.out.find("self-intersecting"), std::string::npos) << r.out;
 }
 
+// The region is validated once, by the CLI, before the parameters (issue 26): a bad file with a
+// bad precision names the file's fault, with the file's name; coordinates past ±1e12 either way
+// are refused by name.
+TEST(DeconstructCli, TheFileIsCheckedBeforeTheParameters) {
+  const std::string path = std::string(PENSHAPE_BINARY_DIR) + "/deconstruct_cli_bowtie2.txt";
+  std::ofstream(path) << "0 0\n4 4\n4 0\n0 6\n";
+  const Result r = run(path + " --radius 1 --tolerance 0.1 --precision 0.5");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find(path + ": polygon 0, outer ring is self-intersecting"), std::string::npos)
+      << r.out;
+  for (const char* far : {"2000000000000.5", "-2000000000000.5"}) {
+    const std::string far_path = std::string(PENSHAPE_BINARY_DIR) + "/deconstruct_cli_far.txt";
+    std::ofstream(far_path) << "0 0\n1 0\n" << far << " 1\n";
+    const Result f = run(far_path + " --radius 1 --tolerance 0.1");
+    EXPECT_EQ(f.exit_code, 2);
+    EXPECT_NE(f.out.find("vertex 2: a coordinate beyond the limit of ±1e12"), std::string::npos)
+        << f.out;
+  }
+}
+
 } // namespace
 
 namespace {

@@ -1,12 +1,15 @@
-// deconstruct(): validation, the r <= eps shortcut, dispatch to an engine, timing.
+// deconstruct(): validation (or a ValidatedRegion's parameters only), the r <= eps shortcut,
+// dispatch to an engine, timing.
 #include "penshape/core/deconstruct.hpp"
 
 #include "penshape/core/convex_deconstruct.hpp"
 
 #include <chrono>
 
+#include "deconstruct/validate_input.hpp"
 #include "engine/engines.hpp"
 #include "penshape/core/disk_approximation.hpp"
+#include "penshape/core/validated_region.hpp"
 
 namespace penshape {
 
@@ -55,12 +58,10 @@ DeconstructResult decide(const PolygonSet& q, const DeconstructParams& params,
   return decide_default(q, params, cancel, limits);
 }
 
-} // namespace
-
-DeconstructResult deconstruct(const PolygonSet& q, const DeconstructParams& params,
-                              const CancelHook& cancel, const DeconstructLimits& limits) {
-  const auto start = std::chrono::steady_clock::now();
-  validate_deconstruct_input(q, params, limits, cancel);
+// Everything after validation; `start` is when the caller's call began.
+DeconstructResult decide_valid(const PolygonSet& q, const DeconstructParams& params,
+                               const CancelHook& cancel, const DeconstructLimits& limits,
+                               std::chrono::steady_clock::time_point start) {
   DeconstructResult result;
   if (params.radius <= params.tolerance) {
     // offset(Q, r) is r-close to Q and r <= eps: P = Q is a solution (paper, Section 2).
@@ -85,6 +86,25 @@ DeconstructResult deconstruct(const PolygonSet& q, const DeconstructParams& para
   result.elapsed = std::chrono::duration_cast<std::chrono::nanoseconds>(
       std::chrono::steady_clock::now() - start);
   return result;
+}
+
+} // namespace
+
+DeconstructResult deconstruct(const PolygonSet& q, const DeconstructParams& params,
+                              const CancelHook& cancel, const DeconstructLimits& limits) {
+  const auto start = std::chrono::steady_clock::now();
+  validate_deconstruct_input(q, params, limits, cancel);
+  return decide_valid(q, params, cancel, limits, start);
+}
+
+DeconstructResult deconstruct(const ValidatedRegion& q, const DeconstructParams& params,
+                              const CancelHook& cancel, const DeconstructLimits& limits) {
+  const auto start = std::chrono::steady_clock::now();
+  validate_deconstruct_params(params, limits);
+  // A spent token (its region released) holds an empty set.
+  if (q.region().empty()) throw InvalidInput("the region is empty (no polygons)");
+  detail::check_vertex_limit(q.region(), limits.max_input_vertices);
+  return decide_valid(q.region(), params, cancel, limits, start);
 }
 
 } // namespace penshape

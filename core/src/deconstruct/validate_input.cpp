@@ -13,6 +13,7 @@
 #include "geometry/segment_sweep.hpp"
 #include "penshape/core/deconstruct.hpp"
 #include "penshape/core/disk_approximation.hpp"
+#include "penshape/core/validated_region.hpp"
 
 namespace penshape {
 namespace {
@@ -238,13 +239,17 @@ void check_nesting(const std::vector<RingRef>& rings, const PolygonSet& q) {
 
 } // namespace
 
-void validate_region(const PolygonSet& q, std::size_t max_vertices, const CancelHook& cancel) {
-  if (q.empty()) throw InvalidInput("the region is empty (no polygons)");
+void detail::check_vertex_limit(const PolygonSet& q, std::size_t max_vertices) {
   const std::size_t n = q.vertex_count();
   if (n > max_vertices) {
     throw InvalidInput("the region has " + std::to_string(n) + " vertices, over the limit of " +
                        std::to_string(max_vertices));
   }
+}
+
+void validate_region(const PolygonSet& q, std::size_t max_vertices, const CancelHook& cancel) {
+  if (q.empty()) throw InvalidInput("the region is empty (no polygons)");
+  detail::check_vertex_limit(q, max_vertices);
   std::vector<RingRef> rings;
   for (std::size_t p = 0; p < q.polygons.size(); ++p) {
     rings.push_back({p, -1, &q.polygons[p].outer, {}, 0, 0, 0, 0});
@@ -284,8 +289,7 @@ bool is_valid_region(const PolygonSet& set) {
 
 } // namespace detail
 
-void validate_deconstruct_input(const PolygonSet& q, const DeconstructParams& params,
-                                const DeconstructLimits& limits, const CancelHook& cancel) {
+void validate_deconstruct_params(const DeconstructParams& params, const DeconstructLimits& limits) {
   const Rational& r = params.radius;
   const Rational& eps = params.tolerance;
   const Rational& delta = params.precision;
@@ -309,7 +313,18 @@ void validate_deconstruct_input(const PolygonSet& q, const DeconstructParams& pa
           " vertices, over the limit of " + std::to_string(limits.max_disk_vertices));
     }
   }
+}
+
+void validate_deconstruct_input(const PolygonSet& q, const DeconstructParams& params,
+                                const DeconstructLimits& limits, const CancelHook& cancel) {
+  validate_deconstruct_params(params, limits);
   validate_region(q, limits.max_input_vertices, cancel);
+}
+
+ValidatedRegion ValidatedRegion::validate(PolygonSet q, std::size_t max_vertices,
+                                          const CancelHook& cancel) {
+  validate_region(q, max_vertices, cancel);
+  return ValidatedRegion(std::move(q));
 }
 
 } // namespace penshape

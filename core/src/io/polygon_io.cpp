@@ -2,7 +2,10 @@
 #include "penshape/core/polygon_io.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
+#include <cstdint>
+#include <numeric>
 #include <optional>
 #include <vector>
 
@@ -13,9 +16,42 @@ constexpr long kMaxExponent = 400;
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
+// Plain decimals [+-]digits[.digits] with at most 19 digits (so the digits, and 10^scale, fit in
+// 64 bits), read without strings or big-number parsing: the value is m / 10^scale exactly, put in
+// lowest terms by one gcd. False leaves `t` to the general reader (exponents, fractions, longer
+// numbers, malformed text).
+bool try_parse_plain_decimal(std::string_view t, Rational& out) {
+  static_assert(sizeof(unsigned long) >= sizeof(std::uint64_t), "mpz_set_ui takes 64 bits");
+  constexpr int kMaxDigits = 19; // 10^19 < 2^64
+  std::size_t i = 0;
+  bool negative = false;
+  if (i < t.size() && (t[i] == '+' || t[i] == '-')) negative = t[i++] == '-';
+  std::uint64_t m = 0;
+  std::uint64_t den = 1;
+  int digits = 0;
+  bool point = false;
+  for (; i < t.size(); ++i) {
+    const char c = t[i];
+    if (c == '.' && !point) {
+      point = true;
+      continue;
+    }
+    if (!is_digit(c) || ++digits > kMaxDigits) return false;
+    m = m * 10 + static_cast<std::uint64_t>(c - '0');
+    if (point) den *= 10;
+  }
+  if (digits == 0) return false;
+  const std::uint64_t g = std::gcd(m, den); // m = 0: g = den, 0/1
+  mpz_set_ui(out.get_num_mpz_t(), static_cast<unsigned long>(m / g));
+  mpz_set_ui(out.get_den_mpz_t(), static_cast<unsigned long>(den / g));
+  if (negative) mpz_neg(out.get_num_mpz_t(), out.get_num_mpz_t());
+  return true;
+}
+
 // Returns nullopt-like false on malformed text instead of throwing, so callers add context.
 bool try_parse_rational(std::string_view t, Rational& out) {
   if (t.empty()) return false;
+  if (try_parse_plain_decimal(t, out)) return true;
   const auto slash = t.find('/');
   if (slash != std::string_view::npos) {
     std::string_view num = t.substr(0, slash);
@@ -91,6 +127,36 @@ bool point_in_ring(const Ring& ring, const ExactPoint& p) {
   return in;
 }
 
+// push_back that moves the points when the ring grows: mpq_class's move is not noexcept, so
+// std::vector would copy every point at each reallocation (and even a move allocates: callers
+// reserve what they know first).
+void push_moving(Ring& ring, ExactPoint p) {
+  if (ring.size() == ring.capacity()) {
+    Ring grown;
+    grown.reserve(std::max<std::size_t>(16, 2 * ring.size()));
+    for (ExactPoint& v : ring) grown.push_back(std::move(v));
+    ring.swap(grown);
+  }
+  ring.push_back(std::move(p));
+}
+
+// Lines from `pos` up to the next blank one (or the end): at least the vertices of the x-y ring
+// starting there, so it is reserved once (one pass over its bytes).
+std::size_t lines_until_blank(std::string_view text, std::size_t pos) {
+  std::size_t lines = 0;
+  while (pos < text.size()) {
+    const std::size_t end = std::min(text.find('\n', pos), text.size());
+    const auto blank = std::all_of(text.begin() + static_cast<std::ptrdiff_t>(pos),
+                                   text.begin() + static_cast<std::ptrdiff_t>(end), [](char c) {
+                                     return std::isspace(static_cast<unsigned char>(c));
+                                   });
+    if (blank) break;
+    ++lines;
+    pos = end + 1;
+  }
+  return lines;
+}
+
 void drop_closing_repeat(Ring& ring) {
   if (ring.size() > 1 && ring.front() == ring.back()) ring.pop_back();
 }
@@ -142,16 +208,21 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
-std::vector<std::string_view> split_ws(std::string_view s) {
-  std::vector<std::string_view> out;
+// The whitespace-separated fields of a line: how many, and the first two (no allocation: an x-y
+// file has one line per vertex).
+std::size_t first_two_fields(std::string_view s, std::array<std::string_view, 2>& first) {
+  std::size_t count = 0;
   std::size_t i = 0;
   while (i < s.size()) {
     while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
     const std::size_t start = i;
     while (i < s.size() && !std::isspace(static_cast<unsigned char>(s[i]))) ++i;
-    if (i > start) out.push_back(s.substr(start, i - start));
+    if (i > start) {
+      if (count < first.size()) first[count] = s.substr(start, i - start);
+      ++count;
+    }
   }
-  return out;
+  return count;
 }
 
 // WKT tokens: words, numbers, '(', ')', ','.
@@ -238,7 +309,7 @@ class WktParser {
     do {
       const Token& x = next("an x coordinate");
       const Token& y = next("a y coordinate");
-      r.push_back({number(x), number(y)});
+      push_moving(r, {number(x), number(y)});
     } while (accept(","));
     expect(")");
     drop_closing_repeat(r);
@@ -329,6 +400,7 @@ PolygonSet read_xy(std::string_view text) {
   std::size_t line_number = 0;
   std::size_t pos = 0;
   while (pos <= text.size()) {
+    const std::size_t line_start = pos;
     const std::size_t end = std::min(text.find('\n', pos), text.size());
     std::string_view line = text.substr(pos, end - pos);
     pos = end + 1;
@@ -344,10 +416,12 @@ PolygonSet read_xy(std::string_view text) {
       }
       continue;
     }
-    const auto fields = split_ws(line);
-    if (fields.size() != 2) {
+    if (current.empty()) current.reserve(lines_until_blank(text, line_start));
+    std::array<std::string_view, 2> fields;
+    const std::size_t field_count = first_two_fields(line, fields);
+    if (field_count != 2) {
       throw ParseError(line_number, "expected two numbers 'x y', got " +
-                                        std::to_string(fields.size()) + " fields");
+                                        std::to_string(field_count) + " fields");
     }
     ExactPoint p;
     if (!try_parse_rational(fields[0], p.x)) {
@@ -356,7 +430,7 @@ PolygonSet read_xy(std::string_view text) {
     if (!try_parse_rational(fields[1], p.y)) {
       throw ParseError(line_number, "'" + std::string(fields[1]) + "' is not a number");
     }
-    current.push_back(std::move(p));
+    push_moving(current, std::move(p));
   }
   if (!current.empty()) {
     drop_closing_repeat(current);

@@ -77,6 +77,9 @@ void validate_region(const PolygonSet& q, std::size_t max_vertices = 200'000,
 void validate_deconstruct_input(const PolygonSet& q, const DeconstructParams& params,
                                 const DeconstructLimits& limits = {},
                                 const CancelHook& cancel = {});
+// The parameters' part of validate_deconstruct_input alone (for a ValidatedRegion).
+void validate_deconstruct_params(const DeconstructParams& params,
+                                 const DeconstructLimits& limits = {});
 
 // APPROXDECIDE(Q, r, eps, delta) with the chosen engine: validates (InvalidInput), answers
 // r <= eps with YES and P = Q, else dispatches to the engine. Q may have any ring orientation.

@@ -34,8 +34,14 @@ constexpr double kMaxCapTurn = std::numbers::pi / 2 * 0.95;
 // (|Q̃| + |P|) vertices each, so a large input pays a few checks rather than two per vertex of P
 // (a cost bound, about 2^20 / 2000 checks on KAZ, 5 on 200,000 vertices).
 constexpr std::size_t kDropWork = std::size_t{1} << 20;
-// Q_s for the checks here is simplified at d / kInputFraction (d = delta in grid units).
+// Q_s for the checks here is simplified at d / kInputFraction (d = delta in grid units), or at
+// d / kFewChecksFraction, the decision's own, when the work cap leaves fewer than kFewChecks
+// whole checks (Q̃ over 2^15 vertices): every check walks all of Q_s's level set, so there the
+// finer copy's room buys little and costs a walk over nearly all of Q (issue 26: 1.3 s of the
+// CLI's 200,000-vertex call, 0.35 s with the coarser copy, the same |P|).
 constexpr double kInputFraction = 16.0;
+constexpr double kFewChecksFraction = 4.0;
+constexpr std::size_t kFewChecks = 32;
 
 double turn_angle(IPt a, IPt b, IPt c) { // signed, positive for a left turn
   const double ux = static_cast<double>(b.x - a.x);
@@ -187,21 +193,27 @@ std::optional<PolygonSet> simplify_fast_solution(const PolygonSet& q_any,
                                                  const DeconstructParams& params,
                                                  const PolygonSet& solution,
                                                  const CancelHook& cancel) {
-  // The grid keeps each ring's vertex order: orient Q exactly first.
-  PolygonSet q = q_any;
-  normalize_orientation(q);
+  // The grid keeps each ring's vertex order: orient Q exactly first (copying Q only when it
+  // needs it: deconstruct() hands the engines oriented input, and a copy of 200,000 exact
+  // vertices costs more than the check).
+  std::optional<PolygonSet> reoriented;
+  if (!has_normalized_orientation(q_any)) normalize_orientation(reoriented.emplace(q_any));
+  const PolygonSet& q = reoriented ? *reoriented : q_any;
   const GridFrame frame(q, params);
   const double eps = frame.units(params.tolerance);
   const double d = frame.units(params.precision);
   const GridInput grid = frame.round(q);
   // The certificate's region A is a Douglas-Peucker copy Q_s of the solid part of Q̃, as in
-  // decide_fast, but finer (d/16 instead of d/4): the drop pass checks up to two candidates
-  // per vertex of P, and each walks A's level set, so A's size is what they cost (the solid
-  // part itself made KAZ's pass take about 1 s and a 200,000-vertex input's 20 s); the finer
-  // tolerance leaves the drops most of the room. B is all of Q̃.
+  // decide_fast, but finer (d/16 instead of d/4, unless the input is large): the drop pass checks
+  // up to two candidates per vertex of P, and each walks A's level set, so A's size is what they
+  // cost (the solid part itself made KAZ's pass take about 1 s and a 200,000-vertex input's 20 s);
+  // the finer tolerance leaves the drops most of the room. B is all of Q̃.
   std::vector<std::size_t> left_out;
   const IRings solid = grid.solid_rings(left_out);
-  const CertifiedInput a = certified_input(solid, d / kInputFraction, eps / 2.0);
+  std::size_t q_count = 0;
+  for (const IRing& ring : grid.rings) q_count += ring.size();
+  const double fraction = q_count > kDropWork / kFewChecks ? kFewChecksFraction : kInputFraction;
+  const CertifiedInput a = certified_input(solid, d / fraction, eps / 2.0);
   if (!a.index) return std::nullopt;
   const SegmentIndex q_index(grid.rings, eps / 2.0);
   std::vector<IPt> q_vertices;
@@ -215,8 +227,6 @@ std::optional<PolygonSet> simplify_fast_solution(const PolygonSet& q_any,
                          d / 32.0};
 
   const IRegion raw = to_grid(frame, solution);
-  std::size_t q_count = 0;
-  for (const IRing& ring : grid.rings) q_count += ring.size();
   // Whole checks of Douglas-Peucker candidates, within the same work cap as the drops below.
   std::size_t checks = std::max<std::size_t>(1, kDropWork / (q_count + vertex_count(raw)));
   std::optional<IRegion> best = coarsest_verified(in, raw, eps, d, checks, cancel);
