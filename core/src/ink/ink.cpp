@@ -193,6 +193,35 @@ double clipper_union_arithmetic(double magnitude) {
   return up(up(64.0 * 0x1p-53 * magnitude) + above_doubles_half_units);
 }
 
+double clipper_topx_rounding(double magnitude) { return magnitude < 0x1p50 ? 0.5 + 0x1p-53 : 1.0; }
+
+double clipper_union_sweep(double magnitude) {
+  return up(2 * clipper_topx_rounding(magnitude) + up(128.0 * 0x1p-53 * magnitude));
+}
+
+double clipper_pinch_factor(const Paths& pieces) {
+  const auto length = [](Int128 x, Int128 y) {
+    return std::hypot(static_cast<double>(x), static_cast<double>(y));
+  };
+  double factor = 1.0;
+  for (const Path& path : pieces) {
+    if (path.size() < 3) continue; // Clipper drops it
+    for (std::size_t i = 0; i < path.size(); ++i) {
+      const IntPoint& v = path[i];
+      const IntPoint& p = path[(i + path.size() - 1) % path.size()];
+      const IntPoint& n = path[(i + 1) % path.size()];
+      const Int128 ax = p.X - v.X, ay = p.Y - v.Y, bx = n.X - v.X, by = n.Y - v.Y;
+      const Int128 turn = bx * ay - by * ax;            // (v - p) x (n - v): left turns are convex
+      if (ax * bx + ay * by <= 0 || turn < 0) continue; // pi / 2 or more, or a notch
+      if (turn == 0) return HUGE_VAL;                   // a spike: no bound
+      // 1 / sin = |a| |b| / |a x b|: a few roundings each, 16 ulps cover them.
+      const double ratio = length(ax, ay) * length(bx, by) / static_cast<double>(turn);
+      factor = std::max(factor, up(ratio * (1 + 16 * 0x1p-53)));
+    }
+  }
+  return factor;
+}
+
 bool clipper_union(const Paths& pieces, ClipperLib::PolyTree& tree) {
   ClipperLib::Clipper clipper;
   clipper.StrictlySimple(true);
@@ -221,11 +250,11 @@ std::vector<InkSample> ink_samples(const Stroke& stroke, const InkOptions& optio
   return out;
 }
 
-InkPolygon ink_polygon(const std::vector<std::vector<InkSample>>& strokes,
-                       const InkOptions& options) {
-  std::size_t total = 0;
-  for (const auto& stroke : strokes) total += stroke.size();
-  if (strokes.empty() || total == 0) throw InvalidInput("the stroke has no samples");
+namespace {
+
+// The options' maximal error, after checking the options and the sample count.
+double checked_max_error(const InkOptions& options, std::size_t total) {
+  if (total == 0) throw InvalidInput("the stroke has no samples");
   if (total > options.max_samples) {
     throw InvalidInput("the strokes have " + std::to_string(total) +
                        " samples, over the limit of " + std::to_string(options.max_samples));
@@ -242,8 +271,18 @@ InkPolygon ink_polygon(const std::vector<std::vector<InkSample>>& strokes,
   if (!(max_error > 0) || !std::isfinite(max_error)) {
     throw InvalidInput("the maximal error must be positive and finite");
   }
+  return max_error;
+}
+
+// The largest radius and coordinate magnitude of the samples (mm), after checking each sample.
+struct Reach {
+  double r_min = HUGE_VAL;
   double r_max = 0;
   double extent = 0;
+};
+
+Reach checked_reach(const std::vector<std::vector<InkSample>>& strokes) {
+  Reach reach;
   for (std::size_t j = 0; j < strokes.size(); ++j) {
     const auto& samples = strokes[j];
     if (samples.empty()) throw InvalidInput("stroke " + std::to_string(j) + " has no samples");
@@ -257,96 +296,177 @@ InkPolygon ink_polygon(const std::vector<std::vector<InkSample>>& strokes,
       if (std::abs(samples[i].x) > kMaxCoordinateMm || std::abs(samples[i].y) > kMaxCoordinateMm) {
         throw InvalidInput("sample " + std::to_string(i) + ": coordinate beyond 10^9 mm");
       }
-      r_max = std::max(r_max, samples[i].radius);
-      extent = std::max({extent, std::abs(samples[i].x), std::abs(samples[i].y)});
+      reach.r_min = std::min(reach.r_min, samples[i].radius);
+      reach.r_max = std::max(reach.r_max, samples[i].radius);
+      reach.extent = std::max({reach.extent, std::abs(samples[i].x), std::abs(samples[i].y)});
     }
   }
-  if (r_max > kMaxCoordinateMm) throw InvalidInput("the pen radius exceeds 10^9 mm");
+  if (reach.r_max > kMaxCoordinateMm) throw InvalidInput("the pen radius exceeds 10^9 mm");
+  return reach;
+}
 
-  InkPolygon result;
-  const std::size_t k = polygon_vertices(r_max, max_error / 2);
-  const double tau = max_error / 4;
-  // Rounding onto the grid moves a boundary by at most half a grid diagonal each time: a
-  // stroke offset by Clipper is rounded as input points, as offset vertices and in the offset's
-  // own union of its outlines; the union of several strokes then rounds its new intersections
-  // once more. So three roundings for one stroke, four for several (a stroke of hulls has two:
-  // disk vertices and the union), and halves·sqrt(2)·grid <= max_error / 4.
-  const double halves = strokes.size() > 1 ? 4.0 : 3.0;
-  result.grid = std::ldexp(1.0, floor_log2(max_error / 4 / (halves / 2 * std::numbers::sqrt2)));
-  const Grid grid{1.0 / result.grid};
-  if ((extent + r_max) * grid.scale > kMaxGridUnits) {
+// What an offset stroke goes through (the most of any piece): four roundings of half a grid
+// diagonal (input points, offset vertices, the offset's own union, the final union) and two
+// unions, each with its sweep decisions (ink_union.hpp). A hull stroke has two roundings (disk
+// vertices, the final union) and one union.
+constexpr double kOffsetRoundings = 4.0;
+constexpr double kOffsetUnions = 2.0;
+// Pen disks are drawn with at least this radius in grid units, so that no piece is thin enough
+// for the final union to pinch it away whole (ink_union.hpp); the bound adds the difference.
+constexpr double kMinDiskUnits = 4.0;
+
+// A power of two with (roundings · sqrt(2) / 2 + unions · 2 rho) · grid <= max_error / 4, rho
+// the rounding of Clipper's TopX (the grid-sized part of a union's sweep term, ink_union.hpp).
+double grid_for(double max_error, double rho) {
+  const double units = kOffsetRoundings * std::numbers::sqrt2 / 2 + kOffsetUnions * 2 * rho;
+  return std::ldexp(1.0, floor_log2(max_error / 4 / units));
+}
+
+// The grid, with rho taken for the magnitude that grid gives (a coarser rho only refines it).
+double choose_grid(double max_error, const Reach& reach) {
+  const double rho = ink_detail::clipper_topx_rounding(0);
+  const double grid = grid_for(max_error, rho);
+  const double rho_there =
+      ink_detail::clipper_topx_rounding((reach.extent + reach.r_max) / grid + kMinDiskUnits);
+  return rho_there == rho ? grid : grid_for(max_error, rho_there);
+}
+
+// The grid, the disk polygon and the bound for each kind of piece.
+struct Plan {
+  double grid = 0;
+  std::size_t k = 0;
+  double tau = 0;
+  double arc_tolerance = 0;
+  double hull_bound = 0;
+  double offset_bound = 0;
+  double final_union = 0; // the final union's share of either bound (rounding, doubles, sweep)
+  double min_radius = 0;  // mm: smaller disks are drawn this large
+};
+
+Plan plan_for(double max_error, const Reach& reach) {
+  Plan plan;
+  plan.tau = max_error / 4;
+  plan.grid = choose_grid(max_error, reach);
+  plan.min_radius = kMinDiskUnits * plan.grid;
+  const double r_max = std::max(reach.r_max, plan.min_radius);
+  plan.k = polygon_vertices(r_max, max_error / 2);
+  const double magnitude = (reach.extent + r_max) / plan.grid;
+  if (magnitude > kMaxGridUnits) {
     throw InvalidInput("coordinates too large for the requested precision (more than 10^18 " +
-                       std::string("grid steps of ") + std::to_string(result.grid) + " mm)");
+                       std::string("grid steps of ") + std::to_string(plan.grid) + " mm)");
   }
-  result.disk_vertices = k;
   // Double arithmetic on coordinates (a disk vertex r·(cos, sin) added to a sample, the
   // simplification's chord distances, Clipper's arc points) errs by at most a few ulps of the
   // largest magnitude per operation, fewer than 16 along any chain here (each coordinate ~4
   // operations, the distance's hypot and the radius term on top): that much is added too.
-  const double arithmetic = up(16.0 * std::ldexp(extent + r_max, -52));
-  const double diagonal = up(up(std::numbers::sqrt2) * result.grid);
-  // Clipper's doubles in each union's intersection points (ink_union.hpp): hulls meet in one
-  // union, an offset stroke in its own union and, with several strokes, the final one.
-  const double per_union =
-      up(ink_detail::clipper_union_arithmetic((extent + r_max) * grid.scale) * result.grid);
-  const double hull_bound =
-      sum_up({disk_sagitta_up(r_max, k), tau, diagonal, arithmetic, per_union});
+  const double arithmetic = up(16.0 * std::ldexp(reach.extent + r_max, -52));
+  const double widened = std::max(0.0, up(plan.min_radius - reach.r_min));
+  const double half_diagonal = up(up(std::numbers::sqrt2 / 2) * plan.grid);
+  // Each union (ink_union.hpp): Clipper's doubles in its intersection points and its sweep's
+  // decisions on rounded x.
+  const double per_union = up(sum_up({ink_detail::clipper_union_arithmetic(magnitude),
+                                      ink_detail::clipper_union_sweep(magnitude)}) *
+                              plan.grid);
+  plan.final_union = sum_up({half_diagonal, per_union});
+  plan.hull_bound = sum_up({disk_sagitta_up(r_max, plan.k), plan.tau, up(2 * half_diagonal),
+                            arithmetic, per_union, widened});
   // Clipper rounds the number of arc steps, so a last chord may span 1.5 nominal steps: its
   // sagitta is at most 2.25 times the arc tolerance.
-  const double arc_tolerance = max_error / 2 / 2.25;
-  const double offset_bound =
-      sum_up({max_error / 2, tau, up(halves / 2 * diagonal), arithmetic,
-              clipper_turning(r_max, arc_tolerance), up((halves - 2) * per_union)});
+  plan.arc_tolerance = max_error / 2 / 2.25;
+  plan.offset_bound =
+      sum_up({max_error / 2, plan.tau, up(kOffsetRoundings * half_diagonal), arithmetic,
+              clipper_turning(r_max, plan.arc_tolerance), up(kOffsetUnions * per_union), widened});
+  return plan;
+}
 
-  std::vector<double> cos_k(k);
-  std::vector<double> sin_k(k);
-  for (std::size_t i = 0; i < k; ++i) {
-    const double a = 2 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(k);
-    cos_k[i] = std::cos(a);
-    sin_k[i] = std::sin(a);
-  }
-  auto add_disk = [&](Path& path, const InkSample& s) {
+// The k-gon inscribed in a sample's disk, rounded onto the grid.
+class DiskPolygon {
+ public:
+  DiskPolygon(std::size_t k, Grid grid) : grid_(grid), cos_(k), sin_(k) {
     for (std::size_t i = 0; i < k; ++i) {
-      path.push_back(
-          {grid.round(s.x + s.radius * cos_k[i]), grid.round(s.y + s.radius * sin_k[i])});
+      const double a = 2 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(k);
+      cos_[i] = std::cos(a);
+      sin_[i] = std::sin(a);
     }
-  };
+  }
+  void add(Path& path, const InkSample& s) const {
+    for (std::size_t i = 0; i < cos_.size(); ++i) {
+      path.push_back(
+          {grid_.round(s.x + s.radius * cos_[i]), grid_.round(s.y + s.radius * sin_[i])});
+    }
+  }
 
+ private:
+  Grid grid_;
+  std::vector<double> cos_;
+  std::vector<double> sin_;
+};
+
+// One radius: Clipper's own offset of the open polyline with round joins and ends (arc vertices
+// on the circle), the same region as the union of the hulls.
+void add_offset(const std::vector<InkSample>& kept, const Plan& plan, Grid grid, Paths& pieces) {
+  ClipperLib::ClipperOffset offsetter;
+  offsetter.ArcTolerance = plan.arc_tolerance * grid.scale;
+  Path line;
+  line.reserve(kept.size());
+  for (const auto& x : kept) line.push_back({grid.round(x.x), grid.round(x.y)});
+  offsetter.AddPath(line, ClipperLib::jtRound, ClipperLib::etOpenRound);
+  Paths outline;
+  offsetter.Execute(outline, kept.front().radius * grid.scale);
+  pieces.insert(pieces.end(), outline.begin(), outline.end());
+}
+
+// The pieces of one stroke; returns the bound that holds for them.
+double add_stroke(const std::vector<InkSample>& samples, const Plan& plan, Paths& pieces) {
+  const Grid grid{1.0 / plan.grid};
+  std::vector<InkSample> widened = samples;
+  for (InkSample& x : widened) x.radius = std::max(x.radius, plan.min_radius);
+  const std::vector<InkSample> kept = simplify(widened, plan.tau);
+  const bool constant_radius = std::all_of(kept.begin(), kept.end(), [&](const InkSample& x) {
+    return x.radius == kept.front().radius;
+  });
+  if (constant_radius && kept.size() > 1) {
+    add_offset(kept, plan, grid, pieces);
+    return plan.offset_bound;
+  }
+  const DiskPolygon disk(plan.k, grid);
+  if (kept.size() == 1) {
+    Path one;
+    disk.add(one, kept.front());
+    pieces.push_back(convex_hull(std::move(one)));
+    return plan.hull_bound;
+  }
+  // Varying radius: the hull of the two end disks per segment.
+  for (std::size_t i = 0; i + 1 < kept.size(); ++i) {
+    Path both;
+    both.reserve(2 * plan.k);
+    disk.add(both, kept[i]);
+    disk.add(both, kept[i + 1]);
+    pieces.push_back(convex_hull(std::move(both)));
+  }
+  return plan.hull_bound;
+}
+
+} // namespace
+
+InkPolygon ink_polygon(const std::vector<std::vector<InkSample>>& strokes,
+                       const InkOptions& options) {
+  std::size_t total = 0;
+  for (const auto& stroke : strokes) total += stroke.size();
+  const double max_error = checked_max_error(options, total);
+  const Plan plan = plan_for(max_error, checked_reach(strokes));
+  InkPolygon result;
+  result.grid = plan.grid;
+  result.disk_vertices = plan.k;
   Paths pieces;
   for (const auto& samples : strokes) {
-    const std::vector<InkSample> kept = simplify(samples, tau);
-    const bool constant_radius = std::all_of(kept.begin(), kept.end(), [&](const InkSample& x) {
-      return x.radius == kept.front().radius;
-    });
-    if (constant_radius && kept.size() > 1) {
-      // One radius: Clipper's own offset of the open polyline with round joins and ends (arc
-      // vertices on the circle), the same region as the union of the hulls.
-      ClipperLib::ClipperOffset offsetter;
-      offsetter.ArcTolerance = arc_tolerance * grid.scale;
-      Path line;
-      line.reserve(kept.size());
-      for (const auto& x : kept) line.push_back({grid.round(x.x), grid.round(x.y)});
-      offsetter.AddPath(line, ClipperLib::jtRound, ClipperLib::etOpenRound);
-      Paths outline;
-      offsetter.Execute(outline, kept.front().radius * grid.scale);
-      pieces.insert(pieces.end(), outline.begin(), outline.end());
-      result.hausdorff_bound = std::max(result.hausdorff_bound, offset_bound);
-    } else if (kept.size() == 1) {
-      Path disk;
-      add_disk(disk, kept.front());
-      pieces.push_back(convex_hull(std::move(disk)));
-      result.hausdorff_bound = std::max(result.hausdorff_bound, hull_bound);
-    } else {
-      // Varying radius: the hull of the two end disks per segment.
-      for (std::size_t i = 0; i + 1 < kept.size(); ++i) {
-        Path both;
-        both.reserve(2 * k);
-        add_disk(both, kept[i]);
-        add_disk(both, kept[i + 1]);
-        pieces.push_back(convex_hull(std::move(both)));
-      }
-      result.hausdorff_bound = std::max(result.hausdorff_bound, hull_bound);
-    }
+    result.hausdorff_bound = std::max(result.hausdorff_bound, add_stroke(samples, plan, pieces));
+  }
+  // Sharp piece corners (a disk far below the grid's scale beside a large one) let the final,
+  // StrictlySimple union pinch off more than its sweep term (ink_union.hpp).
+  const double pinch = ink_detail::clipper_pinch_factor(pieces);
+  if (pinch > 1) {
+    result.hausdorff_bound = up(result.hausdorff_bound + up((pinch - 1) * plan.final_union));
   }
   ClipperLib::PolyTree tree;
   if (!ink_detail::clipper_union(pieces, tree)) {

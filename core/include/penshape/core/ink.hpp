@@ -17,18 +17,22 @@
 //      <= max_error/2 (the k-gon: r_max·(1 - cos(π/k)); Clipper's arcs: 2.25 times its arc
 //      tolerance, as it rounds the step count);
 //   2. the simplification: error <= tau;
-//   3. coordinates are rounded to a grid of 2^-m mm (Clipper's integers): at most three
-//      roundings of half a grid diagonal for one stroke (input, offset vertices, the offset's
-//      own union), four for several strokes (their union's intersections on top), so error <=
-//      1.5·sqrt(2)·grid or 2·sqrt(2)·grid, the grid chosen so that this is <= max_error / 4.
+//   3. coordinates are rounded to a grid of 2^-m mm (Clipper's integers): at most four
+//      roundings of half a grid diagonal (an offset stroke's input, offset vertices, the
+//      offset's own union, the final union; a hull stroke has two), and each union's sweep
+//      decides on x rounded to the grid: up to one grid unit per union (two beyond 2^50 grid
+//      units), two unions for an offset stroke, one for hulls (core/src/ink/ink_union.hpp). The
+//      grid is chosen so that (4·sqrt(2)/2 + 2·1)·grid <= max_error / 4.
 // The sum is computed with outward rounding, plus 16 ulps of (extent + radius) for the double
 // arithmetic that places the vertices and measures the simplification's distances, plus
 // Clipper's own arithmetic in round joins and ends (it turns a unit vector step by step in
-// doubles: 32 ulps of the radius per step, ink.cpp clipper_turning), plus, for each union (an
-// offset stroke's own, and the final one of several strokes or of hulls), Clipper's double
-// arithmetic in its intersection points: 64·2^-53 of the largest grid coordinate (and half a grid
-// diagonal more beyond 2^52 grid units), derived from Clipper 6.4's IntersectPoint in
-// core/src/ink/ink_union.hpp, which also says what that derivation assumes of Clipper's sweep.
+// doubles: 32 ulps of the radius per step, ink.cpp clipper_turning), plus, for each union,
+// Clipper's double arithmetic in its intersection points and sweep: 192·2^-53 of the largest grid
+// coordinate (and half a grid diagonal more beyond 2^52 grid units), derived from Clipper 6.4's
+// source in core/src/ink/ink_union.hpp, which also says what that derivation assumes. Disks
+// smaller than four grid units are drawn with four (the bound adds the difference): thinner
+// pieces could be pinched away whole by the final union. Where a piece still has a corner
+// sharper than a right angle, the final union's terms are multiplied by 1 / sin of that angle.
 // max_error splits as 1/2 (disk), 1/4 (simplification), 1/4 (grid). The disk polygon may have at
 // most 4096 vertices (a smaller max_error relative to the radius is InvalidInput). Q's coordinates
 // are exact dyadic rationals (integers times the grid).
@@ -63,7 +67,8 @@ struct InkSample {
 
 struct InkPolygon {
   PolygonSet region;            // Q: valid (validate_region), outer rings ccw, holes cw
-  double hausdorff_bound = 0.0; // H(Q, exact swept region) <= this (mm), <= max_error
+  double hausdorff_bound = 0.0; // H(Q, exact swept region) <= this (mm), <= max_error unless
+                                // disks were widened or a piece has a sharp corner (above)
   std::size_t disk_vertices = 0;
   double grid = 0.0; // coordinate grid (mm), a power of two
 };
