@@ -87,6 +87,23 @@ TEST(DouglasPeucker, TheChordTestDecides) {
   }
 }
 
+// Of two points equally far from the chord the first is kept (the callers' strict comparison):
+// (1, 1) and (3, 1) are both 1 from the chord (0, 0)-(4, 0), and the kept one decides the rest.
+TEST(DouglasPeucker, TiesKeepTheFirstFarthestPoint) {
+  const std::vector<PointD> path{{0, 0}, {1, 1}, {2, 0}, {3, 1}, {4, 0}};
+  std::vector<char> keep(path.size(), 0), expected(path.size(), 0);
+  keep[0] = keep[4] = expected[0] = expected[4] = 1;
+  douglas_peucker(
+      0, 4,
+      [&](std::size_t k, std::size_t i, std::size_t j) {
+        return proposed_distance(path[k], path[i], path[j]);
+      },
+      [](std::size_t, std::size_t, double worst) { return worst <= 0.7; }, keep);
+  reference(path, 0, 4, 0.7, expected);
+  EXPECT_EQ(keep, (std::vector<char>{1, 1, 0, 0, 1}));
+  EXPECT_EQ(keep, expected);
+}
+
 TEST(DouglasPeucker, NanMeasuresKeepPointsAndTerminate) {
   std::vector<char> keep(6, 0);
   douglas_peucker(
