@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <random>
 #include <vector>
 
@@ -129,6 +130,44 @@ TEST(SegmentsIntersect, OneUlpApartAndTouching) {
   EXPECT_FALSE(segments_cross_properly(a, b, PointD{x, x}, PointD{1, 0}));
   EXPECT_TRUE(segments_intersect(a, b, PointD{1, 1}, PointD{2, 2})); // collinear, one end shared
   EXPECT_FALSE(segments_intersect(a, b, PointD{y + 1, y + 1}, PointD{2, 2}));
+}
+
+// The 64-bit integer instance (the fast engine's grid points) at coordinates near 2^61, where
+// the determinant needs 128 bits: every sign agrees with rationals, and the segment predicates
+// work on integer points through it.
+struct IntPoint {
+  std::int64_t x = 0;
+  std::int64_t y = 0;
+};
+int orientation(IntPoint a, IntPoint b, IntPoint c) {
+  return exact_orientation(a.x, a.y, b.x, b.y, c.x, c.y);
+}
+ExactPoint exact_int(IntPoint p) {
+  return {Rational(mpz_class(static_cast<long>(p.x))), Rational(mpz_class(static_cast<long>(p.y)))};
+}
+
+TEST(IntegerOrientation, HugeCoordinatesAgreeWithRationals) {
+  std::mt19937_64 rng(11);
+  const std::int64_t big = std::int64_t{1} << 61;
+  std::uniform_int_distribution<std::int64_t> coord(-big, big);
+  std::uniform_int_distribution<std::int64_t> nudge(-2, 2);
+  int collinear = 0;
+  for (int k = 0; k < 5'000; ++k) {
+    const IntPoint a{coord(rng), coord(rng)};
+    const IntPoint b{coord(rng), coord(rng)};
+    // c near the line ab half the time (b - a halved keeps it in range): sign changes by a unit.
+    IntPoint c{coord(rng), coord(rng)};
+    if (k % 2 == 0) c = {a.x + (b.x - a.x) / 2 + nudge(rng), a.y + (b.y - a.y) / 2};
+    const int truth = reference_orientation(exact_int(a), exact_int(b), exact_int(c));
+    collinear += truth == 0;
+    ASSERT_EQ(orientation(a, b, c), truth) << k;
+  }
+  EXPECT_GT(collinear, 0);
+  const IntPoint a{-big, -big}, b{big, big};
+  EXPECT_TRUE(segments_cross_properly(a, b, IntPoint{-big, big}, IntPoint{big, -big}));
+  EXPECT_TRUE(segments_intersect(a, b, IntPoint{0, 0}, IntPoint{big, -big})); // touches at 0
+  EXPECT_FALSE(segments_cross_properly(a, b, IntPoint{0, 0}, IntPoint{big, -big}));
+  EXPECT_FALSE(segments_intersect(a, b, IntPoint{1, 0}, IntPoint{big, -big}));
 }
 
 } // namespace

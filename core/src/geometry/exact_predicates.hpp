@@ -1,10 +1,12 @@
 #pragma once
 // The kernel's orientation and segment-intersection predicates, written once for every point
-// type core uses: exact doubles (PointD), rationals with their nearest doubles (FilteredPoint) and
-// rationals alone (ExactPoint). One floating-point filter with one derived error bound decides
-// most calls; only near-degenerate ones pay for GMP arithmetic. Internal to core.
+// type core uses: exact doubles (PointD), rationals with their nearest doubles (FilteredPoint),
+// rationals alone (ExactPoint) and 64-bit integer points (the fast engine's grid). One
+// floating-point filter with one derived error bound decides most calls; only near-degenerate
+// ones pay for GMP arithmetic. Internal to core.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
 
@@ -54,12 +56,20 @@ NT orientation_determinant(const NT& ax, const NT& ay, const NT& bx, const NT& b
   return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
 }
 
-// Its sign for an exact number type (Rational, or a wide enough integer): +1 left, -1 right,
-// 0 collinear.
+// The integer instance (the fast engine's grid points): for |coordinate| < 2^62 the differences
+// fit in 64 bits and their products in 128, so the determinant is exact.
+__extension__ typedef __int128 Int128;
+inline Int128 orientation_determinant(std::int64_t ax, std::int64_t ay, std::int64_t bx,
+                                      std::int64_t by, std::int64_t cx, std::int64_t cy) {
+  return static_cast<Int128>(bx - ax) * (cy - ay) - static_cast<Int128>(by - ay) * (cx - ax);
+}
+
+// Its sign for an exact number type (Rational, or 64-bit integers through the instance above):
+// +1 left, -1 right, 0 collinear.
 template <typename NT>
 int exact_orientation(const NT& ax, const NT& ay, const NT& bx, const NT& by, const NT& cx,
                       const NT& cy) {
-  const NT det = orientation_determinant(ax, ay, bx, by, cx, cy);
+  const auto det = orientation_determinant(ax, ay, bx, by, cx, cy);
   return static_cast<int>(det > 0) - static_cast<int>(det < 0);
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "geometry/exact_double.hpp"
+#include "geometry/ring_area.hpp"
 
 namespace penshape {
 
@@ -40,14 +41,7 @@ double to_double(const Rational& v) {
 PointD to_double(const ExactPoint& p) { return {to_double(p.x), to_double(p.y)}; }
 
 Rational twice_signed_area(const Ring& ring) {
-  Rational sum = 0;
-  const std::size_t n = ring.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const ExactPoint& a = ring[i];
-    const ExactPoint& b = ring[(i + 1) % n];
-    sum += a.x * b.y - a.y * b.x;
-  }
-  return sum;
+  return detail::twice_signed_area_in<Rational>(ring);
 }
 
 Rational area(const PolygonSet& set) {

@@ -8,6 +8,7 @@
 #include "annulus_polish.hpp"
 #include "certificate.hpp"
 #include "dot.hpp"
+#include "geometry/exact_predicates.hpp"
 #include "ink_certificate.hpp"
 #include "skeleton_seeds.hpp"
 
@@ -29,12 +30,6 @@ constexpr double kPolygonFraction = 0.85;
 // certificate could not pass because the estimate is measured on points of the stroke).
 constexpr double kCertifyIfBelow = 1.25;
 
-bool segments_cross(PointD a, PointD b, PointD c, PointD d) {
-  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
-  const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
-  return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
-}
-
 // Whether two non-adjacent segments of the path cross (a closed path's first and last segments
 // are adjacent too).
 bool self_crossing(const std::vector<PointD>& path) {
@@ -42,7 +37,7 @@ bool self_crossing(const std::vector<PointD>& path) {
   for (std::size_t i = 0; i + 1 < path.size(); ++i) {
     for (std::size_t j = i + 2; j + 1 < path.size(); ++j) {
       if (closed && i == 0 && j + 2 == path.size()) continue;
-      if (segments_cross(path[i], path[i + 1], path[j], path[j + 1])) return true;
+      if (detail::segments_cross_properly(path[i], path[i + 1], path[j], path[j + 1])) return true;
     }
   }
   return false;

@@ -1,6 +1,7 @@
 #pragma once
 // Small double-precision plane geometry shared by the recognizer's fitters and its certificate.
-// Point-to-segment distance is the kernel's (geometry/distance_kernel.hpp), not a copy.
+// Point arithmetic is the public penshape/core/point_arithmetic.hpp and point-to-segment
+// distance the kernel's (geometry/distance_kernel.hpp), not copies.
 #include <algorithm>
 #include <cmath>
 #include <span>
@@ -8,17 +9,10 @@
 
 #include "geometry/distance_kernel.hpp"
 #include "geometry/segment_grid.hpp"
+#include "penshape/core/point_arithmetic.hpp"
 #include "penshape/core/polygon_set.hpp"
 
 namespace penshape::recognize_detail {
-
-inline PointD operator+(PointD a, PointD b) { return {a.x + b.x, a.y + b.y}; }
-inline PointD operator-(PointD a, PointD b) { return {a.x - b.x, a.y - b.y}; }
-inline PointD operator*(double s, PointD a) { return {s * a.x, s * a.y}; }
-inline double dot(PointD a, PointD b) { return a.x * b.x + a.y * b.y; }
-inline double cross(PointD a, PointD b) { return a.x * b.y - a.y * b.x; }
-inline double norm(PointD a) { return std::sqrt(a.x * a.x + a.y * a.y); }
-inline double distance(PointD a, PointD b) { return norm(a - b); }
 
 // Squared distance from p to the segment [a, b] (a == b allowed): the one kernel's double
 // instance (geometry/distance_kernel.hpp), which proposes; certificates evaluate the same formula

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include "geometry/exact_predicates.hpp"
+
 namespace penshape::recognize_detail {
 namespace {
 
@@ -79,12 +81,6 @@ Order greedy_order(const std::vector<std::vector<PointD>>& pieces) {
   return o;
 }
 
-bool segments_cross(PointD a, PointD b, PointD c, PointD d) {
-  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
-  const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
-  return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
-}
-
 // The order and directions of chain_pieces() (pieces must not be empty).
 Order best_order(const std::vector<std::vector<PointD>>& pieces) {
   if (pieces.size() > kExhaustiveUpTo) return greedy_order(pieces);
@@ -142,7 +138,7 @@ double polyline_gap(const std::vector<PointD>& a, const std::vector<PointD>& b) 
   if (best == 0.0) return 0.0;
   for (std::size_t i = 0; i + 1 < a.size(); ++i) {
     for (std::size_t j = 0; j + 1 < b.size(); ++j) {
-      if (segments_cross(a[i], a[i + 1], b[j], b[j + 1])) return 0.0;
+      if (detail::segments_cross_properly(a[i], a[i + 1], b[j], b[j + 1])) return 0.0;
     }
   }
   return best;

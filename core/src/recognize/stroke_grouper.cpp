@@ -39,7 +39,7 @@ Touch touch_path(const std::vector<StrokePoint>& samples) {
     lo = {std::min(lo.x, q.x), std::min(lo.y, q.y)};
     hi = {std::max(hi.x, q.x), std::max(hi.y, q.y)};
   }
-  const double tau = kTouchThinning * recognize_detail::distance(lo, hi);
+  const double tau = kTouchThinning * distance(lo, hi);
   return {recognize_detail::thin_path(p, tau), tau};
 }
 

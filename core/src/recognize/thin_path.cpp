@@ -2,9 +2,9 @@
 #include "thin_path.hpp"
 
 #include <algorithm>
-#include <utility>
 
 #include "geometry/distance_kernel.hpp"
+#include "geometry/douglas_peucker.hpp"
 
 namespace penshape::recognize_detail {
 namespace {
@@ -36,33 +36,6 @@ bool all_within(std::span<const PointD> path, std::size_t a, std::size_t b, doub
   return true;
 }
 
-// Marks the points of path[first..last] to keep so that every unmarked point is within tau of
-// the chord of the nearest marked points around it (iterative, no recursion depth limit).
-void douglas_peucker(std::span<const PointD> path, std::size_t first, std::size_t last, double tau,
-                     std::vector<char>& keep) {
-  std::vector<std::pair<std::size_t, std::size_t>> todo{{first, last}};
-  while (!todo.empty()) {
-    const auto [a, b] = todo.back();
-    todo.pop_back();
-    if (b <= a + 1) continue;
-    double worst = -1.0;
-    std::size_t at = a;
-    for (std::size_t i = a + 1; i < b; ++i) {
-      const double d = segment_distance(path[i], path[a], path[b]);
-      if (d > worst) {
-        worst = d;
-        at = i;
-      }
-    }
-    // Every point of (a, b) within tau of the chord: drop them (doubles propose, the kernel
-    // decides).
-    if (worst <= tau && all_within(path, a, b, tau)) continue;
-    keep[at] = 1;
-    todo.emplace_back(a, at);
-    todo.emplace_back(at, b);
-  }
-}
-
 } // namespace
 
 std::vector<PointD> thin_path(std::span<const PointD> path, double tau) {
@@ -72,7 +45,16 @@ std::vector<PointD> thin_path(std::span<const PointD> path, double tau) {
   for (std::size_t a = 0; a < last; a += kThinWindow) {
     const std::size_t b = std::min(a + kThinWindow, last);
     keep[a] = keep[b] = 1;
-    douglas_peucker(path, a, b, tau, keep);
+    // Doubles propose the farthest point; a chord holds only when the kernel certifies it.
+    detail::douglas_peucker(
+        a, b,
+        [&](std::size_t k, std::size_t i, std::size_t j) {
+          return segment_distance(path[k], path[i], path[j]);
+        },
+        [&](std::size_t i, std::size_t j, double worst) {
+          return worst <= tau && all_within(path, i, j, tau);
+        },
+        keep);
   }
   std::vector<PointD> out;
   for (std::size_t i = 0; i < path.size(); ++i) {

@@ -5,6 +5,7 @@
 #include "deconstruct/validate_input.hpp"
 #include "engine/engines.hpp"
 #include "geometry/distance_kernel.hpp"
+#include "geometry/douglas_peucker.hpp"
 #include "geometry/segment_distance.hpp"
 #include "penshape/core/convex_deconstruct.hpp"
 #include "penshape/core/simplify.hpp"
@@ -103,38 +104,16 @@ std::vector<std::size_t> simplify_ring_indices(const Ring& ring, const Rational&
   d.reserve(n);
   for (const auto& p : ring) d.push_back(to_double(p));
   const double tau_d = to_double(tau) * (1 - 1e-9); // doubles choose, rationals confirm
-  // Douglas-Peucker on the closed ring, split at vertex 0 and the vertex farthest from it:
-  // O(n log n) on typical input (an explicit stack, no recursion depth to worry about).
-  std::size_t far = 0;
-  double far_d = -1;
-  for (std::size_t k = 1; k < n; ++k) {
-    const double dd = std::hypot(d[k].x - d[0].x, d[k].y - d[0].y);
-    if (dd > far_d) {
-      far_d = dd;
-      far = k;
-    }
-  }
-  std::vector<bool> kept(n, false);
-  kept[0] = kept[far] = true;
-  std::vector<std::pair<std::size_t, std::size_t>> stack{{0, far}, {far, n}};
-  while (!stack.empty()) {
-    const auto [i, j] = stack.back(); // chain i..j (j may be n: vertex 0 again)
-    stack.pop_back();
-    std::size_t worst = i;
-    double worst_d = tau_d;
-    for (std::size_t k = i + 1; k < j; ++k) {
-      const double dd = detail::proposed_distance(d[k], d[i], d[j % n]); // doubles choose
-      if (dd > worst_d) {
-        worst_d = dd;
-        worst = k;
-      }
-    }
-    if (worst != i) {
-      kept[worst] = true;
-      stack.emplace_back(i, worst);
-      stack.emplace_back(worst, j);
-    }
-  }
+  // Douglas-Peucker on the closed ring, split at vertex 0 and the vertex farthest from it
+  // (geometry/douglas_peucker.hpp): doubles choose, the confirmation below certifies.
+  const std::size_t far = detail::farthest_from_first(
+      n, [&](std::size_t k) { return std::hypot(d[k].x - d[0].x, d[k].y - d[0].y); });
+  const std::vector<char> kept = detail::douglas_peucker_ring(
+      n, far,
+      [&](std::size_t k, std::size_t i, std::size_t j) {
+        return detail::proposed_distance(d[k], d[i], d[j % n]);
+      },
+      [&](std::size_t, std::size_t, double worst) { return !(worst > tau_d); });
   for (std::size_t k = 0; k < n; ++k) {
     if (kept[k]) keep.push_back(k);
   }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "geometry/distance_kernel.hpp"
+#include "geometry/exact_predicates.hpp"
 #include "segment_index.hpp"
 
 namespace penshape::fast {
@@ -58,9 +59,10 @@ int exact_sign(const ExactPt& p, const ExactPt& s, const ExactPt& t, double thre
   return (c > 0) - (c < 0);
 }
 
+// The kernel's orientation determinant (geometry/exact_predicates.hpp) on Point2.
 template <typename NT>
 NT cross(const Point2<NT>& a, const Point2<NT>& b, const Point2<NT>& c) {
-  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+  return detail::orientation_determinant(a.x, a.y, b.x, b.y, c.x, c.y);
 }
 
 int sign_of(const IntervalNT& v) {

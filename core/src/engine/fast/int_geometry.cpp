@@ -2,17 +2,10 @@
 
 #include <algorithm>
 
+#include "geometry/ring_area.hpp"
+
 namespace penshape::fast {
-Int128 twice_area(const IRing& ring) {
-  Int128 sum = 0;
-  const std::size_t n = ring.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const IPt& a = ring[i];
-    const IPt& b = ring[(i + 1) % n];
-    sum += static_cast<Int128>(a.x) * b.y - static_cast<Int128>(b.x) * a.y;
-  }
-  return sum;
-}
+Int128 twice_area(const IRing& ring) { return detail::twice_signed_area_in<Int128>(ring); }
 
 int winding_number(const IRings& rings, IPt p) {
   int w = 0;

@@ -8,11 +8,12 @@
 #include <vector>
 
 #include "geometry/distance_kernel.hpp"
+#include "geometry/exact_predicates.hpp"
 
 namespace penshape::fast {
 
-// 128-bit products keep orientations of 2^31-bounded coordinates exact.
-__extension__ typedef __int128 Int128;
+// 128-bit products keep orientations of 2^31-bounded coordinates exact (the kernel's type).
+using detail::Int128;
 
 struct IPt {
   std::int64_t x = 0;
@@ -33,10 +34,9 @@ using IRings = std::vector<IRing>;
 inline DPt to_d(IPt p) { return {static_cast<double>(p.x), static_cast<double>(p.y)}; }
 
 // Exact orientation of c relative to the directed line a->b: >0 left, <0 right, 0 collinear.
+// The kernel's integer instance (geometry/exact_predicates.hpp).
 inline int orientation(IPt a, IPt b, IPt c) {
-  const Int128 v =
-      static_cast<Int128>(b.x - a.x) * (c.y - a.y) - static_cast<Int128>(b.y - a.y) * (c.x - a.x);
-  return (v > 0) - (v < 0);
+  return detail::exact_orientation(a.x, a.y, b.x, b.y, c.x, c.y);
 }
 
 // Distance from p to the segment [a, b] (a may equal b): the shared kernel's double path

@@ -10,6 +10,7 @@
 
 #include "certified.hpp"
 #include "geometry/distance_kernel.hpp"
+#include "geometry/exact_predicates.hpp"
 
 namespace penshape::fast {
 namespace {
@@ -434,18 +435,6 @@ class Walker {
   std::vector<Rep> in_, out_;
 };
 
-bool segments_intersect(IPt p1, IPt p2, IPt q1, IPt q2) {
-  const int d1 = orientation(q1, q2, p1), d2 = orientation(q1, q2, p2);
-  const int d3 = orientation(p1, p2, q1), d4 = orientation(p1, p2, q2);
-  if (d1 * d2 < 0 && d3 * d4 < 0) return true;
-  auto on = [](IPt a, IPt b, IPt c) {
-    return std::min(a.x, b.x) <= c.x && c.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= c.y &&
-           c.y <= std::max(a.y, b.y);
-  };
-  return (d1 == 0 && on(q1, q2, p1)) || (d2 == 0 && on(q1, q2, p2)) ||
-         (d3 == 0 && on(p1, p2, q1)) || (d4 == 0 && on(p1, p2, q2));
-}
-
 } // namespace
 
 bool level_set_avoids(const LevelSetQuery& query, const CancelHook& cancel) {
@@ -478,7 +467,7 @@ bool rings_are_simple(const SegmentIndex& index) {
             }
             return;
           }
-          if (segments_intersect(s.a, s.b, t.a, t.b)) ok = false;
+          if (detail::segments_intersect(s.a, s.b, t.a, t.b)) ok = false; // the kernel's
         });
   }
   return ok;
