@@ -89,7 +89,9 @@ TEST(InkCertificatePruned, SameBoundAsTheFlatScanOnGeneratedShapes) {
     const int mode = (trial / 7) % 3;
     const CleanShape other = mode == 2 ? random_shape(rng, (trial + 3) % 7) : shape;
     const double wobble = mode == 0 ? 0.02 : 0.4 + u(rng);
-    const InkPolygon ink = ink_along(other.sample(0.3), wobble, 0.4 + 0.4 * u(rng), rng);
+    // Every other trial a broad ink (many grid points deep inside it, far from its edges).
+    const double radius = trial % 2 == 0 ? 0.4 + 0.4 * u(rng) : 1.5 + 1.5 * u(rng);
+    const InkPolygon ink = ink_along(other.sample(0.3), wobble, radius, rng);
     const double epsilon = 0.8 + 2.0 * u(rng);
     const double pen = 0.3 + 0.5 * u(rng);
     certified += expect_same_bound(ink, shape, epsilon, pen) <= epsilon ? 1 : 0;
@@ -98,6 +100,19 @@ TEST(InkCertificatePruned, SameBoundAsTheFlatScanOnGeneratedShapes) {
   // Not vacuous: some certify, some do not.
   EXPECT_GT(certified, 0);
   EXPECT_LT(certified, total);
+}
+
+// A broad blot of ink inside curves and polygons around it: the Q side's maximum lies deep
+// inside Q, far from its edges (where only the parity selects grid points).
+TEST(InkCertificatePruned, SameBoundWhenTheMaximumIsDeepInsideTheInk) {
+  std::mt19937_64 rng(3);
+  for (int trial = 0; trial < 28; ++trial) {
+    CleanShape shape = random_shape(rng, trial % 7);
+    const PointD c = shape.kind == CleanShape::Kind::kPolyline ? shape.path.front() : shape.center;
+    const double size = shape.kind == CleanShape::Kind::kPolyline ? 6.0 : shape.rx;
+    const InkPolygon ink = ink_along({{c.x - 0.2, c.y}, {c.x + 0.2, c.y}}, 0.0, 0.5 * size, rng);
+    expect_same_bound(ink, shape, 1.2 * size, 0.3);
+  }
 }
 
 // Real strokes (every 12th $1 gesture): an ink with varying radius along the logged points,
