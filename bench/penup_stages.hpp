@@ -8,6 +8,10 @@
 //            (decide_intent on that page, every stroke measured again), and as the daemon now
 //            decides it (LiveIntent: each stroke measured once)
 //   alone    the stroke recognized alone, certified on its ink (core recognize() with Q)
+//   ink certificate, flat / pruned   of it: the ink certificate of the stroke's shape (the
+//            winner, else the best alternative) on its prepared Q, visiting every grid point
+//            (the former scan) and pruning blocks (the scan recognize() runs), on the same
+//            inputs; the two bounds must be equal bit for bit (a mismatch is printed)
 //   grouper  core StrokeGrouper::add with Q given: unions with recent strokes, the stroke alone
 //            (arrows included), tidy-up
 //   session  the daemon's whole grouping session add() on one thread (all of the above)
@@ -33,6 +37,8 @@
 #include "penshape/daemon/proto_convert.hpp"
 #include "penshape/daemon/stroke_analyzer.hpp"
 #include "penshape/daemon/worker_pool.hpp"
+#include "recognize/clean_shape.hpp"
+#include "recognize/ink_certificate.hpp"
 
 namespace penshape::bench {
 
@@ -68,6 +74,33 @@ inline std::vector<StrokePoint> stage_path_mm(const Stroke& stroke) {
   return out;
 }
 
+// The ink certificate of the stroke's shape (the winner, else the best alternative) timed both
+// ways on the same prepared Q; a mismatch of the bounds is counted (it would be a bug).
+struct InkScanTimes {
+  StepTime flat, pruned;
+  std::size_t mismatches = 0;
+  void time(const InkPolygon& q, const Recognition& rec) {
+    const bool won = rec.shape != ShapeClass::kFreeform;
+    if (!won && rec.alternatives.empty()) return;
+    const ShapeClass cls = won ? rec.shape : rec.alternatives.front().shape;
+    const ShapeParams& params = won ? rec.params : rec.alternatives.front().params;
+    if (cls == ShapeClass::kFreeform || q.region.empty()) return;
+    recognize_detail::CleanShape shape;
+    try {
+      shape = recognize_detail::clean_shape_of(cls, params);
+    } catch (const InvalidInput&) {
+      return;
+    }
+    using recognize_detail::InkScan;
+    const recognize_detail::InkRegion region = recognize_detail::prepare_ink(q, rec.epsilon);
+    Certificate a, b;
+    flat.time([&] { a = certify_ink(region, shape, rec.epsilon, rec.pen_radius, InkScan::kFlat); });
+    pruned.time(
+        [&] { b = certify_ink(region, shape, rec.epsilon, rec.pen_radius, InkScan::kPruned); });
+    if (a.bound != b.bound) ++mismatches;
+  }
+};
+
 // Times each step on `strokes` (already back to back in time, in drawing order) and prints one
 // row per step: thread CPU p50/p99/max, then wall p50/p99.
 inline void print_penup_stages(bool json, const std::string& tag,
@@ -79,6 +112,7 @@ inline void print_penup_stages(bool json, const std::string& tag,
   config.pen_radius = settings.pen_radius_mm;
   StepTime ink, intent, live_intent, alone, grouper, session, strand;
   LiveIntent live_context;
+  InkScanTimes ink_scan;
   StrokeGrouper core_grouper(GroupingConfig{}, config);
   auto whole = analyzer.group_session(settings, GroupingConfig{});
   auto live = analyzer.group_session(settings, GroupingConfig{});
@@ -109,7 +143,9 @@ inline void print_penup_stages(bool json, const std::string& tag,
     context.emplace_back(input.samples);
     if (context.size() > 24) context.pop_front();
     input.ink = &q;
-    alone.time([&] { (void)recognize(input, config); });
+    Recognition rec;
+    alone.time([&] { rec = recognize(input, config); });
+    ink_scan.time(q, rec);
     grouper.time([&] {
       (void)core_grouper.add(input);
       core_grouper.forget_unreachable();
@@ -124,6 +160,8 @@ inline void print_penup_stages(bool json, const std::string& tag,
       {"intent decision, page (as before)", &intent},
       {"intent decision, LiveIntent", &live_intent},
       {"stroke alone, ink certificate", &alone},
+      {"  of it: ink certificate, flat scan", &ink_scan.flat},
+      {"  of it: ink certificate, pruned scan", &ink_scan.pruned},
       {"StrokeGrouper::add (unions+alone)", &grouper},
       {"whole session add, one thread", &session},
       {"strand to the shape, ink on 2nd worker", &strand}};
@@ -140,6 +178,12 @@ inline void print_penup_stages(bool json, const std::string& tag,
                   ("step: " + std::string(name) + tag).c_str(), c.n, c.p50, c.p99, c.max, w.p50,
                   w.p99);
     }
+  }
+  if (ink_scan.mismatches > 0) {
+    std::printf(
+        "ink certificate: the pruned scan's bound differs from the flat one on %zu "
+        "strokes (a bug)\n",
+        ink_scan.mismatches);
   }
 }
 

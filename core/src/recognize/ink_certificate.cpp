@@ -9,6 +9,7 @@
 
 #include "certified_distance.hpp"
 #include "geometry/exact_double.hpp"
+#include "ink_box_bounds.hpp"
 
 namespace penshape::recognize_detail {
 namespace {
@@ -50,37 +51,76 @@ class ShapeDistance {
       pts.push_back(v);
     }
     std::vector<Segment> chords;
-    for (std::size_t i = 0; i + 1 < pts.size(); ++i) chords.push_back({pts[i], pts[i + 1]});
+    double half_chord = 0.0;
+    for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
+      chords.push_back({pts[i], pts[i + 1]});
+      const Guard rounding;
+      half_chord =
+          std::max(half_chord, detail::distance_upper(enclose(pts[i]), enclose(pts[i + 1])) / 2.0);
+    }
+    chord_dev_ = sum_up({half_chord, reach}); // / 2 is exact
     chords_ = SegmentIndex(std::move(chords), 2.0 * h);
     slack_ = sum_up({step / 2.0, reach, certified_.end_slack()}); // step / 2 is exact
     cos_ = detail::enclose_cos(shape.rotation);
     sin_ = detail::enclose_sin(shape.rotation);
   }
 
-  // >= d(g, C'), C' the curve with its end parameter rounded (the foot proposed lies on C').
-  [[nodiscard]] double upper(PointD g) const { return certified_.upper(enclose(g), g); }
+  // >= d(x, C') for every x in the box, C' the curve with its end parameter rounded: polylines,
+  // the least upper bound over every segment; arcs whose sector is known, the ray's distance or
+  // the nearer end; full circles, the closed form; ellipses, the distance to the foot `near` (a
+  // double point of the box) proposes, which refine() completes.
+  [[nodiscard]] double upper(const detail::IPoint& box, PointD near) const {
+    const CleanShape& s = shape_;
+    if (arc_) return arc_upper(box);
+    if (s.kind != CleanShape::Kind::kPolyline || s.path.size() < 2) {
+      return certified_.upper(box, near);
+    }
+    const Guard rounding;
+    double best = INFINITY;
+    for (std::size_t i = 0; i + 1 < s.path.size(); ++i) {
+      best = std::min(best, box_segment_upper(box, s.path[i], s.path[i + 1]));
+    }
+    return best;
+  }
+  // The value a grid point takes: upper() for all but ellipses, there the lesser of it and the
+  // chords' bound (monotone, so that blocks can bound it). Only called when upper() alone would
+  // raise the maximum: the value is at most upper(), so skipping it never changes the maximum.
+  [[nodiscard]] double refine(const detail::IPoint& box, PointD near, double up) const {
+    if (shape_.kind != CleanShape::Kind::kEllipse) return up;
+    return std::min(up, chords_upper(box, near, true));
+  }
+  // >= refine(g, g, upper(g, g)) for every grid point g of the box, through a term of it monotone
+  // in the box (ink_box_bounds.hpp); +inf when there is none (an arc whose sector is too near a
+  // half turn to tell).
+  [[nodiscard]] double block_upper(const detail::IPoint& box, PointD near) const {
+    if (shape_.kind == CleanShape::Kind::kEllipse) return chords_upper(box, near, false);
+    if (shape_.kind == CleanShape::Kind::kCircle && !shape_.full_curve() && !arc_) {
+      return INFINITY;
+    }
+    return upper(box, near);
+  }
   // >= H(C, C'): d(g, C) <= upper(g) + end_slack().
   [[nodiscard]] double end_slack() const { return certified_.end_slack(); }
 
-  // False only when d(g, C) > rho, certainly.
-  [[nodiscard]] bool maybe_within(PointD g, double rho) const {
+  // False only when d(x, C) > rho for every x in the box, certainly; monotone in the box, so
+  // false for a block means false for each of its grid points as computed there.
+  [[nodiscard]] bool maybe_within(const detail::IPoint& box, double rho) const {
     const CleanShape& s = shape_;
     switch (s.kind) {
       case CleanShape::Kind::kPolyline:
-        return polyline_maybe_within(g, rho);
+        return polyline_maybe_within(box, rho);
       case CleanShape::Kind::kCircle: {
         // | |g - c| - R | <= d(g, arc) for any arc of the circle.
         const Guard rounding;
-        const IntervalNT vx = IntervalNT(g.x) - IntervalNT(s.center.x);
-        const IntervalNT vy = IntervalNT(g.y) - IntervalNT(s.center.y);
+        const IntervalNT vx = box.x - IntervalNT(s.center.x);
+        const IntervalNT vy = box.y - IntervalNT(s.center.y);
         const IntervalNT r = CGAL::sqrt(CGAL::square(vx) + CGAL::square(vy));
         double lower = CGAL::abs(r - IntervalNT(s.rx)).inf();
-        // An arc, g certainly outside its sector: the nearest point is an end.
+        // An arc, the box certainly outside its sector: the nearest point is an end.
         if (arc_ && outside_sector(vx, vy)) {
-          const detail::IPoint ig = enclose(g);
           const double to_ends = std::min(
-              CGAL::sqrt(CGAL::square(ig.x - end0_.x) + CGAL::square(ig.y - end0_.y)).inf(),
-              CGAL::sqrt(CGAL::square(ig.x - end1_.x) + CGAL::square(ig.y - end1_.y)).inf());
+              CGAL::sqrt(CGAL::square(box.x - end0_.x) + CGAL::square(box.y - end0_.y)).inf(),
+              CGAL::sqrt(CGAL::square(box.x - end1_.x) + CGAL::square(box.y - end1_.y)).inf());
           lower = std::max(lower, to_ends);
         }
         // The true arc reaches at most end_slack beyond the one [t0, t0 + sweep] rounded gives.
@@ -89,8 +129,9 @@ class ShapeDistance {
       case CleanShape::Kind::kEllipse:
         break;
     }
-    if (!ellipse_equation_allows(g, rho)) return false;
-    return chords_.maybe_within(g, sum_up({rho, slack_}));
+    if (!ellipse_equation_allows(box, rho)) return false;
+    const Guard rounding;
+    return index_maybe_within(chords_, box, sum_up({rho, slack_}));
   }
 
  private:
@@ -117,6 +158,35 @@ class ShapeDistance {
     }
   }
 
+  // >= d(x, C') over the box through the ellipse's chords: every point of a chord is within half
+  // its length of a vertex, which is within `reach` of C' (monotone in the box).
+  // `least`: the least bound over the chords (a grid point's value), else the nearest chord's (a
+  // block's bound, which is above the least one of each of its points).
+  [[nodiscard]] double chords_upper(const detail::IPoint& box, PointD near, bool least) const {
+    const Guard rounding;
+    const double d =
+        least ? index_upper(chords_, box, near) : nearest_segment_upper(chords_, box, near);
+    return sum_up({d, chord_dev_});
+  }
+
+  // An arc of C' (sector known): | |x - c| - R | when the box is certainly inside the sector
+  // (the nearest point of the arc is then on x's ray), else the nearer end (an arc's point).
+  [[nodiscard]] double arc_upper(const detail::IPoint& box) const {
+    const Guard rounding;
+    const IntervalNT vx = box.x - IntervalNT(shape_.center.x);
+    const IntervalNT vy = box.y - IntervalNT(shape_.center.y);
+    double best = std::min(detail::distance_upper(box, end0_), detail::distance_upper(box, end1_));
+    const IntervalNT after_start = u0_.x * vy - u0_.y * vx;
+    const IntervalNT before_end = vx * u1_.y - vy * u1_.x;
+    const bool inside = wide_ ? after_start.inf() >= 0 || before_end.inf() >= 0
+                              : after_start.inf() >= 0 && before_end.inf() >= 0;
+    if (inside) {
+      const IntervalNT r = CGAL::sqrt(CGAL::square(vx) + CGAL::square(vy));
+      best = std::min(best, CGAL::abs(r - IntervalNT(shape_.rx)).sup());
+    }
+    return best;
+  }
+
   // g - centre = (vx, vy) certainly outside the sector (caller holds the guard).
   [[nodiscard]] bool outside_sector(const IntervalNT& vx, const IntervalNT& vy) const {
     const IntervalNT after_start = u0_.x * vy - u0_.y * vx; // >= 0: counterclockwise of u0
@@ -129,11 +199,11 @@ class ShapeDistance {
   // |F(g)| = |F(g) - F(e)| <= d * max |grad F| over the disk of radius d around g. If d <= rho,
   // that max is <= 2 sqrt((|x| + rho)^2 / a^4 + (|y| + rho)^2 / b^4), so a larger |F(g)| / rho
   // proves d > rho. Evaluated in intervals: false only when certain.
-  [[nodiscard]] bool ellipse_equation_allows(PointD g, double rho) const {
+  [[nodiscard]] bool ellipse_equation_allows(const detail::IPoint& g, double rho) const {
     const CleanShape& s = shape_;
     const Guard rounding;
-    const IntervalNT dx = IntervalNT(g.x) - IntervalNT(s.center.x);
-    const IntervalNT dy = IntervalNT(g.y) - IntervalNT(s.center.y);
+    const IntervalNT dx = g.x - IntervalNT(s.center.x);
+    const IntervalNT dy = g.y - IntervalNT(s.center.y);
     const IntervalNT x = CGAL::abs(cos_ * dx + sin_ * dy), y = CGAL::abs(cos_ * dy - sin_ * dx);
     const IntervalNT a2 = CGAL::square(IntervalNT(s.rx)), b2 = CGAL::square(IntervalNT(s.ry));
     const IntervalNT f = CGAL::abs(CGAL::square(x) / a2 + CGAL::square(y) / b2 - IntervalNT(1.0));
@@ -143,21 +213,20 @@ class ShapeDistance {
   }
 
   // Each segment's box first (a coordinate gap rounded down bounds the distance below), then
-  // the interval distance of the segments whose box is near.
-  [[nodiscard]] bool polyline_maybe_within(PointD g, double rho) const {
+  // the box-to-segment lower bound of the segments whose box is near (both monotone).
+  [[nodiscard]] bool polyline_maybe_within(const detail::IPoint& g, double rho) const {
     const std::vector<PointD>& path = shape_.path;
     const Guard rounding;
     const double rho2 = CGAL::square(IntervalNT(rho)).sup();
-    const detail::IPoint ig = enclose(g);
     for (std::size_t i = 0; i + 1 < path.size() || (i == 0 && path.size() == 1); ++i) {
       const PointD a = path[i], b = path.size() == 1 ? path[0] : path[i + 1];
-      // -(g.x - lo) is lo - g.x rounded down (the guard rounds up).
+      // -(x - lo) is lo - x rounded down (the guard rounds up).
       const double gap_x =
-          std::max({-(g.x - std::min(a.x, b.x)), -(std::max(a.x, b.x) - g.x), 0.0});
+          std::max({-(g.x.sup() - std::min(a.x, b.x)), -(std::max(a.x, b.x) - g.x.inf()), 0.0});
       const double gap_y =
-          std::max({-(g.y - std::min(a.y, b.y)), -(std::max(a.y, b.y) - g.y), 0.0});
+          std::max({-(g.y.sup() - std::min(a.y, b.y)), -(std::max(a.y, b.y) - g.y.inf()), 0.0});
       if (gap_x > rho || gap_y > rho) continue;
-      if (detail::squared_distance_enclosure(ig, enclose(a), enclose(b)).inf() <= rho2) return true;
+      if (box_segment_squared(g, a, b).lower <= rho2) return true;
     }
     return false;
   }
@@ -166,6 +235,7 @@ class ShapeDistance {
   CertifiedShape certified_;
   SegmentIndex chords_{{}, 1.0};
   double slack_ = 0.0;
+  double chord_dev_ = 0.0; // >= the distance from any point of the chords to C'
   IntervalNT cos_{1.0}, sin_{0.0};
   bool arc_ = false, wide_ = false;
   detail::IPoint end0_{}, end1_{}, u0_{}, u1_{};
@@ -222,6 +292,195 @@ std::vector<double> axis_lines(double o, double h, double lo, double hi, std::in
   }
   return out;
 }
+
+// Grid point indices [i0, i1] x [j0, j1] (inclusive) into GridLines::x and y.
+struct Block {
+  std::size_t i0, i1, j0, j1;
+};
+
+// The two maxima over the grid (argument in penshape/core/ink_certificate.hpp): a point's
+// selection and value are computed by eval() alone, the same whether the whole grid is visited
+// (flat) or blocks are pruned; a block is skipped for a side only when its box proves, through
+// bounds monotone in the box, that eval() would not select any of its points or that none of
+// their values exceeds the maximum already reached over real grid points.
+class GridScan {
+ public:
+  GridScan(const InkRegion& q, const ShapeDistance& shape, const GridLines& grid, double r)
+      : q_(q),
+        shape_(shape),
+        grid_(grid),
+        r_(r),
+        rho_(sum_up({r, grid.reach})),
+        near_q_(sum_up({grid.reach, q.rounding})) {}
+
+  [[nodiscard]] double worst_clean() const { return worst_clean_; }
+  [[nodiscard]] double worst_ink() const { return worst_ink_; }
+
+  void flat() {
+    for (std::size_t j = 0; j < grid_.y.size(); ++j) {
+      for (std::size_t i = 0; i < grid_.x.size(); ++i) eval(i, j, true, true);
+    }
+  }
+
+  // The grid as blocks of 16 x 16 points, then quadrants down to single points.
+  void pruned() {
+    std::vector<Scored> top;
+    for (std::size_t j = 0; j < grid_.y.size(); j += kTop) {
+      for (std::size_t i = 0; i < grid_.x.size(); i += kTop) {
+        const Block b{i, std::min(i + kTop, grid_.x.size()) - 1, j,
+                      std::min(j + kTop, grid_.y.size()) - 1};
+        top.push_back(score(b, true, true));
+      }
+    }
+    visit_all(top);
+  }
+
+ private:
+  // Top blocks of kTop x kTop points; blocks at most kLeaf + 1 points wide are evaluated point
+  // by point (scoring them would cost about as much as their points).
+  static constexpr std::size_t kTop = 16;
+  static constexpr std::size_t kLeaf = 2;
+  // A block with what its box proves: whether a side may select a point of it, and an upper
+  // bound on the values of that side's points (as eval() computes them).
+  struct Scored {
+    Block b;
+    bool sel_clean, sel_ink;
+    double up_clean, up_ink;
+  };
+
+  const std::vector<RowCrossing>& row(std::size_t j) const {
+    static const std::vector<RowCrossing> kNoCrossings;
+    // Q's crossings were computed on the same rows o.y + j h (prepare_ink).
+    const std::int64_t k = grid_.first_j + static_cast<std::int64_t>(j) - q_.first_row;
+    return k >= 0 && k < static_cast<std::int64_t>(q_.rows.size())
+               ? q_.rows[static_cast<std::size_t>(k)]
+               : kNoCrossings;
+  }
+
+  // One grid point, each side only when asked (a side not asked is proven not to matter).
+  void eval(std::size_t i, std::size_t j, bool clean, bool ink) {
+    const PointD g{grid_.x[i], grid_.y[j]};
+    const detail::IPoint ig = enclose(g);
+    const std::vector<RowCrossing>& xs = row(j);
+    std::size_t crossed = static_cast<std::size_t>(
+        std::partition_point(xs.begin(), xs.end(),
+                             [&](const RowCrossing& c) { return c.lo < g.x; }) -
+        xs.begin());
+    const int inside = parity(xs, q_.widest, g.x, crossed);
+    // Clean-ink side: d(g, Q') = 0 inside; else the least certified upper bound over Q's edges.
+    // Any one edge's bound is above it: when that is not above the maximum, g cannot raise it.
+    if (clean && inside != 1 && shape_.maybe_within(ig, rho_)) {
+      std::uint32_t id = 0;
+      (void)q_.edges.nearest_above(g, worst_clean_, id);
+      const Guard rounding;
+      const Segment& e = q_.edges.segment(id);
+      if (box_segment_upper(ig, e.a, e.b) > worst_clean_) {
+        worst_clean_ = std::max(worst_clean_, index_upper(q_.edges, ig, g));
+      }
+    }
+    // Q side: inside Q', or possibly within near_q of its boundary.
+    if (ink && (inside != 0 || within_q(ig))) {
+      const double up = shape_.upper(ig, g);
+      if (up > r_ && above_r(up) > worst_ink_) {
+        const double dc = shape_.refine(ig, g, up);
+        if (dc > r_) worst_ink_ = std::max(worst_ink_, above_r(dc));
+      }
+    }
+  }
+
+  [[nodiscard]] bool within_q(const detail::IPoint& box) const {
+    const Guard rounding;
+    return index_maybe_within(q_.edges, box, near_q_);
+  }
+  [[nodiscard]] double above_r(double dc) const {
+    const Guard rounding;
+    return (IntervalNT(dc) - IntervalNT(r_)).sup();
+  }
+
+  // What parity() finds at every grid point of the block: 0 (certainly outside Q') or 1
+  // (certainly inside) at all of them, else -1: on each row no crossing's interval meets
+  // [x0, x1] and the crossings left of x0 are even (odd) in number.
+  [[nodiscard]] int block_parity(const Block& b) const {
+    const double x0 = grid_.x[b.i0], x1 = grid_.x[b.i1];
+    int found = -1;
+    for (std::size_t j = b.j0; j <= b.j1; ++j) {
+      const std::vector<RowCrossing>& xs = row(j);
+      const auto left = std::partition_point(xs.begin(), xs.end(),
+                                             [&](const RowCrossing& c) { return c.lo < x0; });
+      const int side = static_cast<int>((left - xs.begin()) % 2);
+      if (found != -1 && side != found) return -1;
+      found = side;
+      // parity() looks back only to crossings with lo >= x - 2 widest; none further reaches.
+      auto k = std::partition_point(
+          xs.begin(), left, [&](const RowCrossing& c) { return c.lo < x0 - 2.0 * q_.widest; });
+      for (; k != xs.end() && k->lo <= x1; ++k) {
+        if (k->hi >= x0) return -1;
+      }
+    }
+    return found;
+  }
+
+  Scored score(const Block& b, bool clean, bool ink) const {
+    const detail::IPoint box{IntervalNT(grid_.x[b.i0], grid_.x[b.i1]),
+                             IntervalNT(grid_.y[b.j0], grid_.y[b.j1])};
+    const PointD mid{grid_.x[(b.i0 + b.i1) / 2], grid_.y[(b.j0 + b.j1) / 2]};
+    Scored s{b, false, false, 0.0, 0.0};
+    const int inside = block_parity(b);
+    s.sel_clean = clean && inside != 1 && shape_.maybe_within(box, rho_);
+    if (s.sel_clean) {
+      // Any one edge bounds the least upper bound eval() takes (ink_box_bounds.hpp).
+      const Guard rounding;
+      s.up_clean = nearest_segment_upper(q_.edges, box, mid);
+    }
+    s.sel_ink = ink && (inside != 0 || within_q(box));
+    if (s.sel_ink) {
+      const double dc = shape_.block_upper(box, mid);
+      s.up_ink = dc > r_ ? above_r(dc) : 0.0;
+    }
+    return s;
+  }
+
+  // Blocks in decreasing order of how far they may raise a maximum (good maxima early).
+  void visit_all(std::vector<Scored>& blocks) {
+    constexpr double kNone = -std::numeric_limits<double>::infinity();
+    const auto gain = [this](const Scored& s) {
+      return std::max(s.sel_clean ? s.up_clean - worst_clean_ : kNone,
+                      s.sel_ink ? s.up_ink - worst_ink_ : kNone);
+    };
+    std::sort(blocks.begin(), blocks.end(),
+              [&](const Scored& a, const Scored& b) { return gain(a) > gain(b); });
+    for (const Scored& s : blocks) visit(s);
+  }
+
+  // The block's sides still open (its bound above the maximum now reached), then its points or
+  // its quadrants.
+  void visit(const Scored& s) {
+    const bool clean = s.sel_clean && s.up_clean > worst_clean_;
+    const bool ink = s.sel_ink && s.up_ink > worst_ink_;
+    if (!clean && !ink) return;
+    const Block& b = s.b;
+    if (b.i1 - b.i0 < kLeaf && b.j1 - b.j0 < kLeaf) {
+      for (std::size_t j = b.j0; j <= b.j1; ++j) {
+        for (std::size_t i = b.i0; i <= b.i1; ++i) eval(i, j, clean, ink);
+      }
+      return;
+    }
+    const std::size_t im = (b.i0 + b.i1) / 2, jm = (b.j0 + b.j1) / 2;
+    std::vector<Scored> parts;
+    for (const Block& c : {Block{b.i0, im, b.j0, jm}, Block{im + 1, b.i1, b.j0, jm},
+                           Block{b.i0, im, jm + 1, b.j1}, Block{im + 1, b.i1, jm + 1, b.j1}}) {
+      if (c.i0 <= c.i1 && c.j0 <= c.j1) parts.push_back(score(c, clean, ink));
+    }
+    visit_all(parts);
+  }
+
+  const InkRegion& q_;
+  const ShapeDistance& shape_;
+  const GridLines& grid_;
+  double r_, rho_, near_q_;
+  double worst_clean_ = 0.0; // >= max d(g, Q') over grid points standing for the clean ink
+  double worst_ink_ = 0.0;   // >= max (d(g, C') - r) over grid points standing for Q
+};
 
 } // namespace
 
@@ -313,7 +572,7 @@ InkRegion prepare_ink(const InkPolygon& ink, double epsilon) {
 }
 
 Certificate certify_ink(const InkRegion& q, const CleanShape& shape, double epsilon,
-                        double pen_radius) {
+                        double pen_radius, InkScan how) {
   Certificate cert;
   cert.method = "ink";
   cert.epsilon = epsilon;
@@ -356,38 +615,14 @@ Certificate certify_ink(const InkRegion& q, const CleanShape& shape, double epsi
   const ShapeDistance to_shape(shape, h);
   // Grid points within half_diag of every point of the union box (grid_lines).
   const GridLines grid = grid_lines(q.origin, h, ulo, uhi);
-  const double half_diag = grid.reach;
-  const double rho = sum_up({r, half_diag}); // grid points that can stand for the clean ink
-  const double near_q = sum_up({half_diag, q.rounding}); // grid points that can stand for Q
-  double worst_clean = 0.0; // >= max d(g, Q') over grid points standing for the clean ink
-  double worst_ink = 0.0;   // >= max (d(g, C') - r) over grid points standing for Q
-  static const std::vector<RowCrossing> kNoCrossings;
-  for (std::size_t row = 0; row < grid.y.size(); ++row) {
-    // Q's crossings were computed on the same rows o.y + j h (prepare_ink).
-    const std::int64_t k = grid.first_j + static_cast<std::int64_t>(row) - q.first_row;
-    const std::vector<RowCrossing>& xs = k >= 0 && k < static_cast<std::int64_t>(q.rows.size())
-                                             ? q.rows[static_cast<std::size_t>(k)]
-                                             : kNoCrossings;
-    std::size_t crossed = 0;
-    for (const double x : grid.x) {
-      const PointD g{x, grid.y[row]};
-      const int inside = parity(xs, q.widest, g.x, crossed);
-      // Clean-ink side: d(g, Q') = 0 inside; else an interval upper bound to the proposed edge.
-      if (inside != 1 && to_shape.maybe_within(g, rho)) {
-        std::uint32_t id = 0;
-        (void)q.edges.nearest_above(g, worst_clean, id);
-        worst_clean = std::max(worst_clean, upper_to_segment(enclose(g), q.edges.segment(id)));
-      }
-      // Q side: inside Q', or possibly within near_q of its boundary.
-      if (inside != 0 || q.edges.maybe_within(g, near_q)) {
-        const double dc = to_shape.upper(g);
-        if (dc > r) {
-          const Guard rounding;
-          worst_ink = std::max(worst_ink, (IntervalNT(dc) - IntervalNT(r)).sup());
-        }
-      }
-    }
+  GridScan scan(q, to_shape, grid, r);
+  if (how == InkScan::kFlat) {
+    scan.flat();
+  } else {
+    scan.pruned();
   }
+  const double half_diag = grid.reach;
+  const double worst_clean = scan.worst_clean(), worst_ink = scan.worst_ink();
   // S2 was measured against C' (the curve's rounded end): H(C, C') <= end_slack is added.
   const double s2 = sum_up({worst_ink, to_shape.end_slack()});
   // H(C ⊕ D_r, T) <= H(C ⊕ D_r, Q') + H(Q', Q) + H(Q, T).

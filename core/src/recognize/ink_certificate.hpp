@@ -52,8 +52,13 @@ GridLines grid_lines(PointD origin, double h, PointD lo, PointD hi);
 // Throws InvalidInput when Q is empty or has non-finite coordinates.
 InkRegion prepare_ink(const InkPolygon& ink, double epsilon);
 
+// How the grid is visited: kPruned skips blocks of grid points proven not to change either
+// maximum; kFlat visits every grid point (kept for the tests and the bench, which check that both
+// give the same bound, bit for bit).
+enum class InkScan { kPruned, kFlat };
+
 // Upper bound on H(shape ⊕ D_r, true stroke ink) (Certificate::method "ink").
 Certificate certify_ink(const InkRegion& q, const CleanShape& shape, double epsilon,
-                        double pen_radius);
+                        double pen_radius, InkScan how = InkScan::kPruned);
 
 } // namespace penshape::recognize_detail
