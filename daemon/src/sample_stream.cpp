@@ -104,9 +104,11 @@ grpc::Status SampleStream::finish_stroke() {
   v1::LiveEvent finished;
   v1::StrokeFinished* f = finished.mutable_stroke_finished();
   if (state_.analyzer) {
-    const grpc::Status s =
-        analyze_grouped(state_, context_, grouping_, stroke, settings_, &result, &timings);
-    if (!s.ok()) return s;
+    if (grpc::Status s =
+            analyze_grouped(state_, context_, grouping_, stroke, settings_, &result, &timings);
+        !s.ok()) {
+      return s;
+    }
     *f->mutable_ink_polygon() = result.analysis.ink_polygon;
   } else {
     f->set_not_analysed("this build has no stroke analyzer (ink polygon and recognizer)");
