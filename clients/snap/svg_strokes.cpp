@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <optional>
 #include <set>
 
 #include "outline_centerline.hpp"
@@ -190,6 +191,12 @@ class Walker {
     if (paths.size() != 1) return; // several subpaths are several strokes' worth: left alone
     const Subpath& path = paths.front();
     if (path.points.size() < 2) throw NotAStroke{""}; // a dot, drawn as it is
+    const std::optional<PenLine> line = pen_line(path, m, width, calligraphy);
+    if (!line) return;
+    const double radius = line->radius;
+    if (!(radius > 0) || !(radius * 2 <= kMaxStrokeWidth)) {
+      throw NotAStroke{"a pen " + std::to_string(2 * radius) + " units wide (transform included)"};
+    }
     SvgStroke s;
     s.element = n;
     s.to_root = m;
@@ -197,29 +204,36 @@ class Walker {
     s.ink.where = describe(n, lines_);
     s.ink.locator = locator(n);
     s.ink.style = style_key(n, st, calligraphy);
-    std::vector<PointD> pts;
-    for (const PointD& p : path.points) pts.push_back(m.apply(p));
-    // A closed pencil path is drawn back to its start: the closing side is ink too.
-    if (pencil && path.closed) pts.push_back(pts.front());
-    double radius = width / 2 * m.scale();
-    if (calligraphy) {
-      const auto c = outline_centerline(pts); // a fill closes the outline, Z or not
-      if (!c || c->points.size() < 2) return; // a blob, not a stroke's outline
-      if (width_ratio(c->points, pts) > kMaxCalligraphyWidthRatio) return; // variable width
-      pts = c->points;
-      radius = c->radius;
-    }
-    if (!(radius > 0) || !(radius * 2 <= kMaxStrokeWidth)) {
-      throw NotAStroke{"a pen " + std::to_string(2 * radius) + " units wide (transform included)"};
-    }
-    for (std::size_t i = 0; i < pts.size(); ++i) {
-      s.ink.points.push_back({pts[i].x, pts[i].y, static_cast<double>(i)});
+    for (std::size_t i = 0; i < line->points.size(); ++i) {
+      s.ink.points.push_back({line->points[i].x, line->points[i].y, static_cast<double>(i)});
       s.ink.radii.push_back(radius);
     }
     if (!coordinates_in_range(s.ink.points)) {
       throw NotAStroke{"coordinates beyond +-1e6 units (transform included) or not finite"};
     }
     pages_[page].strokes.push_back(std::move(s));
+  }
+
+  // The pen's centre line in root units and its radius: a pencil path as drawn (a closed one
+  // back to its start: the closing side is ink too), a calligraphy fill's centre line; nothing
+  // when a fill is a blob or of varying width (left as drawn).
+  struct PenLine {
+    std::vector<PointD> points;
+    double radius = 0;
+  };
+  static std::optional<PenLine> pen_line(const Subpath& path, const Affine& m, double width,
+                                         bool calligraphy) {
+    PenLine out;
+    for (const PointD& p : path.points) out.points.push_back(m.apply(p));
+    if (!calligraphy) {
+      if (path.closed) out.points.push_back(out.points.front());
+      out.radius = width / 2 * m.scale();
+      return out;
+    }
+    const auto c = outline_centerline(out.points);       // a fill closes the outline, Z or not
+    if (!c || c->points.size() < 2) return std::nullopt; // a blob, not a stroke's outline
+    if (width_ratio(c->points, out.points) > kMaxCalligraphyWidthRatio) return std::nullopt;
+    return PenLine{c->points, c->radius};
   }
 
   static double checked_width(const std::string& text) {

@@ -98,9 +98,10 @@ double shape_turning(const Fit& f) {
   return total;
 }
 
-// Why a certified candidate is not a plausible snap (empty when it is); rules in recognize.hpp.
-std::string implausibility(const PreparedStroke& s, const Fit& f, const Certificate& c,
-                           const RecognizerConfig& config) {
+// The hand's evidence against any snap: traced over, wiggling, or a straight open shape drawn
+// too loosely.
+std::string drawing_implausibility(const PreparedStroke& s, const Fit& f, const Certificate& c,
+                                   const RecognizerConfig& config) {
   const double clean_length = path_length(f.clean.sample(s.size / 64.0));
   // Measured on the fit points (48 along the stroke) so that sample jitter does not count.
   if (path_length(s.fit_points) > kMaxTracing * clean_length) {
@@ -115,40 +116,65 @@ std::string implausibility(const PreparedStroke& s, const Fit& f, const Certific
   if (straight_open && c.bound - s.thinning > config.straight_fraction * c.epsilon) {
     return "a straight open shape must fit within straight_fraction * epsilon";
   }
-  if (f.shape == ShapeClass::kPolyline) {
-    const std::vector<PointD>& v = f.params.vertices;
-    for (std::size_t i = 1; i + 1 < v.size(); ++i) {
-      if (segment_distance(v[i], v[i - 1], v[i + 1]) < 0.5 * c.epsilon) {
-        return "a polyline corner is within epsilon / 2 of its neighbours' chord (not a corner)";
-      }
+  return {};
+}
+
+std::string polyline_implausibility(const Fit& f, const Certificate& c) {
+  const std::vector<PointD>& v = f.params.vertices;
+  for (std::size_t i = 1; i + 1 < v.size(); ++i) {
+    if (segment_distance(v[i], v[i - 1], v[i + 1]) < 0.5 * c.epsilon) {
+      return "a polyline corner is within epsilon / 2 of its neighbours' chord (not a corner)";
     }
   }
-  if (f.shape == ShapeClass::kPolyline && self_crossing(f.clean.path)) {
+  if (self_crossing(f.clean.path))
     return "the open polyline crosses itself (a gesture, not a shape)";
-  }
-  if (f.shape == ShapeClass::kPolygon && self_crossing(f.clean.path)) {
+  return {};
+}
+
+std::string polygon_implausibility(const PreparedStroke& s, const Fit& f, const Certificate& c) {
+  if (self_crossing(f.clean.path)) {
     return "the polygon crosses itself (a star or a scribble, not a polygon)";
   }
-  if (f.shape == ShapeClass::kPolygon && c.bound - s.thinning > kPolygonFraction * c.epsilon) {
+  if (c.bound - s.thinning > kPolygonFraction * c.epsilon) {
     return "a polygon of 5..8 corners must fit within 0.85 epsilon (drawn as straight sides)";
   }
-  if (f.shape == ShapeClass::kPolygon && sharpest_turn(f.params.vertices) > kMaxPolygonTurn) {
+  if (sharpest_turn(f.params.vertices) > kMaxPolygonTurn) {
     return "a polygon corner turns back by more than 150 degrees (a line drawn down and back)";
   }
-  if (f.shape == ShapeClass::kTriangle || f.shape == ShapeClass::kQuadrilateral ||
-      f.shape == ShapeClass::kRectangle || f.shape == ShapeClass::kSquare ||
-      f.shape == ShapeClass::kDiamond || f.shape == ShapeClass::kPolygon) {
-    const std::vector<PointD>& v = f.params.vertices;
-    for (std::size_t i = 0; i < v.size(); ++i) {
-      if (distance(v[i], v[(i + 1) % v.size()]) < c.epsilon) {
-        return "a side is shorter than epsilon (a corner drawn round, not a side)";
-      }
-      const PointD prev = v[(i + v.size() - 1) % v.size()];
-      if (segment_distance(v[i], prev, v[(i + 1) % v.size()]) < c.epsilon) {
-        return "a corner is within epsilon of its neighbours' chord (not a corner)";
-      }
+  return {};
+}
+
+// A closed polygon's corners must be corners: sides of at least epsilon, corners off their
+// neighbours' chord by at least epsilon.
+std::string corner_implausibility(const Fit& f, const Certificate& c) {
+  const std::vector<PointD>& v = f.params.vertices;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (distance(v[i], v[(i + 1) % v.size()]) < c.epsilon) {
+      return "a side is shorter than epsilon (a corner drawn round, not a side)";
+    }
+    const PointD prev = v[(i + v.size() - 1) % v.size()];
+    if (segment_distance(v[i], prev, v[(i + 1) % v.size()]) < c.epsilon) {
+      return "a corner is within epsilon of its neighbours' chord (not a corner)";
     }
   }
+  return {};
+}
+
+bool has_corners(ShapeClass shape) {
+  return shape == ShapeClass::kTriangle || shape == ShapeClass::kQuadrilateral ||
+         shape == ShapeClass::kRectangle || shape == ShapeClass::kSquare ||
+         shape == ShapeClass::kDiamond || shape == ShapeClass::kPolygon;
+}
+
+// Why a certified candidate is not a plausible snap (empty when it is); rules in recognize.hpp.
+std::string implausibility(const PreparedStroke& s, const Fit& f, const Certificate& c,
+                           const RecognizerConfig& config) {
+  if (std::string why = drawing_implausibility(s, f, c, config); !why.empty()) return why;
+  if (f.shape == ShapeClass::kPolyline) return polyline_implausibility(f, c);
+  if (f.shape == ShapeClass::kPolygon) {
+    if (std::string why = polygon_implausibility(s, f, c); !why.empty()) return why;
+  }
+  if (has_corners(f.shape)) return corner_implausibility(f, c);
   if (f.shape == ShapeClass::kRegularPolygon) {
     const double n = static_cast<double>(f.params.vertices.size());
     if (f.params.radius_x * (1.0 - std::cos(std::numbers::pi / n)) < 0.5 * c.epsilon) {

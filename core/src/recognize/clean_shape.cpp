@@ -91,55 +91,68 @@ std::vector<PointD> arrow_path(ShapeClass shape, const std::vector<PointD>& v, d
   return path;
 }
 
-CleanShape clean_shape_of(ShapeClass shape, const ShapeParams& params) {
+namespace {
+
+bool finite_point(PointD p) { return std::isfinite(p.x) && std::isfinite(p.y); }
+
+CleanShape round_shape(ShapeClass shape, const ShapeParams& params) {
   CleanShape c;
-  const auto finite = [](PointD p) { return std::isfinite(p.x) && std::isfinite(p.y); };
+  const bool ellipse = shape == ShapeClass::kEllipse;
+  c.kind = ellipse ? CleanShape::Kind::kEllipse : CleanShape::Kind::kCircle;
+  c.center = params.center;
+  c.rx = params.radius_x;
+  c.ry = ellipse ? params.radius_y : params.radius_x;
+  c.rotation = ellipse ? params.rotation : 0.0;
+  if (shape == ShapeClass::kArc) {
+    c.t0 = params.start_angle;
+    c.sweep = params.sweep_angle;
+  }
+  const bool radii_ok = c.rx > 0 && c.ry > 0 && std::isfinite(c.rx) && std::isfinite(c.ry);
+  const bool angles_ok = std::isfinite(c.rotation) && std::isfinite(c.t0) &&
+                         std::isfinite(c.sweep) &&
+                         std::abs(c.sweep) <= 2.0 * std::numbers::pi + 1e-9;
+  if (!finite_point(c.center) || !radii_ok || !angles_ok) {
+    throw InvalidInput("clean shape: centre, radii and angles must be finite, radii > 0");
+  }
+  return c;
+}
+
+std::vector<PointD> checked_arrow_path(ShapeClass shape, const ShapeParams& params) {
+  if (params.shaft_bends.size() > kMaxShaftBends) {
+    throw InvalidInput("clean shape: an arrow's shaft has at most 2 bends");
+  }
+  for (const PointD& b : params.shaft_bends) {
+    if (!finite_point(b)) throw InvalidInput("clean shape: a shaft bend is not finite");
+  }
+  if (!params.shaft_bends.empty() && params.shaft_bulge != 0.0) {
+    throw InvalidInput("clean shape: a shaft is bent or curved, not both");
+  }
+  return arrow_path(shape, params.vertices, params.shaft_bulge, params.shaft_bends);
+}
+
+} // namespace
+
+CleanShape clean_shape_of(ShapeClass shape, const ShapeParams& params) {
   switch (shape) {
     case ShapeClass::kFreeform:
       throw InvalidInput("clean shape: freeform has no clean shape");
     case ShapeClass::kCircle:
     case ShapeClass::kArc:
-    case ShapeClass::kEllipse: {
-      const bool ellipse = shape == ShapeClass::kEllipse;
-      c.kind = ellipse ? CleanShape::Kind::kEllipse : CleanShape::Kind::kCircle;
-      c.center = params.center;
-      c.rx = params.radius_x;
-      c.ry = ellipse ? params.radius_y : params.radius_x;
-      c.rotation = ellipse ? params.rotation : 0.0;
-      if (shape == ShapeClass::kArc) {
-        c.t0 = params.start_angle;
-        c.sweep = params.sweep_angle;
-      }
-      if (!finite(c.center) || !(c.rx > 0) || !(c.ry > 0) || !std::isfinite(c.rx) ||
-          !std::isfinite(c.ry) || !std::isfinite(c.rotation) || !std::isfinite(c.t0) ||
-          !std::isfinite(c.sweep) || std::abs(c.sweep) > 2.0 * std::numbers::pi + 1e-9) {
-        throw InvalidInput("clean shape: centre, radii and angles must be finite, radii > 0");
-      }
-      return c;
-    }
+    case ShapeClass::kEllipse:
+      return round_shape(shape, params);
     default:
       break;
   }
+  CleanShape c;
   c.kind = CleanShape::Kind::kPolyline;
   c.path = params.vertices;
   if (c.path.empty()) throw InvalidInput("clean shape: no vertices");
   for (const PointD& v : c.path) {
-    if (!finite(v)) throw InvalidInput("clean shape: a vertex is not finite");
+    if (!finite_point(v)) throw InvalidInput("clean shape: a vertex is not finite");
   }
   if (shape == ShapeClass::kArrow || shape == ShapeClass::kDoubleArrow) {
-    if (params.shaft_bends.size() > kMaxShaftBends) {
-      throw InvalidInput("clean shape: an arrow's shaft has at most 2 bends");
-    }
-    for (const PointD& b : params.shaft_bends) {
-      if (!finite(b)) throw InvalidInput("clean shape: a shaft bend is not finite");
-    }
-    if (!params.shaft_bends.empty() && params.shaft_bulge != 0.0) {
-      throw InvalidInput("clean shape: a shaft is bent or curved, not both");
-    }
-    c.path = arrow_path(shape, params.vertices, params.shaft_bulge, params.shaft_bends);
-    return c;
-  }
-  if (shape != ShapeClass::kSegment && shape != ShapeClass::kPolyline) {
+    c.path = checked_arrow_path(shape, params);
+  } else if (shape != ShapeClass::kSegment && shape != ShapeClass::kPolyline) {
     c.path.push_back(c.path.front()); // polygons are closed
   }
   return c;
