@@ -48,30 +48,44 @@ bool try_parse_plain_decimal(std::string_view t, Rational& out) {
   return true;
 }
 
-// Returns nullopt-like false on malformed text instead of throwing, so callers add context.
-bool try_parse_rational(std::string_view t, Rational& out) {
-  if (t.empty()) return false;
-  if (try_parse_plain_decimal(t, out)) return true;
-  const auto slash = t.find('/');
-  if (slash != std::string_view::npos) {
-    std::string_view num = t.substr(0, slash);
-    const std::string_view den = t.substr(slash + 1);
-    bool negative = false;
-    if (!num.empty() && (num[0] == '+' || num[0] == '-')) {
-      negative = num[0] == '-';
-      num.remove_prefix(1);
-    }
-    if (num.empty() || den.empty() || !std::all_of(num.begin(), num.end(), is_digit) ||
-        !std::all_of(den.begin(), den.end(), is_digit)) {
-      return false;
-    }
-    const mpz_class n(std::string(num), 10);
-    const mpz_class d(std::string(den), 10);
-    if (d == 0) return false;
-    out = Rational(negative ? mpz_class(-n) : n, d);
-    out.canonicalize();
-    return true;
+// "[+-]digits/digits", the denominator non-zero.
+bool try_parse_fraction(std::string_view t, std::size_t slash, Rational& out) {
+  std::string_view num = t.substr(0, slash);
+  const std::string_view den = t.substr(slash + 1);
+  bool negative = false;
+  if (!num.empty() && (num[0] == '+' || num[0] == '-')) {
+    negative = num[0] == '-';
+    num.remove_prefix(1);
   }
+  if (num.empty() || den.empty() || !std::all_of(num.begin(), num.end(), is_digit) ||
+      !std::all_of(den.begin(), den.end(), is_digit)) {
+    return false;
+  }
+  const mpz_class n(std::string(num), 10);
+  const mpz_class d(std::string(den), 10);
+  if (d == 0) return false;
+  out = Rational(negative ? mpz_class(-n) : n, d);
+  out.canonicalize();
+  return true;
+}
+
+// An exponent "e[+-]digits" from t[i] on (i just past the 'e'), added to `scale` (value =
+// digits · 10^(-scale)); false past kMaxExponent or without digits.
+bool read_exponent(std::string_view t, std::size_t& i, long& scale) {
+  bool exp_negative = false;
+  if (i < t.size() && (t[i] == '+' || t[i] == '-')) exp_negative = t[i++] == '-';
+  if (i == t.size()) return false;
+  long e = 0;
+  while (i < t.size() && is_digit(t[i])) {
+    e = e * 10 + (t[i++] - '0');
+    if (e > kMaxExponent) return false;
+  }
+  scale += exp_negative ? e : -e;
+  return true;
+}
+
+// "[+-]digits[.digits][e[+-]digits]", exactly, however many digits.
+bool try_parse_decimal(std::string_view t, Rational& out) {
   std::size_t i = 0;
   bool negative = false;
   if (t[i] == '+' || t[i] == '-') negative = t[i++] == '-';
@@ -91,18 +105,7 @@ bool try_parse_rational(std::string_view t, Rational& out) {
     }
   }
   if (!any) return false;
-  if (i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
-    ++i;
-    bool exp_negative = false;
-    if (i < t.size() && (t[i] == '+' || t[i] == '-')) exp_negative = t[i++] == '-';
-    if (i == t.size()) return false;
-    long e = 0;
-    while (i < t.size() && is_digit(t[i])) {
-      e = e * 10 + (t[i++] - '0');
-      if (e > kMaxExponent) return false;
-    }
-    scale += exp_negative ? e : -e;
-  }
+  if (i < t.size() && (t[i] == 'e' || t[i] == 'E') && !read_exponent(t, ++i, scale)) return false;
   if (i != t.size()) return false;
   mpz_class n(digits, 10);
   if (negative) n = -n;
@@ -111,6 +114,16 @@ bool try_parse_rational(std::string_view t, Rational& out) {
   out = scale >= 0 ? Rational(n, p) : Rational(n * p);
   out.canonicalize();
   return true;
+}
+
+// Returns nullopt-like false on malformed text instead of throwing, so callers add context.
+bool try_parse_rational(std::string_view t, Rational& out) {
+  if (t.empty()) return false;
+  if (try_parse_plain_decimal(t, out)) return true;
+  if (const auto slash = t.find('/'); slash != std::string_view::npos) {
+    return try_parse_fraction(t, slash, out);
+  }
+  return try_parse_decimal(t, out);
 }
 
 // Exact point-in-ring test (crossing number); the point is assumed off the ring's boundary.
