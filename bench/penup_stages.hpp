@@ -37,8 +37,8 @@
 #include "penshape/daemon/proto_convert.hpp"
 #include "penshape/daemon/stroke_analyzer.hpp"
 #include "penshape/daemon/worker_pool.hpp"
-#include "recognize/clean_shape.hpp"
-#include "recognize/ink_certificate.hpp"
+#include "recognize/fitting/clean_shape.hpp"
+#include "recognize/certify/ink_certificate.hpp"
 
 namespace penshape::bench {
 

@@ -1,4 +1,4 @@
-// The recognizer's certified distances (core/src/recognize/certified_distance.hpp) and the
+// The recognizer's certified distances (core/src/recognize/certify/certified_distance.hpp) and the
 // thinning's certified decision, against closed forms and dense sampling computed here: upper
 // bounds are never below the true distance and stay close to it; a point exactly tau from its
 // chord is dropped (the exact fallback decides), one ulp farther is kept.
@@ -8,8 +8,8 @@
 #include <numbers>
 #include <random>
 
-#include "recognize/certified_distance.hpp"
-#include "recognize/thin_path.hpp"
+#include "recognize/certify/certified_distance.hpp"
+#include "recognize/fitting/thin_path.hpp"
 
 namespace penshape::recognize_detail {
 namespace {

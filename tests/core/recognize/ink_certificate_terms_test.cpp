@@ -1,4 +1,4 @@
-// Two terms of the ink certificate (core/src/recognize/ink_certificate.cpp) that issue #22 found
+// Two terms of the ink certificate (core/src/recognize/certify/ink_certificate.cpp) that issue #22 found
 // short, each against a worst case computed here: the grid's reach (the half-diagonal of the
 // widest cell of the double grid o + (i h, j h)) against the exact widest gaps, on grids where
 // the coordinates' rounding widens a gap by more than the old allowance; and the arc's rounded
@@ -12,7 +12,7 @@
 
 #include "penshape/core/ink.hpp"
 #include "penshape/core/ink_certificate.hpp"
-#include "recognize/ink_certificate.hpp"
+#include "recognize/certify/ink_certificate.hpp"
 
 namespace penshape {
 namespace {

@@ -1,0 +1,35 @@
+#pragma once
+// Arrow and double-arrow proposals for one or several strokes (group_recognize.hpp, "Arrows").
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "recognize/certify/union_certificate.hpp"
+#include "recognize/fitting/fit.hpp"
+
+namespace penshape::recognize_detail {
+
+// About 64 points spread along every piece in proportion to its length (no jumps between
+// pieces): what the fits and the RMS of a union are measured on.
+std::vector<PointD> cloud_of(const UnionStroke& u);
+
+// Candidates (arrow in either direction, double arrow) fitted to the union of the strokes, best
+// fit first; empty when no head stands out. Estimates only: the certificate decides. Kinds whose
+// least possible rank (kPricePerParameter x free parameters, classifier.hpp) is not below
+// `rank_to_beat` are not fitted: they could never win over the snap that set it.
+std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon, double rank_to_beat = INFINITY);
+
+// Whether a single arrow fitted to several strokes has its head drawn apart from its shaft: every
+// stroke lies within epsilon of the shaft or of the head, some only of the shaft and some only of
+// the head (the shaft, then the head, or the head first). The strokes then tell the shaft from
+// the head, which a tight fit must tell otherwise.
+bool head_drawn_apart(const Fit& f, const UnionStroke& u, double epsilon);
+
+// Why a certified arrow is not a plausible snap (empty when it is); `drawn_length` is the summed
+// length of the strokes. An arrow must fit within 0.6 epsilon (it is straight pieces) with
+// barbs up to 0.8 shafts; with its head drawn apart, within epsilon (the certificate) with
+// barbs up to one shaft.
+std::string arrow_implausibility(const Fit& f, const Certificate& c, double drawn_length,
+                                 bool head_apart = false);
+
+} // namespace penshape::recognize_detail

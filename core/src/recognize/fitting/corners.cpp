@@ -1,0 +1,154 @@
+// Corner search by dynamic programming over chord costs computed in O(1) from prefix sums, and
+// total-least-squares lines.
+#include <cmath>
+#include <limits>
+
+#include "recognize/fitting/fit.hpp"
+
+namespace penshape::recognize_detail {
+namespace {
+
+// Prefix moments of a (possibly doubled) point sequence, centred for accuracy.
+class ChordCost {
+ public:
+  explicit ChordCost(const std::vector<PointD>& pts) : pts_(pts) {
+    const std::size_t n = pts.size();
+    for (const PointD& p : pts) c_ = c_ + p;
+    c_ = (1.0 / static_cast<double>(n)) * c_;
+    sx_.assign(n + 1, 0.0);
+    sy_ = sxx_ = syy_ = sxy_ = sx_;
+    for (std::size_t i = 0; i < n; ++i) {
+      const PointD q = pts[i] - c_;
+      sx_[i + 1] = sx_[i] + q.x;
+      sy_[i + 1] = sy_[i] + q.y;
+      sxx_[i + 1] = sxx_[i] + q.x * q.x;
+      syy_[i + 1] = syy_[i] + q.y * q.y;
+      sxy_[i + 1] = sxy_[i] + q.x * q.y;
+    }
+  }
+  // Sum of squared distances of points i..j (inclusive) to the line through points i and j.
+  [[nodiscard]] double operator()(std::size_t i, std::size_t j) const {
+    const PointD a = pts_[i] - c_;
+    const PointD d = pts_[j] - pts_[i];
+    const double len = norm(d);
+    if (len <= 0.0) return 0.0;
+    const double nx = -d.y / len;
+    const double ny = d.x / len;
+    const double c = nx * a.x + ny * a.y;
+    const double cnt = static_cast<double>(j - i + 1);
+    const double sx = sx_[j + 1] - sx_[i], sy = sy_[j + 1] - sy_[i];
+    const double sxx = sxx_[j + 1] - sxx_[i], syy = syy_[j + 1] - syy_[i];
+    const double sxy = sxy_[j + 1] - sxy_[i];
+    const double v = nx * nx * sxx + 2 * nx * ny * sxy + ny * ny * syy -
+                     2 * c * (nx * sx + ny * sy) + c * c * cnt;
+    return std::max(v, 0.0);
+  }
+
+ private:
+  const std::vector<PointD>& pts_;
+  PointD c_;
+  std::vector<double> sx_, sy_, sxx_, syy_, sxy_;
+};
+
+// Best path first -> last through k vertices (first and last included) over pts[first..last].
+double best_chain(const ChordCost& cost, std::size_t first, std::size_t last, std::size_t k,
+                  std::vector<std::size_t>& out) {
+  const std::size_t n = last - first + 1;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  // dp[j][v]: best cost reaching local index v as the j-th vertex (0-based, v = 0 is first).
+  std::vector<std::vector<double>> dp(k, std::vector<double>(n, kInf));
+  std::vector<std::vector<std::size_t>> from(k, std::vector<std::size_t>(n, 0));
+  dp[0][0] = 0.0;
+  for (std::size_t j = 1; j < k; ++j) {
+    for (std::size_t v = j; v < n; ++v) {
+      if (j + 1 == k && v != n - 1) continue;
+      for (std::size_t u = j - 1; u < v; ++u) {
+        if (dp[j - 1][u] == kInf) continue;
+        const double c = dp[j - 1][u] + cost(first + u, first + v);
+        if (c < dp[j][v]) {
+          dp[j][v] = c;
+          from[j][v] = u;
+        }
+      }
+    }
+  }
+  out.assign(k, 0);
+  std::size_t v = n - 1;
+  for (std::size_t j = k; j-- > 0;) {
+    out[j] = first + v;
+    v = from[j][v];
+  }
+  return dp[k - 1][n - 1];
+}
+
+} // namespace
+
+std::vector<std::size_t> open_corners(const std::vector<PointD>& pts, std::size_t k) {
+  if (k < 2 || pts.size() < k) return {};
+  const ChordCost cost(pts);
+  std::vector<std::size_t> out;
+  best_chain(cost, 0, pts.size() - 1, k, out);
+  return out;
+}
+
+std::vector<std::size_t> closed_corners(const std::vector<PointD>& pts, std::size_t k) {
+  const std::size_t n = pts.size();
+  if (k < 3 || n < 2 * k) return {};
+  // The cycle, doubled so that a chain may start anywhere.
+  std::vector<PointD> twice = pts;
+  twice.insert(twice.end(), pts.begin(), pts.end());
+  const ChordCost cost(twice);
+  // Start candidates: the points turning the most over a short window, and the point farthest
+  // from the centroid (a vertex of any polygon the stroke resembles).
+  std::vector<std::pair<double, std::size_t>> turning;
+  PointD c;
+  for (const PointD& p : pts) c = c + p;
+  c = (1.0 / static_cast<double>(n)) * c;
+  std::size_t far = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const PointD a = pts[(i + n - 3) % n];
+    const PointD b = pts[(i + 3) % n];
+    const PointD u = pts[i] - a;
+    const PointD v = b - pts[i];
+    turning.emplace_back(-std::abs(std::atan2(cross(u, v), dot(u, v))), i);
+    if (distance(pts[i], c) > distance(pts[far], c)) far = i;
+  }
+  std::sort(turning.begin(), turning.end());
+  std::vector<std::size_t> starts{far};
+  for (std::size_t i = 0; i < turning.size() && starts.size() < 5; ++i) {
+    if (std::find(starts.begin(), starts.end(), turning[i].second) == starts.end()) {
+      starts.push_back(turning[i].second);
+    }
+  }
+  double best = std::numeric_limits<double>::infinity();
+  std::vector<std::size_t> best_chain_out;
+  for (const std::size_t s : starts) {
+    std::vector<std::size_t> chain;
+    // k + 1 vertices: the start appears again at the end of the cycle.
+    const double c2 = best_chain(cost, s, s + n, k + 1, chain);
+    if (c2 < best) {
+      best = c2;
+      chain.pop_back();
+      for (std::size_t& v : chain) v %= n;
+      best_chain_out = chain;
+    }
+  }
+  return best_chain_out;
+}
+
+Line fit_line(std::span<const PointD> pts) {
+  PointD c;
+  for (const PointD& p : pts) c = c + p;
+  c = (1.0 / static_cast<double>(pts.size())) * c;
+  double sxx = 0, syy = 0, sxy = 0;
+  for (const PointD& p : pts) {
+    const PointD q = p - c;
+    sxx += q.x * q.x;
+    syy += q.y * q.y;
+    sxy += q.x * q.y;
+  }
+  const double angle = 0.5 * std::atan2(2.0 * sxy, sxx - syy);
+  return {c, {std::cos(angle), std::sin(angle)}};
+}
+
+} // namespace penshape::recognize_detail

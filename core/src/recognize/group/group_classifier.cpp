@@ -1,0 +1,254 @@
+// Recognition of several strokes as one drawing (group_recognize.hpp, "Recognizing a union"),
+// and arrows for any number of strokes.
+#include "recognize/group/group_classifier.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "recognize/arrow/arrow_limits.hpp"
+#include "recognize/arrow/fit_arrow.hpp"
+#include "recognize/classify/classifier.hpp"
+#include "recognize/fitting/dot.hpp"
+#include "recognize/group/stroke_chain.hpp"
+#include "recognize/thresholds.hpp"
+
+namespace penshape::recognize_detail {
+namespace {
+
+double rank_of(const Candidate& c, const Fit& f, double epsilon) {
+  return (c.certificate.bound + kRmsWeight * c.rms) / epsilon +
+         kPricePerParameter * degrees_of_freedom(f);
+}
+
+void sort_scored(std::vector<Scored>& scored) {
+  std::stable_sort(scored.begin(), scored.end(), [](const Scored& a, const Scored& b) {
+    if (a.snap != b.snap) return a.snap;
+    return a.rank < b.rank;
+  });
+}
+
+// The tidiest shape wins: when an arrow with a straight or curved shaft is a snap within 0.6
+// epsilon (as every arrow must fit unless its head is drawn apart), no arrow of the same class
+// with a bent shaft is one. A looser one leaves the ranks to decide: a head drawn apart excuses
+// a loose head, not a shaft that misses its bend.
+void prefer_unbent_shafts(std::vector<Scored>& arrows, double epsilon) {
+  for (const Scored& a : arrows) {
+    if (!a.snap || !a.fit.params.shaft_bends.empty()) continue;
+    if (a.candidate.certificate.bound > kStraightFraction * epsilon) continue;
+    for (Scored& b : arrows) {
+      if (b.snap && b.fit.shape == a.fit.shape && !b.fit.params.shaft_bends.empty()) {
+        b.snap = false;
+        b.candidate.rejected = "a straight or curved shaft certifies (the tidier shape wins)";
+      }
+    }
+  }
+}
+
+// Arrows that might beat a snap of rank `rank_to_beat` (infinite: none).
+std::vector<Scored> score_arrows(const UnionStroke& u, const std::vector<PointD>& cloud,
+                                 double drawn_length, double epsilon, double pen_radius,
+                                 double rank_to_beat) {
+  std::vector<Scored> out;
+  for (Fit& f : fit_arrows(u, epsilon, rank_to_beat)) {
+    Scored sc;
+    Candidate& c = sc.candidate;
+    c.shape = f.shape;
+    c.params = f.params;
+    c.clean = f.clean.path;
+    if (f.fit_error <= kCertifyIfBelow * epsilon) {
+      c.certificate = certify_union(u, f.clean, epsilon, pen_radius);
+    } else {
+      c.certificate.epsilon = epsilon;
+      c.certificate.pen_radius = pen_radius;
+      c.certificate.bound = f.fit_error;
+    }
+    if (c.certificate.certified) {
+      c.rejected =
+          arrow_implausibility(f, c.certificate, drawn_length, head_drawn_apart(f, u, epsilon));
+    }
+    c.rms = rms_distance(cloud, f.clean);
+    sc.rank = rank_of(c, f, epsilon);
+    sc.snap = c.certificate.certified && c.rejected.empty();
+    sc.fit = std::move(f);
+    out.push_back(std::move(sc));
+  }
+  prefer_unbent_shafts(out, epsilon);
+  return out;
+}
+
+// The width of a closed shape (polygons: the least over the sides of the farthest vertex from
+// the side's line, exact for convex ones); infinite for open shapes.
+double closed_width(const Fit& f) {
+  if (f.shape == ShapeClass::kCircle) return 2.0 * f.params.radius_x;
+  if (f.shape == ShapeClass::kEllipse) return 2.0 * std::min(f.params.radius_x, f.params.radius_y);
+  if (!convex_polygon(f.shape)) return INFINITY;
+  const std::vector<PointD>& v = f.params.vertices;
+  double width = INFINITY;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const PointD a = v[i], b = v[(i + 1) % v.size()];
+    const double side = distance(a, b);
+    if (side <= 0.0) continue;
+    double far = 0.0;
+    for (const PointD& p : v) far = std::max(far, std::abs(cross(b - a, p - a)) / side);
+    width = std::min(width, far);
+  }
+  return width;
+}
+
+// Several strokes: fitted on their chain, then the snaps certified on the union, best rank
+// first, until one passes (the others after it keep their chain-screening certificate).
+std::vector<Scored> score_chain(const UnionStroke& u, const PreparedStroke& s,
+                                const RecognizerConfig& config, double epsilon, double pen_radius) {
+  std::vector<Scored> scored =
+      evaluate(s, fit_all(s, config, epsilon), epsilon, pen_radius, config);
+  for (Scored& sc : scored) {
+    if (!sc.snap) break;
+    if (closed_width(sc.fit) < kMinClosedWidth * epsilon) {
+      sc.snap = false;
+      sc.candidate.rejected =
+          "a closed shape of several strokes narrower than 2 epsilon (strokes side by side)";
+      continue;
+    }
+    sc.candidate.certificate = certify_union(u, sc.fit.clean, epsilon, pen_radius);
+    sc.snap = sc.candidate.certificate.certified;
+    if (sc.snap) break;
+  }
+  return scored;
+}
+
+// The rank an arrow must beat to win over a snap: the snap's rank, or none at all (0) for a
+// closed shape at least 2 epsilon wide. An arrow with a straight shaft is three straight pieces
+// from one point (its tip); drawn ink within 0.6 epsilon of them lies in three strips 1.2
+// epsilon wide meeting there, and a closed outline in such strips either hugs one strip
+// (narrower than 2 epsilon) or crosses between strips where no ink is drawn. So such an outline
+// never certifies as a straight arrow, and the closed reading is kept over bent or curved ones.
+double rank_for_arrows_to_beat(ShapeClass shape, const ShapeParams& params, double rank,
+                               double epsilon) {
+  Fit f;
+  f.shape = shape;
+  f.params = params;
+  const double width = closed_width(f);
+  return std::isfinite(width) && width >= kMinClosedWidth * epsilon ? 0.0 : rank;
+}
+
+// The winner of one stroke's own recognition as a Scored entry, to compete with the arrows.
+double recognition_rank(const Recognition& r) {
+  if (r.shape == ShapeClass::kFreeform) return INFINITY;
+  Fit f;
+  f.shape = r.shape;
+  f.params = r.params;
+  return (r.certificate.bound + kRmsWeight * r.rms) / r.epsilon +
+         kPricePerParameter * degrees_of_freedom(f);
+}
+
+// A dot alone is a dot; a dot is never part of a shape of several strokes (freeform).
+UnionRecognition dot_union(std::span<const StrokeInput> strokes, const RecognizerConfig& config,
+                           const ToleranceChoice& tol) {
+  UnionRecognition out;
+  out.rank = INFINITY;
+  if (strokes.size() == 1) {
+    out.recognition = recognize(strokes.front(), config);
+    out.strokes.pieces = {{out.recognition.params.center}};
+    out.rank = 0.0;
+    return out;
+  }
+  out.recognition.epsilon = tol.epsilon;
+  out.recognition.pen_radius = tol.pen_radius;
+  out.recognition.certificate.epsilon = tol.epsilon;
+  out.recognition.certificate.pen_radius = tol.pen_radius;
+  return out;
+}
+
+} // namespace
+
+std::vector<PointD> distinct_path(const std::vector<StrokePoint>& samples) {
+  std::vector<PointD> out;
+  out.reserve(samples.size());
+  for (const StrokePoint& s : samples) {
+    const PointD q{s.x, s.y};
+    if (out.empty() || !(out.back() == q)) out.push_back(q);
+  }
+  return out;
+}
+
+UnionRecognition recognize_union_detail(std::span<const StrokeInput> strokes,
+                                        const RecognizerConfig& config_in) {
+  if (strokes.empty()) throw InvalidInput("recognize: no strokes");
+  RecognizerConfig config = config_in;
+  if (strokes.front().pen_radius > 0) config.pen_radius = strokes.front().pen_radius;
+  std::vector<StrokePoint> all;
+  std::vector<std::vector<PointD>> paths;
+  double drawn_length = 0.0;
+  for (const StrokeInput& st : strokes) {
+    validate_samples(st.samples, config);
+    all.insert(all.end(), st.samples.begin(), st.samples.end());
+    paths.push_back(distinct_path(st.samples));
+    drawn_length += path_length(paths.back());
+  }
+  const ToleranceChoice tol = choose_tolerance(all, config);
+  const double tau = thinning_tolerance(config, tol.epsilon);
+  UnionRecognition out;
+  if (std::any_of(strokes.begin(), strokes.end(),
+                  [](const StrokeInput& st) { return is_dot(st.samples); })) {
+    return dot_union(strokes, config, tol);
+  }
+  out.strokes = prepare_union(paths, tau);
+  const std::vector<PointD> cloud = cloud_of(out.strokes);
+  if (strokes.size() == 1) {
+    out.recognition = recognize(strokes.front(), config);
+    out.rank = recognition_rank(out.recognition);
+    const double to_beat = rank_for_arrows_to_beat(out.recognition.shape, out.recognition.params,
+                                                   out.rank, tol.epsilon);
+    std::vector<Scored> arrows =
+        score_arrows(out.strokes, cloud, drawn_length, tol.epsilon, tol.pen_radius, to_beat);
+    sort_scored(arrows);
+    if (!arrows.empty() && arrows.front().snap && arrows.front().rank < out.rank) {
+      Recognition r = out.recognition;
+      std::vector<Candidate> others = std::move(r.alternatives);
+      if (r.shape != ShapeClass::kFreeform) {
+        Candidate previous;
+        previous.shape = r.shape;
+        previous.params = r.params;
+        previous.clean = r.clean;
+        previous.certificate = r.certificate;
+        previous.rms = r.rms;
+        others.insert(others.begin(), std::move(previous));
+      }
+      out.rank = arrows.front().rank;
+      out.recognition = choose(std::move(arrows), tol.epsilon, tol.pen_radius);
+      out.recognition.alternatives.insert(out.recognition.alternatives.end(), others.begin(),
+                                          others.end());
+    } else {
+      for (Scored& a : arrows) out.recognition.alternatives.push_back(std::move(a.candidate));
+    }
+    return out;
+  }
+  // The strokes read as one path (the single-stroke fitters see the union through it).
+  const PreparedStroke chain = prepare_points(chain_pieces(paths), tau);
+  std::vector<Scored> scored = score_chain(out.strokes, chain, config, tol.epsilon, tol.pen_radius);
+  // The best snap (score_chain may leave refused candidates before it).
+  const auto best =
+      std::find_if(scored.begin(), scored.end(), [](const Scored& sc) { return sc.snap; });
+  const double to_beat =
+      best == scored.end()
+          ? INFINITY
+          : rank_for_arrows_to_beat(best->fit.shape, best->fit.params, best->rank, tol.epsilon);
+  for (Scored& a :
+       score_arrows(out.strokes, cloud, drawn_length, tol.epsilon, tol.pen_radius, to_beat)) {
+    scored.push_back(std::move(a));
+  }
+  sort_scored(scored);
+  out.rank = !scored.empty() && scored.front().snap ? scored.front().rank : INFINITY;
+  out.recognition = choose(std::move(scored), tol.epsilon, tol.pen_radius);
+  return out;
+}
+
+} // namespace penshape::recognize_detail
+
+namespace penshape {
+
+Recognition recognize_union(std::span<const StrokeInput> strokes, const RecognizerConfig& config) {
+  return recognize_detail::recognize_union_detail(strokes, config).recognition;
+}
+
+} // namespace penshape

@@ -1,0 +1,144 @@
+#pragma once
+// Every threshold of the recognizer, each with the one-line reason it has this value. The rules
+// that read them are in the stage folders (README.md); tolerances in epsilons are relative to the
+// shape's tolerance, sizes relative to the drawing's size. None is fitted to one corpus: where a
+// value was checked on real strokes, the comment says how, leaving writers out.
+#include <cstddef>
+#include <numbers>
+
+namespace penshape::recognize_detail {
+
+inline constexpr double kDegree = std::numbers::pi / 180.0;
+
+// --- fitting/ ------------------------------------------------------------------------------
+
+// Coordinates beyond this are refused: far past any tablet or page, and squares stay finite.
+inline constexpr double kMaxAbsCoordinate = 1e9;
+// Resampled points the fitters use: enough for 8 corners with 6 points a side, cheap to refit.
+inline constexpr std::size_t kFitPoints = 48;
+// Certified thinning works on windows of this many points, so its worst case is linear.
+inline constexpr std::size_t kThinWindow = 128;
+// A closed polygon class has kMinPolygonCorners..kMaxPolygonCorners corners (3 and 4 have their
+// own classes; beyond 8 a hand-drawn outline is a curve).
+inline constexpr std::size_t kMinPolygonCorners = 5;
+inline constexpr std::size_t kMaxPolygonCorners = 8;
+// A curved arrow shaft is certified as this many chords: each strays from the arc by < 0.2%.
+inline constexpr std::size_t kShaftChords = 12;
+// A bent arrow shaft has at most this many bends (more is a scribble, not a shaft).
+inline constexpr std::size_t kMaxShaftBends = 2;
+
+// --- certify/ ------------------------------------------------------------------------------
+
+// A path certificate samples a clean shape with at most this many points (bounded time).
+inline constexpr double kMaxSamples = 50'000.0;
+// The ink certificate's grid spacing is epsilon / kInkGridDivisions, coarsened to at most
+// kMaxInkGridPoints points (ink box grown by the tolerance band on every side): bounded time.
+inline constexpr double kInkGridDivisions = 10.0;
+inline constexpr double kMaxInkGridPoints = 250'000.0;
+// The ink certificate samples curves (box, ellipse chords) with at most about this many points.
+inline constexpr double kMaxCurveSamples = 20'000.0;
+
+// --- classify/ -----------------------------------------------------------------------------
+
+// A stroke is closed when its end comes back within this many epsilons of its start: only then
+// are closed families tried (recognize.hpp, "Classes").
+inline constexpr double kClosureEpsilons = 2.0;
+// A candidate's rank: its bound plus kRmsWeight times its RMS distance (in epsilons), plus a
+// price per free parameter, so a simpler shape wins unless a richer one fits clearly better.
+inline constexpr double kPricePerParameter = 0.15;
+inline constexpr double kRmsWeight = 2.0;
+// A shape is drawn once: the stroke may be at most this much longer than the clean shape
+// (overshoot, a closing overlap and wobble stay well below). Snaps and live prospects alike.
+inline constexpr double kMaxTracing = 1.6;
+// ... and may turn at most half a turn more than the clean shape (end hooks, a closing overlap).
+inline constexpr double kMaxExtraTurning = std::numbers::pi;
+// A polygon of 5..8 corners turns at most this much at a corner (interior angle >= 30 deg): a
+// sharper corner is a line drawn down and back (the stems of P, D, b drawn in one stroke).
+inline constexpr double kMaxPolygonTurn = 5.0 * std::numbers::pi / 6.0;
+// A polygon of 5..8 corners must certify within this fraction of epsilon: 99% of real one-stroke
+// triangles and rectangles do (leaving one writer out: 0.68..0.85); looser is a scribble.
+inline constexpr double kPolygonFraction = 0.85;
+// Fits whose estimate exceeds this many epsilons are not certified (their certificate could not
+// pass: the estimate is measured on points of the stroke).
+inline constexpr double kCertifyIfBelow = 1.25;
+
+// --- arrow/ --------------------------------------------------------------------------------
+
+// A head's barbs open between these angles to the shaft: flatter is a line, wider a T or a hook.
+inline constexpr double kMinHeadAngle = 10.0 * kDegree;
+inline constexpr double kMaxHeadAngle = 80.0 * kDegree;
+// A barb is at most this fraction of the shaft (a longer one makes a V or a chevron).
+inline constexpr double kMaxBarbFraction = 0.8;
+// A head drawn in its own stroke may be as long as the shaft (people draw it large).
+inline constexpr double kMaxApartBarbFraction = 1.0;
+// Arrows are straight pieces: they fit as tightly as polylines, a little looser for the small head.
+inline constexpr double kStraightFraction = 0.6;
+// An arrow's stroke may be at most this much longer than the clean arrow (as kMaxTracing).
+inline constexpr double kMaxTracingArrow = 1.6;
+// The drawing is resampled to about this many points for the arrow fit (cost vs. coverage).
+inline constexpr std::size_t kCloudPoints = 64;
+// The second shaft start is polished when the first ends above this many epsilons: well below
+// the straight fraction, since the certificate adds its sampling and thinning margins.
+inline constexpr double kSecondStartAbove = 0.4;
+// A curved shaft bows by at most this fraction of its chord (more is an arc, not a shaft).
+inline constexpr double kMaxBulge = 0.25;
+// Free parameters (as degrees_of_freedom() counts them) of straight, curved and double arrows,
+// and what each bend of a bent shaft adds.
+inline constexpr double kStraightParameters = 8;
+inline constexpr double kCurvedParameters = 9;
+inline constexpr double kDoubleParameters = 12;
+inline constexpr double kBendParameters = 2;
+// A bent shaft's seed is polished only within kSeedWithin epsilons, and again only below
+// kRepolishBelow (= kCertifyIfBelow: fits above it are not certified).
+inline constexpr double kSeedWithin = 2.0;
+inline constexpr double kRepolishBelow = 1.25;
+// A bend stands out from its neighbours' chord by this many epsilons (as a polyline's corner).
+inline constexpr double kMinBendOffset = 0.5;
+// The shaft turns at most this much at a bend: beyond a right angle (with a hand's slack) it
+// doubles back, a hook or a letter rather than a shaft that leads to its tip.
+inline constexpr double kMaxBendTurn = 100.0 * kDegree;
+// A bent shaft's last piece is within this angle of the head's axis (the barbs' bisector).
+inline constexpr double kMaxBentHeadSkew = 25.0 * kDegree;
+// Points per stroke checked when the head is drawn apart from the shaft (jitter averages out).
+inline constexpr std::size_t kPieceSamples = 16;
+
+// --- tidy/ ---------------------------------------------------------------------------------
+
+// An ellipse is offered as a circle when its minor / major semi-axis is at least this.
+inline constexpr double kRoundEllipse = 0.8;
+// Corners within this of 90 deg are offered as right angles (a hand's slack).
+inline constexpr double kRightAngleSlack = 10.0 * kDegree;
+// Sides within this relative difference are offered as equal.
+inline constexpr double kEqualSides = 0.15;
+// Sides within this of the axes are offered as axis-parallel.
+inline constexpr double kAxisSlack = 10.0 * kDegree;
+// Sides within this of each other are offered as parallel (tighter: two sides, not one axis).
+inline constexpr double kParallelSlack = 6.0 * kDegree;
+// An angle already within this (radians) of its target needs no tidying.
+inline constexpr double kAlreadyExact = 1e-9;
+
+// --- group/ --------------------------------------------------------------------------------
+
+// A group has at most this many strokes (a drawn shape has few sides; bounds the unions tried).
+inline constexpr std::size_t kMaxGroupStrokes = 8;
+// Recent groups a new stroke is tried with: at most 2^6 - 1 unions.
+inline constexpr std::size_t kMaxRecentGroups = 6;
+// Touch tests run on paths thinned within this fraction of their size (added to the join
+// distance, so thinning never separates touching strokes).
+inline constexpr double kTouchThinning = 0.005;
+// Stroke orders are searched exhaustively up to this many strokes, greedily beyond (6! = 720).
+inline constexpr std::size_t kExhaustiveUpTo = 6;
+// Several strokes close a shape only when it is wider than this many epsilons: narrower, all its
+// inside is within epsilon of its outline, so any strokes side by side would certify as it.
+inline constexpr double kMinClosedWidth = 2.0;
+
+// --- live/ ---------------------------------------------------------------------------------
+
+// The drawing grew by half: epsilon grew with it, so the candidates are refitted.
+inline constexpr double kGrowthForRefit = 1.5;
+// An open stroke is tried as a closed shape still being drawn when its length is at least
+// kProspectLength sizes and its end-to-start gap at most kProspectGap sizes.
+inline constexpr double kProspectLength = 1.5;
+inline constexpr double kProspectGap = 0.75;
+
+} // namespace penshape::recognize_detail
