@@ -1,6 +1,7 @@
 #pragma once
 // What arrow fitting (fit_arrow.cpp) and the arrow plausibility rules (arrow_plausibility.cpp)
-// share: the limits of a head and the directions of a shaft at its ends.
+// share: the limits of a head (in recognize/thresholds.hpp, with every threshold) and the
+// directions of a shaft at its ends.
 #include <cmath>
 #include <numbers>
 #include <vector>
