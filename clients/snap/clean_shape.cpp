@@ -6,6 +6,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "penshape/core/bulge_arc.hpp"
+
 namespace penshape::snap {
 
 bool is_snap(const Recognition& r) {
@@ -44,24 +46,14 @@ double chord_step(const Recognition& r, double radius) {
 
 // The circular arc from a to b whose midpoint lies `bulge` to the left of the chord a -> b.
 std::vector<PointD> bowed(const Recognition& r, PointD a, PointD b, double bulge) {
-  const double c = std::hypot(b.x - a.x, b.y - a.y);
-  if (c <= 0) return {a, b};
-  const PointD u{(b.x - a.x) / c, (b.y - a.y) / c}, n{-u.y, u.x};
-  const double radius = (c * c / 4 + bulge * bulge) / (2 * std::abs(bulge));
-  // Centre on the normal through the chord's midpoint, on the side away from the bulge.
-  const double off = bulge - (bulge > 0 ? radius : -radius);
-  const PointD o{(a.x + b.x) / 2 + off * n.x, (a.y + b.y) / 2 + off * n.y};
-  const double t0 = std::atan2(a.y - o.y, a.x - o.x);
-  // A left bulge turns clockwise in (x, y) from a to b; past a half circle when it exceeds r.
-  const double half = std::asin(std::min(1.0, c / (2 * radius)));
-  const double magnitude = std::abs(bulge) <= radius ? 2 * half : 2 * std::numbers::pi - 2 * half;
-  const double sweep = bulge > 0 ? -magnitude : magnitude;
+  if (!(distance(a, b) > 0) || bulge == 0) return {a, b};
+  const BulgeArc arc = bulge_arc(a, b, bulge);
   const auto n_chords = static_cast<std::size_t>(
-      std::clamp(std::ceil(std::abs(sweep) / chord_step(r, radius)), 8.0, 1e5));
+      std::clamp(std::ceil(std::abs(arc.sweep) / chord_step(r, arc.radius)), 8.0, 1e5));
   std::vector<PointD> out;
   for (std::size_t i = 0; i <= n_chords; ++i) {
-    const double t = t0 + sweep * static_cast<double>(i) / static_cast<double>(n_chords);
-    out.push_back({o.x + radius * std::cos(t), o.y + radius * std::sin(t)});
+    out.push_back(
+        arc.at(arc.start + arc.sweep * static_cast<double>(i) / static_cast<double>(n_chords)));
   }
   out.front() = a;
   out.back() = b;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "penshape/core/bulge_arc.hpp"
 #include "recognize/fitting/ellipse_foot.hpp"
 
 namespace penshape::recognize_detail {
@@ -53,21 +54,11 @@ std::vector<PointD> shaft_path(PointD tail, PointD tip, double bulge,
   }
   const double c = distance(tail, tip);
   if (bulge == 0.0 || c <= 0.0) return {tail, tip};
-  // The arc through tail, tip and the point `bulge` to the left of the chord's midpoint.
-  const PointD u = (1.0 / c) * (tip - tail);
-  const PointD n{-u.y, u.x};
-  const PointD mid = 0.5 * (tail + tip) + bulge * n;
-  const double r = (c * c / 4.0 + bulge * bulge) / (2.0 * std::abs(bulge));
-  const PointD centre = mid - (bulge > 0 ? r : -r) * n;
-  const double a0 = std::atan2(tail.y - centre.y, tail.x - centre.x);
-  const double half = std::asin(std::min(1.0, c / (2.0 * r)));
-  const double minor = 2.0 * half;
-  const double sweep =
-      (bulge > 0 ? -1.0 : 1.0) * (std::abs(bulge) <= r ? minor : 2.0 * std::numbers::pi - minor);
+  const BulgeArc arc = bulge_arc(tail, tip, bulge);
   std::vector<PointD> out;
   for (std::size_t k = 0; k <= kShaftChords; ++k) {
-    const double a = a0 + sweep * static_cast<double>(k) / static_cast<double>(kShaftChords);
-    out.push_back({centre.x + r * std::cos(a), centre.y + r * std::sin(a)});
+    out.push_back(
+        arc.at(arc.start + arc.sweep * static_cast<double>(k) / static_cast<double>(kShaftChords)));
   }
   out.front() = tail;
   out.back() = tip;

@@ -71,27 +71,36 @@ void arc_range(const std::vector<PointD>& pts, PointD c, double& t0, double& swe
   }
 }
 
+// The circle of refinement parameters {centre x, centre y, radius}; none for a radius <= 0.
+std::optional<CleanShape> circle_of(const std::vector<double>& p) {
+  if (p[2] <= 0) return std::nullopt;
+  CleanShape shape;
+  shape.kind = CleanShape::Kind::kCircle;
+  shape.center = {p[0], p[1]};
+  shape.rx = shape.ry = p[2];
+  return shape;
+}
+
+// A circle's or an arc's fit at its refined parameters.
+Fit round_fit(ShapeClass shape, const ShapeBuilder& build, const Refinement& ref) {
+  Fit f;
+  f.shape = shape;
+  f.clean = *build(ref.params);
+  f.fit_error = ref.objective;
+  f.params.center = f.clean.center;
+  f.params.radius_x = f.params.radius_y = f.clean.rx;
+  return f;
+}
+
 } // namespace
 
 std::optional<Fit> fit_circle(const PreparedStroke& s) {
   PointD c;
   double r = 0;
   if (!kasa(s.fit_points, s.centroid, c, r) || r > 10 * s.size) return std::nullopt;
-  const ShapeBuilder build = [](const std::vector<double>& p) -> std::optional<CleanShape> {
-    if (p[2] <= 0) return std::nullopt;
-    CleanShape shape;
-    shape.kind = CleanShape::Kind::kCircle;
-    shape.center = {p[0], p[1]};
-    shape.rx = shape.ry = p[2];
-    return shape;
-  };
+  const ShapeBuilder build = circle_of;
   const Refinement ref = refine_minimax(s, {c.x, c.y, r}, build, 0.02 * s.size, false);
-  Fit f;
-  f.shape = ShapeClass::kCircle;
-  f.clean = *build(ref.params);
-  f.fit_error = ref.objective;
-  f.params.center = f.clean.center;
-  f.params.radius_x = f.params.radius_y = f.clean.rx;
+  Fit f = round_fit(ShapeClass::kCircle, build, ref);
   f.params.sweep_angle = 2 * std::numbers::pi;
   return f;
 }
@@ -101,24 +110,16 @@ std::optional<Fit> fit_arc(const PreparedStroke& s) {
   double r = 0;
   if (!kasa(s.fit_points, s.centroid, c, r) || r > 10 * s.size) return std::nullopt;
   const ShapeBuilder build = [&s](const std::vector<double>& p) -> std::optional<CleanShape> {
-    if (p[2] <= 0) return std::nullopt;
-    CleanShape shape;
-    shape.kind = CleanShape::Kind::kCircle;
-    shape.center = {p[0], p[1]};
-    shape.rx = shape.ry = p[2];
-    arc_range(s.fit_points, shape.center, shape.t0, shape.sweep);
+    std::optional<CleanShape> shape = circle_of(p);
+    if (!shape) return std::nullopt;
+    arc_range(s.fit_points, shape->center, shape->t0, shape->sweep);
     // More than a full turn is not an arc.
-    if (std::abs(shape.sweep) >= 2 * std::numbers::pi) return std::nullopt;
+    if (std::abs(shape->sweep) >= 2 * std::numbers::pi) return std::nullopt;
     return shape;
   };
   if (!build({c.x, c.y, r})) return std::nullopt;
   const Refinement ref = refine_minimax(s, {c.x, c.y, r}, build, 0.02 * s.size, true);
-  Fit f;
-  f.shape = ShapeClass::kArc;
-  f.clean = *build(ref.params);
-  f.fit_error = ref.objective;
-  f.params.center = f.clean.center;
-  f.params.radius_x = f.params.radius_y = f.clean.rx;
+  Fit f = round_fit(ShapeClass::kArc, build, ref);
   f.params.start_angle = f.clean.t0;
   f.params.sweep_angle = f.clean.sweep;
   f.params.vertices = {f.clean.at(f.clean.t0), f.clean.at(f.clean.t0 + f.clean.sweep)};
