@@ -5,25 +5,70 @@
 
 namespace penshape::recognize_detail {
 
-double fit_objective(const PreparedStroke& stroke, const CleanShape& shape, bool use_key_points) {
-  double worst = max_distance(stroke.fit_points, shape);
-  if (!use_key_points) return worst;
-  if (shape.kind == CleanShape::Kind::kPolyline) {
-    for (const PointD& v : shape.path) {
-      worst = std::max(worst, polyline_distance(v, stroke.points));
+double raise_to_polyline_distance(std::span<const PointD> points, std::span<const PointD> path,
+                                  double worst, std::size_t& hint) {
+  if (path.size() < 2) { // one point (or none: infinitely far), as polyline_distance answers
+    for (const PointD& p : points) worst = std::max(worst, polyline_distance(p, path));
+    return worst;
+  }
+  const std::size_t segments = path.size() - 1;
+  for (const PointD& p : points) {
+    if (hint >= segments) hint = 0;
+    // The least squared distance so far; the scan stops once it proves p cannot raise `worst`
+    // (sqrt is monotone, so sqrt(least) <= worst bounds p's distance by worst).
+    double least = INFINITY; // as polyline_distance starts (a NaN distance is passed over)
+    least = std::min(least, segment_distance2(p, path[hint], path[hint + 1]));
+    const double worst2 = worst * worst;
+    auto settled = [&] { return least <= worst2 && std::sqrt(least) <= worst; };
+    if (settled()) continue;
+    bool stopped = false;
+    for (std::size_t i = 0; i < segments && !stopped; ++i) {
+      const double d2 = segment_distance2(p, path[i], path[i + 1]);
+      if (d2 < least) {
+        least = d2;
+        hint = i;
+        stopped = settled();
+      }
     }
-  } else if (!shape.full_curve()) {
-    worst = std::max(worst, polyline_distance(shape.at(shape.t0), stroke.points));
-    worst = std::max(worst, polyline_distance(shape.at(shape.t0 + shape.sweep), stroke.points));
+    // Every segment seen: least is p's squared distance, as polyline_distance takes it.
+    if (!stopped) worst = std::max(worst, std::sqrt(least));
   }
   return worst;
 }
 
+double FitObjective::operator()(const CleanShape& shape) {
+  double worst = 0.0;
+  if (shape.kind == CleanShape::Kind::kPolyline) {
+    worst = raise_to_polyline_distance(stroke_.fit_points, shape.path, worst, fit_hint_);
+  } else {
+    worst = max_distance(stroke_.fit_points, shape);
+  }
+  if (!use_key_points_) return worst;
+  std::size_t k = 0;
+  auto key = [&](PointD v) {
+    if (key_hints_.size() <= k) key_hints_.resize(k + 1, 0);
+    worst = raise_to_polyline_distance({&v, 1}, stroke_.points, worst, key_hints_[k++]);
+  };
+  if (shape.kind == CleanShape::Kind::kPolyline) {
+    for (const PointD& v : shape.path) key(v);
+  } else if (!shape.full_curve()) {
+    key(shape.at(shape.t0));
+    key(shape.at(shape.t0 + shape.sweep));
+  }
+  return worst;
+}
+
+double fit_objective(const PreparedStroke& stroke, const CleanShape& shape, bool use_key_points) {
+  return FitObjective(stroke, use_key_points)(shape);
+}
+
 Refinement refine_minimax(const PreparedStroke& stroke, std::vector<double> params,
                           const ShapeBuilder& build, double initial_step, bool use_key_points) {
+  // One objective for the whole search: its hints follow the small steps of the shape.
+  FitObjective objective(stroke, use_key_points);
   auto evaluate = [&](const std::vector<double>& p) {
     const std::optional<CleanShape> shape = build(p);
-    return shape ? fit_objective(stroke, *shape, use_key_points) : INFINITY;
+    return shape ? objective(*shape) : INFINITY;
   };
   Refinement best{params, evaluate(params)};
   double step = initial_step;
