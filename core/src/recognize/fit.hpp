@@ -36,15 +36,24 @@ double fit_objective(const PreparedStroke& stroke, const CleanShape& shape, bool
 // objective, so the value is fit_objective's bit for bit, at a fraction of the work.
 class FitObjective {
  public:
-  FitObjective(const PreparedStroke& stroke, bool use_key_points)
-      : stroke_(stroke), use_key_points_(use_key_points) {}
+  FitObjective(const PreparedStroke& stroke, bool use_key_points);
   double operator()(const CleanShape& shape);
 
  private:
+  // A run of consecutive stroke segments, with its bounding box and longest segment: a key point
+  // far from the box (with room for rounding) has no segment of it nearer than the best so far.
+  struct Block {
+    std::size_t first = 0, end = 0; // segments [first, end)
+    PointD lo, hi;
+    double longest = 0.0;
+  };
+  double raise_to_stroke_distance(PointD v, double worst, std::size_t& hint) const;
+
   const PreparedStroke& stroke_;
   bool use_key_points_;
   std::size_t fit_hint_ = 0;           // the segment of the shape nearest the last fit point
   std::vector<std::size_t> key_hints_; // per key point, the stroke segment nearest it
+  std::vector<Block> blocks_;          // over stroke_.points (key points only)
 };
 // max(worst, the largest polyline_distance from `points` to `path`), exactly: each point's scan
 // starts at segment `hint` (updated to its nearest one) and stops once the point is proven no

@@ -36,6 +36,63 @@ double raise_to_polyline_distance(std::span<const PointD> points, std::span<cons
   return worst;
 }
 
+namespace {
+
+constexpr std::size_t kBlockSegments = 8; // stroke segments per pruning block
+// Rounding room of the block test: a segment's proposed distance (distance_kernel.hpp) is within
+// 26 u d + 12 u L of its true distance d (u = 2^-53, L its length: each difference is rounded
+// once, the cross product's cancellation is at most 8 u |p - s| |s - t| with |p - s| <= d + L,
+// and a foot proposed just past an end moves it by at most 4 u |p - s|), and the box's distance
+// is within 3 u of its own; this room is over 400 times that.
+constexpr double kRoom = 1e-12;
+
+} // namespace
+
+FitObjective::FitObjective(const PreparedStroke& stroke, bool use_key_points)
+    : stroke_(stroke), use_key_points_(use_key_points) {
+  const std::vector<PointD>& pts = stroke.points;
+  if (!use_key_points || pts.size() < 2) return;
+  for (std::size_t first = 0; first + 1 < pts.size(); first += kBlockSegments) {
+    Block b{first, std::min(first + kBlockSegments, pts.size() - 1), pts[first], pts[first], 0.0};
+    for (std::size_t i = first; i < b.end; ++i) {
+      const PointD q = pts[i + 1];
+      b.lo = {std::min(b.lo.x, q.x), std::min(b.lo.y, q.y)};
+      b.hi = {std::max(b.hi.x, q.x), std::max(b.hi.y, q.y)};
+      b.longest = std::max(b.longest, distance(pts[i], q));
+    }
+    blocks_.push_back(b);
+  }
+}
+
+// raise_to_polyline_distance for one key point against the stroke, skipping blocks whose box is
+// farther than the nearest segment so far by more than any rounding: those hold no segment whose
+// proposed distance is below it, so the least distance, and the value, are the same.
+double FitObjective::raise_to_stroke_distance(PointD v, double worst, std::size_t& hint) const {
+  const std::vector<PointD>& pts = stroke_.points;
+  if (blocks_.empty()) return raise_to_polyline_distance({&v, 1}, pts, worst, hint);
+  if (hint + 1 >= pts.size()) hint = 0;
+  double least = INFINITY;
+  least = std::min(least, segment_distance2(v, pts[hint], pts[hint + 1]));
+  const double worst2 = worst * worst;
+  auto settled = [&] { return least <= worst2 && std::sqrt(least) <= worst; };
+  if (settled()) return worst;
+  for (const Block& b : blocks_) {
+    const double bx = std::max({b.lo.x - v.x, v.x - b.hi.x, 0.0});
+    const double by = std::max({b.lo.y - v.y, v.y - b.hi.y, 0.0});
+    const double box = std::sqrt(bx * bx + by * by);
+    if (box * (1.0 - kRoom) - kRoom * b.longest > std::sqrt(least) * (1.0 + kRoom)) continue;
+    for (std::size_t i = b.first; i < b.end; ++i) {
+      const double d2 = segment_distance2(v, pts[i], pts[i + 1]);
+      if (d2 < least) {
+        least = d2;
+        hint = i;
+        if (settled()) return worst;
+      }
+    }
+  }
+  return std::max(worst, std::sqrt(least));
+}
+
 double FitObjective::operator()(const CleanShape& shape) {
   double worst = 0.0;
   if (shape.kind == CleanShape::Kind::kPolyline) {
@@ -47,7 +104,7 @@ double FitObjective::operator()(const CleanShape& shape) {
   std::size_t k = 0;
   auto key = [&](PointD v) {
     if (key_hints_.size() <= k) key_hints_.resize(k + 1, 0);
-    worst = raise_to_polyline_distance({&v, 1}, stroke_.points, worst, key_hints_[k++]);
+    worst = raise_to_stroke_distance(v, worst, key_hints_[k++]);
   };
   if (shape.kind == CleanShape::Kind::kPolyline) {
     for (const PointD& v : shape.path) key(v);
