@@ -27,7 +27,7 @@ struct Refinement {
   double objective = 0.0;
 };
 using ShapeBuilder = std::function<std::optional<CleanShape>(const std::vector<double>&)>;
-Refinement refine_minimax(const PreparedStroke& stroke, std::vector<double> params,
+Refinement refine_minimax(const PreparedStroke& stroke, const std::vector<double>& params,
                           const ShapeBuilder& build, double initial_step, bool use_key_points);
 // The refinement objective for one shape.
 double fit_objective(const PreparedStroke& stroke, const CleanShape& shape, bool use_key_points);

@@ -119,7 +119,7 @@ double fit_objective(const PreparedStroke& stroke, const CleanShape& shape, bool
   return FitObjective(stroke, use_key_points)(shape);
 }
 
-Refinement refine_minimax(const PreparedStroke& stroke, std::vector<double> params,
+Refinement refine_minimax(const PreparedStroke& stroke, const std::vector<double>& params,
                           const ShapeBuilder& build, double initial_step, bool use_key_points) {
   // One objective for the whole search: its hints follow the small steps of the shape.
   FitObjective objective(stroke, use_key_points);
