@@ -8,6 +8,8 @@
 //            (decide_intent on that page, every stroke measured again), and as the daemon now
 //            decides it (LiveIntent: each stroke measured once)
 //   alone    the stroke recognized alone, certified on its ink (core recognize() with Q)
+//   family fits, path certificates   of it: the stroke's family fits (fit_all) and their path
+//            certificates (evaluate), each timed on its own
 //   ink certificate, flat / pruned   of it: the ink certificate of the stroke's shape (the
 //            winner, else the best alternative) on its prepared Q, visiting every grid point
 //            (the former scan) and pruning blocks (the scan recognize() runs), on the same
@@ -37,8 +39,10 @@
 #include "penshape/daemon/proto_convert.hpp"
 #include "penshape/daemon/stroke_analyzer.hpp"
 #include "penshape/daemon/worker_pool.hpp"
-#include "recognize/fitting/clean_shape.hpp"
 #include "recognize/certify/ink_certificate.hpp"
+#include "recognize/classify/classifier.hpp"
+#include "recognize/fitting/clean_shape.hpp"
+#include "recognize/fitting/dot.hpp"
 
 namespace penshape::bench {
 
@@ -101,6 +105,23 @@ struct InkScanTimes {
   }
 };
 
+// The stroke alone's two path steps, timed on their own: the family fits (fit_all, the
+// refinement's objective and the corner search) and their path certificates (evaluate).
+struct PathStepTimes {
+  StepTime fits, certificates;
+  void time(const StrokeInput& input, const RecognizerConfig& config) {
+    const ToleranceChoice tol = choose_tolerance(input.samples, config);
+    if (recognize_detail::is_dot(input.samples)) return; // answered before any fit
+    const recognize_detail::PreparedStroke s = recognize_detail::prepare(
+        input.samples, recognize_detail::thinning_tolerance(config, tol.epsilon));
+    std::vector<recognize_detail::Fit> f;
+    fits.time([&] { f = recognize_detail::fit_all(s, config, tol.epsilon); });
+    certificates.time([&] {
+      (void)recognize_detail::evaluate(s, std::move(f), tol.epsilon, tol.pen_radius, config);
+    });
+  }
+};
+
 // Times each step on `strokes` (already back to back in time, in drawing order) and prints one
 // row per step: thread CPU p50/p99/max, then wall p50/p99.
 inline void print_penup_stages(bool json, const std::string& tag,
@@ -113,6 +134,7 @@ inline void print_penup_stages(bool json, const std::string& tag,
   StepTime ink, intent, live_intent, alone, grouper, session, strand;
   LiveIntent live_context;
   InkScanTimes ink_scan;
+  PathStepTimes path_steps;
   StrokeGrouper core_grouper(GroupingConfig{}, config);
   auto whole = analyzer.group_session(settings, GroupingConfig{});
   auto live = analyzer.group_session(settings, GroupingConfig{});
@@ -146,6 +168,7 @@ inline void print_penup_stages(bool json, const std::string& tag,
     Recognition rec;
     alone.time([&] { rec = recognize(input, config); });
     ink_scan.time(q, rec);
+    path_steps.time(input, config);
     grouper.time([&] {
       (void)core_grouper.add(input);
       core_grouper.forget_unreachable();
@@ -160,6 +183,8 @@ inline void print_penup_stages(bool json, const std::string& tag,
       {"intent decision, page (as before)", &intent},
       {"intent decision, LiveIntent", &live_intent},
       {"stroke alone, ink certificate", &alone},
+      {"  of it: family fits (path)", &path_steps.fits},
+      {"  of it: path certificates of the fits", &path_steps.certificates},
       {"  of it: ink certificate, flat scan", &ink_scan.flat},
       {"  of it: ink certificate, pruned scan", &ink_scan.pruned},
       {"StrokeGrouper::add (unions+alone)", &grouper},

@@ -202,10 +202,12 @@ double CleanShape::distance_to(PointD p) const {
   return INFINITY;
 }
 
-double approximate_ellipse_distance(PointD p, const CleanShape& e) {
+namespace {
+
+// approximate_ellipse_distance with the rotation's cosine and sine given (computed once per shape
+// by the callers that measure many points).
+double sampson_distance(PointD p, const CleanShape& e, double c, double s) {
   const PointD d = p - e.center;
-  const double c = std::cos(e.rotation);
-  const double s = std::sin(e.rotation);
   const double x = (c * d.x + s * d.y) / e.rx;
   const double y = (-s * d.x + c * d.y) / e.ry;
   // Sampson's first-order distance to F = x^2 + y^2 - 1 in the scaled frame.
@@ -214,10 +216,18 @@ double approximate_ellipse_distance(PointD p, const CleanShape& e) {
   return g > 0 ? f / g : std::max(e.rx, e.ry);
 }
 
+} // namespace
+
+double approximate_ellipse_distance(PointD p, const CleanShape& e) {
+  return sampson_distance(p, e, std::cos(e.rotation), std::sin(e.rotation));
+}
+
 double max_distance(std::span<const PointD> points, const CleanShape& shape) {
   double worst = 0.0;
   if (shape.kind == CleanShape::Kind::kEllipse) {
-    for (const PointD& p : points) worst = std::max(worst, approximate_ellipse_distance(p, shape));
+    const double c = std::cos(shape.rotation);
+    const double s = std::sin(shape.rotation);
+    for (const PointD& p : points) worst = std::max(worst, sampson_distance(p, shape, c, s));
     return worst;
   }
   for (const PointD& p : points) worst = std::max(worst, shape.distance_to(p));

@@ -50,8 +50,30 @@ class ChordCost {
   std::vector<double> sx_, sy_, sxx_, syy_, sxy_;
 };
 
+// ChordCost's values remembered: the closed search runs the chain search from several starts
+// over the same doubled cycle, and each start would otherwise recompute most chords. A value is
+// computed once, by the same call, so every chain sees the same costs bit for bit.
+class RememberedCost {
+ public:
+  // For chords (i, j) with i < rows and j - i <= span.
+  RememberedCost(const ChordCost& cost, std::size_t rows, std::size_t span)
+      : cost_(cost), span_(span + 1), table_(rows * span_, kUnknown) {}
+  [[nodiscard]] double operator()(std::size_t i, std::size_t j) {
+    double& v = table_[i * span_ + (j - i)];
+    if (v == kUnknown) v = cost_(i, j);
+    return v;
+  }
+
+ private:
+  static constexpr double kUnknown = -1.0; // costs are >= 0 (or NaN, never -1)
+  const ChordCost& cost_;
+  std::size_t span_;
+  std::vector<double> table_;
+};
+
 // Best path first -> last through k vertices (first and last included) over pts[first..last].
-double best_chain(const ChordCost& cost, std::size_t first, std::size_t last, std::size_t k,
+template <typename Cost>
+double best_chain(Cost&& cost, std::size_t first, std::size_t last, std::size_t k,
                   std::vector<std::size_t>& out) {
   const std::size_t n = last - first + 1;
   constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -97,7 +119,8 @@ std::vector<std::size_t> closed_corners(const std::vector<PointD>& pts, std::siz
   // The cycle, doubled so that a chain may start anywhere.
   std::vector<PointD> twice = pts;
   twice.insert(twice.end(), pts.begin(), pts.end());
-  const ChordCost cost(twice);
+  const ChordCost chords(twice);
+  RememberedCost cost(chords, 2 * n, n); // chords within one turn of the doubled cycle
   // Start candidates: the points turning the most over a short window, and the point farthest
   // from the centroid (a vertex of any polygon the stroke resembles).
   std::vector<std::pair<double, std::size_t>> turning;

@@ -28,10 +28,39 @@ struct Refinement {
   double objective = 0.0;
 };
 using ShapeBuilder = std::function<std::optional<CleanShape>(const std::vector<double>&)>;
-Refinement refine_minimax(const PreparedStroke& stroke, std::vector<double> params,
+Refinement refine_minimax(const PreparedStroke& stroke, const std::vector<double>& params,
                           const ShapeBuilder& build, double initial_step, bool use_key_points);
 // The refinement objective for one shape.
 double fit_objective(const PreparedStroke& stroke, const CleanShape& shape, bool use_key_points);
+// The same objective, evaluated for many shapes of one search: each point's scan for its nearest
+// segment starts where the previous shape's stopped, and stops once the point cannot raise the
+// objective, so the value is fit_objective's bit for bit, at a fraction of the work.
+class FitObjective {
+ public:
+  FitObjective(const PreparedStroke& stroke, bool use_key_points);
+  double operator()(const CleanShape& shape);
+
+ private:
+  // A run of consecutive stroke segments, with its bounding box and longest segment: a key point
+  // far from the box (with room for rounding) has no segment of it nearer than the best so far.
+  struct Block {
+    std::size_t first = 0, end = 0; // segments [first, end)
+    PointD lo, hi;
+    double longest = 0.0;
+  };
+  double raise_to_stroke_distance(PointD v, double worst, std::size_t& hint) const;
+
+  const PreparedStroke& stroke_;
+  bool use_key_points_;
+  std::size_t fit_hint_ = 0;           // the segment of the shape nearest the last fit point
+  std::vector<std::size_t> key_hints_; // per key point, the stroke segment nearest it
+  std::vector<Block> blocks_;          // over stroke_.points (key points only)
+};
+// max(worst, the largest polyline_distance from `points` to `path`), exactly: each point's scan
+// starts at segment `hint` (updated to its nearest one) and stops once the point is proven no
+// farther than the maximum so far.
+double raise_to_polyline_distance(std::span<const PointD> points, std::span<const PointD> path,
+                                  double worst, std::size_t& hint);
 
 // Corner search by dynamic programming on the fit points: indices of k vertices minimising the
 // summed squared distance of the points to the chords. Open: the first and last points are
