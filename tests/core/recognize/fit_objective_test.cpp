@@ -9,7 +9,7 @@
 #include <numbers>
 #include <random>
 
-#include "recognize/fit.hpp"
+#include "recognize/fitting/fit.hpp"
 
 namespace penshape::recognize_detail {
 namespace {
