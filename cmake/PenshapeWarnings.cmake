@@ -1,4 +1,5 @@
-# Warnings as errors on our own targets only (generated and third-party code is not ours).
+# Our targets' common setup: warnings as errors (generated and third-party code is not ours),
+# tests, libraries.
 function(penshape_warnings target)
   target_compile_options(${target} PRIVATE
     -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Werror)
@@ -22,4 +23,20 @@ function(penshape_add_test target)
     set(properties PROPERTIES RESOURCE_LOCK ${ARG_RESOURCE_LOCK})
   endif()
   gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60 DISCOVERY_MODE PRE_TEST ${properties})
+endfunction()
+
+# One of our libraries: penshape_NAME with the alias penshape::NAME, the public headers in the
+# calling folder's include/, and our warnings.
+#   penshape_add_library(NAME [STATIC] SOURCES ... [PUBLIC deps...] [PRIVATE deps...])
+function(penshape_add_library name)
+  cmake_parse_arguments(ARG "STATIC" "" "SOURCES;PUBLIC;PRIVATE" ${ARGN})
+  set(kind)
+  if(ARG_STATIC)
+    set(kind STATIC)
+  endif()
+  add_library(penshape_${name} ${kind} ${ARG_SOURCES})
+  add_library(penshape::${name} ALIAS penshape_${name})
+  target_include_directories(penshape_${name} PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/include)
+  target_link_libraries(penshape_${name} PUBLIC ${ARG_PUBLIC} PRIVATE ${ARG_PRIVATE})
+  penshape_warnings(penshape_${name})
 endfunction()

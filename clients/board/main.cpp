@@ -377,6 +377,25 @@ class Board {
   std::string disconnected_;
 };
 
+// Pushes the left-button event a script command stands for: pressed, released, or dragged.
+void push_mouse_event(const ScriptCommand& c) {
+  SDL_Event e{};
+  if (c.op == ScriptCommand::Op::kMove) {
+    e.type = SDL_MOUSEMOTION;
+    e.motion.state = SDL_BUTTON_LMASK;
+    e.motion.x = c.x;
+    e.motion.y = c.y;
+  } else {
+    const bool down = c.op == ScriptCommand::Op::kDown;
+    e.type = down ? SDL_MOUSEBUTTONDOWN : SDL_MOUSEBUTTONUP;
+    e.button.button = SDL_BUTTON_LEFT;
+    e.button.state = down ? SDL_PRESSED : SDL_RELEASED;
+    e.button.x = c.x;
+    e.button.y = c.y;
+  }
+  SDL_PushEvent(&e);
+}
+
 // Runs the script one command per loop turn, so the events each command pushes are handled
 // (and drawn) before the next one.
 class ScriptRunner {
@@ -391,19 +410,8 @@ class ScriptRunner {
     switch (c.op) {
       case ScriptCommand::Op::kDown:
       case ScriptCommand::Op::kUp:
-        e.type = c.op == ScriptCommand::Op::kDown ? SDL_MOUSEBUTTONDOWN : SDL_MOUSEBUTTONUP;
-        e.button.button = SDL_BUTTON_LEFT;
-        e.button.state = c.op == ScriptCommand::Op::kDown ? SDL_PRESSED : SDL_RELEASED;
-        e.button.x = c.x;
-        e.button.y = c.y;
-        SDL_PushEvent(&e);
-        break;
       case ScriptCommand::Op::kMove:
-        e.type = SDL_MOUSEMOTION;
-        e.motion.state = SDL_BUTTON_LMASK;
-        e.motion.x = c.x;
-        e.motion.y = c.y;
-        SDL_PushEvent(&e);
+        push_mouse_event(c);
         break;
       case ScriptCommand::Op::kKey:
         e.type = SDL_KEYDOWN;

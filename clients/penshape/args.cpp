@@ -86,4 +86,13 @@ std::optional<double> ParsedArgs::number(std::string_view name) const {
   return v;
 }
 
+std::optional<std::uint64_t> ParsedArgs::positive_integer(std::string_view name) const {
+  const auto v = number(name);
+  if (!v) return std::nullopt;
+  if (*v < 1 || *v > 1e15 || std::floor(*v) != *v) {
+    throw UsageError("option '" + std::string(name) + "' needs a positive integer");
+  }
+  return static_cast<std::uint64_t>(*v);
+}
+
 } // namespace penshape::cli

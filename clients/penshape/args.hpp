@@ -2,6 +2,7 @@
 // The command-line parser shared by the subcommands, on CLI11: `--name value`, `--name=value`,
 // boolean `--flag`, and positionals (all of them after `--`). Unknown options are errors, and so
 // is a value given to a flag; an option given twice keeps its last value.
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <set>
@@ -31,6 +32,8 @@ class ParsedArgs {
   [[nodiscard]] std::optional<std::string> value(std::string_view name) const;
   // The option as a finite double; throws UsageError naming the option when it is not one.
   [[nodiscard]] std::optional<double> number(std::string_view name) const;
+  // The option as a whole number in [1, 1e15]; UsageError naming the option otherwise.
+  [[nodiscard]] std::optional<std::uint64_t> positive_integer(std::string_view name) const;
   [[nodiscard]] const std::vector<std::string>& positionals() const { return positionals_; }
 
  private:

@@ -76,17 +76,8 @@ void curves_json(JsonWriter& json, const CurveRing& ring) {
 }
 
 void offset_json(JsonWriter& json, const CurvedRegion& region) {
-  json.key("offset").begin_array();
-  for (const auto& p : region.polygons) {
-    json.begin_object();
-    json.key("outer");
-    curves_json(json, p.outer);
-    json.key("holes").begin_array();
-    for (const auto& h : p.holes) curves_json(json, h);
-    json.end_array();
-    json.end_object();
-  }
-  json.end_array();
+  json.key("offset");
+  write_polygons(json, region.polygons, curves_json);
   json.key("offset_max_error").number(region.max_error);
 }
 

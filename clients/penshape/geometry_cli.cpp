@@ -1,9 +1,11 @@
 #include "geometry_cli.hpp"
 
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <utility>
 
+#include "command.hpp"
 #include "penshape/core/polygon_io.hpp"
 
 namespace penshape::cli {
@@ -116,17 +118,7 @@ void ring_json(JsonWriter& json, const Ring& ring) {
 } // namespace
 
 void write_polygon_set(JsonWriter& json, const PolygonSet& set) {
-  json.begin_array();
-  for (const auto& p : set.polygons) {
-    json.begin_object();
-    json.key("outer");
-    ring_json(json, p.outer);
-    json.key("holes").begin_array();
-    for (const auto& h : p.holes) ring_json(json, h);
-    json.end_array();
-    json.end_object();
-  }
-  json.end_array();
+  write_polygons(json, set.polygons, ring_json);
 }
 
 void write_solution_keys(JsonWriter& json, const ReportedSolution& s) {
@@ -171,5 +163,18 @@ void write_certificate_keys(JsonWriter& json, const DeconstructResult& result) {
 }
 
 double seconds(std::chrono::nanoseconds d) { return std::chrono::duration<double>(d).count(); }
+
+int run_on_input_files(const char* name, const std::function<void()>& work) {
+  try {
+    work();
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "penshape %s: %s\n", name, e.what());
+    return kExitBadInput;
+  } catch (const InvalidInput& e) {
+    std::fprintf(stderr, "penshape %s: %s\n", name, e.what());
+    return kExitBadInput;
+  }
+  return kExitOk;
+}
 
 } // namespace penshape::cli

@@ -2,6 +2,7 @@
 // What the offline geometry subcommands share: exact numeric options, the engine option,
 // reading a polygon file, simplifying a solution, and the JSON shapes of solutions.
 #include <chrono>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -45,7 +46,24 @@ struct ReportedSolution {
 };
 ReportedSolution report_solution(const PolygonSet& q, const DeconstructResult& raw, bool simplify);
 
-// [{"outer": [[x,y],...], "holes": [[[x,y],...],...]}, ...]
+// [{"outer": RING, "holes": [RING, ...]}, ...] for polygons with an outer ring and holes (of
+// points, or of curves), each RING written by `write_ring`.
+template <typename Polygons, typename WriteRing>
+void write_polygons(JsonWriter& json, const Polygons& polygons, WriteRing write_ring) {
+  json.begin_array();
+  for (const auto& p : polygons) {
+    json.begin_object();
+    json.key("outer");
+    write_ring(json, p.outer);
+    json.key("holes").begin_array();
+    for (const auto& h : p.holes) write_ring(json, h);
+    json.end_array();
+    json.end_object();
+  }
+  json.end_array();
+}
+
+// write_polygons with rings of points: [[x,y],...].
 void write_polygon_set(JsonWriter& json, const PolygonSet& set);
 // "solution", "solution_vertices", "raw_vertices", "simplified" keys of a reported solution.
 void write_solution_keys(JsonWriter& json, const ReportedSolution& s);
@@ -58,5 +76,10 @@ void write_params(JsonWriter& json, const DeconstructParams& params);
 void write_certificate_keys(JsonWriter& json, const DeconstructResult& result);
 
 double seconds(std::chrono::nanoseconds d);
+
+// Runs the work of subcommand `name` on its files: an unreadable or malformed file (InputError)
+// or an invalid region (InvalidInput) prints "penshape NAME: why" on stderr and gives
+// kExitBadInput; otherwise kExitOk.
+int run_on_input_files(const char* name, const std::function<void()>& work);
 
 } // namespace penshape::cli

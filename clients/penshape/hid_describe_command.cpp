@@ -148,18 +148,7 @@ void print_pens(const drivers::DeviceProfile& profile) {
   for (const PenLayout& l : profile.decoder.layouts()) {
     std::printf("  report %u (%s, at least %u bytes)\n", l.report_id, l.origin.c_str(),
                 l.min_report_bytes);
-    print_pen_field("tip", l.tip);
-    print_pen_field("in_range", l.in_range);
-    print_pen_field("barrel1", l.barrel1);
-    print_pen_field("barrel2", l.barrel2);
-    print_pen_field("barrel3", l.barrel3);
-    print_pen_field("eraser", l.eraser);
-    print_pen_field("invert", l.invert);
-    print_pen_field("x", l.x);
-    print_pen_field("y", l.y);
-    print_pen_field("pressure", l.pressure);
-    print_pen_field("tilt_x", l.tilt_x);
-    print_pen_field("tilt_y", l.tilt_y);
+    for (const auto& [name, field] : drivers::kNamedPenFields) print_pen_field(name, l.*field);
   }
   for (const auto& n : profile.notes) std::printf("  note: %s\n", n.c_str());
 }

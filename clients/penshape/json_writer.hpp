@@ -11,10 +11,10 @@ namespace penshape::cli {
 
 class JsonWriter {
  public:
-  JsonWriter& begin_object();
-  JsonWriter& end_object();
-  JsonWriter& begin_array();
-  JsonWriter& end_array();
+  JsonWriter& begin_object() { return open('{'); }
+  JsonWriter& end_object() { return close('}'); }
+  JsonWriter& begin_array() { return open('['); }
+  JsonWriter& end_array() { return close(']'); }
   JsonWriter& key(std::string_view name); // inside an object, before its value
   JsonWriter& string(std::string_view value);
   JsonWriter& number(double value);
@@ -26,6 +26,8 @@ class JsonWriter {
 
  private:
   void before_value();
+  JsonWriter& open(char bracket);  // a value that opens a scope
+  JsonWriter& close(char bracket); // ends the innermost scope
   std::string out_;
   std::vector<bool> first_in_scope_; // one entry per open object/array
   bool after_key_ = false;

@@ -1,7 +1,10 @@
 #include "live_event_text.hpp"
 
 #include <cstdio>
+#include <initializer_list>
 #include <string_view>
+
+#include "penshape/types/lookup_table.hpp"
 
 namespace penshape::cli {
 namespace {
@@ -202,6 +205,16 @@ void write_arrow_json(JsonWriter& json, const v1::ArrowParams& a) {
   json.end_object();
 }
 
+// A round shape's parameters: "name": {"center": [x, y], then the numbers in order}.
+void write_round_json(JsonWriter& json, const char* name, const v1::Point& center,
+                      std::initializer_list<std::pair<const char*, double>> numbers) {
+  json.key(name).begin_object();
+  json.key("center");
+  write_point(json, center);
+  for (const auto& [key, value] : numbers) json.key(key).number(value);
+  json.end_object();
+}
+
 } // namespace
 
 void write_shape_json(JsonWriter& json, const v1::Shape& shape) {
@@ -219,30 +232,24 @@ void write_shape_json(JsonWriter& json, const v1::Shape& shape) {
       json.end_array();
       break;
     case v1::Shape::kCircle:
-      json.key("circle").begin_object();
-      json.key("center");
-      write_point(json, shape.circle().center());
-      json.key("radius").number(shape.circle().radius());
-      json.end_object();
+      write_round_json(json, "circle", shape.circle().center(),
+                       {{"radius", shape.circle().radius()}});
       break;
-    case v1::Shape::kEllipse:
-      json.key("ellipse").begin_object();
-      json.key("center");
-      write_point(json, shape.ellipse().center());
-      json.key("semi_major").number(shape.ellipse().semi_major());
-      json.key("semi_minor").number(shape.ellipse().semi_minor());
-      json.key("rotation_rad").number(shape.ellipse().rotation_rad());
-      json.end_object();
+    case v1::Shape::kEllipse: {
+      const v1::EllipseParams& e = shape.ellipse();
+      write_round_json(json, "ellipse", e.center(),
+                       {{"semi_major", e.semi_major()},
+                        {"semi_minor", e.semi_minor()},
+                        {"rotation_rad", e.rotation_rad()}});
       break;
-    case v1::Shape::kArc:
-      json.key("arc").begin_object();
-      json.key("center");
-      write_point(json, shape.arc().center());
-      json.key("radius").number(shape.arc().radius());
-      json.key("start_rad").number(shape.arc().start_rad());
-      json.key("sweep_rad").number(shape.arc().sweep_rad());
-      json.end_object();
+    }
+    case v1::Shape::kArc: {
+      const v1::ArcParams& a = shape.arc();
+      write_round_json(
+          json, "arc", a.center(),
+          {{"radius", a.radius()}, {"start_rad", a.start_rad()}, {"sweep_rad", a.sweep_rad()}});
       break;
+    }
     case v1::Shape::kArrow:
       write_arrow_json(json, shape.arrow());
       break;
@@ -262,16 +269,9 @@ void write_shape_json(JsonWriter& json, const v1::Shape& shape) {
 }
 
 std::string answer_word(v1::Answer a) {
-  switch (a) {
-    case v1::ANSWER_YES:
-      return "YES";
-    case v1::ANSWER_NO:
-      return "NO";
-    case v1::ANSWER_UNDECIDED:
-      return "UNDECIDED";
-    default:
-      return "unknown";
-  }
+  static constexpr LookupTable<v1::Answer, const char*, 3> kWords{
+      {{v1::ANSWER_YES, "YES"}, {v1::ANSWER_NO, "NO"}, {v1::ANSWER_UNDECIDED, "UNDECIDED"}}};
+  return lookup_or(kWords, a, "unknown");
 }
 
 std::string millimetres(double v) {
@@ -284,16 +284,11 @@ namespace {
 
 // The trigger of a ShapeRecognized as a word ("pen_up" for daemons older than hold to snap).
 std::string trigger_name(v1::ShapeTrigger trigger) {
-  switch (trigger) {
-    case v1::SHAPE_TRIGGER_HOLD:
-      return "hold";
-    case v1::SHAPE_TRIGGER_FOLLOW:
-      return "follow";
-    case v1::SHAPE_TRIGGER_RELEASE:
-      return "release";
-    default:
-      return "pen_up";
-  }
+  static constexpr LookupTable<v1::ShapeTrigger, const char*, 3> kNames{
+      {{v1::SHAPE_TRIGGER_HOLD, "hold"},
+       {v1::SHAPE_TRIGGER_FOLLOW, "follow"},
+       {v1::SHAPE_TRIGGER_RELEASE, "release"}}};
+  return lookup_or(kNames, trigger, "pen_up");
 }
 
 // "hold":{"certified_samples","hold_point":[x,y],"pen_point":[x,y],"adjusted","held_shape_id"}

@@ -78,51 +78,35 @@ void write_certificate(JsonWriter& json, const Certificate& c) {
   json.end_object();
 }
 
-std::optional<render::ShapeOutline> outline_of(const Recognition& r) {
-  if (r.shape == ShapeClass::kFreeform) return std::nullopt;
-  render::ShapeOutline o;
-  o.label = to_string(r.shape);
+// The outline of a shape that is not freeform (a dot with no pen size has none).
+render::ShapeOutline outline_shape(const Recognition& r) {
+  using Outline = render::ShapeOutline;
+  const ShapeParams& p = r.params;
   switch (r.shape) {
     case ShapeClass::kCircle:
-      o.kind = render::ShapeOutline::Kind::kCircle;
-      o.center = r.params.center;
-      o.radius = r.params.radius_x;
-      break;
+      return Outline::circle(p.center, p.radius_x);
     case ShapeClass::kEllipse:
-      o.kind = render::ShapeOutline::Kind::kEllipse;
-      o.center = r.params.center;
-      o.semi_major = r.params.radius_x;
-      o.semi_minor = r.params.radius_y;
-      o.rotation_rad = r.params.rotation;
-      break;
+      return Outline::ellipse(p.center, p.radius_x, p.radius_y, p.rotation);
     case ShapeClass::kArc:
-      o.kind = render::ShapeOutline::Kind::kArc;
-      o.center = r.params.center;
-      o.radius = r.params.radius_x;
-      o.start_rad = r.params.start_angle;
-      o.sweep_rad = r.params.sweep_angle;
-      break;
-    case ShapeClass::kDot: // drawn as a disk of the pen's radius (none when it has no size)
-      if (!(r.pen_radius > 0)) return std::nullopt;
-      o.kind = render::ShapeOutline::Kind::kCircle;
-      o.center = r.params.center;
-      o.radius = r.pen_radius;
-      break;
+      return Outline::arc(p.center, p.radius_x, p.start_angle, p.sweep_angle);
+    case ShapeClass::kDot: // drawn as a disk of the pen's radius
+      return Outline::circle(p.center, r.pen_radius);
     case ShapeClass::kSegment:
     case ShapeClass::kPolyline:
-      o.kind = render::ShapeOutline::Kind::kPolyline;
-      o.vertices = r.params.vertices;
-      break;
+      return {.kind = Outline::Kind::kPolyline, .vertices = p.vertices};
     case ShapeClass::kArrow:
-    case ShapeClass::kDoubleArrow:
-      o.kind = render::ShapeOutline::Kind::kPolyline; // the clean path: shaft, barbs
-      o.vertices = r.clean;
-      break;
+    case ShapeClass::kDoubleArrow: // the clean path: shaft, barbs
+      return {.kind = Outline::Kind::kPolyline, .vertices = r.clean};
     default:
-      o.kind = render::ShapeOutline::Kind::kPolygon;
-      o.vertices = r.params.vertices;
-      break;
+      return {.kind = Outline::Kind::kPolygon, .vertices = p.vertices};
   }
+}
+
+std::optional<render::ShapeOutline> outline_of(const Recognition& r) {
+  if (r.shape == ShapeClass::kFreeform) return std::nullopt;
+  if (r.shape == ShapeClass::kDot && !(r.pen_radius > 0)) return std::nullopt;
+  render::ShapeOutline o = outline_shape(r);
+  o.label = to_string(r.shape);
   return o;
 }
 

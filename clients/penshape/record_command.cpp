@@ -2,7 +2,6 @@
 // `penshape replay`, `penshaped --replay` and hid-tools play back like the tablet itself.
 #include "record_command.hpp"
 
-#include <cmath>
 #include <cstdio>
 
 #include "args.hpp"
@@ -36,15 +35,6 @@ constexpr const char* kHelp =
     "Exit codes: 0 recorded, 2 bad usage or FILE not writable, 1 daemon not running, too old for\n"
     "raw reports (see --decoded), no such device, events lost (FILE has gaps), or failed.\n";
 
-std::optional<std::uint64_t> positive_integer(const ParsedArgs& args, std::string_view name) {
-  const auto v = args.number(name);
-  if (!v) return std::nullopt;
-  if (*v < 1 || *v > 1e15 || std::floor(*v) != *v) {
-    throw UsageError("option '" + std::string(name) + "' needs a positive integer");
-  }
-  return static_cast<std::uint64_t>(*v);
-}
-
 } // namespace
 
 int record_fail(const std::string& message, int code) {
@@ -52,8 +42,8 @@ int record_fail(const std::string& message, int code) {
   return code;
 }
 
-std::optional<v1::DeviceInfo> choose_device(v1::Live::Stub& stub, const RecordOptions& options,
-                                            int* exit_code) {
+std::optional<v1::ListDevicesResponse> list_devices(v1::Live::Stub& stub,
+                                                    const RecordOptions& options, int* exit_code) {
   v1::ListDevicesResponse devices;
   grpc::ClientContext context;
   context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(10));
@@ -63,8 +53,15 @@ std::optional<v1::DeviceInfo> choose_device(v1::Live::Stub& stub, const RecordOp
     *exit_code = record_fail(f.message, f.exit_code);
     return std::nullopt;
   }
+  return devices;
+}
+
+std::optional<v1::DeviceInfo> choose_device(v1::Live::Stub& stub, const RecordOptions& options,
+                                            int* exit_code) {
+  const std::optional<v1::ListDevicesResponse> devices = list_devices(stub, options, exit_code);
+  if (!devices) return std::nullopt;
   const v1::DeviceInfo* device = nullptr;
-  for (const auto& d : devices.devices()) {
+  for (const auto& d : devices->devices()) {
     if (!options.device || d.id() == *options.device) device = &d;
   }
   if (options.device && device == nullptr) {
@@ -72,8 +69,8 @@ std::optional<v1::DeviceInfo> choose_device(v1::Live::Stub& stub, const RecordOp
         "no device '" + *options.device + "' is attached (see `penshape devices`)", kExitInternal);
     return std::nullopt;
   }
-  if (!options.device && devices.devices_size() != 1) {
-    *exit_code = record_fail(devices.devices_size() == 0
+  if (!options.device && devices->devices_size() != 1) {
+    *exit_code = record_fail(devices->devices_size() == 0
                                  ? "no tablets are attached to penshaped at " + options.address
                                  : "several tablets are attached: choose one with --device ID",
                              kExitInternal);
@@ -98,8 +95,8 @@ int run_record(std::span<const std::string_view> args) {
   options.path = parsed.positionals().front();
   options.address = daemon_address(parsed);
   options.device = parsed.value("--device");
-  options.max_strokes = positive_integer(parsed, "--strokes");
-  options.max_samples = positive_integer(parsed, "--samples");
+  options.max_strokes = parsed.positive_integer("--strokes");
+  options.max_samples = parsed.positive_integer("--samples");
   options.duration_seconds = parsed.number("--duration");
   options.wait = parsed.flag("--wait");
   if (options.duration_seconds &&

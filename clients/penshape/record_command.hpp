@@ -26,6 +26,11 @@ struct RecordOptions {
 // Prints "penshape record: MESSAGE" to stderr and returns `code`.
 int record_fail(const std::string& message, int code);
 
+// The devices attached to penshaped (ListDevices, 10 s deadline). Returns nullopt after printing
+// why the call failed and setting `*exit_code`.
+std::optional<v1::ListDevicesResponse> list_devices(v1::Live::Stub& stub,
+                                                    const RecordOptions& options, int* exit_code);
+
 // The attached device to record: the one named by --device, or the only one attached. Returns
 // nullopt after printing why not (no tablet, several, no such device, the call failed) and
 // setting `*exit_code`.

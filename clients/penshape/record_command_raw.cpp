@@ -115,16 +115,11 @@ class RawRecording {
 // --wait: a tablet attached already (after the subscription its reports are all queued) starts
 // the recording, or the first one the stream announces will. kExitOk, or why not.
 int start_attached(v1::Live::Stub& stub, const RecordOptions& options, RawRecording& recording) {
-  v1::ListDevicesResponse devices;
-  grpc::ClientContext list_context;
-  list_context.set_deadline(std::chrono::system_clock::now() + std::chrono::seconds(10));
-  const grpc::Status listed = stub.ListDevices(&list_context, {}, &devices);
-  if (!listed.ok()) {
-    const RpcFailure f = describe_rpc_failure(listed, "ListDevices", options.address);
-    return record_fail(f.message, f.exit_code);
-  }
+  int failed = kExitOk;
+  const std::optional<v1::ListDevicesResponse> devices = list_devices(stub, options, &failed);
+  if (!devices) return failed;
   std::vector<const v1::DeviceInfo*> present;
-  for (const auto& d : devices.devices()) {
+  for (const auto& d : devices->devices()) {
     if (wanted(options, d.id())) present.push_back(&d);
   }
   if (present.size() > 1) {

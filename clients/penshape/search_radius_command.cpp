@@ -37,7 +37,7 @@ int run_search_radius(std::span<const std::string_view> args) {
     opt.max_decider_calls = static_cast<std::size_t>(*calls);
   }
   const EngineKind engine = engine_option(parsed);
-  try {
+  return run_on_input_files("search-radius", [&] {
     const PolygonSet q = read_polygon_file(parsed.positionals().front());
     const RadiusSearchResult res = search_radius(make_decider(q, engine), tolerance,
                                                  enclosing_radius_bound(q) + tolerance, opt);
@@ -66,14 +66,7 @@ int run_search_radius(std::span<const std::string_view> args) {
       std::printf("%zu decider calls (%zu undecided), %.3f s\n", res.decider_calls,
                   res.undecided_calls, seconds(res.elapsed));
     }
-  } catch (const InputError& e) {
-    std::fprintf(stderr, "penshape search-radius: %s\n", e.what());
-    return kExitBadInput;
-  } catch (const InvalidInput& e) {
-    std::fprintf(stderr, "penshape search-radius: %s\n", e.what());
-    return kExitBadInput;
-  }
-  return kExitOk;
+  });
 }
 
 } // namespace penshape::cli

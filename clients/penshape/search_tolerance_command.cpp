@@ -36,7 +36,7 @@ int run_search_tolerance(std::span<const std::string_view> args) {
   const Rational radius = required_rational(parsed, "--radius");
   const Rational precision = optional_rational(parsed, "--precision").value_or(radius / 100);
   const EngineKind engine = engine_option(parsed);
-  try {
+  return run_on_input_files("search-tolerance", [&] {
     const PolygonSet q = read_polygon_file(parsed.positionals().front());
     // The reference engine settles what the fast engine leaves UNDECIDED against its promise.
     const Decider fallback =
@@ -74,14 +74,7 @@ int run_search_tolerance(std::span<const std::string_view> args) {
       std::fprintf(stderr, "penshape search-tolerance: %s%s\n",
                    res.converged ? "note: " : "not converged: ", res.note.c_str());
     }
-  } catch (const InputError& e) {
-    std::fprintf(stderr, "penshape search-tolerance: %s\n", e.what());
-    return kExitBadInput;
-  } catch (const InvalidInput& e) {
-    std::fprintf(stderr, "penshape search-tolerance: %s\n", e.what());
-    return kExitBadInput;
-  }
-  return kExitOk;
+  });
 }
 
 } // namespace penshape::cli

@@ -18,43 +18,39 @@ Ring display_ring(const v1::Ring& ring) {
   return out;
 }
 
-} // namespace
-
-std::optional<render::ShapeOutline> shape_outline(const v1::Shape& shape) {
-  render::ShapeOutline out;
-  out.label = shape_kind_name(shape.kind());
+// The outline of the shape's parameters (none for a shape without vertices or a round part).
+std::optional<render::ShapeOutline> params_outline(const v1::Shape& shape) {
+  using Outline = render::ShapeOutline;
   switch (shape.params_case()) {
     case v1::Shape::kVertices: {
-      for (const auto& p : shape.vertices().vertices()) out.vertices.push_back(point(p));
       const bool open =
           shape.kind() == v1::SHAPE_KIND_SEGMENT || shape.kind() == v1::SHAPE_KIND_POLYLINE;
-      out.kind =
-          open ? render::ShapeOutline::Kind::kPolyline : render::ShapeOutline::Kind::kPolygon;
+      Outline out{.kind = open ? Outline::Kind::kPolyline : Outline::Kind::kPolygon};
+      for (const auto& p : shape.vertices().vertices()) out.vertices.push_back(point(p));
       if (out.vertices.empty()) return std::nullopt;
       return out;
     }
     case v1::Shape::kCircle:
-      out.kind = render::ShapeOutline::Kind::kCircle;
-      out.center = point(shape.circle().center());
-      out.radius = shape.circle().radius();
-      return out;
-    case v1::Shape::kEllipse:
-      out.kind = render::ShapeOutline::Kind::kEllipse;
-      out.center = point(shape.ellipse().center());
-      out.semi_major = shape.ellipse().semi_major();
-      out.semi_minor = shape.ellipse().semi_minor();
-      out.rotation_rad = shape.ellipse().rotation_rad();
-      return out;
-    case v1::Shape::kArc:
-      out.kind = render::ShapeOutline::Kind::kArc;
-      out.center = point(shape.arc().center());
-      out.radius = shape.arc().radius();
-      out.start_rad = shape.arc().start_rad();
-      out.sweep_rad = shape.arc().sweep_rad();
-      return out;
+      return Outline::circle(point(shape.circle().center()), shape.circle().radius());
+    case v1::Shape::kEllipse: {
+      const auto& e = shape.ellipse();
+      return Outline::ellipse(point(e.center()), e.semi_major(), e.semi_minor(), e.rotation_rad());
+    }
+    case v1::Shape::kArc: {
+      const auto& a = shape.arc();
+      return Outline::arc(point(a.center()), a.radius(), a.start_rad(), a.sweep_rad());
+    }
     default:
       return std::nullopt;
   }
+}
+
+} // namespace
+
+std::optional<render::ShapeOutline> shape_outline(const v1::Shape& shape) {
+  auto out = params_outline(shape);
+  if (out) out->label = shape_kind_name(shape.kind());
+  return out;
 }
 
 PolygonSet display_polygon_set(const v1::PolygonSet& set) {

@@ -97,7 +97,7 @@ int run_suggest_radius(std::span<const std::string_view> args) {
   }
   if (parsed.positionals().size() != 1) throw UsageError("expected exactly one FILE");
   const EngineKind engine = engine_option(parsed);
-  try {
+  return run_on_input_files("suggest-radius", [&] {
     const PolygonSet q = read_polygon_file(parsed.positionals().front());
     const Rational w = bounding_width(q);
     SuggestOptions opt;
@@ -115,14 +115,7 @@ int run_suggest_radius(std::span<const std::string_view> args) {
     if (bar) bar->finish();
     const bool simplify = !parsed.flag("--no-simplify");
     (parsed.flag("--json") ? print_json : print_text)(q, res, simplify);
-  } catch (const InputError& e) {
-    std::fprintf(stderr, "penshape suggest-radius: %s\n", e.what());
-    return kExitBadInput;
-  } catch (const InvalidInput& e) {
-    std::fprintf(stderr, "penshape suggest-radius: %s\n", e.what());
-    return kExitBadInput;
-  }
-  return kExitOk;
+  });
 }
 
 } // namespace penshape::cli

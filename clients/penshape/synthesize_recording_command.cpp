@@ -10,6 +10,7 @@
 
 #include "command.hpp"
 #include "geometry_cli.hpp"
+#include "penshape/core/bounding_box.hpp"
 #include "penshape/drivers/device_profile.hpp"
 #include "penshape/drivers/hid_descriptor.hpp"
 #include "penshape/drivers/pen_encoder.hpp"
@@ -116,20 +117,6 @@ std::vector<Placed> read_strokes(const std::vector<std::string>& paths) {
   return strokes;
 }
 
-struct Box {
-  double xmin, xmax, ymin, ymax;
-};
-Box box_of(const std::vector<StrokePoint>& pts) {
-  Box b{pts[0].x, pts[0].x, pts[0].y, pts[0].y};
-  for (const auto& p : pts) {
-    b.xmin = std::min(b.xmin, p.x);
-    b.xmax = std::max(b.xmax, p.x);
-    b.ymin = std::min(b.ymin, p.y);
-    b.ymax = std::max(b.ymax, p.y);
-  }
-  return b;
-}
-
 // Plays strokes as the tablet's reports, one after another on one clock.
 class ReportPlayer {
  public:
@@ -139,8 +126,8 @@ class ReportPlayer {
   // The stroke (its box `box`) centred on `center` (mm) and scaled by `scale` mm per its unit:
   // hovering in,
   // resampled at the rate with a pressure ramp, lifting, then 300 ms out of range.
-  void play(const std::vector<StrokePoint>& pts, const Box& box, PointD center, double scale) {
-    mid_ = {0.5 * (box.xmin + box.xmax), 0.5 * (box.ymin + box.ymax)};
+  void play(const std::vector<StrokePoint>& pts, const BoxD& box, PointD center, double scale) {
+    mid_ = {0.5 * (box.x0 + box.x1), 0.5 * (box.y0 + box.y1)};
     center_ = center;
     scale_ = scale;
     PenSample s;
@@ -211,12 +198,11 @@ std::string play_strokes(const std::vector<Placed>& strokes, const Tablet& table
       std::to_string(static_cast<int>(how.rate)) + " Hz, linear resampling, synthetic pressure).\n";
   for (std::size_t k = 0; k < strokes.size(); ++k) {
     const auto& pts = strokes[k].points;
-    const Box box = box_of(pts);
+    const BoxD box = bounding_box(pts);
     const PointD center{cell_w * (static_cast<double>(k % how.columns) + 0.5),
                         cell_h * (static_cast<double>(k / how.columns) + 0.5)};
-    const double scale =
-        std::min({how.mm_per_unit, 0.9 * cell_w / std::max(box.xmax - box.xmin, 1e-9),
-                  0.9 * cell_h / std::max(box.ymax - box.ymin, 1e-9)});
+    const double scale = std::min({how.mm_per_unit, 0.9 * cell_w / std::max(box.x1 - box.x0, 1e-9),
+                                   0.9 * cell_h / std::max(box.y1 - box.y0, 1e-9)});
     comments += "# stroke " + std::to_string(k) + ": " + strokes[k].source + "\n";
     player.play(pts, box, center, scale);
   }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 
@@ -110,6 +111,27 @@ void print_recognition(const VerifyReport& rep, const RecognitionAnswer& a, std:
   });
 }
 
+// Checks the answers 0..count-1 in turn and prints each: exit 0 when all are verified, 1 when
+// one is not, 2 (naming the answer) at the first that is not a valid claim.
+int check_each(const std::string& answer_path, std::size_t count,
+               const std::function<VerifyReport(std::size_t)>& check,
+               const std::function<void(const VerifyReport&, std::size_t)>& print_one) {
+  bool all = true;
+  for (std::size_t i = 0; i < count; ++i) {
+    VerifyReport rep;
+    try {
+      rep = check(i);
+    } catch (const InvalidInput& e) {
+      std::fprintf(stderr, "penshape verify: %s: answer %zu: %s\n", answer_path.c_str(), i + 1,
+                   e.what());
+      return kExitBadInput;
+    }
+    all = all && rep.status == VerifyStatus::kVerified;
+    print_one(rep, i);
+  }
+  return all ? kExitOk : kExitInternal;
+}
+
 // FILE is a stroke file and `values` what `recognize --json` printed.
 int verify_recognitions(const std::string& path, const std::string& answer_path,
                         const std::vector<JsonValue>& values, bool as_json) {
@@ -136,20 +158,12 @@ int verify_recognitions(const std::string& path, const std::string& answer_path,
     std::fprintf(stderr, "penshape verify: %s\n", e.what());
     return kExitBadInput;
   }
-  bool all = true;
-  for (std::size_t i = 0; i < answers.size(); ++i) {
-    VerifyReport rep;
-    try {
-      rep = verify_recognition(strokes[i], answers[i].claim);
-    } catch (const InvalidInput& e) {
-      std::fprintf(stderr, "penshape verify: %s: answer %zu: %s\n", answer_path.c_str(), i + 1,
-                   e.what());
-      return kExitBadInput;
-    }
-    all = all && rep.status == VerifyStatus::kVerified;
-    print_recognition(rep, answers[i], i, answers.size(), as_json);
-  }
-  return all ? kExitOk : kExitInternal;
+  return check_each(
+      answer_path, answers.size(),
+      [&](std::size_t i) { return verify_recognition(strokes[i], answers[i].claim); },
+      [&](const VerifyReport& rep, std::size_t i) {
+        print_recognition(rep, answers[i], i, answers.size(), as_json);
+      });
 }
 
 } // namespace
@@ -205,20 +219,12 @@ int run_verify(std::span<const std::string_view> args) {
     std::fprintf(stderr, "penshape verify: %s\n", e.what());
     return kExitBadInput;
   }
-  bool all = true;
-  for (std::size_t i = 0; i < claims.size(); ++i) {
-    VerifyReport rep;
-    try {
-      rep = verify_deconstruction(q, claims[i]);
-    } catch (const InvalidInput& e) {
-      std::fprintf(stderr, "penshape verify: %s: answer %zu: %s\n", answer_path.c_str(), i + 1,
-                   e.what());
-      return kExitBadInput;
-    }
-    all = all && rep.status == VerifyStatus::kVerified;
-    print(rep, claims[i], i, claims.size(), parsed.flag("--json"));
-  }
-  return all ? kExitOk : kExitInternal;
+  return check_each(
+      answer_path, claims.size(),
+      [&](std::size_t i) { return verify_deconstruction(q, claims[i]); },
+      [&](const VerifyReport& rep, std::size_t i) {
+        print(rep, claims[i], i, claims.size(), parsed.flag("--json"));
+      });
 }
 
 } // namespace penshape::cli

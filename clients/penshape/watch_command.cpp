@@ -1,6 +1,5 @@
 // `penshape watch`: what is drawn on the tablets, live: strokes, shapes, optionally samples and
 // previews; readable lines or JSON lines, and optionally one SVG picture per stroke.
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -68,15 +67,6 @@ constexpr const char* kHelp =
     "%s\n"
     "Status lines go to stderr. Exit codes: 0 ok (also when stopped by Ctrl-C, --count,\n"
     "--duration or the daemon shutting down), 2 bad usage, 1 daemon not running or failed.\n";
-
-std::optional<std::uint64_t> positive_integer(const ParsedArgs& args, std::string_view name) {
-  const auto v = args.number(name);
-  if (!v) return std::nullopt;
-  if (*v < 1 || *v > 1e15 || std::floor(*v) != *v) {
-    throw UsageError("option '" + std::string(name) + "' needs a positive integer");
-  }
-  return static_cast<std::uint64_t>(*v);
-}
 
 // Pictures of finished strokes: a stroke waits for its shape, unless it will get none.
 class SvgArchive {
@@ -204,7 +194,7 @@ int run_watch(std::span<const std::string_view> args) {
     throw UsageError("unexpected argument '" + parsed.positionals().front() + "'");
   }
   const std::string address = daemon_address(parsed);
-  const auto count = positive_integer(parsed, "--count");
+  const auto count = parsed.positive_integer("--count");
   const auto duration = parsed.number("--duration");
   if (duration && (*duration <= 0 || *duration > 1e7)) {
     throw UsageError("option '--duration' needs a number of seconds > 0");

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <string>
 
+#include "penshape/proto/shape_kind.hpp"
 #include "penshape/v1/geometry.grpc.pb.h"
 
 namespace penshape::snap {
@@ -16,49 +17,12 @@ namespace {
 constexpr double kUnitsPerMm = 1000.0;
 constexpr auto kCallTimeout = std::chrono::seconds(30);
 
-ShapeClass class_of(v1::ShapeKind k) {
-  switch (k) {
-    case v1::SHAPE_KIND_SEGMENT:
-      return ShapeClass::kSegment;
-    case v1::SHAPE_KIND_POLYLINE:
-      return ShapeClass::kPolyline;
-    case v1::SHAPE_KIND_TRIANGLE:
-      return ShapeClass::kTriangle;
-    case v1::SHAPE_KIND_RECTANGLE:
-      return ShapeClass::kRectangle;
-    case v1::SHAPE_KIND_SQUARE:
-      return ShapeClass::kSquare;
-    case v1::SHAPE_KIND_DIAMOND:
-      return ShapeClass::kDiamond;
-    case v1::SHAPE_KIND_REGULAR_POLYGON:
-      return ShapeClass::kRegularPolygon;
-    case v1::SHAPE_KIND_CIRCLE:
-      return ShapeClass::kCircle;
-    case v1::SHAPE_KIND_ELLIPSE:
-      return ShapeClass::kEllipse;
-    case v1::SHAPE_KIND_ARC:
-      return ShapeClass::kArc;
-    case v1::SHAPE_KIND_QUADRILATERAL:
-      return ShapeClass::kQuadrilateral;
-    case v1::SHAPE_KIND_ARROW:
-      return ShapeClass::kArrow;
-    case v1::SHAPE_KIND_DOUBLE_ARROW:
-      return ShapeClass::kDoubleArrow;
-    case v1::SHAPE_KIND_DOT:
-      return ShapeClass::kDot;
-    case v1::SHAPE_KIND_POLYGON:
-      return ShapeClass::kPolygon;
-    default:
-      return ShapeClass::kFreeform;
-  }
-}
-
 PointD scaled(const v1::Point& p, double s) { return {p.x() * s, p.y() * s}; }
 
 // The daemon's shape in page units (s page units per mm).
 Recognition from_proto(const v1::Shape& shape, double s) {
   Recognition r;
-  r.shape = class_of(shape.kind());
+  r.shape = proto::from_proto(shape.kind()).value_or(ShapeClass::kFreeform);
   if (r.shape == ShapeClass::kFreeform) return r;
   ShapeParams& p = r.params;
   if (shape.has_circle()) {

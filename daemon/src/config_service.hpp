@@ -5,9 +5,9 @@
 namespace penshape::daemon {
 
 // penshape.v1.Config on the SettingsStore.
-class ConfigServiceImpl final : public v1::Config::Service {
+class ConfigServiceImpl final : public StateService<v1::Config::Service> {
  public:
-  explicit ConfigServiceImpl(DaemonState& state) : state_(state) {}
+  using StateService::StateService;
 
   grpc::Status GetSettings(grpc::ServerContext* context, const v1::GetSettingsRequest* request,
                            v1::SettingsResponse* response) override;
@@ -18,7 +18,6 @@ class ConfigServiceImpl final : public v1::Config::Service {
 
  private:
   void fill(const std::string& key, v1::SettingsResponse* response) const;
-  DaemonState& state_;
 };
 
 } // namespace penshape::daemon

@@ -103,4 +103,14 @@ InkOffload ink_offload(WorkerPool& pool);
 void publish_raw_report(ShapeHub& hub, const std::string& device_id,
                         std::span<const std::uint8_t> bytes, std::int64_t time_us);
 
+// A penshape.v1 service's implementation: its generated gRPC Service, on the daemon's state.
+template <typename GeneratedService>
+class StateService : public GeneratedService {
+ public:
+  explicit StateService(DaemonState& state) : state_(state) {}
+
+ protected:
+  DaemonState& state_;
+};
+
 } // namespace penshape::daemon

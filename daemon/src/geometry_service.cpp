@@ -125,6 +125,28 @@ Rational positive(const v1::Scalar& s, bool present, const std::string& field,
   return v;
 }
 
+// What the search requests share: the polygon and the engine.
+struct SearchInput {
+  PolygonSet q;
+  EngineKind engine = EngineKind::kFast;
+};
+
+// Validates a search request on the handler thread: the polygon, then the request's own fields
+// (`fields`), then the engine. The status to answer at once (invalid, or no engine in this build),
+// else OK.
+template <typename Request, typename Fields>
+grpc::Status read_search(const DaemonState& state, const Request& request, const char* rpc,
+                         SearchInput& in, Fields fields) {
+  const grpc::Status status = validated([&] {
+    in.q = polygon_set_from_proto(request.polygon(), "polygon", state.limits);
+    fields();
+    in.engine = engine_from_proto(request.engine(), "engine");
+  });
+  if (!status.ok()) return status;
+  if (!state.geometry) return not_in_this_build(std::string(rpc) + ": no engine in this build");
+  return grpc::Status::OK;
+}
+
 // Runs a streaming search on the geometry lane: progress messages while it runs (ProgressStream),
 // then one last message with the result (filled by `compute`) and its timings.
 template <typename Response, typename Compute>
@@ -156,24 +178,20 @@ grpc::Status GeometryServiceImpl::SearchTolerance(
     grpc::ServerContext* context, const v1::SearchToleranceRequest* request,
     grpc::ServerWriter<v1::SearchToleranceResponse>* writer) {
   const auto arrived = Clock::now();
-  PolygonSet q;
+  SearchInput in;
   Rational radius;
   Rational width;
-  EngineKind engine = EngineKind::kFast;
-  grpc::Status status = validated([&] {
-    q = polygon_set_from_proto(request->polygon(), "polygon", state_.limits);
+  const grpc::Status status = read_search(state_, *request, "SearchTolerance", in, [&] {
     radius = positive(request->radius(), request->has_radius(), "radius", state_.limits);
     width = positive(request->width(), request->has_width(), "width", state_.limits);
-    engine = engine_from_proto(request->engine(), "engine");
   });
   if (!status.ok()) return status;
-  if (!state_.geometry) return not_in_this_build("SearchTolerance: no engine in this build");
   return run_search(
       state_, context, writer, arrived, false,
       [&](const StopCondition& stop, ProgressStream<v1::SearchToleranceResponse>& progress,
           v1::SearchToleranceResult* out) {
         const ToleranceSearchResult r = state_.geometry->search_tolerance(
-            q, radius, width, engine, cancel_hook(stop), core_limits(state_.limits),
+            in.q, radius, width, in.engine, cancel_hook(stop), core_limits(state_.limits),
             [&](const DeconstructResult& d) { progress.decided(d); });
         to_proto(r.eps_low, out->mutable_lower());
         to_proto(r.eps_high, out->mutable_upper());
@@ -190,29 +208,25 @@ grpc::Status GeometryServiceImpl::SearchRadius(
     grpc::ServerContext* context, const v1::SearchRadiusRequest* request,
     grpc::ServerWriter<v1::SearchRadiusResponse>* writer) {
   const auto arrived = Clock::now();
-  PolygonSet q;
+  SearchInput in;
   Rational tolerance;
   Rational width;
   std::optional<Rational> upper;
-  EngineKind engine = EngineKind::kFast;
-  grpc::Status status = validated([&] {
-    q = polygon_set_from_proto(request->polygon(), "polygon", state_.limits);
+  const grpc::Status status = read_search(state_, *request, "SearchRadius", in, [&] {
     tolerance =
         positive(request->tolerance(), request->has_tolerance(), "tolerance", state_.limits);
     width = positive(request->width(), request->has_width(), "width", state_.limits);
     if (request->has_max_radius()) {
       upper = positive(request->max_radius(), true, "max_radius", state_.limits);
     }
-    engine = engine_from_proto(request->engine(), "engine");
   });
   if (!status.ok()) return status;
-  if (!state_.geometry) return not_in_this_build("SearchRadius: no engine in this build");
   return run_search(
       state_, context, writer, arrived, true,
       [&](const StopCondition& stop, ProgressStream<v1::SearchRadiusResponse>& progress,
           v1::SearchRadiusResult* out) {
         const RadiusSearchResult r = state_.geometry->search_radius(
-            q, tolerance, width, upper, engine, cancel_hook(stop), core_limits(state_.limits),
+            in.q, tolerance, width, upper, in.engine, cancel_hook(stop), core_limits(state_.limits),
             [&](const DeconstructResult& d) { progress.decided(d); });
         to_proto(r.r_low, out->mutable_lower());
         to_proto(r.r_high, out->mutable_upper());
@@ -226,11 +240,9 @@ grpc::Status GeometryServiceImpl::SuggestRadius(
     grpc::ServerContext* context, const v1::SuggestRadiusRequest* request,
     grpc::ServerWriter<v1::SuggestRadiusResponse>* writer) {
   const auto arrived = Clock::now();
-  PolygonSet q;
+  SearchInput in;
   SuggestOptions options;
-  EngineKind engine = EngineKind::kFast;
-  grpc::Status status = validated([&] {
-    q = polygon_set_from_proto(request->polygon(), "polygon", state_.limits);
+  const grpc::Status status = read_search(state_, *request, "SuggestRadius", in, [&] {
     options.from =
         positive(request->min_radius(), request->has_min_radius(), "min_radius", state_.limits);
     options.to = scalar_from_proto(request->max_radius(), request->has_max_radius(), "max_radius",
@@ -241,10 +253,8 @@ grpc::Status GeometryServiceImpl::SuggestRadius(
                        ", outside [3, 256] (0 for the default 20)");
     }
     if (request->samples() != 0) options.samples = request->samples();
-    engine = engine_from_proto(request->engine(), "engine");
   });
   if (!status.ok()) return status;
-  if (!state_.geometry) return not_in_this_build("SuggestRadius: no engine in this build");
   const std::size_t max_candidates = request->max_candidates() == 0 ? 3 : request->max_candidates();
   return run_search(
       state_, context, writer, arrived, true,
@@ -255,7 +265,7 @@ grpc::Status GeometryServiceImpl::SuggestRadius(
           return !stop.should_stop();
         };
         const SuggestResult r = state_.geometry->suggest_radius(
-            q, options, engine, cancel_hook(stop), core_limits(state_.limits));
+            in.q, options, in.engine, cancel_hook(stop), core_limits(state_.limits));
         if (r.stopped_early) throw Cancelled();
         auto fill = [](const RadiusSample& sample, v1::RadiusCandidate* c) {
           to_proto(sample.radius, c->mutable_radius());

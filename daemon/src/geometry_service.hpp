@@ -6,9 +6,9 @@ namespace penshape::daemon {
 
 // penshape.v1.Geometry: Deconstruct on the GeometryBackend, Recognize on the StrokeAnalyzer. The
 // searches validate their request and answer UNIMPLEMENTED until the core has them.
-class GeometryServiceImpl final : public v1::Geometry::Service {
+class GeometryServiceImpl final : public StateService<v1::Geometry::Service> {
  public:
-  explicit GeometryServiceImpl(DaemonState& state) : state_(state) {}
+  using StateService::StateService;
 
   grpc::Status Deconstruct(grpc::ServerContext* context, const v1::DeconstructRequest* request,
                            v1::DeconstructResponse* response) override;
@@ -21,9 +21,6 @@ class GeometryServiceImpl final : public v1::Geometry::Service {
                              grpc::ServerWriter<v1::SuggestRadiusResponse>* writer) override;
   grpc::Status Recognize(grpc::ServerContext* context, const v1::RecognizeRequest* request,
                          v1::RecognizeResponse* response) override;
-
- private:
-  DaemonState& state_;
 };
 
 // The core's limits from the daemon's (max_vertices).

@@ -12,10 +12,8 @@ class InkAnalyzer final : public StrokeAnalyzer {
  public:
   StrokeAnalysis analyze(const Stroke& stroke, const PenSettings& settings,
                          const CancelHook& cancel) override {
-    const InkPolygon ink = ink_polygon(stroke, ink_options_for(settings));
-    if (cancel && cancel()) throw Cancelled();
     StrokeAnalysis analysis;
-    to_proto(ink.region, &analysis.ink_polygon);
+    analyze_ink(stroke, settings, cancel, &analysis);
     return analysis;
   }
 };
@@ -26,6 +24,14 @@ InkOptions ink_options_for(const PenSettings& settings) {
   InkOptions options;
   options.radius_mm = settings.pen_radius_mm;
   return options;
+}
+
+InkPolygon analyze_ink(const Stroke& stroke, const PenSettings& settings, const CancelHook& cancel,
+                       StrokeAnalysis* analysis) {
+  InkPolygon ink = ink_polygon(stroke, ink_options_for(settings));
+  if (cancel && cancel()) throw Cancelled();
+  to_proto(ink.region, &analysis->ink_polygon);
+  return ink;
 }
 
 std::shared_ptr<StrokeAnalyzer> make_ink_analyzer() { return std::make_shared<InkAnalyzer>(); }

@@ -6,9 +6,9 @@ namespace penshape::daemon {
 
 // penshape.v1.Live: devices and live events through the hub; an app's own strokes through the
 // StrokeAnalyzer.
-class LiveServiceImpl final : public v1::Live::Service {
+class LiveServiceImpl final : public StateService<v1::Live::Service> {
  public:
-  explicit LiveServiceImpl(DaemonState& state) : state_(state) {}
+  using StateService::StateService;
 
   grpc::Status ListDevices(grpc::ServerContext* context, const v1::ListDevicesRequest* request,
                            v1::ListDevicesResponse* response) override;
@@ -30,8 +30,6 @@ class LiveServiceImpl final : public v1::Live::Service {
   grpc::Status submit_grouped(grpc::ServerContext* context, const v1::SubmitStrokeRequest& request,
                               const Stroke& stroke, const PenSettings& settings,
                               v1::SubmitStrokeResponse* response);
-
-  DaemonState& state_;
 };
 
 } // namespace penshape::daemon

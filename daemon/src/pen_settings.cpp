@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "penshape/types/lookup_table.hpp"
+
 namespace penshape::daemon {
 namespace {
 
@@ -61,23 +63,18 @@ std::string device_key(unsigned vendor_id, unsigned product_id) {
   return text;
 }
 
+namespace {
+// The config's words for the snap triggers, for both directions.
+constexpr LookupTable<SnapTrigger, const char*, 3> kSnapTriggerNames{
+    {{SnapTrigger::kPenUp, "pen_up"}, {SnapTrigger::kHold, "hold"}, {SnapTrigger::kBoth, "both"}}};
+} // namespace
+
 const char* snap_trigger_name(SnapTrigger trigger) {
-  switch (trigger) {
-    case SnapTrigger::kPenUp:
-      return "pen_up";
-    case SnapTrigger::kHold:
-      return "hold";
-    case SnapTrigger::kBoth:
-      return "both";
-  }
-  return "both";
+  return lookup_or(kSnapTriggerNames, trigger, "both");
 }
 
 std::optional<SnapTrigger> parse_snap_trigger(const std::string& word) {
-  for (const SnapTrigger t : {SnapTrigger::kPenUp, SnapTrigger::kHold, SnapTrigger::kBoth}) {
-    if (word == snap_trigger_name(t)) return t;
-  }
-  return std::nullopt;
+  return reverse_lookup(kSnapTriggerNames, word);
 }
 
 SettingsStore::SettingsStore(PenSettings defaults,

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "penshape/types/lookup_table.hpp"
+
 namespace penshape::daemon {
 namespace {
 
@@ -236,31 +238,21 @@ Stroke stroke_from_proto(const v1::Stroke& message, const std::string& field, co
 
 namespace {
 
+// The snap triggers and their messages, read one way for requests and the other for answers.
+constexpr LookupTable<SnapTrigger, v1::SnapTrigger, 3> kSnapTriggers{
+    {{SnapTrigger::kPenUp, v1::SNAP_TRIGGER_PEN_UP},
+     {SnapTrigger::kHold, v1::SNAP_TRIGGER_HOLD},
+     {SnapTrigger::kBoth, v1::SNAP_TRIGGER_BOTH}}};
+
 SnapTrigger snap_trigger_from_proto(const v1::PenSettings& message, const std::string& field) {
-  switch (message.snap_trigger()) {
-    case v1::SNAP_TRIGGER_PEN_UP:
-      return SnapTrigger::kPenUp;
-    case v1::SNAP_TRIGGER_HOLD:
-      return SnapTrigger::kHold;
-    case v1::SNAP_TRIGGER_BOTH:
-      return SnapTrigger::kBoth;
-    default:
-      throw FieldError((field.empty() ? "" : field + ".") + "snap_trigger is " +
-                       std::to_string(static_cast<int>(message.snap_trigger())) +
-                       "; expected SNAP_TRIGGER_PEN_UP, SNAP_TRIGGER_HOLD or SNAP_TRIGGER_BOTH");
-  }
+  if (const auto trigger = reverse_lookup(kSnapTriggers, message.snap_trigger())) return *trigger;
+  throw FieldError((field.empty() ? "" : field + ".") + "snap_trigger is " +
+                   std::to_string(static_cast<int>(message.snap_trigger())) +
+                   "; expected SNAP_TRIGGER_PEN_UP, SNAP_TRIGGER_HOLD or SNAP_TRIGGER_BOTH");
 }
 
 v1::SnapTrigger to_proto(SnapTrigger trigger) {
-  switch (trigger) {
-    case SnapTrigger::kPenUp:
-      return v1::SNAP_TRIGGER_PEN_UP;
-    case SnapTrigger::kHold:
-      return v1::SNAP_TRIGGER_HOLD;
-    case SnapTrigger::kBoth:
-      return v1::SNAP_TRIGGER_BOTH;
-  }
-  return v1::SNAP_TRIGGER_BOTH;
+  return lookup_or(kSnapTriggers, trigger, v1::SNAP_TRIGGER_BOTH);
 }
 
 } // namespace
@@ -319,15 +311,11 @@ void to_proto(const PenSettings& settings, v1::PenSettings* out) {
 }
 
 v1::Answer to_proto(Answer answer) {
-  switch (answer) {
-    case Answer::kYes:
-      return v1::ANSWER_YES;
-    case Answer::kNo:
-      return v1::ANSWER_NO;
-    case Answer::kUndecided:
-      return v1::ANSWER_UNDECIDED;
-  }
-  return v1::ANSWER_UNSPECIFIED;
+  static constexpr LookupTable<Answer, v1::Answer, 3> kAnswers{
+      {{Answer::kYes, v1::ANSWER_YES},
+       {Answer::kNo, v1::ANSWER_NO},
+       {Answer::kUndecided, v1::ANSWER_UNDECIDED}}};
+  return lookup_or(kAnswers, answer, v1::ANSWER_UNSPECIFIED);
 }
 
 v1::Engine to_proto(EngineKind engine) {

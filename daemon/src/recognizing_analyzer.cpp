@@ -13,47 +13,10 @@
 #include "penshape/daemon/build_once.hpp"
 #include "penshape/daemon/ink_analyzer.hpp"
 #include "penshape/daemon/proto_convert.hpp"
+#include "penshape/proto/shape_kind.hpp"
 
 namespace penshape::daemon {
 namespace {
-
-v1::ShapeKind kind_of(ShapeClass c) {
-  switch (c) {
-    case ShapeClass::kFreeform:
-      return v1::SHAPE_KIND_NONE;
-    case ShapeClass::kSegment:
-      return v1::SHAPE_KIND_SEGMENT;
-    case ShapeClass::kPolyline:
-      return v1::SHAPE_KIND_POLYLINE;
-    case ShapeClass::kTriangle:
-      return v1::SHAPE_KIND_TRIANGLE;
-    case ShapeClass::kQuadrilateral:
-      return v1::SHAPE_KIND_QUADRILATERAL;
-    case ShapeClass::kRectangle:
-      return v1::SHAPE_KIND_RECTANGLE;
-    case ShapeClass::kSquare:
-      return v1::SHAPE_KIND_SQUARE;
-    case ShapeClass::kDiamond:
-      return v1::SHAPE_KIND_DIAMOND;
-    case ShapeClass::kRegularPolygon:
-      return v1::SHAPE_KIND_REGULAR_POLYGON;
-    case ShapeClass::kCircle:
-      return v1::SHAPE_KIND_CIRCLE;
-    case ShapeClass::kEllipse:
-      return v1::SHAPE_KIND_ELLIPSE;
-    case ShapeClass::kArc:
-      return v1::SHAPE_KIND_ARC;
-    case ShapeClass::kArrow:
-      return v1::SHAPE_KIND_ARROW;
-    case ShapeClass::kDoubleArrow:
-      return v1::SHAPE_KIND_DOUBLE_ARROW;
-    case ShapeClass::kDot:
-      return v1::SHAPE_KIND_DOT;
-    case ShapeClass::kPolygon:
-      return v1::SHAPE_KIND_POLYGON;
-  }
-  return v1::SHAPE_KIND_UNSPECIFIED;
-}
 
 void set_point(PointD p, v1::Point* out) {
   out->set_x(p.x);
@@ -234,10 +197,8 @@ class RecognizingAnalyzer final : public StrokeAnalyzer,
   StrokeAnalysis analyze(const Stroke& stroke, const PenSettings& settings,
                          const CancelHook& cancel) override {
     // The ink polygon Q (what the ink analyzer reports), kept to certify the shape on the ink.
-    const InkPolygon ink = ink_polygon(stroke, ink_options_for(settings));
-    if (cancel && cancel()) throw Cancelled();
     StrokeAnalysis analysis;
-    to_proto(ink.region, &analysis.ink_polygon);
+    const InkPolygon ink = analyze_ink(stroke, settings, cancel, &analysis);
     forget(stroke.id);
 
     StrokeInput input;
@@ -358,7 +319,7 @@ v1::Shape to_proto_shape(ShapeClass shape, const ShapeParams& params,
                          const std::vector<PointD>& clean, const Certificate& certificate,
                          double confidence) {
   v1::Shape out;
-  out.set_kind(kind_of(shape));
+  out.set_kind(proto::to_proto(shape));
   if (shape == ShapeClass::kFreeform) return out;
   switch (shape) {
     case ShapeClass::kCircle: {

@@ -12,33 +12,36 @@ std::int64_t monotonic_us() {
   return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000 + ts.tv_nsec / 1'000;
 }
 
-bool EventFilter::accepts(const v1::LiveEvent& event) const {
-  switch (event.kind_case()) {
+namespace {
+
+// Whether the filter asks for events of this kind (from any device).
+bool wants_kind(const EventFilter& f, v1::LiveEvent::KindCase kind) {
+  switch (kind) {
     case v1::LiveEvent::kDeviceAttached:
     case v1::LiveEvent::kDeviceDetached:
-      if (!devices && !raw_reports) return false;
-      break;
+      return f.devices || f.raw_reports;
     case v1::LiveEvent::kRawReport:
-      if (!raw_reports) return false;
-      break;
+      return f.raw_reports;
     case v1::LiveEvent::kSamples:
-      if (!samples) return false;
-      break;
+      return f.samples;
     case v1::LiveEvent::kPreview:
-      if (!previews) return false;
-      break;
+      return f.previews;
     case v1::LiveEvent::kDeconstructed:
-      if (!deconstructions) return false;
-      break;
+      return f.deconstructions;
     case v1::LiveEvent::kStrokeStarted:
     case v1::LiveEvent::kStrokeFinished:
     case v1::LiveEvent::kShape:
-      if (!strokes) return false;
-      break;
+      return f.strokes;
     default:
       return false;
   }
-  return device_ids.empty() || device_ids.count(event.device_id()) != 0;
+}
+
+} // namespace
+
+bool EventFilter::accepts(const v1::LiveEvent& event) const {
+  return wants_kind(*this, event.kind_case()) &&
+         (device_ids.empty() || device_ids.count(event.device_id()) != 0);
 }
 
 Subscription::Subscription(ShapeHub& hub, EventFilter filter, std::size_t capacity)

@@ -1,3 +1,4 @@
+// The engines this build links, or none (sources.hpp).
 #include "sources.hpp"
 
 #include "penshape/daemon/ink_analyzer.hpp"
@@ -5,21 +6,17 @@
 
 namespace penshape::daemon {
 
-// Ink polygons and certified shapes (recognizing_analyzer.cpp), with the engine built in.
-std::shared_ptr<StrokeAnalyzer> make_stroke_analyzer() {
 #ifdef PENSHAPE_DAEMON_WITH_ENGINE
-  return make_recognizing_analyzer();
-#else
-  return nullptr;
-#endif
-}
 
-std::shared_ptr<GeometryBackend> make_geometry_backend() {
-#ifdef PENSHAPE_DAEMON_WITH_ENGINE
-  return make_core_geometry_backend();
-#else
-  return nullptr;
+// Ink polygons and certified shapes (recognizing_analyzer.cpp); deconstructions.
+std::shared_ptr<StrokeAnalyzer> make_stroke_analyzer() { return make_recognizing_analyzer(); }
+std::shared_ptr<GeometryBackend> make_geometry_backend() { return make_core_geometry_backend(); }
+
+#else // built without the engine
+
+std::shared_ptr<StrokeAnalyzer> make_stroke_analyzer() { return nullptr; }
+std::shared_ptr<GeometryBackend> make_geometry_backend() { return nullptr; }
+
 #endif
-}
 
 } // namespace penshape::daemon

@@ -6,6 +6,7 @@
 #include "penshape/drivers/pen_layout.hpp"
 #include "penshape/drivers/report_families.hpp"
 #include "penshape/drivers/vendor_protocols.hpp"
+#include "penshape/types/lookup_table.hpp"
 
 namespace penshape::drivers {
 namespace {
@@ -141,19 +142,13 @@ void choose_size(DeviceProfile& out, bool vendor_primary, bool probed) {
 } // namespace
 
 std::string_view size_source_name(SizeSource s) {
-  switch (s) {
-    case SizeSource::kUnknown:
-      return "unknown";
-    case SizeSource::kTable:
-      return "table";
-    case SizeSource::kDescriptor:
-      return "descriptor";
-    case SizeSource::kProbe:
-      return "probe";
-    case SizeSource::kConfig:
-      return "config";
-  }
-  return "?";
+  static constexpr LookupTable<SizeSource, std::string_view, 5> kNames{
+      {{SizeSource::kUnknown, "unknown"},
+       {SizeSource::kTable, "table"},
+       {SizeSource::kDescriptor, "descriptor"},
+       {SizeSource::kProbe, "probe"},
+       {SizeSource::kConfig, "config"}}};
+  return lookup_or(kNames, s, "?");
 }
 
 std::vector<std::uint8_t> vendor_string_indexes(Protocol p) {

@@ -9,10 +9,6 @@
 
 namespace penshape::drivers {
 
-DescriptorError::DescriptorError(std::size_t offset, const std::string& what)
-    : std::runtime_error("report descriptor byte " + std::to_string(offset) + ": " + what),
-      offset_(offset) {}
-
 const ReportLayout* ParsedDescriptor::find(ReportType type, std::uint8_t report_id) const {
   for (const auto& r : reports) {
     if (r.type == type && r.report_id == report_id) return &r;
@@ -27,24 +23,6 @@ constexpr std::uint32_t kMaxValueBits = 32;
 constexpr std::size_t kMaxCollectionDepth = 32;
 constexpr std::size_t kMaxPushDepth = 16;
 constexpr std::size_t kMaxUsages = 4096;
-
-// Global item state, saved and restored by Push/Pop.
-struct GlobalState {
-  std::uint16_t usage_page = 0;
-  std::int64_t logical_minimum = 0;
-  std::int64_t logical_maximum = 0;
-  std::uint32_t logical_maximum_raw = 0;
-  std::uint32_t logical_maximum_size = 0;
-  std::int64_t physical_minimum = 0;
-  std::int64_t physical_maximum = 0;
-  std::uint32_t physical_maximum_raw = 0;
-  std::uint32_t physical_maximum_size = 0;
-  std::int32_t unit_exponent = 0;
-  std::uint32_t unit = 0;
-  std::uint32_t report_size = 0;
-  std::uint8_t report_id = 0;
-  std::uint32_t report_count = 0;
-};
 
 struct LocalState {
   std::vector<Usage> usages;
@@ -66,12 +44,36 @@ std::int64_t signed_value(std::uint32_t raw, std::size_t size) {
   }
 }
 
-// Devices often write e.g. `Logical Maximum (255)` as the one byte FF (signed -1) after a
-// non-negative minimum; the spec says signed, every host reads it as the intended unsigned value.
-std::int64_t effective_maximum(std::int64_t minimum, std::int64_t maximum, std::uint32_t raw) {
-  if (minimum >= 0 && maximum < minimum) return static_cast<std::int64_t>(raw);
-  return maximum;
-}
+// A logical or physical extent as the descriptor's (signed) items declare it.
+struct Extent {
+  std::int64_t minimum = 0;
+  std::int64_t maximum = 0;
+  std::uint32_t maximum_raw = 0; // the maximum item's value before sign extension
+
+  void set_maximum(std::uint32_t raw, std::size_t size) {
+    maximum = signed_value(raw, size);
+    maximum_raw = raw;
+  }
+  // Devices often write e.g. `Logical Maximum (255)` as the one byte FF (signed -1) after a
+  // non-negative minimum; the spec says signed, every host reads it as the intended unsigned
+  // value.
+  [[nodiscard]] std::int64_t effective_maximum() const {
+    if (minimum >= 0 && maximum < minimum) return static_cast<std::int64_t>(maximum_raw);
+    return maximum;
+  }
+};
+
+// Global item state, saved and restored by Push/Pop.
+struct GlobalState {
+  std::uint16_t usage_page = 0;
+  Extent logical;
+  Extent physical;
+  std::int32_t unit_exponent = 0;
+  std::uint32_t unit = 0;
+  std::uint32_t report_size = 0;
+  std::uint8_t report_id = 0;
+  std::uint32_t report_count = 0;
+};
 
 std::int32_t clamp32(std::int64_t v) {
   return static_cast<std::int32_t>(std::clamp<std::int64_t>(v, INT32_MIN, INT32_MAX));
@@ -161,21 +163,13 @@ class Parser {
       case 0x0:
         global_.usage_page = static_cast<std::uint16_t>(raw);
         break;
-      case 0x1:
-        global_.logical_minimum = signed_value(raw, size);
+      case 0x1: // logical minimum
+      case 0x3: // physical minimum
+        (tag == 0x1 ? global_.logical : global_.physical).minimum = signed_value(raw, size);
         break;
-      case 0x2:
-        global_.logical_maximum = signed_value(raw, size);
-        global_.logical_maximum_raw = raw;
-        global_.logical_maximum_size = static_cast<std::uint32_t>(size);
-        break;
-      case 0x3:
-        global_.physical_minimum = signed_value(raw, size);
-        break;
-      case 0x4:
-        global_.physical_maximum = signed_value(raw, size);
-        global_.physical_maximum_raw = raw;
-        global_.physical_maximum_size = static_cast<std::uint32_t>(size);
+      case 0x2: // logical maximum
+      case 0x4: // physical maximum
+        (tag == 0x2 ? global_.logical : global_.physical).set_maximum(raw, size);
         break;
       case 0x5:
         // The spec stores the exponent in the low nibble as a 4-bit two's complement value.
@@ -329,12 +323,10 @@ class Parser {
     base.report_id = global_.report_id;
     base.bit_size = global_.report_size;
     base.flags = flags;
-    base.logical_minimum = clamp32(global_.logical_minimum);
-    base.logical_maximum = clamp32(effective_maximum(
-        global_.logical_minimum, global_.logical_maximum, global_.logical_maximum_raw));
-    base.physical_minimum = clamp32(global_.physical_minimum);
-    base.physical_maximum = clamp32(effective_maximum(
-        global_.physical_minimum, global_.physical_maximum, global_.physical_maximum_raw));
+    base.logical_minimum = clamp32(global_.logical.minimum);
+    base.logical_maximum = clamp32(global_.logical.effective_maximum());
+    base.physical_minimum = clamp32(global_.physical.minimum);
+    base.physical_maximum = clamp32(global_.physical.effective_maximum());
     if (base.physical_minimum == 0 && base.physical_maximum == 0) {
       // HID 1.11 §6.2.2.7: both zero means "same as the logical extents".
       base.physical_minimum = base.logical_minimum;

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <optional>
 
+#include "penshape/types/lookup_table.hpp"
+
 namespace penshape::drivers {
 namespace {
 
@@ -73,29 +75,21 @@ double resolution_per_mm(const ReportField& axis) {
 
 namespace {
 
-// The digitizer-page usages a pen report carries, each to its slot in the candidate.
+// The digitizer-page usages a pen report carries, each to its slot in the candidate: tip switch,
+// in range, tip pressure, X and Y tilt, eraser, invert; barrel switches (1 and 2) are collected.
 void file_digitizer_field(Candidate& c, const ReportField& f, std::uint16_t id) {
-  switch (id) {
-    case 0x42:
-      return take(c.tip, f);
-    case 0x32:
-      return take(c.in_range, f);
-    case 0x30:
-      return take(c.pressure, f);
-    case 0x3D:
-      return take(c.tilt_x, f);
-    case 0x3E:
-      return take(c.tilt_y, f);
-    case 0x45:
-      return take(c.eraser, f);
-    case 0x3C:
-      return take(c.invert, f);
-    case 0x44:
-    case 0x5A:
-      c.barrels.push_back(&f);
-      return;
-    default:
-      return;
+  using Slot = const ReportField* Candidate::*;
+  static constexpr LookupTable<std::uint16_t, Slot, 7> kSlots{{{0x42, &Candidate::tip},
+                                                               {0x32, &Candidate::in_range},
+                                                               {0x30, &Candidate::pressure},
+                                                               {0x3D, &Candidate::tilt_x},
+                                                               {0x3E, &Candidate::tilt_y},
+                                                               {0x45, &Candidate::eraser},
+                                                               {0x3C, &Candidate::invert}}};
+  if (const Slot slot = lookup_or(kSlots, id, nullptr)) {
+    take(c.*slot, f);
+  } else if (id == 0x44 || id == 0x5A) {
+    c.barrels.push_back(&f);
   }
 }
 

@@ -10,9 +10,6 @@
 
 namespace penshape::drivers {
 
-RecordingError::RecordingError(std::size_t offset, const std::string& what)
-    : std::runtime_error("byte " + std::to_string(offset) + ": " + what), offset_(offset) {}
-
 namespace {
 
 struct Line {

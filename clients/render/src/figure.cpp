@@ -10,9 +10,11 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "penshape/render/figure.hpp"
+#include "penshape/types/lookup_table.hpp"
 #include "svg_paths.hpp"
 
 namespace penshape::render {
@@ -85,23 +87,14 @@ void check_radius(double v, const char* what) {
 }
 
 std::string escape(const std::string& text) {
+  static constexpr LookupTable<char, std::string_view, 4> kEntities{
+      {{'&', "&amp;"}, {'<', "&lt;"}, {'>', "&gt;"}, {'"', "&quot;"}}};
   std::string out;
   for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
+    if (const std::string_view entity = lookup_or(kEntities, c, {}); !entity.empty()) {
+      out += entity;
+    } else {
+      out += c;
     }
   }
   return out;
@@ -369,6 +362,20 @@ std::string open_svg(const View& view, const std::string& caption) {
   return svg;
 }
 
+// A figure's view, with the pen radius, the tolerance and the line width in picture units.
+struct ScaledView {
+  View view;
+  double r = 0.0;
+  double eps = 0.0;
+  double lw = 0.0;
+};
+
+ScaledView scaled_view(const Bounds& box, double radius, double tolerance, bool y_up,
+                       int max_pixels) {
+  const View view = make_view(box, radius + tolerance, y_up, max_pixels);
+  return {view, view.len(radius), view.len(tolerance), view.size() * 0.002};
+}
+
 void close_svg(std::string& svg) { svg += "</g>\n</svg>\n"; }
 
 void check_size(std::size_t vertices) {
@@ -389,10 +396,7 @@ std::string deconstruction_svg(const DeconstructionFigure& f) {
   Bounds box;
   add_polygon_set(box, f.q);
   if (f.p) add_polygon_set(box, *f.p);
-  const View view = make_view(box, f.radius + f.tolerance, f.y_up, f.max_pixels);
-  const double r = view.len(f.radius);
-  const double eps = view.len(f.tolerance);
-  const double lw = view.size() * 0.002;
+  const auto [view, r, eps, lw] = scaled_view(box, f.radius, f.tolerance, f.y_up, f.max_pixels);
 
   std::string svg = open_svg(view, f.caption);
   if (f.p && !f.p->empty()) {
@@ -414,10 +418,7 @@ std::string stroke_svg(const StrokeFigure& f) {
   for (const auto& p : f.samples) box.add(p);
   add_polygon_set(box, f.ink);
   if (f.shape) add_shape_bounds(box, *f.shape);
-  const View view = make_view(box, f.pen_radius + f.tolerance, f.y_up, f.max_pixels);
-  const double r = view.len(f.pen_radius);
-  const double eps = view.len(f.tolerance);
-  const double lw = view.size() * 0.002;
+  const auto [view, r, eps, lw] = scaled_view(box, f.pen_radius, f.tolerance, f.y_up, f.max_pixels);
 
   std::string svg = open_svg(view, f.caption);
   // The ink: the daemon's polygon Q when given, else the samples swept by the pen disk.

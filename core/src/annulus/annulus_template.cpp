@@ -22,17 +22,25 @@ void check_coordinate(double v, const Limits& limits, const std::string& what) {
   }
 }
 
+// What templates and point sets share: at most `max` points ("<set> has N <plural>, limit M")
+// and every coordinate within the limit ("<one> i x ...").
+void check_points(const std::vector<PointD>& v, std::size_t max, const Limits& limits,
+                  const char* set, const char* plural, const char* one) {
+  if (v.size() > max) {
+    throw InvalidInput(std::string(set) + " has " + std::to_string(v.size()) + " " + plural +
+                       ", limit " + std::to_string(max));
+  }
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const std::string name = std::string(one) + ' ' + std::to_string(i);
+    check_coordinate(v[i].x, limits, name + " x");
+    check_coordinate(v[i].y, limits, name + " y");
+  }
+}
+
 // Shared checks; orients counterclockwise (exact signed area sign).
 void check_ring(std::vector<PointD>& v, const Limits& limits) {
   if (v.size() < 3) throw InvalidInput("template needs at least 3 vertices");
-  if (v.size() > limits.max_template_vertices) {
-    throw InvalidInput("template has " + std::to_string(v.size()) + " vertices, limit " +
-                       std::to_string(limits.max_template_vertices));
-  }
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    check_coordinate(v[i].x, limits, "template vertex " + std::to_string(i) + " x");
-    check_coordinate(v[i].y, limits, "template vertex " + std::to_string(i) + " y");
-  }
+  check_points(v, limits.max_template_vertices, limits, "template", "vertices", "template vertex");
   for (std::size_t i = 0; i < v.size(); ++i) {
     if (v[i] == v[(i + 1) % v.size()]) {
       throw InvalidInput("template vertices " + std::to_string(i) + " and " +
@@ -192,14 +200,7 @@ TemplatePolygon make_simple_template(std::vector<PointD> vertices, const Limits&
 
 void validate_points(const std::vector<PointD>& points, const Limits& limits) {
   if (points.empty()) throw InvalidInput("point set is empty");
-  if (points.size() > limits.max_points) {
-    throw InvalidInput("point set has " + std::to_string(points.size()) + " points, limit " +
-                       std::to_string(limits.max_points));
-  }
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    check_coordinate(points[i].x, limits, "point " + std::to_string(i) + " x");
-    check_coordinate(points[i].y, limits, "point " + std::to_string(i) + " y");
-  }
+  check_points(points, limits.max_points, limits, "point set", "points", "point");
 }
 
 void validate_delta(double delta, const Limits& limits) {

@@ -52,13 +52,7 @@ Curve polygon_curve(const std::vector<PointD>& poly) {
 }
 
 Piece arc_piece(PointD center, double r, double phi0, double phi1) {
-  Piece p;
-  p.arc = true;
-  p.c = center;
-  p.r = r;
-  p.phi0 = phi0;
-  p.phi1 = phi1;
-  return p;
+  return {.arc = true, .c = center, .r = r, .phi0 = phi0, .phi1 = phi1};
 }
 
 // Intersects every interval of `cur` with {A cos + B sin <= C}.
@@ -247,12 +241,7 @@ PreparedAnnulus prepare_single(const TemplatePolygon& p, OuterOffset outer, doub
     return an;
   }
   an.outer_curve = polygon_curve(an.outer_poly);
-  Box box{an.outer_poly[0].x, an.outer_poly[0].y, an.outer_poly[0].x, an.outer_poly[0].y};
-  for (const PointD& q : an.outer_poly) {
-    box = {std::min(box.x0, q.x), std::min(box.y0, q.y), std::max(box.x1, q.x),
-           std::max(box.y1, q.y)};
-  }
-  an.box = box;
+  an.box = bounding_box(an.outer_poly);
   return an;
 }
 } // namespace

@@ -7,13 +7,12 @@
 
 #include "intervals.hpp"
 #include "penshape/core/annulus/annulus_template.hpp"
+#include "penshape/core/bounding_box.hpp"
 #include "penshape/core/point_arithmetic.hpp" // the kernel's PointD arithmetic
 
 namespace penshape::annulus::detail {
 
-struct Box {
-  double x0, y0, x1, y1;
-};
+using Box = BoxD;
 
 // A template edge from a with vector v, unit outward normal n, support h = n . a.
 struct Edge {

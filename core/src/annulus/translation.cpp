@@ -9,21 +9,6 @@
 namespace penshape::annulus {
 namespace detail {
 
-namespace {
-
-Box bounding_box(const std::vector<PointD>& v) {
-  Box b{v[0].x, v[0].y, v[0].x, v[0].y};
-  for (const PointD& q : v) {
-    b.x0 = std::min(b.x0, q.x);
-    b.x1 = std::max(b.x1, q.x);
-    b.y0 = std::min(b.y0, q.y);
-    b.y1 = std::max(b.y1, q.y);
-  }
-  return b;
-}
-
-} // namespace
-
 Placement centred_placement(const TemplatePolygon& p, const std::vector<PointD>& points) {
   const Box a = bounding_box(points), b = bounding_box(p.vertices());
   Placement pl;

@@ -10,19 +10,14 @@
 #include "engine/engines.hpp"
 #include "penshape/core/disk_approximation.hpp"
 #include "penshape/core/validated_region.hpp"
+#include "penshape/types/lookup_table.hpp"
 
 namespace penshape {
 
 const char* to_string(Answer a) {
-  switch (a) {
-    case Answer::kYes:
-      return "YES";
-    case Answer::kNo:
-      return "NO";
-    case Answer::kUndecided:
-      break;
-  }
-  return "UNDECIDED";
+  static constexpr LookupTable<Answer, const char*, 3> kAnswerNames{
+      {{Answer::kYes, "YES"}, {Answer::kNo, "NO"}, {Answer::kUndecided, "UNDECIDED"}}};
+  return lookup_or(kAnswerNames, a, "UNDECIDED");
 }
 
 const char* to_string(EngineKind e) { return e == EngineKind::kFast ? "fast" : "reference"; }

@@ -15,7 +15,6 @@ namespace penshape {
 namespace {
 
 using ClipperLib::cInt;
-using ClipperLib::IntPoint;
 using ClipperLib::Path;
 using ClipperLib::Paths;
 

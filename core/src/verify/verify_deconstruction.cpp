@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "penshape/core/verify.hpp"
+#include "penshape/types/lookup_table.hpp"
 #include "verify/verify_cover.hpp"
 #include "verify/verify_edges.hpp"
 #include "verify/verify_valid.hpp"
@@ -12,15 +13,11 @@
 namespace penshape {
 
 const char* to_string(VerifyStatus s) {
-  switch (s) {
-    case VerifyStatus::kVerified:
-      return "verified";
-    case VerifyStatus::kRefuted:
-      return "refuted";
-    case VerifyStatus::kUnproven:
-      break;
-  }
-  return "unproven";
+  static constexpr LookupTable<VerifyStatus, const char*, 3> kStatusNames{
+      {{VerifyStatus::kVerified, "verified"},
+       {VerifyStatus::kRefuted, "refuted"},
+       {VerifyStatus::kUnproven, "unproven"}}};
+  return lookup_or(kStatusNames, s, "unproven");
 }
 
 namespace {

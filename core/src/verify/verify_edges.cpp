@@ -125,11 +125,7 @@ bool EdgeSet::contains(const VPoint& c) const {
     const VPoint& b = points_[edges_[e].b];
     // Edges wholly left of c cannot cross the ray towards +x.
     if (a.x.sup() < c.x.inf() && b.x.sup() < c.x.inf()) continue;
-    const bool a_below = compare(a.e.y, a.y, c.e.y, c.y) <= 0;
-    const bool b_below = compare(b.e.y, b.y, c.e.y, c.y) <= 0;
-    if (a_below == b_below) continue;
-    const int o = orientation(a, b, c);
-    if ((a_below && o > 0) || (!a_below && o < 0)) inside = !inside;
+    if (crosses_ray(a, b, c)) inside = !inside;
   }
   return inside;
 }

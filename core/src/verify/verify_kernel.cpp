@@ -70,6 +70,14 @@ int orientation(const VPoint& a, const VPoint& b, const VPoint& c) {
   return sgn((b.e.x - a.e.x) * (c.e.y - a.e.y) - (b.e.y - a.e.y) * (c.e.x - a.e.x));
 }
 
+bool crosses_ray(const VPoint& a, const VPoint& b, const VPoint& p) {
+  const bool a_below = compare(a.e.y, a.y, p.e.y, p.y) <= 0;
+  const bool b_below = compare(b.e.y, b.y, p.e.y, p.y) <= 0;
+  if (a_below == b_below) return false;
+  const int o = orientation(a, b, p);
+  return (a_below && o > 0) || (!a_below && o < 0);
+}
+
 int compare(const Rational& u, const Interval& ui, const Rational& v, const Interval& vi) {
   if (ui.sup() < vi.inf()) return -1;
   if (ui.inf() > vi.sup()) return 1;

@@ -49,6 +49,10 @@ int orientation(const VPoint& a, const VPoint& b, const VPoint& c);
 // sign(u - v), exactly.
 int compare(const Rational& u, const Interval& ui, const Rational& v, const Interval& vi);
 
+// Does the edge (a, b) cross the ray from p towards +x? The step of the even-odd rule (p not on
+// the edge; an edge's lower end counts as below p, so a vertex on the ray is counted once).
+bool crosses_ray(const VPoint& a, const VPoint& b, const VPoint& p);
+
 // Do the closed segments [a, b] and [c, d] share a point?
 bool segments_meet(const VPoint& a, const VPoint& b, const VPoint& c, const VPoint& d);
 

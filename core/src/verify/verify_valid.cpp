@@ -29,13 +29,7 @@ std::string where(const RingInfo& r, std::size_t vertex) {
 bool inside_ring(const VPoint& p, const std::vector<VPoint>& ring) {
   bool inside = false;
   for (std::size_t i = 0; i < ring.size(); ++i) {
-    const VPoint& a = ring[i];
-    const VPoint& b = ring[(i + 1) % ring.size()];
-    const bool a_below = compare(a.e.y, a.y, p.e.y, p.y) <= 0;
-    const bool b_below = compare(b.e.y, b.y, p.e.y, p.y) <= 0;
-    if (a_below == b_below) continue;
-    const int o = orientation(a, b, p);
-    if ((a_below && o > 0) || (!a_below && o < 0)) inside = !inside;
+    if (crosses_ray(ring[i], ring[(i + 1) % ring.size()], p)) inside = !inside;
   }
   return inside;
 }

@@ -11,6 +11,11 @@ namespace penshape::daemon {
 // use it, so the ink they report is the same.
 InkOptions ink_options_for(const PenSettings& settings);
 
+// The start of every analysis: the stroke's ink (ink_options_for), also set as
+// `analysis->ink_polygon`. Throws Cancelled when `cancel` asks for it once the ink is drawn.
+InkPolygon analyze_ink(const Stroke& stroke, const PenSettings& settings, const CancelHook& cancel,
+                       StrokeAnalysis* analysis);
+
 // Ink polygons with the core's penshape::ink_polygon (ink_options_for); no shapes. The daemon
 // runs the recognizing analyzer (recognizing_analyzer.hpp); this one serves builds and tests that
 // want the ink alone. Compiled with PENSHAPE_DAEMON_WITH_ENGINE.

@@ -21,19 +21,17 @@
 #include <string>
 #include <vector>
 
+#include "penshape/drivers/byte_offset_error.hpp"
+
 namespace penshape::drivers {
 
 inline constexpr std::size_t kMaxDescriptorBytes = 4096;
 inline constexpr std::size_t kMaxReportBytes = 16384;
 
 // A malformed descriptor: `offset` is the byte offset of the offending item's prefix.
-class DescriptorError : public std::runtime_error {
- public:
-  DescriptorError(std::size_t offset, const std::string& what);
-  [[nodiscard]] std::size_t offset() const { return offset_; }
-
- private:
-  std::size_t offset_;
+struct DescriptorError : ByteOffsetError {
+  DescriptorError(std::size_t offset, const std::string& what)
+      : ByteOffsetError("report descriptor byte", offset, what) {}
 };
 
 enum class ReportType : std::uint8_t { kInput, kOutput, kFeature };

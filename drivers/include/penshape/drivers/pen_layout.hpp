@@ -1,6 +1,7 @@
 #pragma once
 // Where the pen's values sit in a report: built from a parsed HID descriptor (generic HID pens)
 // or by a vendor protocol (reports the descriptor does not describe). One decoder reads both.
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -74,6 +75,24 @@ struct PenLayout {
                : 0U;
   }
 };
+
+// A layout's pen fields with their names, in the order `penshape hid describe` lists them.
+struct NamedPenField {
+  const char* name;
+  PenField PenLayout::*field;
+};
+inline constexpr std::array<NamedPenField, 12> kNamedPenFields{{{"tip", &PenLayout::tip},
+                                                                {"in_range", &PenLayout::in_range},
+                                                                {"barrel1", &PenLayout::barrel1},
+                                                                {"barrel2", &PenLayout::barrel2},
+                                                                {"barrel3", &PenLayout::barrel3},
+                                                                {"eraser", &PenLayout::eraser},
+                                                                {"invert", &PenLayout::invert},
+                                                                {"x", &PenLayout::x},
+                                                                {"y", &PenLayout::y},
+                                                                {"pressure", &PenLayout::pressure},
+                                                                {"tilt_x", &PenLayout::tilt_x},
+                                                                {"tilt_y", &PenLayout::tilt_y}}};
 
 // Every pen input report of a descriptor: a report with absolute X and Y plus a tip switch, tip
 // pressure or in-range bit, inside a pen/digitizer application or a stylus collection, or a

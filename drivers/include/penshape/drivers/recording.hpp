@@ -17,6 +17,7 @@
 #include <string_view>
 #include <vector>
 
+#include "penshape/drivers/byte_offset_error.hpp"
 #include "penshape/drivers/device_profile.hpp"
 
 namespace penshape::drivers {
@@ -24,13 +25,9 @@ namespace penshape::drivers {
 inline constexpr std::size_t kMaxRecordingBytes = std::size_t{256} << 20;
 
 // Malformed input: `offset` is the byte offset in the file where the problem starts.
-class RecordingError : public std::runtime_error {
- public:
-  RecordingError(std::size_t offset, const std::string& what);
-  [[nodiscard]] std::size_t offset() const { return offset_; }
-
- private:
-  std::size_t offset_;
+struct RecordingError : ByteOffsetError {
+  RecordingError(std::size_t offset, const std::string& what)
+      : ByteOffsetError("byte", offset, what) {}
 };
 
 struct HidEvent {

@@ -30,15 +30,30 @@ inline constexpr std::size_t kMaxFigureVertices = 2'000'000;
 struct ShapeOutline {
   enum class Kind { kPolyline, kPolygon, kCircle, kEllipse, kArc };
   Kind kind = Kind::kPolygon;
-  std::string label;            // e.g. "square", shown in the figure's caption
-  std::vector<PointD> vertices; // kPolyline (open) and kPolygon (closed, last != first)
-  PointD center;                // kCircle, kEllipse, kArc
-  double radius = 0.0;          // kCircle, kArc
-  double semi_major = 0.0;      // kEllipse
-  double semi_minor = 0.0;      // kEllipse
-  double rotation_rad = 0.0;    // kEllipse: major axis from +x
-  double start_rad = 0.0;       // kArc: start angle from +x
-  double sweep_rad = 0.0;       // kArc: signed sweep, |sweep| < 2 pi
+  std::string label{};            // e.g. "square", shown in the figure's caption
+  std::vector<PointD> vertices{}; // kPolyline (open) and kPolygon (closed, last != first)
+  PointD center{};                // kCircle, kEllipse, kArc
+  double radius = 0.0;            // kCircle, kArc
+  double semi_major = 0.0;        // kEllipse
+  double semi_minor = 0.0;        // kEllipse
+  double rotation_rad = 0.0;      // kEllipse: major axis from +x
+  double start_rad = 0.0;         // kArc: start angle from +x
+  double sweep_rad = 0.0;         // kArc: signed sweep, |sweep| < 2 pi
+
+  // The round outlines, each with the fields its kind reads (no label).
+  static ShapeOutline circle(PointD c, double r) {
+    return {.kind = Kind::kCircle, .center = c, .radius = r};
+  }
+  static ShapeOutline ellipse(PointD c, double a, double b, double rotation) {
+    return {.kind = Kind::kEllipse,
+            .center = c,
+            .semi_major = a,
+            .semi_minor = b,
+            .rotation_rad = rotation};
+  }
+  static ShapeOutline arc(PointD c, double r, double start, double sweep) {
+    return {.kind = Kind::kArc, .center = c, .radius = r, .start_rad = start, .sweep_rad = sweep};
+  }
 };
 
 struct DeconstructionFigure {
