@@ -10,7 +10,7 @@ PACKAGES=(
   libprotobuf-dev protobuf-compiler libgrpc++-dev protobuf-compiler-grpc
   libgtest-dev libgmock-dev
   libsdl2-dev xvfb python3-grpcio python3-protobuf
-  libpolyclipping-dev nlohmann-json3-dev libcli11-dev
+  libpolyclipping-dev nlohmann-json3-dev libcli11-dev libtomlplusplus-dev
   dpkg-dev file
   libpugixml-dev zlib1g-dev libzip-dev libpng-dev
   inkscape xournalpp python3-lxml python3-cssselect python3-numpy poppler-utils
