@@ -55,7 +55,7 @@ mapfile -t gestures < <(find "$work/generated/strokes" -name '*.xml' | sort | he
 mkdir -p "$work/seeds-readers/xml" && copy_all "$work/seeds-readers/xml" '\x02' "${gestures[@]}"
 printf '\x01{"points": [[0, 0, 0], [10, 0, 0.1], [10, 10, 0.2, 0.5]], "name": "a\\u00e9"}\n' \
   >"$work/seeds-readers/jsonl"
-printf '\x03listen = unix:/tmp/p.sock\npen_radius_mm = 1.0\n[device 056a:0010]\ntolerance_fraction = 0.5\n' \
+printf '\x03listen = "unix:/tmp/p.sock"\npen_radius_mm = 1.0\n[device."056a:0010"]\ntolerance_fraction = 0.5\n' \
   >"$work/seeds-readers/config"
 printf '\x04{"answer": "YES", "params": {"r": 1.25, "eps": "5/8"}, "p": [[0, 1e-3], [-2, 3.5]]}\n[1]\n' \
   >"$work/seeds-readers/json"

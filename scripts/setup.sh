@@ -4,13 +4,13 @@
 set -euo pipefail
 
 PACKAGES=(
-  cmake ninja-build g++ clang-14 libclang-rt-14-dev pkg-config ccache clang-format
+  cmake ninja-build g++ clang-14 libclang-rt-14-dev clang-tidy-14 pkg-config ccache clang-format
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libhidapi-dev libusb-1.0-0-dev libudev-dev
   libprotobuf-dev protobuf-compiler libgrpc++-dev protobuf-compiler-grpc
   libgtest-dev libgmock-dev
   libsdl2-dev xvfb python3-grpcio python3-protobuf
-  libpolyclipping-dev nlohmann-json3-dev libcli11-dev
+  libpolyclipping-dev nlohmann-json3-dev libcli11-dev libtomlplusplus-dev
   dpkg-dev file
   libpugixml-dev zlib1g-dev libzip-dev libpng-dev
   inkscape xournalpp python3-lxml python3-cssselect python3-numpy poppler-utils

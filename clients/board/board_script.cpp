@@ -87,7 +87,7 @@ std::vector<ScriptCommand> read_script(const std::string& path) {
     const std::string where = path + ":" + std::to_string(number) + ": ";
     out.push_back(parse_command(op, words, where));
     std::string extra;
-    if (words >> extra) throw ScriptError(where + "unexpected '" + extra + "'");
+    if (words >> extra) throw ScriptError(where + "unexpected '" + extra.append(1, '\''));
   }
   return out;
 }

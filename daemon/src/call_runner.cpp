@@ -103,7 +103,7 @@ grpc::Status run_timed_on_pool(WorkerPool& pool, grpc::ServerContext* context, c
   };
   std::uint64_t queued_us = 0;
   std::uint64_t compute_us = 0;
-  const grpc::Status status = run_on_pool(
+  grpc::Status status = run_on_pool(
       pool, context, limits,
       [&](const StopCondition& stop) {
         const auto started = Clock::now();

@@ -1,85 +1,53 @@
+// penshaped's config file (TOML, read by toml++): each key to its field of DaemonConfig, with
+// the ranges and messages of config.hpp; the TOML syntax and the migration hints for the former
+// format are in config_migration.cpp, the typed reads in config_values.cpp.
 #include "penshape/daemon/config.hpp"
 
 #include <arpa/inet.h>
 
-#include <cerrno>
+#include <algorithm>
 #include <charconv>
-#include <cmath>
-#include <cstdlib>
 #include <fstream>
 #include <functional>
-#include <set>
 #include <sstream>
+#include <vector>
 
+#include "config_migration.hpp"
+#include "config_values.hpp"
 #include "penshape/core/deconstruct.hpp"
 
 namespace penshape::daemon {
 namespace {
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r')) {
-    s.remove_prefix(1);
-  }
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) {
-    s.remove_suffix(1);
-  }
-  return s;
+using config_detail::At;
+using config_detail::read_bool;
+using config_detail::read_double;
+using config_detail::read_size;
+using config_detail::read_string;
+
+// A table's entries in the file's order, so the first error reported is the first in the file.
+std::vector<std::pair<std::string, const toml::node*>> in_file_order(const toml::table& table) {
+  std::vector<std::pair<std::string, const toml::node*>> entries;
+  for (const auto& [key, node] : table) entries.emplace_back(std::string(key.str()), &node);
+  std::stable_sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {
+    const toml::source_position& pa = a.second->source().begin;
+    const toml::source_position& pb = b.second->source().begin;
+    return pa.line < pb.line || (pa.line == pb.line && pa.column < pb.column);
+  });
+  return entries;
 }
 
-class LineContext {
- public:
-  LineContext(const std::string& origin, std::size_t line) : origin_(origin), line_(line) {}
-  [[noreturn]] void fail(const std::string& key, const std::string& problem) const {
-    std::string where = origin_ + ":" + std::to_string(line_) + ": ";
-    if (!key.empty()) where += key + ": ";
-    throw ConfigError(where + problem);
-  }
-
- private:
-  const std::string& origin_;
-  std::size_t line_;
-};
-
-std::size_t parse_size(const LineContext& at, const std::string& key, std::string_view value,
-                       std::size_t lo, std::size_t hi) {
-  std::size_t result = 0;
-  const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), result);
-  if (ec != std::errc() || end != value.data() + value.size() || result < lo || result > hi) {
-    at.fail(key, "expected an integer in " + std::to_string(lo) + ".." + std::to_string(hi) +
-                     ", got '" + std::string(value) + "'");
-  }
-  return result;
-}
-
-double parse_double(const LineContext& at, const std::string& key, std::string_view value) {
-  const std::string text(value);
-  char* end = nullptr;
-  errno = 0;
-  const double result = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || errno != 0 || !std::isfinite(result)) {
-    at.fail(key, "expected a number, got '" + text + "'");
-  }
-  return result;
-}
-
-bool parse_bool(const LineContext& at, const std::string& key, std::string_view value) {
-  if (value == "true") return true;
-  if (value == "false") return false;
-  at.fail(key, "expected true or false, got '" + std::string(value) + "'");
-}
-
-// Applies one pen-settings key to `update`; false when `key` is not a pen-settings key.
-bool apply_settings_key(const LineContext& at, const std::string& key, std::string_view value,
-                        PenSettingsUpdate& update) {
+// Applies one pen-settings key to `update`; false when the key is not a pen-settings key.
+bool apply_settings_key(const At& at, const toml::node& node, PenSettingsUpdate& update) {
+  const std::string& key = at.key();
   if (key == "snap_trigger") {
-    update.snap_trigger = parse_snap_trigger(std::string(value));
-    if (!update.snap_trigger) {
-      at.fail(key, "expected pen_up, hold or both, got '" + std::string(value) + "'");
-    }
+    const std::string word = read_string(at, node);
+    update.snap_trigger = parse_snap_trigger(word);
+    if (!update.snap_trigger) at.fail("expected pen_up, hold or both, got '" + word + "'");
     return true;
   }
   if (key == "snap_writing") {
-    update.snap_writing = parse_bool(at, key, value);
+    update.snap_writing = read_bool(at, node);
     return true;
   }
   using Field = std::optional<double> PenSettingsUpdate::*;
@@ -91,30 +59,29 @@ bool apply_settings_key(const LineContext& at, const std::string& key, std::stri
       {"hold_radius_mm", &PenSettingsUpdate::hold_radius_mm}};
   const auto field = fields.find(key);
   if (field == fields.end()) return false;
-  const double parsed = parse_double(at, key, value);
+  const double parsed = read_double(at, node);
   update.*(field->second) = parsed;
   PenSettingsUpdate single;
   single.*(field->second) = parsed;
   try {
     validate(single, "");
   } catch (const SettingsError& e) {
-    at.fail("", e.what());
+    at.fail_unkeyed(e.what());
   }
   return true;
 }
 
-// Applies one grouping key (grouping, group_*, tidy_*) to `grouping`; false when `key` is not one.
-bool apply_grouping_key(const LineContext& at, const std::string& key, std::string_view value,
-                        GroupingConfig& grouping) {
-  v1::GroupingSettings change;
+// The grouping change one key (grouping, group_*, tidy_*) asks for; false when it is not one.
+bool grouping_change(const At& at, const toml::node& node, v1::GroupingSettings& change) {
+  const std::string& key = at.key();
   if (key == "grouping") {
-    change.set_disabled(!parse_bool(at, key, value));
+    change.set_disabled(!read_bool(at, node));
   } else if (key == "group_max_strokes") {
     change.set_max_strokes(
-        static_cast<std::uint32_t>(parse_size(at, key, value, 1, kMaxLiveGroupStrokes)));
+        static_cast<std::uint32_t>(read_size(at, node, 1, kMaxLiveGroupStrokes)));
   } else if (key == "group_max_pause_s") {
-    change.set_max_pause_s(parse_double(at, key, value));
-  } else if (key.rfind("tidy_", 0) == 0) {
+    change.set_max_pause_s(read_double(at, node));
+  } else {
     const std::map<std::string, void (v1::GroupingSettings::*)(bool)> switches = {
         {"tidy_circle", &v1::GroupingSettings::set_tidy_circle},
         {"tidy_right_angles", &v1::GroupingSettings::set_tidy_right_angles},
@@ -124,132 +91,131 @@ bool apply_grouping_key(const LineContext& at, const std::string& key, std::stri
         {"tidy_connection", &v1::GroupingSettings::set_tidy_connection}};
     const auto it = switches.find(key);
     if (it == switches.end()) return false;
-    (change.*(it->second))(parse_bool(at, key, value));
-  } else {
-    return false;
-  }
-  try {
-    grouping = apply_grouping(grouping, change, "group_");
-  } catch (const InvalidInput& e) {
-    at.fail("", e.what());
+    (change.*(it->second))(read_bool(at, node));
   }
   return true;
 }
 
-void apply_global_key(const LineContext& at, const std::string& key, std::string_view value,
-                      DaemonConfig& config, PenSettingsUpdate& defaults) {
-  Limits& l = config.limits;
-  const std::map<std::string, std::function<void()>> handlers = {
-      {"listen", [&] { config.listen = std::string(value); }},
-      {"tcp", [&] { config.tcp = std::string(value); }},
-      {"tcp_allow_non_loopback",
-       [&] { config.tcp_allow_non_loopback = parse_bool(at, key, value); }},
-      {"max_message_bytes",
-       [&] { l.max_message_bytes = parse_size(at, key, value, 4096, 1U << 30U); }},
-      {"max_vertices", [&] { l.max_vertices = parse_size(at, key, value, 3, 10'000'000); }},
-      {"max_stroke_samples",
-       [&] { l.max_stroke_samples = parse_size(at, key, value, 2, 10'000'000); }},
-      {"max_call_seconds",
-       [&] {
-         l.max_call_seconds = static_cast<std::uint32_t>(parse_size(at, key, value, 1, 86'400));
-       }},
-      {"worker_queue_jobs", [&] { l.worker_queue_jobs = parse_size(at, key, value, 1, 65'536); }},
-      {"worker_threads", [&] { l.worker_threads = parse_size(at, key, value, 0, 256); }},
-      {"stroke_worker_threads",
-       [&] { l.stroke_worker_threads = parse_size(at, key, value, 0, 256); }},
-      {"max_subscribers", [&] { l.max_subscribers = parse_size(at, key, value, 1, 4'096); }},
-      {"subscriber_queue_events",
-       [&] { l.subscriber_queue_events = parse_size(at, key, value, 1, 1'000'000); }},
-      {"max_raw_report_subscribers",
-       [&] { l.max_raw_report_subscribers = parse_size(at, key, value, 0, 4'096); }},
-      {"max_group_keys", [&] { l.max_group_keys = parse_size(at, key, value, 1, 65'536); }},
-  };
-  const auto it = handlers.find(key);
-  if (it != handlers.end()) {
-    it->second();
-    return;
+// Applies one grouping key to `grouping`; false when the key is not one.
+bool apply_grouping_key(const At& at, const toml::node& node, GroupingConfig& grouping) {
+  v1::GroupingSettings change;
+  if (!grouping_change(at, node, change)) return false;
+  try {
+    grouping = apply_grouping(grouping, change, "group_");
+  } catch (const InvalidInput& e) {
+    at.fail_unkeyed(e.what());
   }
-  if (apply_grouping_key(at, key, value, config.grouping)) return;
-  if (!apply_settings_key(at, key, value, defaults)) at.fail(key, "unknown key");
+  return true;
+}
+
+// Applies one key of Limits; false when the key is not one.
+bool apply_limits_key(const At& at, const toml::node& node, Limits& l) {
+  const auto size = [&](std::size_t lo, std::size_t hi) { return read_size(at, node, lo, hi); };
+  const std::map<std::string, std::function<void()>> handlers = {
+      {"max_message_bytes", [&] { l.max_message_bytes = size(4096, 1U << 30U); }},
+      {"max_vertices", [&] { l.max_vertices = size(3, 10'000'000); }},
+      {"max_stroke_samples", [&] { l.max_stroke_samples = size(2, 10'000'000); }},
+      {"max_call_seconds",
+       [&] { l.max_call_seconds = static_cast<std::uint32_t>(size(1, 86'400)); }},
+      {"worker_queue_jobs", [&] { l.worker_queue_jobs = size(1, 65'536); }},
+      {"worker_threads", [&] { l.worker_threads = size(0, 256); }},
+      {"stroke_worker_threads", [&] { l.stroke_worker_threads = size(0, 256); }},
+      {"max_subscribers", [&] { l.max_subscribers = size(1, 4'096); }},
+      {"subscriber_queue_events", [&] { l.subscriber_queue_events = size(1, 1'000'000); }},
+      {"max_raw_report_subscribers", [&] { l.max_raw_report_subscribers = size(0, 4'096); }},
+      {"max_group_keys", [&] { l.max_group_keys = size(1, 65'536); }},
+  };
+  const auto it = handlers.find(at.key());
+  if (it == handlers.end()) return false;
+  it->second();
+  return true;
+}
+
+void apply_global_key(const At& at, const toml::node& node, DaemonConfig& config,
+                      PenSettingsUpdate& defaults) {
+  const std::string& key = at.key();
+  if (key == "listen") {
+    config.listen = read_string(at, node);
+  } else if (key == "tcp") {
+    config.tcp = read_string(at, node);
+  } else if (key == "tcp_allow_non_loopback") {
+    config.tcp_allow_non_loopback = read_bool(at, node);
+  } else if (!apply_limits_key(at, node, config.limits) &&
+             !apply_grouping_key(at, node, config.grouping) &&
+             !apply_settings_key(at, node, defaults)) {
+    if (node.is_table()) {
+      at.fail_unkeyed("unknown section '[" + key + "]' (expected [device.\"vvvv:pppp\"])");
+    }
+    at.fail("unknown key");
+  }
+}
+
+// One [device."vvvv:pppp"] table: its pen settings, and its physical size (both or neither).
+void read_device(const At& at, const toml::node& node, DaemonConfig& config,
+                 const std::string& origin) {
+  const std::string& device = at.key();
+  const toml::table* table = node.as_table();
+  if (table == nullptr) at.fail("expected a section [device.\"vvvv:pppp\"] (one per tablet model)");
+  if (!is_valid_device_key(device)) {
+    at.fail_unkeyed("device key '" + device +
+                    "' is not vvvv:pppp (four lowercase hex digits each)");
+  }
+  PenSettingsUpdate& update = config.device_settings[device];
+  std::pair<double, double> size{0.0, 0.0};
+  std::size_t size_line = 0; // where the size was last set
+  for (const auto& [key, value] : in_file_order(*table)) {
+    const At key_at(origin, *value, key);
+    if (key == "width_mm" || key == "height_mm") {
+      const double mm = read_double(key_at, *value);
+      if (!(mm > 0 && mm <= 2000)) key_at.fail("expected millimetres in (0, 2000]");
+      (key == "width_mm" ? size.first : size.second) = mm;
+      size_line = std::max(size_line, key_at.line());
+    } else if (!apply_settings_key(key_at, *value, update)) {
+      key_at.fail(
+          "unknown key in a [device] section (pen_radius_mm, tolerance_fraction, "
+          "precision_fraction, snap_trigger, hold_ms, hold_radius_mm, width_mm, "
+          "height_mm)");
+    }
+  }
+  if (size_line == 0) return;
+  if (size.first == 0 || size.second == 0) {
+    At(origin, size_line, size.first == 0 ? "width_mm" : "height_mm")
+        .fail("[device.\"" + device + "\"] sets one of width_mm and height_mm: set both");
+  }
+  config.device_sizes[device] = size;
+}
+
+void read_devices(const At& at, const toml::node& node, DaemonConfig& config,
+                  const std::string& origin) {
+  const toml::table* devices = node.as_table();
+  if (devices == nullptr) at.fail("expected sections [device.\"vvvv:pppp\"]");
+  for (const auto& [device, table] : in_file_order(*devices)) {
+    read_device(At(origin, *table, device), *table, config, origin);
+  }
 }
 
 } // namespace
 
 DaemonConfig parse_config(std::string_view text, const std::string& origin) {
+  const toml::table document = config_detail::parse_toml(text, origin);
   DaemonConfig config;
   PenSettingsUpdate defaults;
-  std::string section;        // "" or a device key
-  std::set<std::string> seen; // "section/key"
-  std::size_t line_number = 0;
   std::size_t tcp_line = 0;
-  std::map<std::string, std::pair<double, double>> sizes; // device key -> (width, height) mm
-  std::map<std::string, std::size_t> size_lines;          // where each was last set
-  while (!text.empty()) {
-    ++line_number;
-    const std::size_t newline = text.find('\n');
-    std::string_view line = text.substr(0, newline);
-    text.remove_prefix(newline == std::string_view::npos ? text.size() : newline + 1);
-    const LineContext at(origin, line_number);
-    if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) {
-      line = line.substr(0, hash);
-    }
-    line = trim(line);
-    if (line.empty()) continue;
-    if (line.front() == '[') {
-      if (line.back() != ']') at.fail("", "a section header ends with ']'");
-      const std::string_view inner = trim(line.substr(1, line.size() - 2));
-      if (inner.substr(0, 7) != "device ") {
-        at.fail("", "unknown section '[" + std::string(inner) + "]' (expected [device vvvv:pppp])");
-      }
-      section = std::string(trim(inner.substr(7)));
-      if (section.size() >= 2 && section.front() == '"' && section.back() == '"') {
-        section = section.substr(1, section.size() - 2);
-      }
-      if (section.empty() || !is_valid_device_key(section)) {
-        at.fail("",
-                "device key '" + section + "' is not vvvv:pppp (four lowercase hex digits each)");
-      }
-      if (config.device_settings.count(section) != 0) {
-        at.fail("", "section [device " + section + "] appears twice");
-      }
-      config.device_settings[section] = {};
+  for (const auto& [key, node] : in_file_order(document)) {
+    const At at(origin, *node, key);
+    if (key == "device") {
+      read_devices(at, *node, config, origin);
       continue;
     }
-    const std::size_t eq = line.find('=');
-    if (eq == std::string_view::npos) at.fail("", "expected 'key = value'");
-    const std::string key(trim(line.substr(0, eq)));
-    const std::string_view value = trim(line.substr(eq + 1));
-    if (key.empty()) at.fail("", "expected 'key = value'");
-    if (!seen.insert(section + "/" + key).second) at.fail(key, "set twice");
-    if (section.empty()) {
-      apply_global_key(at, key, value, config, defaults);
-      if (key == "tcp") tcp_line = line_number;
-    } else if (key == "width_mm" || key == "height_mm") {
-      const double mm = parse_double(at, key, value);
-      if (!(mm > 0 && mm <= 2000)) at.fail(key, "expected millimetres in (0, 2000]");
-      auto& size = sizes[section];
-      (key == "width_mm" ? size.first : size.second) = mm;
-      size_lines[section] = line_number;
-    } else if (!apply_settings_key(at, key, value, config.device_settings[section])) {
-      at.fail(key,
-              "unknown key in a [device] section (pen_radius_mm, tolerance_fraction, "
-              "precision_fraction, snap_trigger, hold_ms, hold_radius_mm, width_mm, height_mm)");
-    }
-  }
-  for (const auto& [key, size] : sizes) {
-    if (size.first == 0 || size.second == 0) {
-      LineContext(origin, size_lines[key])
-          .fail(size.first == 0 ? "width_mm" : "height_mm",
-                "[device " + key + "] sets one of width_mm and height_mm: set both");
-    }
-    config.device_sizes[key] = size;
+    apply_global_key(at, *node, config, defaults);
+    if (key == "tcp") tcp_line = at.line();
   }
   config.settings = apply(config.settings, defaults);
   if (!config.tcp.empty()) {
     try {
       validate_tcp_address(config.tcp, config.tcp_allow_non_loopback);
     } catch (const ConfigError& e) {
-      LineContext(origin, tcp_line).fail("tcp", e.what());
+      At(origin, tcp_line, "tcp").fail(e.what());
     }
   }
   return config;

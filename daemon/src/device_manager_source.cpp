@@ -81,7 +81,7 @@ void DeviceManagerSource::on_attach(const drivers::AttachedDevice& device) {
     log(LogLevel::kWarning,
         "tablet " + d.id + " (" + device_key(d.tablet.vendor_id, d.tablet.product_id) + ", " +
             d.tablet.name + ") gives no physical size: its pen radius and tolerance cannot be " +
-            "millimetres; set width_mm and height_mm in [device \"" +
+            "millimetres; set width_mm and height_mm in [device.\"" +
             device_key(d.tablet.vendor_id, d.tablet.product_id) + "\"] of the config file");
   }
   {

@@ -155,7 +155,7 @@ grpc::Status run_search(DaemonState& state, grpc::ServerContext* context,
                         bool radius_search, Compute compute) {
   Response last;
   std::uint64_t queued_us = 0;
-  const grpc::Status status = run_on_pool(
+  grpc::Status status = run_on_pool(
       state.pool, context, state.limits,
       [&](const StopCondition& stop) {
         const auto started = Clock::now();

@@ -150,8 +150,7 @@ grpc::Status LiveServiceImpl::SubmitStroke(grpc::ServerContext* context,
   }
   StrokeAnalysis analysis;
   v1::Timings timings;
-  const grpc::Status status =
-      analyze_stroke(state_, context, stroke, settings, &analysis, &timings);
+  grpc::Status status = analyze_stroke(state_, context, stroke, settings, &analysis, &timings);
   if (!status.ok()) return status;
   if (request->publish()) publish_stroke(state_.hub, "app", stroke, &analysis, "", timings);
   response->set_stroke_id(stroke.id);
@@ -175,7 +174,7 @@ grpc::Status LiveServiceImpl::submit_grouped(grpc::ServerContext* context,
   std::lock_guard lock(group->mutex);
   GroupedStrokeAnalysis result;
   v1::Timings timings;
-  const grpc::Status status =
+  grpc::Status status =
       analyze_grouped(state_, context, group->history, stroke, settings, &result, &timings);
   if (!status.ok()) return status;
   const GroupAnswer answer = group->history.take(result, stroke.id);

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <functional>
 #include <future>
 #include <optional>
 #include <stdexcept>
@@ -34,13 +35,13 @@ namespace {
 // it waits, its destructor signals it and joins, so a failure stops the server cleanly (socket
 // removed) instead of destroying a joinable thread, which would abort the process.
 struct SignalWaiter {
-  template <class F>
-  explicit SignalWaiter(F&& body) : thread(std::forward<F>(body)) {}
+  explicit SignalWaiter(std::function<void()> body) : thread(std::move(body)) {}
   SignalWaiter(const SignalWaiter&) = delete;
   SignalWaiter& operator=(const SignalWaiter&) = delete;
   ~SignalWaiter() {
     if (!thread.joinable()) return;
-    pthread_kill(thread.native_handle(), SIGTERM);
+    // It sigwait()s for SIGTERM: the signal wakes it, and it returns.
+    pthread_kill(thread.native_handle(), SIGTERM); // NOLINT(bugprone-bad-signal-to-kill-thread)
     thread.join();
   }
   std::thread thread;

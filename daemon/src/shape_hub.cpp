@@ -105,12 +105,13 @@ std::unique_ptr<Subscription> ShapeHub::subscribe(EventFilter filter, std::size_
                                                   Refusal* why) {
   std::unique_lock lock(mutex_);
   Refusal refusal = Refusal::kNone;
-  if (closed_)
+  if (closed_) {
     refusal = Refusal::kClosed;
-  else if (subscribers_.size() >= max_subscribers_)
+  } else if (subscribers_.size() >= max_subscribers_) {
     refusal = Refusal::kFull;
-  else if (filter.raw_reports && raw_subscribers_.load() >= max_raw_subscribers_)
+  } else if (filter.raw_reports && raw_subscribers_.load() >= max_raw_subscribers_) {
     refusal = Refusal::kRawFull;
+  }
   if (why != nullptr) *why = refusal;
   if (refusal != Refusal::kNone) return nullptr;
   const bool raw = filter.raw_reports;

@@ -19,7 +19,7 @@ DeviceManager::DeviceManager(std::unique_ptr<DeviceBackend> backend, DeviceCallb
                              DeviceManagerOptions options, DeviceReportCallback on_report)
     : backend_(std::move(backend)),
       callbacks_(std::move(callbacks)),
-      options_(options),
+      options_(std::move(options)),
       on_report_(std::move(on_report)) {}
 
 DeviceManager::~DeviceManager() { stop(); }

@@ -151,7 +151,7 @@ void set_buttons(PenLayout& l, const Candidate& c) {
       }
     }
   }
-  if (barrels.size() > 0) l.barrel1 = field_from(*barrels[0]);
+  if (!barrels.empty()) l.barrel1 = field_from(*barrels[0]);
   if (barrels.size() > 1) l.barrel2 = field_from(*barrels[1]);
   if (barrels.size() > 2) l.barrel3 = field_from(*barrels[2]);
 }

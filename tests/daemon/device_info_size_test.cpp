@@ -1,6 +1,6 @@
 // DeviceInfo says whether a tablet's physical size is known and where it came from: a tablet
 // that gives none is reported with physical_size_known false (and resolution 0), unless the
-// config file's [device "vvvv:pppp"] width_mm/height_mm gives one.
+// config file's [device."vvvv:pppp"] width_mm/height_mm gives one.
 #include <grpcpp/grpcpp.h>
 #include <gtest/gtest.h>
 #include <unistd.h>

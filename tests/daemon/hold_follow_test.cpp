@@ -185,14 +185,15 @@ TEST(HoldConfig, KeysAndDefaults) {
   EXPECT_EQ(defaults.settings.hold_ms, 500);
   EXPECT_EQ(defaults.settings.hold_radius_mm, 1.0);
   const d::DaemonConfig c = d::parse_config(
-      "snap_trigger = hold\nhold_ms = 800\nhold_radius_mm = 0.4\n[device 056a:0010]\n"
-      "snap_trigger = pen_up\n",
+      "snap_trigger = \"hold\"\nhold_ms = 800\nhold_radius_mm = 0.4\n[device.\"056a:0010\"]\n"
+      "snap_trigger = \"pen_up\"\n",
       "t.conf");
   EXPECT_EQ(c.settings.snap_trigger, d::SnapTrigger::kHold);
   EXPECT_EQ(c.settings.hold_ms, 800);
   EXPECT_EQ(c.settings.hold_radius_mm, 0.4);
   EXPECT_EQ(c.device_settings.at("056a:0010").snap_trigger, d::SnapTrigger::kPenUp);
-  for (const std::string bad : {"snap_trigger = sometimes", "hold_ms = 20", "hold_radius_mm = 0"}) {
+  for (const std::string bad :
+       {"snap_trigger = \"sometimes\"", "hold_ms = 20", "hold_radius_mm = 0"}) {
     SCOPED_TRACE(bad);
     try {
       (void)d::parse_config(bad + "\n", "t.conf");

@@ -198,10 +198,10 @@ TEST(DaemonIntent, SnapWritingConfigRoundTrip) {
   EXPECT_FALSE(d::parse_config("", "a.conf").settings.snap_writing) << "off by default";
   EXPECT_TRUE(d::parse_config("snap_writing = true\n", "a.conf").settings.snap_writing);
   const d::DaemonConfig device =
-      d::parse_config("[device 28bd:0905]\nsnap_writing = true\n", "a.conf");
+      d::parse_config("[device.\"28bd:0905\"]\nsnap_writing = true\n", "a.conf");
   EXPECT_EQ(device.device_settings.at("28bd:0905").snap_writing, true);
   try {
-    (void)d::parse_config("snap_writing = sometimes\n", "a.conf");
+    (void)d::parse_config("snap_writing = \"sometimes\"\n", "a.conf");
     ADD_FAILURE() << "a bad value is refused";
   } catch (const d::ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("snap_writing"), std::string::npos) << e.what();

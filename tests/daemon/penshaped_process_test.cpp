@@ -145,7 +145,7 @@ TEST(Penshaped, ReadsItsConfigFile) {
   Sandbox box;
   const std::string notify = box.listen_for_notifications();
   std::ofstream(box.path("penshaped.conf"))
-      << "listen = unix:" << box.path("custom.sock") << "\npen_radius_mm = 0.7\n";
+      << "listen = \"unix:" << box.path("custom.sock") << "\"\npen_radius_mm = 0.7\n";
   const pid_t pid = box.spawn({"--config", box.path("penshaped.conf")},
                               {"XDG_RUNTIME_DIR=" + box.dir(), "NOTIFY_SOCKET=" + notify});
   ASSERT_EQ(box.next_notification(30'000).rfind("READY=1", 0), 0U) << box.stderr_text();
@@ -214,7 +214,7 @@ TEST(Penshaped, ReplaysARecordingAsIfLive) {
 
 TEST(Penshaped, BadConfigAndCommandLineExitWithTwo) {
   Sandbox box;
-  std::ofstream(box.path("bad.conf")) << "# ok\nworker_threads = many\n";
+  std::ofstream(box.path("bad.conf")) << "# ok\nworker_threads = \"many\"\n";
   pid_t pid = box.spawn({"--config", box.path("bad.conf")}, {"XDG_RUNTIME_DIR=" + box.dir()});
   EXPECT_EQ(exit_code(pid), 2);
   EXPECT_NE(box.stderr_text().find("bad.conf:2: worker_threads: expected an integer in 0..256, "

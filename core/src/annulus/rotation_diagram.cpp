@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 
@@ -25,7 +26,7 @@ inline PointD perp(PointD d) { return {d.y, -d.x}; } // R(-theta) d = cos * d + 
 // A boundary edge of the inner (hole) or outer linearized offset, template frame.
 struct CurveEdge {
   PointD a, v, n;
-  double H;
+  double H = 0.0;
 };
 
 // Distance from p to the segment [a, a + v]: the shared kernel's double path
@@ -95,6 +96,33 @@ struct RotationGeometry {
   }
   [[nodiscard]] bool is_outer(std::size_t x) const { return x < curve[0].size(); }
 
+  // W(theta) = k0 + kc cos + ks sin over an angle range: its value at the middle and the half
+  // width of the range.
+  struct Curve {
+    PointD k0, kc, ks, wm;
+    double half = 0.0;
+  };
+
+  // The angles of `V` where W lies in the template offset by s (n . W <= h + s for every edge).
+  // Per constraint: n . W moves at most (|n.kc| + |n.ks|) * half over V; constraints that hold
+  // (or fail) on all of V need no trigonometry.
+  [[nodiscard]] IntervalSet within(const Curve& w, double s, IntervalSet V) const {
+    for (const Edge& e : edges) {
+      const double A = dot(e.n, w.kc);
+      const double B = dot(e.n, w.ks);
+      const double C = e.h + s - dot(e.n, w.k0);
+      const double v = dot(e.n, w.wm) - e.h - s; // <= 0 inside
+      const double r = (std::abs(A) + std::abs(B)) * w.half;
+      if (v + r < 0.0) continue;
+      if (v - r > 0.0) return {};
+      IntervalSet next;
+      for (const Interval& iv : V) trig_leq(A, B, C, iv.lo, iv.hi, next);
+      V.swap(next);
+      if (V.empty()) return V;
+    }
+    return V;
+  }
+
   // Angles in `V` where W(theta) = k0 + kc cos + ks sin lies in the annulus.
   [[nodiscard]] IntervalSet member(PointD k0, PointD kc, PointD ks, const IntervalSet& V) const {
     if (V.empty()) return {};
@@ -103,44 +131,18 @@ struct RotationGeometry {
     const double mid = 0.5 * (lo + hi);
     const double reach = (norm(kc) + norm(ks)) * 0.5 * (hi - lo);
     const PointD wm = k0 + (kc * std::cos(mid) + ks * std::sin(mid));
-    double f = -INFINITY;
+    double f = -std::numeric_limits<double>::infinity();
     for (const Edge& e : edges) f = std::max(f, dot(e.n, wm) - e.h);
     // f is 1-Lipschitz and W moves at most `reach` over V.
     if (f > delta + reach) return {};
     if (f < -delta - reach && has_hole) return {};
     if (f <= delta - reach && (f >= -delta + reach || !has_hole)) return V;
-    // Per constraint: n . W moves at most (|n.kc| + |n.ks|) * half over V; constraints that hold
-    // (or fail) on all of V need no trigonometry.
     const double half = 0.5 * (hi - lo);
-    IntervalSet out = V;
-    for (const Edge& e : edges) {
-      const double A = dot(e.n, kc);
-      const double B = dot(e.n, ks);
-      const double C = e.h + delta - dot(e.n, k0);
-      const double v = dot(e.n, wm) - e.h - delta; // <= 0 inside
-      const double r = (std::abs(A) + std::abs(B)) * half;
-      if (v + r < 0.0) continue;
-      if (v - r > 0.0) return {};
-      IntervalSet next;
-      for (const Interval& iv : out) trig_leq(A, B, C, iv.lo, iv.hi, next);
-      out.swap(next);
-      if (out.empty()) return out;
-    }
-    if (!has_hole) return out;
-    IntervalSet hole = V;
-    for (const Edge& e : edges) {
-      const double A = dot(e.n, kc);
-      const double B = dot(e.n, ks);
-      const double C = e.h - delta - dot(e.n, k0);
-      const double v = dot(e.n, wm) - e.h + delta;
-      const double r = (std::abs(A) + std::abs(B)) * half;
-      if (v + r < 0.0) continue;
-      if (v - r > 0.0) return out; // the hole misses all of V
-      IntervalSet next;
-      for (const Interval& iv : hole) trig_leq(A, B, C, iv.lo, iv.hi, next);
-      hole.swap(next);
-      if (hole.empty()) return out;
-    }
+    const Curve w{k0, kc, ks, wm, half};
+    IntervalSet out = within(w, delta, V);
+    if (out.empty() || !has_hole) return out;
+    IntervalSet hole = within(w, -delta, V);
+    if (hole.empty()) return out; // the hole misses all of V
     // Hole ends clamped by V are not boundaries of the open hole: push them just past.
     for (Interval& h : hole) {
       for (const Interval& v : V) {
@@ -221,43 +223,52 @@ struct Search {
   std::array<std::size_t, 4> key{};
 
   // Returns true to stop the search (decision found).
-  bool run(const Family& f) {
+  bool run(const Family& f) { return decide ? run_decision(f) : run_count(f); }
+
+  // Decision mode: narrows the family's angles by every point in turn (the last one to empty
+  // them moves to the front of `order`); a survivor is the witness, checked exactly if `verify`.
+  bool run_decision(const Family& f) {
     const auto& pts = wp.points;
     const PointD qi = pts[f.i];
-    if (decide) {
-      IntervalSet S = f.V;
-      for (std::size_t t = 0; t < order.size(); ++t) {
-        const std::size_t k = order[t];
-        if (k == f.i || k == f.j) continue;
-        const PointD d = pts[k] - qi;
-        if (norm(d) > g.diameter + tol) {
-          S.clear();
-        } else {
-          S = g.member(f.Z0, f.Zc + d, f.Zs + perp(d), S);
-        }
-        if (S.empty()) {
-          std::swap(order[t], order[0]);
-          return false;
-        }
+    IntervalSet S = f.V;
+    for (std::size_t t = 0; t < order.size(); ++t) {
+      const std::size_t k = order[t];
+      if (k == f.i || k == f.j) continue;
+      const PointD d = pts[k] - qi;
+      if (norm(d) > g.diameter + tol) {
+        S.clear();
+      } else {
+        S = g.member(f.Z0, f.Zc + d, f.Zs + perp(d), S);
       }
-      std::size_t bi = 0;
-      for (std::size_t x = 1; x < S.size(); ++x) {
-        if (S[x].hi - S[x].lo > S[bi].hi - S[bi].lo) bi = x;
+      if (S.empty()) {
+        std::swap(order[t], order[0]);
+        return false;
       }
-      const Placement pl = placement_at(f, qi, 0.5 * (S[bi].lo + S[bi].hi));
-      if (!verify) {
-        found = true;
-        return true;
-      }
-      if (covered_exactly(p, OuterOffset::kLinearized, delta_check, pl, original).size() ==
-          original.size()) {
-        best_placement = pl;
-        found = true;
-        return true;
-      }
-      undecided = true;
-      return false;
     }
+    std::size_t bi = 0;
+    for (std::size_t x = 1; x < S.size(); ++x) {
+      if (S[x].hi - S[x].lo > S[bi].hi - S[bi].lo) bi = x;
+    }
+    const Placement pl = placement_at(f, qi, 0.5 * (S[bi].lo + S[bi].hi));
+    if (!verify) {
+      found = true;
+      return true;
+    }
+    if (covered_exactly(p, OuterOffset::kLinearized, delta_check, pl, original).size() ==
+        original.size()) {
+      best_placement = pl;
+      found = true;
+      return true;
+    }
+    undecided = true;
+    return false;
+  }
+
+  // Counting mode: sweeps the family's angles, each point's weight entering and leaving with
+  // its membership intervals, and keeps the best count seen.
+  bool run_count(const Family& f) {
+    const auto& pts = wp.points;
+    const PointD qi = pts[f.i];
     events.clear();
     const long base = static_cast<long>(wp.weight[f.i]) +
                       (f.j == SIZE_MAX ? 0L : static_cast<long>(wp.weight[f.j]));
@@ -276,82 +287,111 @@ struct Search {
     });
     long cur = base;
     if (static_cast<std::size_t>(cur) > best) {
-      best = static_cast<std::size_t>(cur);
-      best_placement = placement_at(f, qi, 0.5 * (f.V.front().lo + f.V.front().hi));
-      best_key = key;
-      found = true;
+      record_best(cur, placement_at(f, qi, 0.5 * (f.V.front().lo + f.V.front().hi)));
     }
     for (std::size_t e = 0; e < events.size(); ++e) {
       cur += events[e].w;
       if (static_cast<std::size_t>(cur) > best) {
-        best = static_cast<std::size_t>(cur);
         const double next = e + 1 < events.size() ? events[e + 1].pos : events[e].pos;
-        best_placement = placement_at(f, qi, 0.5 * (events[e].pos + next));
-        best_key = key;
-        found = true;
+        record_best(cur, placement_at(f, qi, 0.5 * (events[e].pos + next)));
       }
     }
     return false;
   }
 
+  void record_best(long count, const Placement& placement) {
+    best = static_cast<std::size_t>(count);
+    best_placement = placement;
+    best_key = key;
+    found = true;
+  }
+
+  // Visits every family of the skeleton (or only the `only` one) until run() stops the search.
   void enumerate() {
-    const auto& pts = wp.points;
-    const std::size_t n = pts.size();
+    if (enumerate_corners()) return;
+    enumerate_edge_pairs();
+  }
+
+  // A decision's outer contacts are hull points only (an inner one may be any point).
+  [[nodiscard]] bool contact_allowed(bool outer, std::size_t point) const {
+    return !(decide && outer && !(*hull)[point]);
+  }
+
+  // One point at a corner of an offset boundary; true when the search stopped.
+  bool enumerate_corners() {
     const IntervalSet full{{-kPi, kPi}};
-    // One point at a corner of an offset boundary.
-    for (std::size_t i = 0; i < n; ++i) {
-      for (int c = 0; c < 2; ++c) {
-        if (c == 0 && decide && !(*hull)[i]) continue;
-        for (const PointD& z : g.corners[c]) {
-          key = {i, SIZE_MAX, static_cast<std::size_t>(c),
-                 static_cast<std::size_t>(&z - &g.corners[c][0])};
+    for (std::size_t i = 0; i < wp.points.size(); ++i) {
+      for (std::size_t c = 0; c < 2; ++c) {
+        if (!contact_allowed(c == 0, i)) continue;
+        for (std::size_t z = 0; z < g.corners[c].size(); ++z) {
+          key = {i, SIZE_MAX, c, z};
           if (only && *only != key) continue;
-          if (run(Family{i, SIZE_MAX, z, {0, 0}, {0, 0}, full})) return;
+          if (run(Family{i, SIZE_MAX, g.corners[c][z], {0, 0}, {0, 0}, full})) return true;
         }
       }
     }
-    // Two points on two boundary edges.
-    for (std::size_t i = 0; i < n; ++i) {
-      for (std::size_t j = i + 1; j < n; ++j) {
-        const PointD d = pts[j] - pts[i];
-        const double rho = norm(d);
-        if (rho > g.diameter + tol) continue;
-        const PointD dp = perp(d);
-        for (std::size_t x = 0; x < g.total; ++x) {
-          if (decide && g.is_outer(x) && !(*hull)[i]) continue;
-          const CurveEdge& ea = g.at(x);
-          for (std::size_t y = 0; y < g.total; ++y) {
-            if (decide && g.is_outer(y) && !(*hull)[j]) continue;
-            if (rho < g.dmin[x * g.total + y] - tol || rho > g.dmax[x * g.total + y] + tol) {
-              continue;
-            }
-            const CurveEdge& eb = g.at(y);
-            const double nbea = dot(eb.n, ea.v);
-            if (std::abs(nbea) <= 1e-12 * norm(ea.v)) continue; // parallel contact edges
-            const double a0 = (eb.H - dot(eb.n, ea.a)) / nbea;
-            const double ac = -dot(eb.n, d) / nbea;
-            const double as = -dot(eb.n, dp) / nbea;
-            IntervalSet V = full;
-            restrict_trig(V, -ac, -as, a0);     // sigma >= 0
-            restrict_trig(V, ac, as, 1.0 - a0); // sigma <= 1
-            if (V.empty()) continue;
-            const PointD Z0 = ea.a + ea.v * a0;
-            const PointD Zc = ea.v * ac;
-            const PointD Zs = ea.v * as;
-            const double L2 = dot(eb.v, eb.v);
-            const double t0 = dot(Z0 - eb.a, eb.v) / L2;
-            const double tc = dot(Zc + d, eb.v) / L2;
-            const double ts = dot(Zs + dp, eb.v) / L2;
-            restrict_trig(V, -tc, -ts, t0);     // j's position on edge b >= 0
-            restrict_trig(V, tc, ts, 1.0 - t0); // <= 1
-            if (V.empty()) continue;
-            key = {i, j, x, y};
-            if (only && *only != key) continue;
-            if (run(Family{i, j, Z0, Zc, Zs, V})) return;
-          }
-        }
+    return false;
+  }
+
+  // Two points on two boundary edges; true when the search stopped.
+  bool enumerate_edge_pairs() {
+    const auto& pts = wp.points;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      for (std::size_t j = i + 1; j < pts.size(); ++j) {
+        if (norm(pts[j] - pts[i]) > g.diameter + tol) continue;
+        if (enumerate_edge_pairs_of(i, j)) return true;
       }
     }
+    return false;
+  }
+
+  // Points i and j on edges x and y of the offset boundaries, for every (x, y) their distance
+  // allows; true when the search stopped.
+  bool enumerate_edge_pairs_of(std::size_t i, std::size_t j) {
+    const double rho = norm(wp.points[j] - wp.points[i]);
+    for (std::size_t x = 0; x < g.total; ++x) {
+      if (!contact_allowed(g.is_outer(x), i)) continue;
+      for (std::size_t y = 0; y < g.total; ++y) {
+        if (!contact_allowed(g.is_outer(y), j)) continue;
+        if (rho < g.dmin[x * g.total + y] - tol || rho > g.dmax[x * g.total + y] + tol) continue;
+        const std::optional<Family> f = edge_pair_family(i, j, x, y);
+        if (!f) continue;
+        key = {i, j, x, y};
+        if (only && *only != key) continue;
+        if (run(*f)) return true;
+      }
+    }
+    return false;
+  }
+
+  // The family where point i slides on edge x and point j on edge y, with the angles at which
+  // both stay on their edges; none when there are no such angles or the edges are parallel.
+  [[nodiscard]] std::optional<Family> edge_pair_family(std::size_t i, std::size_t j, std::size_t x,
+                                                       std::size_t y) const {
+    const PointD d = wp.points[j] - wp.points[i];
+    const PointD dp = perp(d);
+    const CurveEdge& ea = g.at(x);
+    const CurveEdge& eb = g.at(y);
+    const double nbea = dot(eb.n, ea.v);
+    if (std::abs(nbea) <= 1e-12 * norm(ea.v)) return std::nullopt; // parallel contact edges
+    const double a0 = (eb.H - dot(eb.n, ea.a)) / nbea;
+    const double ac = -dot(eb.n, d) / nbea;
+    const double as = -dot(eb.n, dp) / nbea;
+    IntervalSet V{{-kPi, kPi}};
+    restrict_trig(V, -ac, -as, a0);     // sigma >= 0
+    restrict_trig(V, ac, as, 1.0 - a0); // sigma <= 1
+    if (V.empty()) return std::nullopt;
+    const PointD Z0 = ea.a + ea.v * a0;
+    const PointD Zc = ea.v * ac;
+    const PointD Zs = ea.v * as;
+    const double L2 = dot(eb.v, eb.v);
+    const double t0 = dot(Z0 - eb.a, eb.v) / L2;
+    const double tc = dot(Zc + d, eb.v) / L2;
+    const double ts = dot(Zs + dp, eb.v) / L2;
+    restrict_trig(V, -tc, -ts, t0);     // j's position on edge b >= 0
+    restrict_trig(V, tc, ts, 1.0 - t0); // <= 1
+    if (V.empty()) return std::nullopt;
+    return Family{i, j, Z0, Zc, Zs, std::move(V)};
   }
 };
 
@@ -390,19 +430,24 @@ DecisionResult decide_rotation_core(const TemplatePolygon& p, double delta,
   return r;
 }
 
-// Clarkson-style iteration: decide on a small subset first. A robust NO for the subset is a NO
-// for all points; a subset witness that misses points brings the worst missed points in.
-DecisionResult decide_rotation_iterative(const TemplatePolygon& p, double delta,
-                                         const std::vector<PointD>& points, const Placement* hint) {
-  const std::size_t n = points.size();
-  std::vector<char> taken(n, 0);
-  std::vector<PointD> subset;
-  auto take = [&](std::size_t i) {
+// The subset of a Clarkson iteration: points taken once each, in the order taken.
+struct Subset {
+  explicit Subset(const std::vector<PointD>& all) : points(all), taken(all.size(), 0) {}
+  void take(std::size_t i) {
     if (!taken[i]) {
       taken[i] = 1;
-      subset.push_back(points[i]);
+      chosen.push_back(points[i]);
     }
-  };
+  }
+  const std::vector<PointD>& points;
+  std::vector<char> taken;
+  std::vector<PointD> chosen;
+};
+
+// The first subset: the extreme point in each of 8 directions, and 8 points spread over the input.
+void seed(Subset& subset) {
+  const std::vector<PointD>& points = subset.points;
+  const std::size_t n = points.size();
   for (int k = 0; k < 8; ++k) {
     const double a = kPi * k / 4.0;
     const PointD dir{std::cos(a), std::sin(a)};
@@ -410,41 +455,65 @@ DecisionResult decide_rotation_iterative(const TemplatePolygon& p, double delta,
     for (std::size_t i = 1; i < n; ++i) {
       if (dot(points[i], dir) > dot(points[best], dir)) best = i;
     }
-    take(best);
-    take(static_cast<std::size_t>(k) * n / 8);
+    subset.take(best);
+    subset.take(static_cast<std::size_t>(k) * n / 8);
   }
+}
+
+// Up to 8 of the points `placement` misses (`covered` lists the others, ascending), the worst
+// first.
+std::vector<std::size_t> worst_missed(const TemplatePolygon& p, const std::vector<PointD>& points,
+                                      const Placement& placement,
+                                      const std::vector<std::size_t>& covered) {
+  std::vector<std::pair<double, std::size_t>> missed;
+  std::size_t c = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (c < covered.size() && covered[c] == i) {
+      ++c;
+      continue;
+    }
+    missed.push_back({-width_at(p, OuterOffset::kLinearized, placement, {points[i]}), i});
+  }
+  const std::size_t take_n = std::min<std::size_t>(8, missed.size());
+  std::partial_sort(missed.begin(), missed.begin() + static_cast<std::ptrdiff_t>(take_n),
+                    missed.end());
+  std::vector<std::size_t> worst(take_n);
+  for (std::size_t k = 0; k < take_n; ++k) worst[k] = missed[k].second;
+  return worst;
+}
+
+// The decision on the subset's points alone.
+DecisionResult decide_subset(const TemplatePolygon& p, double delta,
+                             const std::vector<PointD>& subset,
+                             const std::optional<Placement>& hint) {
+  const WeightedPoints wp = merge_duplicates(subset);
+  const std::vector<bool> hull = hull_boundary(wp.points);
+  std::vector<std::size_t> order(wp.points.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  return decide_rotation_core(p, delta, subset, wp, hull, order, hint ? &*hint : nullptr);
+}
+
+// Clarkson-style iteration: decide on a small subset first. A robust NO for the subset is a NO
+// for all points; a subset witness that misses points brings the worst missed points in.
+DecisionResult decide_rotation_iterative(const TemplatePolygon& p, double delta,
+                                         const std::vector<PointD>& points, const Placement* hint) {
+  const std::size_t n = points.size();
+  Subset subset(points);
+  seed(subset);
   std::optional<Placement> last;
   if (hint) last = *hint;
   for (;;) {
-    const WeightedPoints wp = merge_duplicates(subset);
-    const std::vector<bool> hull = hull_boundary(wp.points);
-    std::vector<std::size_t> order(wp.points.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    DecisionResult r =
-        decide_rotation_core(p, delta, subset, wp, hull, order, last ? &*last : nullptr);
+    DecisionResult r = decide_subset(p, delta, subset.chosen, last);
     if (r.answer == Answer::kNo) return r;
-    if (r.answer == Answer::kUndecided && subset.size() == n) return r;
-    if (r.answer == Answer::kYes) {
-      const auto covered = covered_exactly(p, OuterOffset::kLinearized, delta, r.placement, points);
-      if (covered.size() == n) return r;
-      last = r.placement;
-      // The worst missed points join the subset.
-      std::vector<std::pair<double, std::size_t>> missed;
-      std::size_t c = 0;
-      for (std::size_t i = 0; i < n; ++i) {
-        if (c < covered.size() && covered[c] == i) {
-          ++c;
-          continue;
-        }
-        missed.push_back({-width_at(p, OuterOffset::kLinearized, r.placement, {points[i]}), i});
-      }
-      const std::size_t take_n = std::min<std::size_t>(8, missed.size());
-      std::partial_sort(missed.begin(), missed.begin() + static_cast<std::ptrdiff_t>(take_n),
-                        missed.end());
-      for (std::size_t k = 0; k < take_n; ++k) take(missed[k].second);
-    } else {
-      for (std::size_t i = 0; i < n; ++i) take(i); // undecided on the subset: use everything
+    if (r.answer == Answer::kUndecided) {
+      if (subset.chosen.size() == n) return r;
+      for (std::size_t i = 0; i < n; ++i) subset.take(i); // undecided on the subset: use all
+      continue;
     }
+    const auto covered = covered_exactly(p, OuterOffset::kLinearized, delta, r.placement, points);
+    if (covered.size() == n) return r;
+    last = r.placement;
+    for (const std::size_t i : worst_missed(p, points, r.placement, covered)) subset.take(i);
   }
 }
 

@@ -1,14 +1,15 @@
 #pragma once
-// penshaped's configuration: a small "key = value" file with optional per-device sections.
+// penshaped's configuration: a TOML file (read with toml++) with optional per-device tables.
 //
-//   # comments start with '#'; blank lines are ignored; keys are unique per section
-//   listen = unix:/run/user/1000/penshape.sock   # gRPC address (default: $XDG_RUNTIME_DIR/...)
-//   tcp = 127.0.0.1:7433             # also listen on TCP (default: off)
+//   # comments start with '#'; keys are unique per table
+//   listen = "unix:/run/user/1000/penshape.sock"  # gRPC address (default: $XDG_RUNTIME_DIR/...)
+//   tcp = "127.0.0.1:7433"           # also listen on TCP (default: off)
 //   tcp_allow_non_loopback = false   # must be true for a tcp host other than loopback
 //   max_message_bytes = 16777216     # and every other key of Limits (limits.hpp), integers
 //   pen_radius_mm = 1.0              # default pen settings (pen_settings.hpp for the ranges)
 //   tolerance_fraction = 0.5
 //   precision_fraction = 0.125
+//   snap_trigger = "both"            # pen_up, hold or both
 //   grouping = true                  # group each tablet's recent strokes into one shape
 //   group_max_strokes = 4            #  at most this many strokes in a group, 1..8
 //   group_max_pause_s = 2.0          #  pen-up pause a group may span, seconds in [0, 60]
@@ -16,13 +17,15 @@
 //   tidy_right_angles = true         #  tidy_circle, tidy_right_angles, tidy_equal_sides,
 //                                    #  tidy_axis, tidy_parallel, tidy_connection
 //
-//   [device 056a:0010]               # settings for one tablet model (vendor:product, hex;
-//   pen_radius_mm = 0.8              #  [device "056a:0010"] with quotes is the same)
+//   [device."056a:0010"]             # settings for one tablet model (vendor:product, hex)
+//   pen_radius_mm = 0.8
 //   width_mm = 152.0                 # its active area, for a tablet that does not tell its
 //   height_mm = 95.0                 #  size (both or neither; used only then)
 //
-// Every error names the file, the line and the key; unknown keys are errors (typos must not pass
-// silently). With no file the defaults apply.
+// Numbers may be written as integers or decimals. Every error names the file, the line and the
+// key; unknown keys are errors (typos must not pass silently). A file in the former format
+// (`listen = unix:...` unquoted, `[device 056a:0010]`) is refused with, for each such line, what
+// to write instead. With no file the defaults apply.
 #include <map>
 #include <optional>
 #include <stdexcept>

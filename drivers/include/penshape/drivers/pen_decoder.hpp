@@ -1,7 +1,9 @@
 #pragma once
 // Turns raw input reports (bytes exactly as hidraw delivers them) into PenSamples, using pen
 // layouts from the descriptor or a vendor protocol. Allocation-free and O(report length).
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -35,8 +37,14 @@ class PenDecoder {
  private:
   struct Scale {
     double x = 1.0, y = 1.0, pressure = 1.0;
+    // v * f + 0.5 truncated toward zero, as recordings have always decoded: half up for the
+    // in-range values (>= 0), toward zero for the negative ones a junk frame can give. Clamped
+    // into int64's range first, so the cast is always defined (it was undefined beyond).
     static std::int64_t rescale(std::int64_t v, double f) {
-      return f == 1.0 ? v : static_cast<std::int64_t>(static_cast<double>(v) * f + 0.5);
+      if (f == 1.0) return v;
+      constexpr double kLimit = 9223372036854774784.0; // the largest double below 2^63
+      return static_cast<std::int64_t>(
+          std::clamp(std::trunc(static_cast<double>(v) * f + 0.5), -kLimit, kLimit));
     }
   };
   PenSample read_sample(std::span<const std::uint8_t> report, std::size_t layout,
