@@ -21,17 +21,6 @@ struct Found {
   Contact pair;
 };
 
-// Lexicographic order of points: the same vertex first, then doubles (rounding to nearest is
-// monotone, so distinct doubles decide) and the exact values on a tie.
-int compare_points(const FilteredPoint& p, const FilteredPoint& q) {
-  if (p.exact == q.exact) return 0; // one vertex seen from its two edges: the common case
-  if (p.x != q.x) return p.x < q.x ? -1 : 1;
-  if (p.exact->x != q.exact->x) return p.exact->x < q.exact->x ? -1 : 1;
-  if (p.y != q.y) return p.y < q.y ? -1 : 1;
-  if (p.exact->y != q.exact->y) return p.exact->y < q.exact->y ? -1 : 1;
-  return 0;
-}
-
 struct Oriented {
   FilteredPoint left; // the lexicographically smaller endpoint
   FilteredPoint right;
@@ -49,7 +38,7 @@ class Sweep {
       : adjacent_(adjacent), status_(Below{this}) {
     oriented_.reserve(segments.size());
     for (const SweepSegment& s : segments) {
-      const bool forward = compare_points(s.a, s.b) < 0;
+      const bool forward = compare_lex(s.a, s.b) < 0;
       oriented_.push_back(forward ? Oriented{s.a, s.b} : Oriented{s.b, s.a});
     }
     where_.resize(segments.size());
@@ -104,8 +93,8 @@ class Sweep {
   static std::optional<std::array<FilteredPoint, 3>> shared_endpoint(const Oriented& s,
                                                                      const Oriented& t) {
     for (const auto& [c, a] : {std::pair{s.left, s.right}, std::pair{s.right, s.left}}) {
-      if (compare_points(c, t.left) == 0) return std::array{c, a, t.right};
-      if (compare_points(c, t.right) == 0) return std::array{c, a, t.left};
+      if (compare_lex(c, t.left) == 0) return std::array{c, a, t.right};
+      if (compare_lex(c, t.right) == 0) return std::array{c, a, t.left};
     }
     return std::nullopt;
   }
@@ -115,8 +104,8 @@ class Sweep {
   int side(std::size_t t, std::size_t s) const {
     const Oriented& ts = oriented_[t];
     const Oriented& ss = oriented_[s];
-    const int o = compare_points(ts.left, ss.left) == 0 ? orientation(ss.left, ts.right, ss.right)
-                                                        : orientation(ts.left, ts.right, ss.left);
+    const int o = compare_lex(ts.left, ss.left) == 0 ? orientation(ss.left, ts.right, ss.right)
+                                                     : orientation(ts.left, ts.right, ss.left);
     if (o == 0) throw Found{{std::min(s, t), std::max(s, t)}};
     return o;
   }
@@ -144,12 +133,12 @@ std::vector<Event> events_of(const std::vector<SweepSegment>& segments) {
   std::vector<Event> events;
   events.reserve(2 * segments.size());
   for (std::size_t i = 0; i < segments.size(); ++i) {
-    const bool forward = compare_points(segments[i].a, segments[i].b) < 0;
+    const bool forward = compare_lex(segments[i].a, segments[i].b) < 0;
     events.push_back({segments[i].a, i, forward});
     events.push_back({segments[i].b, i, !forward});
   }
   std::sort(events.begin(), events.end(),
-            [](const Event& e, const Event& f) { return compare_points(e.at, f.at) < 0; });
+            [](const Event& e, const Event& f) { return compare_lex(e.at, f.at) < 0; });
   return events;
 }
 
@@ -166,7 +155,7 @@ std::optional<Contact> find_forbidden_contact(const std::vector<SweepSegment>& s
     while (begin < events.size()) {
       if (cancel && ++groups % 256 == 0 && cancel()) throw Cancelled();
       std::size_t end = begin + 1;
-      while (end < events.size() && compare_points(events[begin].at, events[end].at) == 0) ++end;
+      while (end < events.size() && compare_lex(events[begin].at, events[end].at) == 0) ++end;
       // Segments meeting at this point: valid input has two, the neighbours of one vertex.
       for (std::size_t i = begin; i < end; ++i) {
         for (std::size_t j = i + 1; j < end; ++j) {
