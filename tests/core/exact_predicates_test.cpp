@@ -170,5 +170,31 @@ TEST(IntegerOrientation, HugeCoordinatesAgreeWithRationals) {
   EXPECT_FALSE(segments_intersect(a, b, IntPoint{1, 0}, IntPoint{big, -big}));
 }
 
+// A FilteredPoint says whether its doubles are the point exactly; only then may equal doubles
+// stand for equal coordinates (compare_lex) and the exact-input error bound decide orientations.
+TEST(FilteredPoint, DoublesStandForThePointOnlyWhenExact) {
+  const ExactPoint grid{Rational(3, 1024), Rational(-5, 2)};
+  const FilteredPoint g = filtered(grid);
+  EXPECT_TRUE(g.is_double);
+  EXPECT_EQ(g.x, 3.0 / 1024);
+  EXPECT_EQ(g.y, -2.5);
+  // 1/3 and 1/3 + 2^-80 truncate to the same double but are different points.
+  const Rational third(1, 3);
+  const Rational tiny(mpz_class(1), mpz_class(1) << 80);
+  const ExactPoint a{third, Rational(0)};
+  const ExactPoint b{third + tiny, Rational(0)};
+  const ExactPoint c{third, tiny};
+  const FilteredPoint fa = filtered(a), fb = filtered(b), fc = filtered(c);
+  EXPECT_FALSE(fa.is_double);
+  EXPECT_EQ(fa.x, fb.x);
+  EXPECT_EQ(compare_lex(fa, fb), -1);
+  EXPECT_EQ(compare_lex(fb, fa), 1);
+  EXPECT_EQ(compare_lex(fa, fc), -1); // same x, y decides by its rational
+  const ExactPoint a_again = a;       // another object, the same point
+  EXPECT_EQ(compare_lex(fa, filtered(a_again)), 0);
+  const ExactPoint g_again = grid;
+  EXPECT_EQ(compare_lex(g, filtered(g_again)), 0);
+}
+
 } // namespace
 } // namespace penshape::detail

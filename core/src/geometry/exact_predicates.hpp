@@ -10,6 +10,7 @@
 #include <limits>
 #include <optional>
 
+#include "geometry/exact_double.hpp"
 #include "penshape/core/polygon_set.hpp"
 
 namespace penshape::detail {
@@ -73,21 +74,46 @@ int exact_orientation(const NT& ax, const NT& ay, const NT& bx, const NT& by, co
   return static_cast<int>(det > 0) - static_cast<int>(det < 0);
 }
 
-// A rational point with its nearest double, converted once.
+// A rational point with its double (truncated), converted once. When `is_double` the doubles
+// are the point exactly (grid and file coordinates nearly always are): predicates then decide on
+// them with the exact inputs' error bound, and equal doubles are equal coordinates (no GMP).
 struct FilteredPoint {
   const ExactPoint* exact = nullptr;
   double x = 0.0;
   double y = 0.0;
+  bool is_double = false;
 };
 
-inline FilteredPoint filtered(const ExactPoint& p) { return {&p, p.x.get_d(), p.y.get_d()}; }
+inline FilteredPoint filtered(const ExactPoint& p) {
+  bool exact_x = false;
+  bool exact_y = false;
+  const double x = to_double_checked(p.x, exact_x);
+  const double y = to_double_checked(p.y, exact_y);
+  return {&p, x, y, exact_x && exact_y};
+}
+
+// Lexicographic (x, then y) order of points, exact: -1, 0 or +1. The same vertex first (one
+// vertex seen from its two edges), then doubles (rounding is monotone, so distinct doubles
+// decide), and the rationals on a tie unless the doubles are the points.
+inline int compare_lex(const FilteredPoint& p, const FilteredPoint& q) {
+  if (p.exact == q.exact) return 0;
+  if (p.x != q.x) return p.x < q.x ? -1 : 1;
+  if (!(p.is_double && q.is_double) && p.exact->x != q.exact->x) {
+    return p.exact->x < q.exact->x ? -1 : 1;
+  }
+  if (p.y != q.y) return p.y < q.y ? -1 : 1;
+  if ((p.is_double && q.is_double) || p.exact->y == q.exact->y) return 0;
+  return p.exact->y < q.exact->y ? -1 : 1;
+}
 
 // +1 left turn a → b → c, -1 right turn, 0 collinear. Exact for every point type.
 inline int orientation(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c) {
   return exact_orientation(a.x, a.y, b.x, b.y, c.x, c.y);
 }
 inline int orientation(const FilteredPoint& a, const FilteredPoint& b, const FilteredPoint& c) {
-  if (const auto s = orientation_filter(a.x, a.y, b.x, b.y, c.x, c.y, FilterInputs::kRounded)) {
+  const FilterInputs inputs =
+      a.is_double && b.is_double && c.is_double ? FilterInputs::kExact : FilterInputs::kRounded;
+  if (const auto s = orientation_filter(a.x, a.y, b.x, b.y, c.x, c.y, inputs)) {
     return *s;
   }
   return orientation(*a.exact, *b.exact, *c.exact);

@@ -16,14 +16,7 @@
 namespace penshape::detail {
 namespace {
 
-// Lexicographic (x, then y) order, exact: doubles decide when they differ (rounding is
-// monotone), rationals otherwise.
-bool lex_less(const FilteredPoint& a, const FilteredPoint& b) {
-  if (a.x != b.x) return a.x < b.x;
-  if (a.exact->x != b.exact->x) return a.exact->x < b.exact->x;
-  if (a.y != b.y) return a.y < b.y;
-  return a.exact->y < b.exact->y;
-}
+bool lex_less(const FilteredPoint& a, const FilteredPoint& b) { return compare_lex(a, b) < 0; }
 
 struct Edge {
   const FilteredPoint* left;  // lexicographically smaller endpoint

@@ -155,6 +155,54 @@ TEST(FastEngineParts, NonSimpleOrWronglyNestedRingsAreNotCertifiable) {
   EXPECT_TRUE(fast::is_certifiable_region(nested));
 }
 
+// rings_are_simple is the kernel's sweep on grid points: each kind of contact it must see, and
+// random rings against a brute-force pairwise test.
+TEST(FastEngineParts, RingSimplicityFindsEveryContact) {
+  const auto simple = [](const IRings& rings) {
+    return fast::rings_are_simple(fast::SegmentIndex(rings, 10));
+  };
+  EXPECT_TRUE(simple({square(0, 0, 100)}));
+  // A spike: consecutive edges folding back onto each other.
+  EXPECT_FALSE(simple({{{0, 0}, {100, 0}, {100, 100}, {100, 50}, {0, 100}}}));
+  // A vertex on another edge of its ring, and two rings touching at one point.
+  EXPECT_FALSE(simple({{{0, 0}, {100, 0}, {50, 0}, {50, 100}}}));
+  EXPECT_FALSE(simple({{{0, 0}, {100, 0}, {100, 100}, {0, 100}, {50, 0}, {0, 50}}}));
+  EXPECT_FALSE(simple({square(0, 0, 100), square(100, 100, 50)}));
+  EXPECT_TRUE(simple({square(0, 0, 100), square(101, 100, 50)}));
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<std::int64_t> coord(0, 12);
+  int crossing = 0;
+  for (int k = 0; k < 400; ++k) {
+    IRing ring;
+    for (int i = 0; i < 5; ++i) {
+      const IPt p{coord(rng), coord(rng)};
+      if (ring.empty() || !(ring.back() == p)) ring.push_back(p);
+    }
+    if (ring.size() < 3 || ring.front() == ring.back()) continue;
+    const std::size_t n = ring.size();
+    bool brute = true;
+    for (std::size_t i = 0; i < n; ++i) {
+      for (std::size_t j = i + 1; j < n; ++j) {
+        const IPt a = ring[i], b = ring[(i + 1) % n], c = ring[j], d = ring[(j + 1) % n];
+        if ((i + 1) % n == j || (j + 1) % n == i) {
+          const IPt far = (i + 1) % n == j ? a : c; // the other end of the earlier edge
+          const IPt end = (i + 1) % n == j ? d : b; // the other end of the later edge
+          const IPt mid = (i + 1) % n == j ? b : a; // the shared vertex
+          const bool folds =
+              fast::orientation(far, mid, end) == 0 &&
+              (end.x - mid.x) * (mid.x - far.x) + (end.y - mid.y) * (mid.y - far.y) <= 0;
+          if (folds) brute = false;
+        } else if (detail::segments_intersect(a, b, c, d)) {
+          brute = false;
+        }
+      }
+    }
+    crossing += !brute;
+    ASSERT_EQ(simple({ring}), brute) << k;
+  }
+  EXPECT_GT(crossing, 50);
+}
+
 // The YES certificate on hand-made candidates for Q = [0, 20000]², r = 1000, eps = 500 (grid
 // units). P = [t, 20000 - t]² has offset(P, r) reaching r - t outside Q, so (A) needs
 // t >= r - eps = 500, and covers Q's corner iff sqrt(2) t <= r + eps, i.e. t <= 1060.

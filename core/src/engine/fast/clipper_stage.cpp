@@ -214,15 +214,24 @@ IRegion offset_round(const IRings& rings, double delta, double arc_tolerance) {
   return out;
 }
 
+namespace {
+
+// The Boolean operation on the paths added to `c` (positive winding for both), as a region.
+IRegion execute(cl::Clipper& c, cl::ClipType type) {
+  cl::PolyTree tree;
+  c.Execute(type, tree, cl::pftPositive, cl::pftPositive);
+  IRegion out;
+  collect(tree, out);
+  return out;
+}
+
+} // namespace
+
 IRegion difference(const IRings& subject, const IRings& clip) {
   cl::Clipper c;
   c.AddPaths(to_paths(subject), cl::ptSubject, true);
   c.AddPaths(to_paths(clip), cl::ptClip, true);
-  cl::PolyTree tree;
-  c.Execute(cl::ctDifference, tree, cl::pftPositive, cl::pftPositive);
-  IRegion out;
-  collect(tree, out);
-  return out;
+  return execute(c, cl::ctDifference);
 }
 
 IRegion simplify(const IRings& input, double tolerance) {
@@ -231,12 +240,8 @@ IRegion simplify(const IRings& input, double tolerance) {
   clean_rings(rings);
   cl::Clipper c;
   c.AddPaths(to_paths(rings), cl::ptSubject, true);
-  cl::PolyTree tree;
   c.StrictlySimple(true);
-  c.Execute(cl::ctUnion, tree, cl::pftPositive, cl::pftPositive);
-  IRegion out;
-  collect(tree, out);
-  return out;
+  return execute(c, cl::ctUnion);
 }
 
 IRegion simplify_rings_only(const IRegion& region, double tolerance) {

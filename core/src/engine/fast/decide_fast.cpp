@@ -192,15 +192,7 @@ class FastDecision {
     if (p.empty() || !is_certifiable_region(SegmentIndex(flatten(p), r_ / 2.0))) {
       p = simplify(pi_hat, b_.simplify);
     }
-    std::vector<IPt> q_vertices;
-    for (const auto& poly : q_.polygons) q_vertices.push_back(frame_.round(poly.outer.front()));
-    const YesCheckInput in{&*input_.index,
-                           input_.eta,
-                           &q_index_,
-                           q_vertices,
-                           frame_.bounds(params_.radius),
-                           frame_.bounds(params_.tolerance),
-                           b_.margin};
+    const YesCheckInput in = yes_check_input(input_, q_index_, frame_, q_, params_, b_.margin);
     if (!verify_yes(in, p, cancel_)) return false;
     result_.answer = Answer::kYes;
     result_.solution = to_polygon_set(frame_, p);

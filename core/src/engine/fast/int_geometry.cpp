@@ -7,23 +7,6 @@
 namespace penshape::fast {
 Int128 twice_area(const IRing& ring) { return detail::twice_signed_area_in<Int128>(ring); }
 
-int winding_number(const IRings& rings, IPt p) {
-  int w = 0;
-  for (const IRing& ring : rings) {
-    const std::size_t n = ring.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      const IPt& a = ring[i];
-      const IPt& b = ring[(i + 1) % n];
-      if (a.y <= p.y) {
-        if (b.y > p.y && orientation(a, b, p) > 0) ++w;
-      } else if (b.y <= p.y && orientation(a, b, p) < 0) {
-        --w;
-      }
-    }
-  }
-  return w;
-}
-
 void remove_repeats(IRings& rings) {
   for (IRing& ring : rings) {
     IRing out;

@@ -39,6 +39,12 @@ inline int orientation(IPt a, IPt b, IPt c) {
   return detail::exact_orientation(a.x, a.y, b.x, b.y, c.x, c.y);
 }
 
+// Lexicographic (x, then y) order: -1, 0 or +1 (the kernel's sweep orders its events by it).
+inline int compare_lex(IPt p, IPt q) {
+  if (p.x != q.x) return p.x < q.x ? -1 : 1;
+  return p.y < q.y ? -1 : (p.y > q.y ? 1 : 0);
+}
+
 // Distance from p to the segment [a, b] (a may equal b): the shared kernel's double path
 // (geometry/distance_kernel.hpp), for proposals only.
 inline double point_segment_distance(DPt p, DPt a, DPt b) {
@@ -47,10 +53,6 @@ inline double point_segment_distance(DPt p, DPt a, DPt b) {
 
 // Twice the signed area, exactly.
 Int128 twice_area(const IRing& ring);
-
-// Winding number of an integer point with respect to all rings (exact). A point on a ring edge
-// gets an unspecified value: callers only ask about points away from every edge.
-int winding_number(const IRings& rings, IPt p);
 
 // Drops repeated consecutive vertices and rings with fewer than three vertices or zero area
 // (for Clipper's candidates; the rounded input keeps every ring, see remove_repeats).

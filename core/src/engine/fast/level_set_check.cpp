@@ -11,6 +11,7 @@
 #include "certified.hpp"
 #include "geometry/distance_kernel.hpp"
 #include "geometry/exact_predicates.hpp"
+#include "geometry/segment_sweep.hpp"
 
 namespace penshape::fast {
 namespace {
@@ -443,34 +444,19 @@ bool level_set_avoids(const LevelSetQuery& query, const CancelHook& cancel) {
 }
 
 bool rings_are_simple(const SegmentIndex& index) {
-  const auto& segs = index.segments();
-  bool ok = true;
-  for (std::size_t i = 0; i < segs.size() && ok; ++i) {
+  // The kernel's sweep: consecutive edges of a ring may share their common vertex (and do not
+  // fold back), no other two edges may meet.
+  const std::vector<Segment>& segs = index.segments();
+  std::vector<detail::SweepSegmentOf<IPt>> edges;
+  edges.reserve(segs.size());
+  for (const Segment& s : segs) edges.push_back({s.a, s.b});
+  const auto consecutive = [&](std::size_t i, std::size_t j) {
     const Segment& s = segs[i];
-    index.for_each_near(
-        static_cast<double>(std::min(s.a.x, s.b.x)), static_cast<double>(std::min(s.a.y, s.b.y)),
-        static_cast<double>(std::max(s.a.x, s.b.x)), static_cast<double>(std::max(s.a.y, s.b.y)),
-        [&](std::size_t j) {
-          if (!ok || j <= i) return;
-          const Segment& t = segs[j];
-          const bool same_ring = s.ring == t.ring;
-          const bool s_then_t = same_ring && (s.pos + 1) % s.ring_size == t.pos;
-          const bool t_then_s = same_ring && (t.pos + 1) % t.ring_size == s.pos;
-          if (s_then_t || t_then_s) {
-            // Consecutive edges meet at their shared vertex only: no fold-back.
-            const Segment& first = s_then_t ? s : t;
-            const Segment& second = s_then_t ? t : s;
-            if (orientation(first.a, first.b, second.b) == 0) {
-              const std::int64_t dot = (first.b.x - first.a.x) * (second.b.x - second.a.x) +
-                                       (first.b.y - first.a.y) * (second.b.y - second.a.y);
-              if (dot < 0) ok = false;
-            }
-            return;
-          }
-          if (detail::segments_intersect(s.a, s.b, t.a, t.b)) ok = false; // the kernel's
-        });
-  }
-  return ok;
+    const Segment& t = segs[j];
+    return s.ring == t.ring &&
+           ((s.pos + 1) % s.ring_size == t.pos || (t.pos + 1) % t.ring_size == s.pos);
+  };
+  return !detail::find_forbidden_contact(edges, consecutive).has_value();
 }
 
 bool rings_are_nested_consistently(const SegmentIndex& index) {

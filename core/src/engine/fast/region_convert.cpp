@@ -1,17 +1,31 @@
+// Grid regions to exact polygon sets and back (region_convert.hpp), ring by ring.
 #include "region_convert.hpp"
 
 namespace penshape::fast {
+namespace {
+
+// One ring through the frame, either way.
+Ring exact_ring(const GridFrame& frame, const IRing& ring) {
+  Ring out;
+  out.reserve(ring.size());
+  for (const IPt& p : ring) out.push_back(frame.exact(p));
+  return out;
+}
+
+IRing grid_ring(const GridFrame& frame, const Ring& ring) {
+  IRing out;
+  out.reserve(ring.size());
+  for (const ExactPoint& p : ring) out.push_back(frame.round(p));
+  return out;
+}
+
+} // namespace
 
 PolygonSet to_polygon_set(const GridFrame& frame, const IRegion& region) {
   PolygonSet out;
   for (const IPolygon& poly : region) {
-    PolygonWithHoles pw;
-    for (const IPt& p : poly.outer) pw.outer.push_back(frame.exact(p));
-    for (const IRing& hole : poly.holes) {
-      Ring h;
-      for (const IPt& p : hole) h.push_back(frame.exact(p));
-      pw.holes.push_back(std::move(h));
-    }
+    PolygonWithHoles pw{exact_ring(frame, poly.outer), {}};
+    for (const IRing& hole : poly.holes) pw.holes.push_back(exact_ring(frame, hole));
     out.polygons.push_back(std::move(pw));
   }
   return out;
@@ -20,13 +34,8 @@ PolygonSet to_polygon_set(const GridFrame& frame, const IRegion& region) {
 IRegion to_grid(const GridFrame& frame, const PolygonSet& set) {
   IRegion out;
   for (const auto& poly : set.polygons) {
-    IPolygon ip;
-    for (const auto& p : poly.outer) ip.outer.push_back(frame.round(p));
-    for (const auto& h : poly.holes) {
-      IRing ih;
-      for (const auto& p : h) ih.push_back(frame.round(p));
-      ip.holes.push_back(std::move(ih));
-    }
+    IPolygon ip{grid_ring(frame, poly.outer), {}};
+    for (const Ring& hole : poly.holes) ip.holes.push_back(grid_ring(frame, hole));
     out.push_back(std::move(ip));
   }
   return out;

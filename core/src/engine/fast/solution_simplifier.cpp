@@ -216,15 +216,7 @@ std::optional<PolygonSet> simplify_fast_solution(const PolygonSet& q_any,
   const CertifiedInput a = certified_input(solid, d / fraction, eps / 2.0);
   if (!a.index) return std::nullopt;
   const SegmentIndex q_index(grid.rings, eps / 2.0);
-  std::vector<IPt> q_vertices;
-  for (const auto& poly : q.polygons) q_vertices.push_back(frame.round(poly.outer.front()));
-  const YesCheckInput in{&*a.index,
-                         a.eta,
-                         &q_index,
-                         q_vertices,
-                         frame.bounds(params.radius),
-                         frame.bounds(params.tolerance),
-                         d / 32.0};
+  const YesCheckInput in = yes_check_input(a, q_index, frame, q, params, d / 32.0);
 
   const IRegion raw = to_grid(frame, solution);
   // Whole checks of Douglas-Peucker candidates, within the same work cap as the drops below.

@@ -1,6 +1,7 @@
 #include "yes_certificate.hpp"
 
 #include <algorithm>
+#include <utility>
 
 #include <optional>
 #include "certified.hpp"
@@ -96,6 +97,21 @@ CertifiedInput certified_input(const IRings& q_grid, double tolerance, double ce
     if (!is_certifiable_region(*out.index)) out.index.reset();
   }
   return out;
+}
+
+YesCheckInput yes_check_input(const CertifiedInput& a, const SegmentIndex& q_grid,
+                              const GridFrame& frame, const PolygonSet& q,
+                              const DeconstructParams& params, double max_sagitta) {
+  std::vector<IPt> q_vertices;
+  q_vertices.reserve(q.polygons.size());
+  for (const auto& poly : q.polygons) q_vertices.push_back(frame.round(poly.outer.front()));
+  return {&*a.index,
+          a.eta,
+          &q_grid,
+          std::move(q_vertices),
+          frame.bounds(params.radius),
+          frame.bounds(params.tolerance),
+          max_sagitta};
 }
 
 } // namespace penshape::fast

@@ -52,4 +52,10 @@ struct CertifiedInput {
 };
 CertifiedInput certified_input(const IRings& q_grid, double tolerance, double cell);
 
+// The YES check for Q in `frame` with `params`: A = the certified Q_s `a` (its index set),
+// B = Q̃ (`q_grid`), one rounded outer vertex per polygon of Q, arcs walked at `max_sagitta`.
+YesCheckInput yes_check_input(const CertifiedInput& a, const SegmentIndex& q_grid,
+                              const GridFrame& frame, const PolygonSet& q,
+                              const DeconstructParams& params, double max_sagitta);
+
 } // namespace penshape::fast
