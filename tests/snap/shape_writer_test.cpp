@@ -1,7 +1,8 @@
 // Shapes written back by penshape snap (clients/snap/svg_writer.hpp, xopp_strokes.hpp), read
 // back and compared with the shape's known vertices (in the element's own coordinates): an
-// arrow's bent shaft keeps its bends; a polygon (ShapeClass::kPolygon, 5..8 corners) is an SVG
-// <polygon> through its corners and a Xournal++ stroke that closes on its first corner.
+// arrow's bent shaft keeps its bends; a polygon (ShapeClass::kPolygon, 5..8 corners) and a
+// diamond (a rhombus, any orientation) are an SVG <polygon> through their corners and a Xournal++
+// stroke that closes on its first corner.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -40,6 +41,11 @@ Recognition bent_arrow() {
 // An L-shaped hexagon.
 Recognition l_hexagon() {
   return certified(ShapeClass::kPolygon, {{0, 0}, {40, 0}, {40, 16}, {16, 16}, {16, 40}, {0, 40}});
+}
+
+// A flowchart diamond: a rhombus of half-diagonals 30 (across) and 18 (up), centre (40, 30).
+Recognition flowchart_diamond() {
+  return certified(ShapeClass::kDiamond, {{70, 30}, {40, 48}, {10, 30}, {40, 12}});
 }
 
 // The one stroke of an SVG document, replaced by `r`.
@@ -132,6 +138,25 @@ TEST(PolygonWriter, XournalStrokeClosesOnItsFirstCorner) {
   const std::string pts =
       replaced_xopp(xopp_page("0 0 40 1 39 16 16 15 16 40 0 39 0 0"), l_hexagon());
   EXPECT_EQ(numbers(pts), (std::vector<double>{0, 0, 40, 0, 40, 16, 16, 16, 16, 40, 0, 40, 0, 0}));
+}
+
+TEST(DiamondWriter, SvgPolygonThroughTheCorners) {
+  pugi::xml_document doc;
+  const pugi::xml_node out = replaced_svg(doc,
+                                          "<svg xmlns='http://www.w3.org/2000/svg'>"
+                                          "<path id='s' d='M 70,31 L 41,48 L 10,29 L 39,12 Z' "
+                                          "style='fill:none;stroke:#000;stroke-width:2'/></svg>",
+                                          flowchart_diamond());
+  EXPECT_STREQ(out.name(), "polygon");
+  EXPECT_STREQ(out.attribute("data-penshape-class").value(), "diamond");
+  const std::string pts = out.attribute("points").value();
+  EXPECT_EQ(numbers(pts), (std::vector<double>{70, 30, 40, 48, 10, 30, 40, 12})) << pts;
+}
+
+TEST(DiamondWriter, XournalStrokeClosesOnItsFirstCorner) {
+  const std::string pts =
+      replaced_xopp(xopp_page("70 31 41 48 10 29 39 12 70 31"), flowchart_diamond());
+  EXPECT_EQ(numbers(pts), (std::vector<double>{70, 30, 40, 48, 10, 30, 40, 12, 70, 30}));
 }
 
 } // namespace

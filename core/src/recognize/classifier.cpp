@@ -11,6 +11,7 @@
 #include "geometry/exact_predicates.hpp"
 #include "ink_certificate.hpp"
 #include "skeleton_seeds.hpp"
+#include "tidy.hpp"
 
 namespace penshape::recognize_detail {
 namespace {
@@ -26,6 +27,15 @@ constexpr double kMaxPolygonTurn = 5.0 * std::numbers::pi / 6.0;
 // rectangles and squares named right certify within 0.84 epsilon ($1 and gesture writers;
 // leaving one writer out 0.68..0.85). A looser fit with that many parameters is a scribble.
 constexpr double kPolygonFraction = 0.85;
+// A rhombus is a diamond when its angles are this far from 90 degrees: beyond the tidy-up's
+// right-angle slack (10 degrees) with room for a box drawn skewed (recognize_bench --classes:
+// 10 / 15 / 20 degrees keep 99.6 / 100 / 100% of real one-stroke rectangles and 98.6 / 98.6 /
+// 97.1% of diamonds made from them).
+constexpr double kDiamondSkew = 1.5 * kRightAngleSlack;
+// An arc must stand out from its chord by this many epsilons (its sagitta), as a polyline's
+// corner must from its neighbours' chord: flatter, the segment says the same within tolerance
+// (a quick line drawn with a slight bow, a finger pivoting on the wrist, is a line).
+constexpr double kArcMinSagitta = 0.5;
 // Fits whose estimate exceeds this many epsilons are not certified at all (saves time; their
 // certificate could not pass because the estimate is measured on points of the stroke).
 constexpr double kCertifyIfBelow = 1.25;
@@ -144,6 +154,18 @@ std::string polygon_implausibility(const PreparedStroke& s, const Fit& f, const 
   return {};
 }
 
+// A diamond is a rhombus whose angles are far from 90 degrees: its acute angle, 2 atan(b / a)
+// for half-diagonals b <= a, is below a right angle by more than kDiamondSkew. Closer, it is a
+// square (standing on a corner, or a box drawn skewed).
+std::string diamond_implausibility(const Fit& f) {
+  const double a = std::max(f.params.radius_x, f.params.radius_y);
+  const double b = std::min(f.params.radius_x, f.params.radius_y);
+  if (std::numbers::pi / 2 - 2.0 * std::atan2(b, a) <= kDiamondSkew) {
+    return "the rhombus's angles are within 15 degrees of right angles (a square or a skewed box)";
+  }
+  return {};
+}
+
 // A closed polygon's corners must be corners: sides of at least epsilon, corners off their
 // neighbours' chord by at least epsilon.
 std::string corner_implausibility(const Fit& f, const Certificate& c) {
@@ -174,6 +196,9 @@ std::string implausibility(const PreparedStroke& s, const Fit& f, const Certific
   if (f.shape == ShapeClass::kPolygon) {
     if (std::string why = polygon_implausibility(s, f, c); !why.empty()) return why;
   }
+  if (f.shape == ShapeClass::kDiamond) {
+    if (std::string why = diamond_implausibility(f); !why.empty()) return why;
+  }
   if (has_corners(f.shape)) return corner_implausibility(f, c);
   if (f.shape == ShapeClass::kRegularPolygon) {
     const double n = static_cast<double>(f.params.vertices.size());
@@ -183,6 +208,10 @@ std::string implausibility(const PreparedStroke& s, const Fit& f, const Certific
   }
   if (f.shape == ShapeClass::kArc && turning_monotonicity(s) < config.arc_monotone_turning) {
     return "the stroke turns both ways (not an arc)";
+  }
+  if (f.shape == ShapeClass::kArc &&
+      f.params.radius_x * (1.0 - std::cos(f.params.sweep_angle / 2)) < kArcMinSagitta * c.epsilon) {
+    return "the arc stands out from its chord by less than epsilon / 2 (a line drawn bowed)";
   }
   return {};
 }
@@ -210,7 +239,7 @@ double degrees_of_freedom(const Fit& fit) {
     case ShapeClass::kSquare:
       return 4;
     case ShapeClass::kDiamond:
-      return 4;
+      return 5; // centre, angle, two half-diagonals
     case ShapeClass::kRegularPolygon:
       return 6;
     case ShapeClass::kCircle:

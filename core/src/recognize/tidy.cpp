@@ -15,8 +15,7 @@ namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 constexpr double kRoundEllipse = 0.8; // minor / major semi-axis for "circle"
-constexpr double kRightAngleSlack = 10.0 * kDegree;
-constexpr double kEqualSides = 0.15; // relative difference for "equal_sides"
+constexpr double kEqualSides = 0.15;  // relative difference for "equal_sides"
 constexpr double kAxisSlack = 10.0 * kDegree;
 constexpr double kParallelSlack = 6.0 * kDegree;
 constexpr double kAlreadyExact = 1e-9; // radians: nothing to do
@@ -61,9 +60,10 @@ std::vector<std::pair<PointD, PointD>> edges_of(ShapeClass c, const ShapeParams&
   return out;
 }
 
-// Direction (radians) of the longest edge, or of an ellipse's axis.
+// Direction (radians) of the longest edge, or of an ellipse's axis or a diamond's diagonal (its
+// sides are equal: the diagonals are what a flowchart aligns).
 std::optional<double> main_direction(ShapeClass c, const ShapeParams& p) {
-  if (c == ShapeClass::kEllipse) return p.rotation;
+  if (c == ShapeClass::kEllipse || c == ShapeClass::kDiamond) return p.rotation;
   if (!has_vertices(c) || p.vertices.size() < 2) return std::nullopt;
   double best = -1.0, angle = 0.0;
   for (const auto& [a, b] : edges_of(c, p)) {

@@ -1,6 +1,7 @@
 #pragma once
 // Certified tidy-up of a recognized shape (group_recognize.hpp, "Tidy-up"): each constraint is
 // proposed, certified on the same strokes, and kept only when the certificate still holds.
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -8,6 +9,10 @@
 #include "union_certificate.hpp"
 
 namespace penshape::recognize_detail {
+
+// A corner within this of a right angle is drawn as one: the tidy-up makes it right, and a
+// rhombus whose angles are this close to 90 degrees is a square, not a diamond (classifier).
+inline constexpr double kRightAngleSlack = 10.0 * std::numbers::pi / 180.0;
 
 // Applies the enabled constraints to `r` (a snap; freeform is left alone) in the documented
 // order and returns the names of those applied. `neighbours` are recent shapes (connection,
