@@ -40,6 +40,14 @@ TEST(LiveEventText, APolygonIsNamed) {
   EXPECT_EQ(penshape::cli::shape_kind_name(v1::SHAPE_KIND_POLYGON), "polygon");
 }
 
+TEST(LiveEventText, ADiamondIsNamed) {
+  v1::LiveEvent event = rectangle_upgrade();
+  event.mutable_shape()->mutable_shape()->set_kind(v1::SHAPE_KIND_DIAMOND);
+  const std::string line = penshape::cli::event_line(event);
+  EXPECT_NE(line.find("stroke 4 (shape 9) is a diamond"), std::string::npos) << line;
+  EXPECT_EQ(penshape::cli::shape_kind_name(v1::SHAPE_KIND_DIAMOND), "diamond");
+}
+
 TEST(LiveEventText, ShapeJsonNamesReplacedStrokesAndSupersededShapes) {
   const std::string json = penshape::cli::event_json(rectangle_upgrade());
   EXPECT_NE(json.find("\"shape_id\":9"), std::string::npos) << json;
