@@ -120,18 +120,24 @@ TEST(ArrowWriter, XournalStrokeHoldsTheShaftsBend) {
             (std::vector<double>{20, 10, 80, 10, 120, -20, 110, -6, 120, -20, 104, -14}));
 }
 
-TEST(PolygonWriter, SvgPolygonThroughTheCorners) {
+// The SVG path `d` replaced by `r`: an SVG <polygon> of class `name` through `corners`.
+void expect_svg_polygon(const std::string& d, const Recognition& r, const char* name,
+                        const std::vector<double>& corners) {
   pugi::xml_document doc;
   const pugi::xml_node out =
       replaced_svg(doc,
-                   "<svg xmlns='http://www.w3.org/2000/svg'>"
-                   "<path id='s' d='M 0,0 L 40,1 L 39,16 L 16,15 L 16,40 L 0,39 Z' "
-                   "style='fill:none;stroke:#000;stroke-width:2'/></svg>",
-                   l_hexagon());
+                   "<svg xmlns='http://www.w3.org/2000/svg'><path id='s' d='" + d +
+                       "' style='fill:none;stroke:#000;stroke-width:2'/></svg>",
+                   r);
   EXPECT_STREQ(out.name(), "polygon");
-  EXPECT_STREQ(out.attribute("data-penshape-class").value(), "polygon");
+  EXPECT_STREQ(out.attribute("data-penshape-class").value(), name);
   const std::string pts = out.attribute("points").value();
-  EXPECT_EQ(numbers(pts), (std::vector<double>{0, 0, 40, 0, 40, 16, 16, 16, 16, 40, 0, 40})) << pts;
+  EXPECT_EQ(numbers(pts), corners) << pts;
+}
+
+TEST(PolygonWriter, SvgPolygonThroughTheCorners) {
+  expect_svg_polygon("M 0,0 L 40,1 L 39,16 L 16,15 L 16,40 L 0,39 Z", l_hexagon(), "polygon",
+                     {0, 0, 40, 0, 40, 16, 16, 16, 16, 40, 0, 40});
 }
 
 TEST(PolygonWriter, XournalStrokeClosesOnItsFirstCorner) {
@@ -141,16 +147,8 @@ TEST(PolygonWriter, XournalStrokeClosesOnItsFirstCorner) {
 }
 
 TEST(DiamondWriter, SvgPolygonThroughTheCorners) {
-  pugi::xml_document doc;
-  const pugi::xml_node out = replaced_svg(doc,
-                                          "<svg xmlns='http://www.w3.org/2000/svg'>"
-                                          "<path id='s' d='M 70,31 L 41,48 L 10,29 L 39,12 Z' "
-                                          "style='fill:none;stroke:#000;stroke-width:2'/></svg>",
-                                          flowchart_diamond());
-  EXPECT_STREQ(out.name(), "polygon");
-  EXPECT_STREQ(out.attribute("data-penshape-class").value(), "diamond");
-  const std::string pts = out.attribute("points").value();
-  EXPECT_EQ(numbers(pts), (std::vector<double>{70, 30, 40, 48, 10, 30, 40, 12})) << pts;
+  expect_svg_polygon("M 70,31 L 41,48 L 10,29 L 39,12 Z", flowchart_diamond(), "diamond",
+                     {70, 30, 40, 48, 10, 30, 40, 12});
 }
 
 TEST(DiamondWriter, XournalStrokeClosesOnItsFirstCorner) {
