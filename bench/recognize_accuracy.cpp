@@ -83,10 +83,9 @@ std::vector<Sample> samples_of(const std::vector<Drawing>& drawings) {
   std::vector<Sample> out;
   for (const Drawing& d : drawings) {
     if (d.strokes.size() != 1) continue;
-    const auto it = kShapes.find(d.label);
-    if (it != kShapes.end()) {
-      out.push_back({&d, &it->second});
-    } else if (kNonShapes.contains(d.label)) {
+    if (const std::set<std::string>* targets = shape_targets(d.label)) {
+      out.push_back({&d, targets});
+    } else if (is_non_shape(d.label)) {
       out.push_back({&d, nullptr});
     }
   }
@@ -175,6 +174,13 @@ void print_sweep(const SubjectSweep& sw) {
 }
 
 } // namespace
+
+const std::set<std::string>* shape_targets(const std::string& label) {
+  const auto it = kShapes.find(label);
+  return it == kShapes.end() ? nullptr : &it->second;
+}
+
+bool is_non_shape(const std::string& label) { return kNonShapes.contains(label); }
 
 namespace {
 

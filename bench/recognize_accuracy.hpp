@@ -2,6 +2,8 @@
 // Accuracy of single-stroke recognition on labelled real drawings (recognize_bench): shapes
 // named right and non-shapes snapped, on all writers and leave-one-subject-out, the size x pen
 // table, and the derivation of the default tolerance's size fractions (recognize.hpp).
+#include <set>
+#include <string>
 #include <vector>
 
 #include "stroke_corpora.hpp"
@@ -11,6 +13,11 @@ namespace penshape::bench {
 struct AccuracyOptions {
   bool derive_only = false; // print the tolerance derivation, skip the tables
 };
+
+// The classes a drawing labelled `label` may be named (null: not a shape class here).
+const std::set<std::string>* shape_targets(const std::string& label);
+// Whether drawings labelled `label` are non-shapes (must stay freeform).
+bool is_non_shape(const std::string& label);
 
 // Prints the tables for the drawings (all corpora together and each corpus alone).
 void print_accuracy(const std::vector<Drawing>& drawings, const AccuracyOptions& options);

@@ -32,8 +32,12 @@
 // generated corpus is never used to tune a threshold, its figures are printed to compare.
 // Without the shared corpus only the generated rows are printed (the bench says so).
 //
+// Per class (recognize_classes.hpp), after the accuracy tables or alone with --classes (one
+// recognition per drawing, quick): the shipped defaults on every labelled class, the diamonds and
+// squares on a corner made from real rectangles; --wrong lists every drawing named wrong.
+//
 // Usage: recognize_bench [--json] [--repeat N] [--khz-stride K] [--accuracy-only |
-//                         --timing-only | --derive-tolerance]
+//                         --timing-only | --derive-tolerance | --classes] [--wrong]
 //        (data dir: $PENSHAPE_SHARED_DATA_DIR)
 #include <time.h>
 
@@ -52,6 +56,7 @@
 #include "penshape/core/live_recognizer.hpp"
 #include "penshape/core/recognize.hpp"
 #include "recognize_accuracy.hpp"
+#include "recognize_classes.hpp"
 #include "stroke_corpora.hpp"
 
 namespace {
@@ -166,8 +171,14 @@ Density run(const std::string& name, const std::vector<std::vector<StrokePoint>>
   return d;
 }
 
+struct AccuracyRun {
+  bool derive_only = false;  // the tolerance derivation only
+  bool classes_only = false; // the per-class table only
+  bool list_wrong = false;   // every miss of the per-class table
+};
+
 // Every corpus together: the rule derived on all of their writers, figures per corpus.
-void print_accuracy_figures(const std::filesystem::path& strokes, bool derive_only) {
+void print_accuracy_figures(const std::filesystem::path& strokes, const AccuracyRun& run) {
   std::vector<penshape::bench::Drawing> all = penshape::bench::load_dollar1(strokes / "dollar1");
   const std::size_t dollar = all.size();
   const std::vector<penshape::bench::Drawing> gestures =
@@ -175,7 +186,8 @@ void print_accuracy_figures(const std::filesystem::path& strokes, bool derive_on
   all.insert(all.end(), gestures.begin(), gestures.end());
   std::printf("== accuracy: %zu $1 logs, %zu gesture drawings (single strokes) ==\n", dollar,
               gestures.size());
-  penshape::bench::print_accuracy(all, {derive_only});
+  if (!run.classes_only) penshape::bench::print_accuracy(all, {run.derive_only});
+  if (!run.derive_only) penshape::bench::print_classes(all, {run.list_wrong});
   std::fflush(stdout);
 }
 
@@ -183,7 +195,8 @@ void print_accuracy_figures(const std::filesystem::path& strokes, bool derive_on
 
 int main(int argc, char** argv) {
   bool json = false;
-  bool timing = true, accuracy = true, derive_only = false;
+  bool timing = true, accuracy = true;
+  AccuracyRun accuracy_run;
   int repeat = 1;
   std::size_t khz_stride = 4;
   for (int i = 1; i < argc; ++i) {
@@ -198,17 +211,22 @@ int main(int argc, char** argv) {
     } else if (std::strcmp(argv[i], "--timing-only") == 0) {
       accuracy = false;
     } else if (std::strcmp(argv[i], "--derive-tolerance") == 0) {
-      timing = false, derive_only = true;
+      timing = false, accuracy_run.derive_only = true;
+    } else if (std::strcmp(argv[i], "--classes") == 0) {
+      timing = false, accuracy_run.classes_only = true;
+    } else if (std::strcmp(argv[i], "--wrong") == 0) {
+      accuracy_run.list_wrong = true;
     } else {
       std::fprintf(stderr,
                    "usage: recognize_bench [--json] [--repeat N] [--khz-stride K] "
-                   "[--accuracy-only | --timing-only | --derive-tolerance]\n");
+                   "[--accuracy-only | --timing-only | --derive-tolerance | --classes] "
+                   "[--wrong]\n");
       return 2;
     }
   }
   const char* env = std::getenv("PENSHAPE_SHARED_DATA_DIR");
   const std::filesystem::path data = env ? env : PENSHAPE_SHARED_DATA_DIR;
-  if (accuracy) print_accuracy_figures(data / "strokes", derive_only);
+  if (accuracy) print_accuracy_figures(data / "strokes", accuracy_run);
   if (!timing) return 0;
   const auto real = penshape::bench::real_dollar_strokes((data / "strokes" / "dollar1").string());
   const auto generated = penshape::bench::generated_strokes();

@@ -32,13 +32,18 @@ TEST(LiveEventText, ShapeLineNamesReplacedStrokesAndSupersededShapes) {
       << line;
 }
 
-TEST(LiveEventText, APolygonIsNamed) {
+// The rectangle's upgrade event with its shape of `kind`: its line and kind name say `name`.
+void expect_kind_named(v1::ShapeKind kind, const std::string& name) {
   v1::LiveEvent event = rectangle_upgrade();
-  event.mutable_shape()->mutable_shape()->set_kind(v1::SHAPE_KIND_POLYGON);
+  event.mutable_shape()->mutable_shape()->set_kind(kind);
   const std::string line = penshape::cli::event_line(event);
-  EXPECT_NE(line.find("stroke 4 (shape 9) is a polygon"), std::string::npos) << line;
-  EXPECT_EQ(penshape::cli::shape_kind_name(v1::SHAPE_KIND_POLYGON), "polygon");
+  EXPECT_NE(line.find("stroke 4 (shape 9) is a " + name), std::string::npos) << line;
+  EXPECT_EQ(penshape::cli::shape_kind_name(kind), name);
 }
+
+TEST(LiveEventText, APolygonIsNamed) { expect_kind_named(v1::SHAPE_KIND_POLYGON, "polygon"); }
+
+TEST(LiveEventText, ADiamondIsNamed) { expect_kind_named(v1::SHAPE_KIND_DIAMOND, "diamond"); }
 
 TEST(LiveEventText, ShapeJsonNamesReplacedStrokesAndSupersededShapes) {
   const std::string json = penshape::cli::event_json(rectangle_upgrade());

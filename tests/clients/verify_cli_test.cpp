@@ -348,3 +348,16 @@ TEST(VerifyCli, PolygonAnswerVerifiesAndAMovedCornerDoesNot) {
                                                  write("l_hexagon_moved.json", moved));
   EXPECT_EQ(bad.exit_code, 1) << bad.out;
 }
+
+// A flowchart diamond in one stroke (a rhombus of 67 and 113 degrees): `recognize --json` names it
+// a `diamond` with its four corners and `verify` accepts the answer.
+TEST(VerifyCli, DiamondAnswerVerifies) {
+  const std::string text =
+      polyline_stroke_json({{100, 0}, {200, 150}, {100, 300}, {0, 150}, {100, 0}});
+  const std::string strokes = write("diamond.jsonl", text);
+  std::string answer;
+  const Result ok = recognize_and_verify(strokes, &answer);
+  ASSERT_NE(answer.find("\"class\":\"diamond\""), std::string::npos) << answer;
+  EXPECT_EQ(ok.exit_code, 0) << ok.out;
+  EXPECT_EQ(ok.out, "verified\n");
+}

@@ -53,9 +53,8 @@ TEST(RecognizingAnalyzer, CircleIsCertifiedOnTheInk) {
   EXPECT_DOUBLE_EQ(a.shape.certificate().pen_radius().approx(), 0.8);
 }
 
-TEST(RecognizingAnalyzer, AnLShapedHexagonIsAPolygon) {
-  const std::vector<PointD> corners{{20, 20}, {80, 20}, {80, 44}, {44, 44},
-                                    {44, 80}, {20, 80}, {20, 20}};
+// Points along the polyline through `corners`, 40 per side.
+std::vector<PointD> along(const std::vector<PointD>& corners) {
   std::vector<PointD> mm;
   for (std::size_t i = 0; i + 1 < corners.size(); ++i) {
     for (int k = 0; k < 40; ++k) {
@@ -65,6 +64,12 @@ TEST(RecognizingAnalyzer, AnLShapedHexagonIsAPolygon) {
     }
   }
   mm.push_back(corners.back());
+  return mm;
+}
+
+TEST(RecognizingAnalyzer, AnLShapedHexagonIsAPolygon) {
+  const std::vector<PointD> mm =
+      along({{20, 20}, {80, 20}, {80, 44}, {44, 44}, {44, 80}, {20, 80}, {20, 20}});
   const auto analyzer = make_recognizing_analyzer();
   PenSettings settings;
   settings.pen_radius_mm = 0.5;
@@ -73,6 +78,23 @@ TEST(RecognizingAnalyzer, AnLShapedHexagonIsAPolygon) {
   EXPECT_EQ(a.shape.vertices().vertices_size(), 6);
   EXPECT_LE(a.shape.certificate().hausdorff_bound().approx(),
             a.shape.certificate().tolerance().approx());
+}
+
+TEST(RecognizingAnalyzer, ARhombusOfSixtyDegreesIsADiamond) {
+  // Half-diagonals 30 and 30 tan 30 degrees, the long one turned 20 degrees, centre (50, 50).
+  const double t = 20 * std::numbers::pi / 180, a = 30, b = 30 * std::tan(std::numbers::pi / 6);
+  const PointD u{std::cos(t), std::sin(t)}, v{-u.y, u.x}, c{50, 50};
+  const PointD p0{c.x + a * u.x, c.y + a * u.y}, p1{c.x + b * v.x, c.y + b * v.y};
+  const PointD p2{c.x - a * u.x, c.y - a * u.y}, p3{c.x - b * v.x, c.y - b * v.y};
+  const auto analyzer = make_recognizing_analyzer();
+  PenSettings settings;
+  settings.pen_radius_mm = 0.5;
+  const StrokeAnalysis r =
+      analyzer->analyze(stroke_from(along({p0, p1, p2, p3, p0})), settings, {});
+  ASSERT_EQ(r.shape.kind(), v1::SHAPE_KIND_DIAMOND);
+  EXPECT_EQ(r.shape.vertices().vertices_size(), 4);
+  EXPECT_LE(r.shape.certificate().hausdorff_bound().approx(),
+            r.shape.certificate().tolerance().approx());
 }
 
 TEST(RecognizingAnalyzer, ScribbleStaysInk) {

@@ -1,7 +1,8 @@
 // Shapes written back by penshape snap (clients/snap/svg_writer.hpp, xopp_strokes.hpp), read
 // back and compared with the shape's known vertices (in the element's own coordinates): an
-// arrow's bent shaft keeps its bends; a polygon (ShapeClass::kPolygon, 5..8 corners) is an SVG
-// <polygon> through its corners and a Xournal++ stroke that closes on its first corner.
+// arrow's bent shaft keeps its bends; a polygon (ShapeClass::kPolygon, 5..8 corners) and a
+// diamond (a rhombus, any orientation) are an SVG <polygon> through their corners and a Xournal++
+// stroke that closes on its first corner.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -40,6 +41,11 @@ Recognition bent_arrow() {
 // An L-shaped hexagon.
 Recognition l_hexagon() {
   return certified(ShapeClass::kPolygon, {{0, 0}, {40, 0}, {40, 16}, {16, 16}, {16, 40}, {0, 40}});
+}
+
+// A flowchart diamond: a rhombus of half-diagonals 30 (across) and 18 (up), centre (40, 30).
+Recognition flowchart_diamond() {
+  return certified(ShapeClass::kDiamond, {{70, 30}, {40, 48}, {10, 30}, {40, 12}});
 }
 
 // The one stroke of an SVG document, replaced by `r`.
@@ -114,24 +120,41 @@ TEST(ArrowWriter, XournalStrokeHoldsTheShaftsBend) {
             (std::vector<double>{20, 10, 80, 10, 120, -20, 110, -6, 120, -20, 104, -14}));
 }
 
-TEST(PolygonWriter, SvgPolygonThroughTheCorners) {
+// The SVG path `d` replaced by `r`: an SVG <polygon> of class `name` through `corners`.
+void expect_svg_polygon(const std::string& d, const Recognition& r, const char* name,
+                        const std::vector<double>& corners) {
   pugi::xml_document doc;
   const pugi::xml_node out =
       replaced_svg(doc,
-                   "<svg xmlns='http://www.w3.org/2000/svg'>"
-                   "<path id='s' d='M 0,0 L 40,1 L 39,16 L 16,15 L 16,40 L 0,39 Z' "
-                   "style='fill:none;stroke:#000;stroke-width:2'/></svg>",
-                   l_hexagon());
+                   "<svg xmlns='http://www.w3.org/2000/svg'><path id='s' d='" + d +
+                       "' style='fill:none;stroke:#000;stroke-width:2'/></svg>",
+                   r);
   EXPECT_STREQ(out.name(), "polygon");
-  EXPECT_STREQ(out.attribute("data-penshape-class").value(), "polygon");
+  EXPECT_STREQ(out.attribute("data-penshape-class").value(), name);
   const std::string pts = out.attribute("points").value();
-  EXPECT_EQ(numbers(pts), (std::vector<double>{0, 0, 40, 0, 40, 16, 16, 16, 16, 40, 0, 40})) << pts;
+  EXPECT_EQ(numbers(pts), corners) << pts;
+}
+
+TEST(PolygonWriter, SvgPolygonThroughTheCorners) {
+  expect_svg_polygon("M 0,0 L 40,1 L 39,16 L 16,15 L 16,40 L 0,39 Z", l_hexagon(), "polygon",
+                     {0, 0, 40, 0, 40, 16, 16, 16, 16, 40, 0, 40});
 }
 
 TEST(PolygonWriter, XournalStrokeClosesOnItsFirstCorner) {
   const std::string pts =
       replaced_xopp(xopp_page("0 0 40 1 39 16 16 15 16 40 0 39 0 0"), l_hexagon());
   EXPECT_EQ(numbers(pts), (std::vector<double>{0, 0, 40, 0, 40, 16, 16, 16, 16, 40, 0, 40, 0, 0}));
+}
+
+TEST(DiamondWriter, SvgPolygonThroughTheCorners) {
+  expect_svg_polygon("M 70,31 L 41,48 L 10,29 L 39,12 Z", flowchart_diamond(), "diamond",
+                     {70, 30, 40, 48, 10, 30, 40, 12});
+}
+
+TEST(DiamondWriter, XournalStrokeClosesOnItsFirstCorner) {
+  const std::string pts =
+      replaced_xopp(xopp_page("70 31 41 48 10 29 39 12 70 31"), flowchart_diamond());
+  EXPECT_EQ(numbers(pts), (std::vector<double>{70, 30, 40, 48, 10, 30, 40, 12, 70, 30}));
 }
 
 } // namespace

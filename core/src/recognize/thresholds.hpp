@@ -58,6 +58,13 @@ inline constexpr double kMaxPolygonTurn = 5.0 * std::numbers::pi / 6.0;
 // A polygon of 5..8 corners must certify within this fraction of epsilon: 99% of real one-stroke
 // triangles and rectangles do (leaving one writer out: 0.68..0.85); looser is a scribble.
 inline constexpr double kPolygonFraction = 0.85;
+// A rhombus is a diamond when its angles are this far from 90 deg: beyond the tidy-up's right-angle
+// slack, with room for a box drawn skewed (10 / 15 / 20 deg keep 99.6 / 100 / 100% of real
+// one-stroke rectangles and 98.6 / 98.6 / 97.1% of diamonds made from them).
+inline constexpr double kDiamondSkew = 1.5 * (10.0 * kDegree); // 1.5 x kRightAngleSlack
+// An arc stands out from its chord by at least this many epsilons (as a polyline's corner must):
+// flatter, the segment says the same within tolerance (a quick line drawn with a slight bow).
+inline constexpr double kArcMinSagitta = 0.5;
 // Fits whose estimate exceeds this many epsilons are not certified (their certificate could not
 // pass: the estimate is measured on points of the stroke).
 inline constexpr double kCertifyIfBelow = 1.25;
@@ -106,7 +113,8 @@ inline constexpr std::size_t kPieceSamples = 16;
 
 // An ellipse is offered as a circle when its minor / major semi-axis is at least this.
 inline constexpr double kRoundEllipse = 0.8;
-// Corners within this of 90 deg are offered as right angles (a hand's slack).
+// Corners within this of 90 deg are offered as right angles (a hand's slack); a rhombus this
+// close to square is a square, not a diamond.
 inline constexpr double kRightAngleSlack = 10.0 * kDegree;
 // Sides within this relative difference are offered as equal.
 inline constexpr double kEqualSides = 0.15;

@@ -7,6 +7,7 @@
 #include <numbers>
 #include <random>
 
+#include "penshape/core/point_arithmetic.hpp"
 #include "penshape/core/recognize.hpp"
 #include "test_support.hpp"
 
@@ -81,6 +82,13 @@ std::vector<Case> clean_cases(double noise, unsigned seed) {
        ShapeClass::kSquare},
       {"diamond", along({{100, 0}, {200, 150}, {100, 300}, {0, 150}, {100, 0}}, 2, noise, seed),
        ShapeClass::kDiamond},
+      // A rhombus of 60 and 120 degrees, its long diagonal turned 30 degrees.
+      {"tilted diamond",
+       along({{130, 75}, {-43.3, 75}, {-130, -75}, {43.3, -75}, {130, 75}}, 2, noise, seed),
+       ShapeClass::kDiamond},
+      {"square on a corner",
+       along({{100, 0}, {200, 100}, {100, 200}, {0, 100}, {100, 0}}, 2, noise, seed),
+       ShapeClass::kSquare},
       {"quadrilateral", along({{0, 0}, {220, 30}, {160, 160}, {30, 200}, {0, 0}}, 2, noise, seed),
        ShapeClass::kQuadrilateral},
       {"pentagon", regular(100, 100, 100, 5, 0.3, noise, seed), ShapeClass::kRegularPolygon},
@@ -126,6 +134,42 @@ TEST(RecognizeSynthetic, NoisyShapesSnapToTheirClass) {
       if (r.shape != ShapeClass::kFreeform) expect_certified_snap(c, r);
     }
   }
+}
+
+// A rhombus with half-diagonals a (along theta) and b, centred at c, drawn from its first corner.
+Points rhombus(PointD c, double a, double b, double theta) {
+  const PointD u{std::cos(theta), std::sin(theta)}, v{-u.y, u.x};
+  const PointD p0 = c + a * u, p1 = c + b * v, p2 = c - a * u, p3 = c - b * v;
+  return along({p0, p1, p2, p3, p0}, 2, 0, 1);
+}
+
+TEST(RecognizeDiamond, ParametersAreTheRhombus) {
+  // 60 and 120 degree corners (b = a tan 30), long diagonal at 30 degrees.
+  const double theta = std::numbers::pi / 6;
+  const Recognition r = recognize(rhombus({50, 40}, 150, 150 * std::tan(theta), theta));
+  ASSERT_EQ(r.shape, ShapeClass::kDiamond);
+  EXPECT_NEAR(r.params.center.x, 50, 1.5);
+  EXPECT_NEAR(r.params.center.y, 40, 1.5);
+  EXPECT_NEAR(r.params.rotation, theta, 0.02);
+  EXPECT_NEAR(r.params.radius_x, 150, 2.0);
+  EXPECT_NEAR(r.params.radius_y, 150 * std::tan(theta), 2.0);
+  ASSERT_EQ(r.params.vertices.size(), 4U);
+}
+
+TEST(RecognizeDiamond, NearSquareRhombusIsNoDiamond) {
+  // Angles 82 and 98 degrees (within 15 degrees of right ones): a square drawn skewed.
+  const double half = 41.0 * std::numbers::pi / 180;
+  const Recognition r = recognize(rhombus({0, 0}, 120, 120 * std::tan(half), 0.2));
+  EXPECT_NE(r.shape, ShapeClass::kDiamond);
+  EXPECT_NE(r.shape, ShapeClass::kFreeform);
+  bool tried = false;
+  for (const Candidate& a : r.alternatives) {
+    if (a.shape == ShapeClass::kDiamond && a.certificate.certified) {
+      tried = true;
+      EXPECT_NE(a.rejected.find("right angles"), std::string::npos) << a.rejected;
+    }
+  }
+  EXPECT_TRUE(tried);
 }
 
 TEST(RecognizeSynthetic, ParametersOfCleanShapes) {

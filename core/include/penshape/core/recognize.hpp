@@ -83,6 +83,9 @@
 //     neighbours;
 //   - an open polyline must not cross itself (x, alpha, delete marks are gestures);
 //   - a polygon of 5..8 corners does not cross itself (a star drawn in one stroke is no polygon);
+//   - a diamond (a rhombus in any orientation: centre, angle, two half-diagonals) has angles more
+//     than 15 degrees from right ones (1.5 times the tidy-up's right-angle slack); closer, it is
+//     a square: a square standing on a corner is a square, turned 45 degrees;
 //   - every side of a polygon (triangle, quadrilateral, rectangle, square, diamond, polygon) is at
 //     least epsilon long, and every corner is at least epsilon from the chord of its two neighbours
 //     (otherwise the polygon with one corner less says the same within tolerance: a corner drawn
@@ -95,10 +98,10 @@
 //     rank = (bound + 2 rms) / epsilon + 0.15 * (free parameters),
 // with rms the root-mean-square distance of the stroke to the clean shape (the mean error tells
 // a sloppy circle from a sloppy square better than the worst error does): a square (4) before a
-// rectangle (5) before a quadrilateral (8) before a polygon (2 per corner), a circle (3) before an
-// ellipse (5), unless the richer shape fits clearly better. `alternatives` lists every other
-// candidate with its certificate (and why it was rejected). Strokes with no plausible certified
-// candidate are `freeform`.
+// rectangle or diamond (5) before a quadrilateral (8) before a polygon (2 per corner), a circle
+// (3) before an ellipse (5), unless the richer shape fits clearly better. `alternatives` lists
+// every other candidate with its certificate (and why it was rejected). Strokes with no plausible
+// certified candidate are `freeform`.
 //
 // Dots. A stroke whose samples all sit at one position is a `dot` (never an error): its clean
 // shape is that point, certified with bound 0 (the two paths coincide), in every entry
@@ -149,7 +152,7 @@ enum class ShapeClass {
   kQuadrilateral,
   kRectangle,
   kSquare,
-  kDiamond,        // a rhombus whose diagonals are near the x and y axes
+  kDiamond,        // a rhombus (any orientation) whose angles are > 15 degrees from right ones
   kRegularPolygon, // 5, 6 or 8 equal sides and angles
   kCircle,
   kEllipse,

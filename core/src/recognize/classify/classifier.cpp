@@ -130,6 +130,18 @@ std::string polygon_implausibility(const PreparedStroke& s, const Fit& f, const 
   return {};
 }
 
+// A diamond is a rhombus whose angles are far from 90 degrees: its acute angle, 2 atan(b / a)
+// for half-diagonals b <= a, is below a right angle by more than kDiamondSkew. Closer, it is a
+// square (standing on a corner, or a box drawn skewed).
+std::string diamond_implausibility(const Fit& f) {
+  const double a = std::max(f.params.radius_x, f.params.radius_y);
+  const double b = std::min(f.params.radius_x, f.params.radius_y);
+  if (std::numbers::pi / 2 - 2.0 * std::atan2(b, a) <= kDiamondSkew) {
+    return "the rhombus's angles are within 15 degrees of right angles (a square or a skewed box)";
+  }
+  return {};
+}
+
 // A closed polygon's corners must be corners: sides of at least epsilon, corners off their
 // neighbours' chord by at least epsilon.
 std::string corner_implausibility(const Fit& f, const Certificate& c) {
@@ -160,6 +172,9 @@ std::string implausibility(const PreparedStroke& s, const Fit& f, const Certific
   if (f.shape == ShapeClass::kPolygon) {
     if (std::string why = polygon_implausibility(s, f, c); !why.empty()) return why;
   }
+  if (f.shape == ShapeClass::kDiamond) {
+    if (std::string why = diamond_implausibility(f); !why.empty()) return why;
+  }
   if (has_corners(f.shape)) return corner_implausibility(f, c);
   if (f.shape == ShapeClass::kRegularPolygon) {
     const double n = static_cast<double>(f.params.vertices.size());
@@ -169,6 +184,10 @@ std::string implausibility(const PreparedStroke& s, const Fit& f, const Certific
   }
   if (f.shape == ShapeClass::kArc && turning_monotonicity(s) < config.arc_monotone_turning) {
     return "the stroke turns both ways (not an arc)";
+  }
+  if (f.shape == ShapeClass::kArc &&
+      f.params.radius_x * (1.0 - std::cos(f.params.sweep_angle / 2)) < kArcMinSagitta * c.epsilon) {
+    return "the arc stands out from its chord by less than epsilon / 2 (a line drawn bowed)";
   }
   return {};
 }
@@ -196,7 +215,7 @@ double degrees_of_freedom(const Fit& fit) {
     case ShapeClass::kSquare:
       return 4;
     case ShapeClass::kDiamond:
-      return 4;
+      return 5; // centre, angle, two half-diagonals
     case ShapeClass::kRegularPolygon:
       return 6;
     case ShapeClass::kCircle:

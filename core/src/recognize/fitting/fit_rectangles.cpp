@@ -117,32 +117,38 @@ Fit fit_square(const PreparedStroke& s, const Fit& rectangle) {
   return sf;
 }
 
-// Diamond: a rhombus with axis-parallel diagonals: centre and the two half-diagonals.
-Fit fit_diamond(const PreparedStroke& s, const std::vector<PointD>& q) {
-  double xlo = INFINITY, xhi = -INFINITY, ylo = INFINITY, yhi = -INFINITY;
-  for (const PointD& p : q) {
-    xlo = std::min(xlo, p.x);
-    xhi = std::max(xhi, p.x);
-    ylo = std::min(ylo, p.y);
-    yhi = std::max(yhi, p.y);
-  }
-  auto diamond_corners = [](PointD c, double dx, double dy) {
-    return std::vector<PointD>{{c.x + dx, c.y}, {c.x, c.y + dy}, {c.x - dx, c.y}, {c.x, c.y - dy}};
-  };
-  const ShapeBuilder diamond = [&](const std::vector<double>& p) -> std::optional<CleanShape> {
+// The rhombus with centre c, one diagonal along direction theta and half-diagonals a (along
+// theta) and b (across): its corners in turn.
+std::vector<PointD> rhombus_corners(PointD c, double a, double b, double theta) {
+  const PointD u{std::cos(theta), std::sin(theta)};
+  const PointD v{-u.y, u.x};
+  return {c + a * u, c + b * v, c - a * u, c - b * v};
+}
+
+// Diamond: a rhombus in any orientation (centre, two half-diagonals, angle), seeded with the
+// quadrilateral's diagonals: the one through its corners 0 and 2 gives the angle, the corners'
+// reach along and across it the half-diagonals.
+Fit fit_diamond(const PreparedStroke& s, const std::vector<PointD>& q, PointD c0) {
+  const double size = s.size;
+  const double theta0 = std::atan2(q[2].y - q[0].y, q[2].x - q[0].x);
+  const PointD u{std::cos(theta0), std::sin(theta0)};
+  const PointD v{-u.y, u.x};
+  const double a0 = (std::abs(dot(q[0] - c0, u)) + std::abs(dot(q[2] - c0, u))) / 2;
+  const double b0 = (std::abs(dot(q[1] - c0, v)) + std::abs(dot(q[3] - c0, v))) / 2;
+  const ShapeBuilder rhombus = [size](const std::vector<double>& p) -> std::optional<CleanShape> {
     if (p[2] <= 0 || p[3] <= 0) return std::nullopt;
     CleanShape c;
-    c.path = closed_ring(diamond_corners({p[0], p[1]}, p[2], p[3]));
+    c.path = closed_ring(rhombus_corners({p[0], p[1]}, p[2], p[3], p[4] / size));
     return c;
   };
   const Refinement d =
-      refine_minimax(s, {(xlo + xhi) / 2, (ylo + yhi) / 2, (xhi - xlo) / 2, (yhi - ylo) / 2},
-                     diamond, 0.02 * s.size, true);
+      refine_minimax(s, {c0.x, c0.y, a0, b0, theta0 * size}, rhombus, 0.02 * size, true);
+  double theta = d.params[4] / size, a = d.params[2], b = d.params[3];
+  normalise(theta, a, b);
   const PointD dc{d.params[0], d.params[1]};
-  Fit df = make_fit(ShapeClass::kDiamond, diamond_corners(dc, d.params[2], d.params[3]),
-                    d.objective, dc, 0.0);
-  df.params.radius_x = d.params[2];
-  df.params.radius_y = d.params[3];
+  Fit df = make_fit(ShapeClass::kDiamond, rhombus_corners(dc, a, b, theta), d.objective, dc, theta);
+  df.params.radius_x = a;
+  df.params.radius_y = b;
   return df;
 }
 
@@ -152,7 +158,7 @@ std::vector<Fit> fit_rectangles(const PreparedStroke& s, const Fit& quad) {
   const std::vector<PointD>& q = quad.params.vertices;
   if (q.size() != 4) return {};
   const Fit rectangle = fit_rectangle(s, rectangle_start(q, quad.params.center));
-  return {rectangle, fit_square(s, rectangle), fit_diamond(s, q)};
+  return {rectangle, fit_square(s, rectangle), fit_diamond(s, q, quad.params.center)};
 }
 
 std::optional<Fit> fit_regular_polygon(const PreparedStroke& s, std::size_t sides, PointD center,

@@ -54,9 +54,10 @@ std::vector<std::pair<PointD, PointD>> edges_of(ShapeClass c, const ShapeParams&
   return out;
 }
 
-// Direction (radians) of the longest edge, or of an ellipse's axis.
+// Direction (radians) of the longest edge, or of an ellipse's axis or a diamond's diagonal (its
+// sides are equal: the diagonals are what a flowchart aligns).
 std::optional<double> main_direction(ShapeClass c, const ShapeParams& p) {
-  if (c == ShapeClass::kEllipse) return p.rotation;
+  if (c == ShapeClass::kEllipse || c == ShapeClass::kDiamond) return p.rotation;
   if (!has_vertices(c) || p.vertices.size() < 2) return std::nullopt;
   double best = -1.0, angle = 0.0;
   for (const auto& [a, b] : edges_of(c, p)) {

@@ -1,0 +1,95 @@
+// Per-class figures of the shipped recognizer (recognize_classes.hpp).
+//
+// Diamonds: no shared corpus holds one-stroke diamonds, so real one-stroke rectangles ($1, and
+// the gestures' squares) are mapped onto them: the stroke's bounding box to the unit square,
+// turned 45 degrees, then stretched across by 0.6 (a rhombus of 62 and 118 degrees, a flowchart
+// decision) or not at all (a square on its corner, which must stay a square). The hand's wobble,
+// corners and closure are the writer's own; only the affine frame is chosen.
+#include "recognize_classes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <numbers>
+#include <set>
+#include <string>
+#include <tuple>
+
+#include "recognize_accuracy.hpp"
+
+namespace penshape::bench {
+namespace {
+
+constexpr double kDiamondAcross = 0.6; // half-diagonal ratio of the made diamonds (62 degrees)
+
+struct Count {
+  int drawings = 0, right = 0;
+  [[nodiscard]] double rate() const { return drawings ? 100.0 * right / drawings : 0.0; }
+};
+
+// The stroke's box to the unit square, turned 45 degrees, stretched by `across` along y.
+std::vector<StrokePoint> on_corner(const std::vector<StrokePoint>& in, double across) {
+  double xlo = in[0].x, xhi = xlo, ylo = in[0].y, yhi = ylo;
+  for (const StrokePoint& p : in) {
+    xlo = std::min(xlo, p.x), xhi = std::max(xhi, p.x);
+    ylo = std::min(ylo, p.y), yhi = std::max(yhi, p.y);
+  }
+  const double w = std::max(xhi - xlo, 1e-9), h = std::max(yhi - ylo, 1e-9);
+  const double c = std::cos(std::numbers::pi / 4), s = std::sin(std::numbers::pi / 4);
+  std::vector<StrokePoint> out = in;
+  for (StrokePoint& p : out) {
+    const double x = 100.0 * (p.x - xlo) / w, y = 100.0 * (p.y - ylo) / h;
+    p = {c * x - s * y, across * (s * x + c * y), p.t};
+  }
+  return out;
+}
+
+struct Row {
+  std::string name;
+  Count count;
+};
+
+void tally(std::map<std::string, Count>& rows, const std::string& key, bool right) {
+  Count& c = rows[key];
+  ++c.drawings;
+  c.right += right ? 1 : 0;
+}
+
+void print_miss(const Drawing& d, const std::string& row, ShapeClass got) {
+  std::printf("    wrong: %-28s %-14s %s\n", row.c_str(), to_string(got), d.file.c_str());
+}
+
+} // namespace
+
+void print_classes(const std::vector<Drawing>& drawings, const ClassOptions& options) {
+  std::map<std::string, Count> rows; // "corpus/label" -> right (shapes) or left as ink
+  const std::set<std::string> diamond{"diamond"};
+  const std::set<std::string> square{"square", "rectangle", "quadrilateral"};
+  for (const Drawing& d : drawings) {
+    if (d.strokes.size() != 1) continue;
+    const std::set<std::string>* targets = shape_targets(d.label);
+    if (targets == nullptr && !is_non_shape(d.label)) continue;
+    const ShapeClass got = recognize(d.strokes.front()).shape;
+    const bool right = targets != nullptr ? targets->contains(to_string(got))
+                                          : got == ShapeClass::kFreeform || got == ShapeClass::kDot;
+    const std::string key = d.corpus + (targets ? " shape " : " non-shape ") + d.label;
+    tally(rows, key, right);
+    if (!right && options.list_wrong) print_miss(d, key, got);
+    if (targets == nullptr || (d.label != "rectangle" && d.label != "square")) continue;
+    for (const auto& [across, name, want] :
+         {std::tuple{kDiamondAcross, "diamond (rectangle, 45, 0.6)", &diamond},
+          std::tuple{1.0, "square on a corner (45)", &square}}) {
+      const ShapeClass made = recognize(on_corner(d.strokes.front(), across)).shape;
+      const bool ok = want->contains(to_string(made));
+      tally(rows, d.corpus + " made " + name, ok);
+      if (!ok && options.list_wrong) print_miss(d, name, made);
+    }
+  }
+  std::printf("  per class, shipped defaults (shapes: named right; non-shapes: left as ink)\n");
+  for (const auto& [key, c] : rows) {
+    std::printf("    %-44s %5d  %5.1f%%\n", key.c_str(), c.drawings, c.rate());
+  }
+}
+
+} // namespace penshape::bench
