@@ -23,6 +23,10 @@ constexpr double kMinCornerTurnShare = 0.4;
 // Crossings are looked for on each stroke thinned within this fraction of its epsilon (a
 // crossing that thinning moves stays within the join distance, which is much larger).
 constexpr double kCrossingThinning = 0.05;
+// An arrow's strokes cross in their middles when the crossing is farther than this share of each
+// stroke's length from its ends (and than the join distance): a shaft overshooting its head's
+// tip by a hand's slip is no such crossing; arms across a stick figure's body are.
+constexpr double kMiddleOfArrowPiece = 0.25;
 
 bool is_round(ShapeClass c) {
   return c == ShapeClass::kCircle || c == ShapeClass::kEllipse || c == ShapeClass::kArc;
@@ -92,12 +96,14 @@ bool curve_for_corner(const std::vector<std::vector<PointD>>& paths,
 }
 
 // Whether two pieces cross properly at a point farther than `join` from the ends of one of them
-// (`in_both`: of both). Overshooting corners cross near the ends of both; an arrow's head crosses
-// its shaft at the shaft's end (the tip) and in the head's own middle.
+// (`in_both`: in the middle halves of both, kMiddleOfArrowPiece). Overshooting corners cross near
+// the ends of both; an arrow's head crosses its shaft at the shaft's end (the tip, which the
+// shaft may overshoot) and in the head's own middle.
 bool cross_in_middle(const std::vector<PointD>& a, const std::vector<PointD>& b, double join,
                      bool in_both) {
-  auto far_from_ends = [join](PointD x, const std::vector<PointD>& p) {
-    return distance(x, p.front()) > join && distance(x, p.back()) > join;
+  auto far_from_ends = [join, in_both](PointD x, const std::vector<PointD>& p) {
+    const double margin = in_both ? std::max(join, kMiddleOfArrowPiece * path_length(p)) : join;
+    return distance(x, p.front()) > margin && distance(x, p.back()) > margin;
   };
   for (std::size_t i = 0; i + 1 < a.size(); ++i) {
     for (std::size_t j = 0; j + 1 < b.size(); ++j) {
