@@ -2,6 +2,7 @@
 // (group_recognize.hpp, "Grouping"), then tidy-up.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <optional>
 
@@ -99,7 +100,7 @@ std::vector<std::size_t> masks_by_size(const std::vector<std::size_t>& recent,
 // measured from it.
 template <typename Entries>
 double previous_end(const Entries& groups) {
-  double end = -INFINITY;
+  double end = -std::numeric_limits<double>::infinity();
   for (const auto& e : groups) end = std::max(end, e.end_time);
   return end;
 }
