@@ -2,7 +2,9 @@
 #include "group_gesture_figures.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <map>
 #include <set>
 #include <string>
@@ -81,7 +83,41 @@ struct Tally {
   Figure shapes, non_shapes, chevrons_as_arrows;
   std::map<std::string, Figure> rows; // "square in 2 strokes (LowVision)", ...
   std::map<std::string, int> misses;  // "arrow in 2 strokes (MMG) -> polyline polyline"
+  std::filesystem::path svg_dir;      // when set, every miss is drawn there
 };
+
+// A miss drawn to look at: the strokes (grey, numbered at their start) and each group's clean
+// shape (red), with the answer as the title.
+void draw_miss(const std::filesystem::path& dir, const Drawing& d,
+               const std::vector<GroupedShape>& out, const std::string& answer) {
+  double xl = INFINITY, yl = INFINITY, xh = -INFINITY, yh = -INFINITY;
+  for (const auto& s : d.strokes) {
+    for (const StrokePoint& q : s) {
+      xl = std::min(xl, q.x), yl = std::min(yl, q.y), xh = std::max(xh, q.x),
+      yh = std::max(yh, q.y);
+    }
+  }
+  const double pad = 0.1 * std::max(xh - xl, yh - yl) + 1.0;
+  std::ofstream svg(dir / (std::filesystem::path(d.file).stem().string() + ".svg"));
+  svg << "<svg xmlns='http://www.w3.org/2000/svg' width='400' height='400' viewBox='" << xl - pad
+      << ' ' << yl - 2 * pad << ' ' << xh - xl + 2 * pad << ' ' << yh - yl + 3 * pad
+      << "'><rect x='-1e5' y='-1e5' width='2e5' height='2e5' fill='white'/>\n<text x='" << xl - pad
+      << "' y='" << yl - pad << "' font-size='" << pad / 2 << "'>" << answer << "</text>\n";
+  const double w = 0.01 * std::max(xh - xl, yh - yl);
+  for (std::size_t k = 0; k < d.strokes.size(); ++k) {
+    svg << "<polyline fill='none' stroke='black' stroke-opacity='0.4' stroke-width='" << 3 * w
+        << "' points='";
+    for (const StrokePoint& q : d.strokes[k]) svg << q.x << ',' << q.y << ' ';
+    svg << "'/><text fill='blue' font-size='" << pad / 2 << "' x='" << d.strokes[k].front().x
+        << "' y='" << d.strokes[k].front().y << "'>" << k + 1 << "</text>\n";
+  }
+  for (const GroupedShape& g : out) {
+    svg << "<polyline fill='none' stroke='red' stroke-width='" << w << "' points='";
+    for (const PointD& q : g.recognition.clean) svg << q.x << ',' << q.y << ' ';
+    svg << "'/>\n";
+  }
+  svg << "</svg>\n";
+}
 
 std::string answer_of(const std::vector<GroupedShape>& out) {
   std::string s = std::to_string(out.size());
@@ -128,8 +164,10 @@ void tally(const Drawing& d, Tally& t) {
     }
     t.non_shapes.add(d.subject, merged);
     t.rows["non-shape " + d.label + " (" + source_of(d) + ")"].add(d.subject, merged);
-    if (merged)
+    if (merged) {
       ++t.misses[d.label + " in " + strokes_of(d.strokes.size()) + " -> " + answer_of(out)];
+      if (!t.svg_dir.empty()) draw_miss(t.svg_dir, d, out, d.label + " -> " + answer_of(out));
+    }
     return;
   }
   const std::set<std::string>& targets = square ? kRectangle : kArrow;
@@ -138,16 +176,23 @@ void tally(const Drawing& d, Tally& t) {
                           strokes_of(d.strokes.size()) + " (" + source_of(d) + ")";
   t.rows[row].add(d.subject, ok);
   t.shapes.add(d.subject, ok);
-  if (!ok) ++t.misses[row + " -> " + answer_of(out) + why_no_arrow(d, arrow)];
+  if (ok) return;
+  const std::string answer = answer_of(out) + why_no_arrow(d, arrow);
+  ++t.misses[row + " -> " + answer];
+  if (!t.svg_dir.empty()) draw_miss(t.svg_dir, d, out, row + " -> " + answer);
 }
 
 } // namespace
 
-void print_group_gesture_figures(const std::filesystem::path& gestures_root, bool json) {
+void print_group_gesture_figures(const std::filesystem::path& gestures_root, bool json,
+                                 const std::filesystem::path& svg_dir, const std::string& only) {
   const std::vector<Drawing> drawings = load_gestures(gestures_root);
   if (drawings.empty()) return;
   Tally t;
-  for (const Drawing& d : drawings) tally(d, t);
+  t.svg_dir = svg_dir;
+  for (const Drawing& d : drawings) {
+    if (only.empty() || d.label == only) tally(d, t);
+  }
   if (!json) std::printf("\nother people's drawings (%s; never tuned on):\n", "gestures");
   print_figure("shapes right (squares, arrows), all strokes", t.shapes, ">= 95%", false, json);
   for (const auto& [k, r] : t.rows) {

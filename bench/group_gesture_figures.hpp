@@ -4,10 +4,14 @@
 // and drawings of several strokes that are no shape (letters, notes, a stick figure), which must
 // not be snapped together. Per class and per source beside the whole.
 #include <filesystem>
+#include <string>
 
 namespace penshape::bench {
 
-// Prints the figures; nothing when the gestures are not there.
-void print_group_gesture_figures(const std::filesystem::path& gestures_root, bool json);
+// Prints the figures; nothing when the gestures are not there. With svg_dir, every miss is also
+// drawn there; with `only`, only the drawings of that class are scored.
+void print_group_gesture_figures(const std::filesystem::path& gestures_root, bool json,
+                                 const std::filesystem::path& svg_dir = {},
+                                 const std::string& only = {});
 
 } // namespace penshape::bench

@@ -17,8 +17,9 @@
 // Usage: group_recognize_bench [--json] [--gestures-only] [--svg-dir DIR]
 //   (data dir: $PENSHAPE_SHARED_DATA_DIR)
 //   --gestures-only: only the figures on other people's drawings.
+//   --only CLASS: with --gestures-only, only the gestures of that class ("D", "arrowhead", ...).
 //   --svg-dir: every arrow missed is drawn to DIR (strokes, and the best arrow candidate with why
-//              it was refused), to look at the failures.
+//              it was refused), and every miss on other people's drawings, to look at them.
 #include <time.h>
 
 #include <algorithm>
@@ -35,6 +36,7 @@
 #include "group_gesture_figures.hpp"
 #include "multi_stroke_cases.hpp"
 #include "penshape/core/group_recognize.hpp"
+#include "recognize/group_plausibility.hpp"
 
 namespace {
 
@@ -151,6 +153,22 @@ void draw_miss(const std::filesystem::path& file, const std::vector<Points>& str
   out << "</svg>\n";
 }
 
+// Turns one of the grouping rules (GroupRules) off, to measure what it does.
+bool switch_off(const std::string& rule) {
+  penshape::recognize_detail::GroupRules& r = penshape::recognize_detail::group_rules();
+  if (rule == "open_polylines") {
+    r.no_open_polylines = false;
+  } else if (rule == "curved_sides") {
+    r.no_curved_sides = false;
+  } else if (rule == "crossing_pieces") {
+    r.no_crossing_pieces = false;
+  } else {
+    std::fprintf(stderr, "group_recognize_bench: no rule %s\n", rule.c_str());
+    return false;
+  }
+  return true;
+}
+
 double quantile(std::vector<double> v, double q) {
   if (v.empty()) return 0.0;
   std::sort(v.begin(), v.end());
@@ -162,17 +180,23 @@ double quantile(std::vector<double> v, double q) {
 int main(int argc, char** argv) {
   bool json = false, gestures_only = false;
   std::filesystem::path svg_dir;
+  std::string only;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--json") == 0) {
       json = true;
     } else if (std::strcmp(argv[i], "--gestures-only") == 0) {
       gestures_only = true;
+    } else if (std::strcmp(argv[i], "--without") == 0 && i + 1 < argc) {
+      if (!switch_off(argv[++i])) return 2;
+    } else if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc) {
+      only = argv[++i];
     } else if (std::strcmp(argv[i], "--svg-dir") == 0 && i + 1 < argc) {
       svg_dir = argv[++i];
       std::filesystem::create_directories(svg_dir);
     } else {
       std::fprintf(stderr,
-                   "usage: group_recognize_bench [--json] [--gestures-only] [--svg-dir DIR]\n");
+                   "usage: group_recognize_bench [--json] [--gestures-only [--only CLASS]] "
+                   "[--svg-dir DIR]\n");
       return 2;
     }
   }
@@ -184,7 +208,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (gestures_only) {
-    penshape::bench::print_group_gesture_figures(root.parent_path() / "gestures", json);
+    penshape::bench::print_group_gesture_figures(root.parent_path() / "gestures", json, svg_dir,
+                                                 only);
     return 0;
   }
   const std::vector<Gesture> gestures = penshape::cases::dollar_gestures(root);

@@ -140,6 +140,18 @@ inline constexpr std::size_t kExhaustiveUpTo = 6;
 // inside is within epsilon of its outline, so any strokes side by side would certify as it.
 inline constexpr double kMinClosedWidth = 2.0;
 
+// A corner of a straight-sided group inside one stroke is a corner of that stroke: within epsilon
+// of arc length either side, the stroke turns by at least this share of the shape's turn (a D's or
+// P's bowl turns far less; MMG D's 0.30/0.35/0.40/0.45 -> 11/5/3/1% snapped, held-out MMG+ D's
+// 35/13/7/5%, 2-stroke squares kept 96/96/96/86%).
+inline constexpr double kMinCornerTurnShare = 0.4;
+// Crossings are looked for on strokes thinned within this fraction of their epsilon (a crossing
+// that thinning moves stays within the join distance, which is much larger).
+inline constexpr double kCrossingThinning = 0.05;
+// An arrow's strokes cross in their middles beyond this share of each stroke from its ends: a
+// shaft overshooting its head's tip is no such crossing; arms across a stick figure's body are.
+inline constexpr double kMiddleOfArrowPiece = 0.25;
+
 // --- live/ ---------------------------------------------------------------------------------
 
 // The drawing grew by half: epsilon grew with it, so the candidates are refitted.

@@ -69,7 +69,7 @@ TEST(GroupForget, RectangleAfterThreeHundredStrokesStillGroupsWithBoundedMemory)
     if (max_strokes < 4) continue;
     EXPECT_EQ(last.shape.recognition.shape, ShapeClass::kRectangle) << max_strokes;
     EXPECT_EQ(last.shape.strokes, (std::vector<std::size_t>{300, 301, 302, 303}));
-    EXPECT_EQ(last.superseded.size(), 1u); // the three sides' polyline
+    EXPECT_EQ(last.superseded.size(), 3u); // the three sides, each alone (no open polyline group)
     EXPECT_GE(trimmed.oldest_retained_stroke(), 300u - 6 * max_strokes);
     // The unrelated strokes all snapped alone: each of the 300 is its own answer.
     EXPECT_LE(trimmed.shapes().size(), max_strokes + 6 + 6);

@@ -55,15 +55,6 @@ TEST(GroupPlausibility, DashesFourMillimetresApartStaySeparate) {
   EXPECT_EQ(out.size(), 4u);
 }
 
-TEST(GroupPlausibility, AnLInTwoStrokesIsStillAPolyline) {
-  // Pieces drawn end to end still group (the rule refuses junctions, not corners).
-  std::vector<StrokeInput> s{stroke_along({{0, 0}, {0, 100}}, 0.0)};
-  s.push_back(stroke_along({{2, 101}, {100, 100}}, next_start(s)));
-  const auto out = recognize_strokes(s);
-  ASSERT_EQ(out.size(), 1u);
-  EXPECT_EQ(out[0].recognition.shape, ShapeClass::kPolyline);
-}
-
 TEST(GroupPlausibility, AHeadDrawnApartMayBeAsLongAsTheShaft) {
   // The shaft, then the head in one stroke, its barbs 0.83 shafts long (people draw a head apart
   // large): an arrow, since the strokes tell the shaft from the head.

@@ -2,10 +2,16 @@
 #include "recognize/group/group_plausibility.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
+#include "geometry/exact_predicates.hpp"
+#include "recognize/arrow/arrow_limits.hpp"
+#include "recognize/classify/classifier.hpp"
+#include "recognize/fitting/thin_path.hpp"
 #include "recognize/group/group_classifier.hpp"
 #include "recognize/group/stroke_chain.hpp"
+#include "recognize/thresholds.hpp"
 
 namespace penshape::recognize_detail {
 namespace {
@@ -18,6 +24,8 @@ bool closed_round(ShapeClass c) { return c == ShapeClass::kCircle || c == ShapeC
 
 bool straight(ShapeClass c) { return c == ShapeClass::kSegment || c == ShapeClass::kPolyline; }
 
+bool straight_sided_closed(ShapeClass c) { return convex_polygon(c) || c == ShapeClass::kPolygon; }
+
 // Why a piece recognized alone as `own` is no piece of a `group` (empty when it may be one).
 std::string kind_mismatch(ShapeClass group, ShapeClass own) {
   if (is_round(group) && straight(own))
@@ -29,13 +37,116 @@ std::string kind_mismatch(ShapeClass group, ShapeClass own) {
   return {};
 }
 
+// The point at arc length `at` along a path whose cumulative lengths are `lengths`.
+PointD point_at(const std::vector<PointD>& path, const std::vector<double>& lengths, double at) {
+  const auto it = std::lower_bound(lengths.begin(), lengths.end(), at);
+  if (it == lengths.begin()) return path.front();
+  if (it == lengths.end()) return path.back();
+  const auto k = static_cast<std::size_t>(it - lengths.begin());
+  const double span = lengths[k] - lengths[k - 1];
+  const double w = span > 0.0 ? (at - lengths[k - 1]) / span : 0.0;
+  return path[k - 1] + w * (path[k] - path[k - 1]);
+}
+
+// Whether the piece passes a corner of the shape (v, between `before` and `after`) away from its
+// ends without turning there (kMinCornerTurnShare): it rounds it as a curve does.
+bool rounds_corner(const std::vector<PointD>& piece, PointD before, PointD v, PointD after,
+                   double epsilon) {
+  std::vector<double> lengths{0.0};
+  double nearest = INFINITY, at = 0.0;
+  for (std::size_t i = 0; i + 1 < piece.size(); ++i) {
+    const PointD d = piece[i + 1] - piece[i];
+    const double len = norm(d);
+    const double w = len > 0.0 ? std::clamp(dot(v - piece[i], d) / (len * len), 0.0, 1.0) : 0.0;
+    const double dist = distance(v, piece[i] + w * d);
+    if (dist < nearest) nearest = dist, at = lengths.back() + w * len;
+    lengths.push_back(lengths.back() + len);
+  }
+  // Not on this piece, or where it starts or ends (a corner between two pieces).
+  if (nearest > epsilon || at < epsilon || at > lengths.back() - epsilon) return false;
+  const PointD p = point_at(piece, lengths, at);
+  const double turn = angle_between(p - point_at(piece, lengths, at - epsilon),
+                                    point_at(piece, lengths, at + epsilon) - p);
+  return turn < kMinCornerTurnShare * angle_between(v - before, after - v);
+}
+
+// Whether some piece rounds a corner of the closed polygon `outline` (first vertex repeated).
+bool curve_for_corner(const std::vector<std::vector<PointD>>& paths,
+                      const std::vector<PointD>& outline, double epsilon) {
+  const std::size_t n = outline.size() - 1;
+  for (std::size_t k = 0; k < n; ++k) {
+    const PointD before = outline[(k + n - 1) % n], v = outline[k], after = outline[(k + 1) % n];
+    for (const std::vector<PointD>& p : paths) {
+      if (rounds_corner(p, before, v, after, epsilon)) return true;
+    }
+  }
+  return false;
+}
+
+// Whether two pieces cross properly at a point farther than `join` from the ends of one of them
+// (`in_both`: in the middle halves of both, kMiddleOfArrowPiece). Overshooting corners cross near
+// the ends of both; an arrow's head crosses its shaft at the shaft's end (the tip, which the
+// shaft may overshoot) and in the head's own middle.
+bool cross_in_middle(const std::vector<PointD>& a, const std::vector<PointD>& b, double join,
+                     bool in_both) {
+  auto far_from_ends = [join, in_both](PointD x, const std::vector<PointD>& p) {
+    const double margin = in_both ? std::max(join, kMiddleOfArrowPiece * path_length(p)) : join;
+    return distance(x, p.front()) > margin && distance(x, p.back()) > margin;
+  };
+  for (std::size_t i = 0; i + 1 < a.size(); ++i) {
+    for (std::size_t j = 0; j + 1 < b.size(); ++j) {
+      if (!detail::segments_cross_properly(a[i], a[i + 1], b[j], b[j + 1])) continue;
+      PointD x;
+      if (!line_intersection(a[i], a[i + 1] - a[i], b[j], b[j + 1] - b[j], x)) continue;
+      const bool far_a = far_from_ends(x, a), far_b = far_from_ends(x, b);
+      if (in_both ? far_a && far_b : far_a || far_b) return true;
+    }
+  }
+  return false;
+}
+
+// Whether two of the pieces cross in their middles (cross_in_middle).
+bool pieces_cross(const std::vector<std::vector<PointD>>& paths, double stroke_epsilon, double join,
+                  bool in_both) {
+  std::vector<std::vector<PointD>> thin;
+  for (const std::vector<PointD>& p : paths)
+    thin.push_back(thin_path(p, kCrossingThinning * stroke_epsilon));
+  for (std::size_t i = 0; i < thin.size(); ++i) {
+    for (std::size_t j = i + 1; j < thin.size(); ++j) {
+      if (cross_in_middle(thin[i], thin[j], join, in_both)) return true;
+    }
+  }
+  return false;
+}
+
+// The rules of GroupRules for a union that chains end to end (empty when none refuses it).
+std::string piece_rules(const Recognition& r, const std::vector<std::vector<PointD>>& paths,
+                        double stroke_epsilon, double join) {
+  const GroupRules& rules = group_rules();
+  // The pieces of a written letter (A, H, X, I, an asterisk) and of a stick figure meet end to
+  // end as an open polyline's do: nothing but the closing piece or a head tells a shape.
+  if (rules.no_open_polylines && r.shape == ShapeClass::kPolyline) {
+    return "an open polyline in pieces is no shape (letters meet end to end as well)";
+  }
+  if (!straight_sided_closed(r.shape)) return {};
+  if (rules.no_curved_sides && r.clean.size() >= 4 && curve_for_corner(paths, r.clean, r.epsilon)) {
+    return "a stroke passes a corner of the shape as a curve, without turning there (a D)";
+  }
+  if (rules.no_crossing_pieces && pieces_cross(paths, stroke_epsilon, join, false))
+    return "two strokes of an outline cross away from their ends (a figure, no outline)";
+  return {};
+}
+
 } // namespace
+
+GroupRules& group_rules() {
+  static GroupRules rules;
+  return rules;
+}
 
 std::string group_implausibility(const Recognition& r, std::span<const StrokeInput> strokes,
                                  const RecognizerConfig& config) {
   if (strokes.size() < 2) return {};
-  // An arrow's head meets its shaft at the head's middle (its tip), not at an end.
-  if (r.shape == ShapeClass::kArrow || r.shape == ShapeClass::kDoubleArrow) return {};
   std::vector<std::vector<PointD>> paths;
   double stroke_epsilon = 0.0;
   for (const StrokeInput& s : strokes) {
@@ -45,12 +156,20 @@ std::string group_implausibility(const Recognition& r, std::span<const StrokeInp
     stroke_epsilon = std::max(stroke_epsilon, choose_tolerance(s.samples, config).epsilon);
   }
   const double join = 2.0 * r.pen_radius + stroke_epsilon;
+  // An arrow's head meets its shaft at the head's middle (its tip), not at an end; no two of
+  // its strokes cross in both their middles (the arms across a stick figure's body).
+  if (r.shape == ShapeClass::kArrow || r.shape == ShapeClass::kDoubleArrow) {
+    if (group_rules().no_crossing_pieces && pieces_cross(paths, stroke_epsilon, join, true))
+      return "two strokes of an arrow cross in their middles (a figure, no arrow)";
+    return {};
+  }
   for (const double jump : chain_jumps(paths)) {
     if (jump > join) {
       return "the strokes do not chain end to end (a jump between pieces is wider than 2 r + "
              "the epsilon of a piece)";
     }
   }
+  if (std::string why = piece_rules(r, paths, stroke_epsilon, join); !why.empty()) return why;
   // Each piece is a piece of the shape's own kind: a D or a P (a bar and a bowl) is no ellipse,
   // a circle crossed by a bar no polygon, whatever band covers the union.
   for (const StrokeInput& s : strokes) {

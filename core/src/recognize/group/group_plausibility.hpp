@@ -15,7 +15,20 @@ namespace penshape::recognize_detail {
 // polyline, polygon or segment even when the union's band covers them. And no stroke alone is
 // of the other kind: no circle or ellipse in a straight-sided shape, no segment or polyline in
 // a round one (circle, ellipse, arc). An arc alone may be a side and a rounded corner.
+// Besides (GroupRules): an open polyline is never a group; no stroke of a straight-sided closed
+// shape is a curve (the bowl of a D or a P); no two strokes of a closed shape cross each other
+// away from their ends (a stick figure, a crossed circle).
 std::string group_implausibility(const Recognition& r, std::span<const StrokeInput> strokes,
                                  const RecognizerConfig& config);
+
+// The rules above that were added with measured held-out figures, each switchable so that
+// group_recognize_bench and the tests can show what one rule does. All on by default; the library
+// never changes them (set them before recognizing, from one thread).
+struct GroupRules {
+  bool no_open_polylines = true;  // an open polyline in pieces stays apart
+  bool no_curved_sides = true;    // a curve is no pair of straight sides
+  bool no_crossing_pieces = true; // the pieces of an outline do not cross in their middles
+};
+GroupRules& group_rules();
 
 } // namespace penshape::recognize_detail

@@ -2,6 +2,7 @@
 // (group_recognize.hpp, "Grouping"), then tidy-up.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <optional>
 
@@ -93,16 +94,34 @@ std::vector<std::size_t> masks_by_size(const std::vector<std::size_t>& recent,
   return out;
 }
 
+// When the previous stroke ended (-inf before the first): the pen-up pause before a stroke is
+// measured from it.
+template <typename Entries>
+double previous_end(const Entries& groups) {
+  double end = -std::numeric_limits<double>::infinity();
+  for (const auto& e : groups) end = std::max(end, e.end_time);
+  return end;
+}
+
+// Whether a stroke starting at `start` ends the run of strokes drawn without a longer pause than
+// max_pause_seconds: the strokes before it then never join it nor any later stroke. The pause is
+// the pen-up before each stroke, not the time since a group's own last stroke: a square's first
+// side may stand alone (no open polyline groups) while the next sides follow without a pause.
+template <typename Entries>
+bool after_long_pause(const Entries& groups, const GroupingConfig& grouping, double start) {
+  return start - previous_end(groups) > grouping.max_pause_seconds;
+}
+
 // Indices of the recent groups that may still grow with a stroke starting at `start`, newest
 // first (at most kMaxRecentGroups); none for a dot or without grouping.
 template <typename Entries>
 std::vector<std::size_t> growable_groups(const Entries& groups, const GroupingConfig& grouping,
                                          double start, bool dot) {
   std::vector<std::size_t> recent;
-  if (!grouping.enabled || dot) return recent;
+  if (!grouping.enabled || dot || after_long_pause(groups, grouping, start)) return recent;
   for (std::size_t g = groups.size(); g-- > 0 && recent.size() < kMaxRecentGroups;) {
     const auto& e = groups[g];
-    if (!e.joinable || start - e.end_time > grouping.max_pause_seconds) continue;
+    if (!e.joinable) continue;
     if (e.shape.strokes.size() + 1 > grouping.max_strokes) continue;
     recent.push_back(g);
   }
@@ -262,6 +281,7 @@ GroupUpdate StrokeGrouper::add(const StrokeInput& stroke) {
   const std::size_t index = added_;
   const double start = stroke.samples.front().t;
   const bool dot = recognize_detail::is_dot(stroke.samples); // never joins other strokes
+  const bool new_run = after_long_pause(groups_, grouping_, start);
 
   // The best union with recent groups that snaps; else the new stroke alone (ink certificate
   // when its ink is given), arrows included.
@@ -303,9 +323,9 @@ GroupUpdate StrokeGrouper::add(const StrokeInput& stroke) {
       recognize_detail::tidy_up(shape.recognition, best.strokes, grouping_.tidy, neighbours, ink);
   update.replaced_strokes = shape.strokes;
 
-  // Groups too old for any later stroke (drawn later, so starting no earlier) drop their samples.
+  // Groups before a long pause can join no later stroke: they drop their samples.
   for (Entry& e : groups_) {
-    if (!e.joinable || start - e.end_time <= grouping_.max_pause_seconds) continue;
+    if (!e.joinable || !new_run) continue;
     e.joinable = false;
     for (const std::size_t i : e.shape.strokes) strokes_.erase(i);
   }

@@ -1,0 +1,138 @@
+// The grouping rules of GroupRules (group_plausibility.hpp), each with a drawing it refuses and
+// one it keeps, and each checked to decide: with the rule switched off, the refused drawing
+// passes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "group_test_support.hpp"
+#include "penshape/core/group_recognize.hpp"
+#include "recognize/group_plausibility.hpp"
+
+namespace penshape {
+namespace {
+
+using recognize_detail::group_implausibility;
+using recognize_detail::group_rules;
+using recognize_detail::GroupRules;
+
+// Restores the rules whatever a test switched off.
+class GroupRulesTest : public ::testing::Test {
+ protected:
+  void TearDown() override { group_rules() = GroupRules{}; }
+};
+
+StrokeInput stroke_along(const test::Path& path, double t0) {
+  StrokeInput in;
+  double t = t0;
+  for (const PointD& p : test::dense(path, 2.0)) {
+    in.samples.push_back({p.x, p.y, t});
+    t += 0.01;
+  }
+  return in;
+}
+
+double next_start(const std::vector<StrokeInput>& s) { return s.back().samples.back().t + 0.2; }
+
+// A recognition of `shape` whose clean path is `outline` (epsilon 15, no pen): what
+// group_implausibility is asked about once a union certifies.
+Recognition answer(ShapeClass shape, const test::Path& outline) {
+  Recognition r;
+  r.shape = shape;
+  r.clean = outline;
+  r.epsilon = 15.0;
+  return r;
+}
+
+// The bowl of a D: half an ellipse from (0, 0) through (70, 60) to (0, 120).
+test::Path bowl() {
+  test::Path p;
+  for (int k = 0; k <= 40; ++k) {
+    const double t = -std::numbers::pi / 2 + std::numbers::pi * k / 40.0;
+    p.push_back({70.0 * std::cos(t), 60.0 + 60.0 * std::sin(t)});
+  }
+  return p;
+}
+
+TEST_F(GroupRulesTest, AnOpenPolylineInPiecesStaysApart) {
+  std::vector<StrokeInput> s{stroke_along({{0, 0}, {0, 100}}, 0.0)};
+  s.push_back(stroke_along({{2, 101}, {100, 100}}, next_start(s)));
+  const auto out = recognize_strokes(s);
+  ASSERT_EQ(out.size(), 2u);
+  EXPECT_EQ(out[0].recognition.shape, ShapeClass::kSegment);
+  EXPECT_EQ(out[1].recognition.shape, ShapeClass::kSegment);
+  group_rules().no_open_polylines = false;
+  const auto off = recognize_strokes(s);
+  ASSERT_EQ(off.size(), 1u);
+  EXPECT_EQ(off[0].recognition.shape, ShapeClass::kPolyline);
+}
+
+TEST_F(GroupRulesTest, ATriangleInThreeSidesStillGroups) {
+  // Each side alone stays apart until the last closes the outline (the pause is between strokes:
+  // the first side joins though it was drawn more than the pause window before the last).
+  std::vector<StrokeInput> s{stroke_along({{0, 100}, {60, 0}}, 0.0)};
+  s.push_back(stroke_along({{60, 0}, {120, 100}}, next_start(s) + 1.5));
+  s.push_back(stroke_along({{120, 100}, {0, 100}}, next_start(s) + 1.5));
+  const auto out = recognize_strokes(s);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].recognition.shape, ShapeClass::kTriangle);
+}
+
+TEST_F(GroupRulesTest, TheBowlOfADIsNoPairOfSides) {
+  const std::vector<StrokeInput> s{stroke_along({{0, 0}, {0, 120}}, 0.0),
+                                   stroke_along(bowl(), 1.0)};
+  // The quadrilateral a loose band lets through: two of its corners lie on the bowl.
+  const Recognition quad =
+      answer(ShapeClass::kQuadrilateral, {{0, 0}, {55, 15}, {55, 105}, {0, 120}, {0, 0}});
+  EXPECT_NE(group_implausibility(quad, s, {}).find("curve"), std::string::npos);
+  group_rules().no_curved_sides = false;
+  EXPECT_EQ(group_implausibility(quad, s, {}), "");
+}
+
+TEST_F(GroupRulesTest, ARectangleAsTwoLsWithRoundedCornersKeepsItsCorners) {
+  // Corners rounded with a radius of 6 (epsilon 15): the strokes still turn there.
+  const std::vector<StrokeInput> s{
+      stroke_along({{0, 80}, {0, 6}, {2, 2}, {6, 0}, {100, 0}}, 0.0),
+      stroke_along({{100, 0}, {100, 74}, {98, 78}, {94, 80}, {0, 80}}, 1.0)};
+  const Recognition rect =
+      answer(ShapeClass::kRectangle, {{0, 0}, {100, 0}, {100, 80}, {0, 80}, {0, 0}});
+  EXPECT_EQ(group_implausibility(rect, s, {}), "");
+  const auto out = recognize_strokes(s);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].recognition.shape, ShapeClass::kRectangle);
+}
+
+TEST_F(GroupRulesTest, StrokesCrossingInTheirMiddlesAreNoOutline) {
+  // Two sides of a triangle, then a stroke from its first end across the second side's middle.
+  const std::vector<StrokeInput> s{stroke_along({{0, 100}, {50, 0}, {100, 100}}, 0.0),
+                                   stroke_along({{0, 100}, {90, 40}}, 1.0)};
+  const Recognition tri = answer(ShapeClass::kTriangle, {{0, 100}, {50, 0}, {100, 100}, {0, 100}});
+  EXPECT_NE(group_implausibility(tri, s, {}).find("cross"), std::string::npos);
+  group_rules().no_crossing_pieces = false;
+  EXPECT_EQ(group_implausibility(tri, s, {}), "");
+}
+
+TEST_F(GroupRulesTest, OvershootingCornersMayCross) {
+  // The base overshoots both corners by 6 and crosses the sides near their ends.
+  const std::vector<StrokeInput> s{stroke_along({{-3, 106}, {50, 0}, {103, 106}}, 0.0),
+                                   stroke_along({{-6, 100}, {106, 100}}, 1.0)};
+  const Recognition tri = answer(ShapeClass::kTriangle, {{0, 100}, {50, 0}, {100, 100}, {0, 100}});
+  EXPECT_EQ(group_implausibility(tri, s, {}), "");
+}
+
+TEST_F(GroupRulesTest, AnArrowsStrokesMayNotCrossInBothMiddles) {
+  // A shaft, a head, and a bar across the shaft's middle (as arms across a stick figure's body).
+  const std::vector<StrokeInput> s{stroke_along({{0, 0}, {100, 0}}, 0.0),
+                                   stroke_along({{70, -25}, {100, 0}, {70, 25}}, 1.0),
+                                   stroke_along({{50, -20}, {50, 20}}, 2.0)};
+  const Recognition arrow = answer(ShapeClass::kArrow, {{0, 0}, {100, 0}});
+  EXPECT_NE(group_implausibility(arrow, s, {}).find("cross"), std::string::npos);
+  // The head alone crosses the shaft at its tip: kept.
+  EXPECT_EQ(group_implausibility(arrow, std::span(s).first(2), {}), "");
+  group_rules().no_crossing_pieces = false;
+  EXPECT_EQ(group_implausibility(arrow, s, {}), "");
+}
+
+} // namespace
+} // namespace penshape
