@@ -36,7 +36,7 @@
 #include "group_gesture_figures.hpp"
 #include "multi_stroke_cases.hpp"
 #include "penshape/core/group_recognize.hpp"
-#include "recognize/group_plausibility.hpp"
+#include "recognize/group/group_plausibility.hpp"
 
 namespace {
 

@@ -8,7 +8,7 @@
 
 #include "group_test_support.hpp"
 #include "penshape/core/group_recognize.hpp"
-#include "recognize/group_plausibility.hpp"
+#include "recognize/group/group_plausibility.hpp"
 
 namespace penshape {
 namespace {
