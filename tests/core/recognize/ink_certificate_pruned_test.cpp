@@ -1,5 +1,5 @@
-// The ink certificate's pruned grid scan (core/src/recognize/certify/ink_certificate.cpp) against the
-// flat scan that visits every grid point: the bound must be the same double, bit for bit, on
+// The ink certificate's pruned grid scan (core/src/recognize/certify/ink_certificate.cpp) against
+// the flat scan that visits every grid point: the bound must be the same double, bit for bit, on
 // every input (pruning only skips grid points proven unable to change either maximum). Random
 // clean shapes of every kind (segments, polylines, polygons, circles, arcs, ellipses and
 // elliptic arcs) against inks drawn along them, along a perturbed copy and along another shape;
@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "penshape/core/ink.hpp"
-#include "recognize/fitting/clean_shape.hpp"
 #include "recognize/certify/ink_certificate.hpp"
+#include "recognize/fitting/clean_shape.hpp"
 #include "test_support.hpp"
 
 namespace penshape {

@@ -1,5 +1,5 @@
-// Two terms of the ink certificate (core/src/recognize/certify/ink_certificate.cpp) that issue #22 found
-// short, each against a worst case computed here: the grid's reach (the half-diagonal of the
+// Two terms of the ink certificate (core/src/recognize/certify/ink_certificate.cpp) that issue #22
+// found short, each against a worst case computed here: the grid's reach (the half-diagonal of the
 // widest cell of the double grid o + (i h, j h)) against the exact widest gaps, on grids where
 // the coordinates' rounding widens a gap by more than the old allowance; and the arc's rounded
 // end parameter on the ink-to-shape side, on an arc whose end rounds half a turn's ulp beyond
