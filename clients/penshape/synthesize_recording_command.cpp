@@ -140,7 +140,7 @@ class ReportPlayer {
     for (int h = 0; h < 5; ++h) emit(s); // lifting, still in range
     s.in_range = false;
     emit(s);
-    clock_us_ += 300'000; // out of range between strokes
+    clock_us_ += 300000; // out of range between strokes
   }
   [[nodiscard]] std::int64_t clock_us() const { return clock_us_; }
 

@@ -113,17 +113,17 @@ bool apply_limits_key(const At& at, const toml::node& node, Limits& l) {
   const auto size = [&](std::size_t lo, std::size_t hi) { return read_size(at, node, lo, hi); };
   const std::map<std::string, std::function<void()>> handlers = {
       {"max_message_bytes", [&] { l.max_message_bytes = size(4096, 1U << 30U); }},
-      {"max_vertices", [&] { l.max_vertices = size(3, 10'000'000); }},
-      {"max_stroke_samples", [&] { l.max_stroke_samples = size(2, 10'000'000); }},
+      {"max_vertices", [&] { l.max_vertices = size(3, 10000000); }},
+      {"max_stroke_samples", [&] { l.max_stroke_samples = size(2, 10000000); }},
       {"max_call_seconds",
-       [&] { l.max_call_seconds = static_cast<std::uint32_t>(size(1, 86'400)); }},
-      {"worker_queue_jobs", [&] { l.worker_queue_jobs = size(1, 65'536); }},
+       [&] { l.max_call_seconds = static_cast<std::uint32_t>(size(1, 86400)); }},
+      {"worker_queue_jobs", [&] { l.worker_queue_jobs = size(1, 65536); }},
       {"worker_threads", [&] { l.worker_threads = size(0, 256); }},
       {"stroke_worker_threads", [&] { l.stroke_worker_threads = size(0, 256); }},
-      {"max_subscribers", [&] { l.max_subscribers = size(1, 4'096); }},
-      {"subscriber_queue_events", [&] { l.subscriber_queue_events = size(1, 1'000'000); }},
-      {"max_raw_report_subscribers", [&] { l.max_raw_report_subscribers = size(0, 4'096); }},
-      {"max_group_keys", [&] { l.max_group_keys = size(1, 65'536); }},
+      {"max_subscribers", [&] { l.max_subscribers = size(1, 4096); }},
+      {"subscriber_queue_events", [&] { l.subscriber_queue_events = size(1, 1000000); }},
+      {"max_raw_report_subscribers", [&] { l.max_raw_report_subscribers = size(0, 4096); }},
+      {"max_group_keys", [&] { l.max_group_keys = size(1, 65536); }},
   };
   const auto it = handlers.find(at.key());
   if (it == handlers.end()) return false;
