@@ -11,19 +11,8 @@
 namespace penshape {
 namespace {
 
-// Samples along a path, 10 ms apart from t0.
-StrokeInput stroke_along(const test::Path& path, double t0, double pen_radius = 0.0) {
-  StrokeInput in;
-  in.pen_radius = pen_radius;
-  double t = t0;
-  for (const PointD& p : test::dense(path, 2.0)) {
-    in.samples.push_back({p.x, p.y, t});
-    t += 0.01;
-  }
-  return in;
-}
-
-double next_start(const std::vector<StrokeInput>& s) { return s.back().samples.back().t + 0.2; }
+using test::next_start;
+using test::stroke_along;
 
 // Whether some answer covers several strokes and snaps.
 bool merged(const std::vector<GroupedShape>& out) {

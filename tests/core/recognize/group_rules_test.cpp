@@ -23,17 +23,8 @@ class GroupRulesTest : public ::testing::Test {
   void TearDown() override { group_rules() = GroupRules{}; }
 };
 
-StrokeInput stroke_along(const test::Path& path, double t0) {
-  StrokeInput in;
-  double t = t0;
-  for (const PointD& p : test::dense(path, 2.0)) {
-    in.samples.push_back({p.x, p.y, t});
-    t += 0.01;
-  }
-  return in;
-}
-
-double next_start(const std::vector<StrokeInput>& s) { return s.back().samples.back().t + 0.2; }
+using test::next_start;
+using test::stroke_along;
 
 // A recognition of `shape` whose clean path is `outline` (epsilon 15, no pen): what
 // group_implausibility is asked about once a union certifies.

@@ -42,6 +42,23 @@ inline Path dense(const Path& path, double step) {
   return out;
 }
 
+// Samples along a path (every 2 units), 10 ms apart from t0.
+inline StrokeInput stroke_along(const Path& path, double t0, double pen_radius = 0.0) {
+  StrokeInput in;
+  in.pen_radius = pen_radius;
+  double t = t0;
+  for (const PointD& p : dense(path, 2.0)) {
+    in.samples.push_back({p.x, p.y, t});
+    t += 0.01;
+  }
+  return in;
+}
+
+// When the next stroke starts: 0.2 s after the last one ended.
+inline double next_start(const std::vector<StrokeInput>& s) {
+  return s.back().samples.back().t + 0.2;
+}
+
 // The arc through a, b and the point `bulge` to the left of their midpoint, from the
 // circumcircle of the three points (fine chords).
 inline Path arc_through(PointD a, PointD b, double bulge) {
