@@ -5,6 +5,7 @@ set -euo pipefail
 
 PACKAGES=(
   cmake ninja-build g++ clang-14 libclang-rt-14-dev clang-tidy-14 pkg-config ccache clang-format
+  pmccabe
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libhidapi-dev libusb-1.0-0-dev libudev-dev
   libprotobuf-dev protobuf-compiler libgrpc++-dev protobuf-compiler-grpc

@@ -171,7 +171,7 @@ std::string json_line(const snap::StrokeIntent& s) {
 // A page the daemon fails on is recognized in-process, with a note; once the daemon is gone, every
 // later page too.
 snap::PageRecognizer choose_recognizer(const ParsedArgs& parsed, std::string& engine) {
-  const snap::PageRecognizer local = snap::recognize_page_in_process;
+  snap::PageRecognizer local = snap::recognize_page_in_process;
   engine = "in-process";
   if (parsed.flag("--local")) return local;
   const std::string address = daemon_address(parsed);

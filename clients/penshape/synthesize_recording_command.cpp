@@ -199,8 +199,10 @@ std::string play_strokes(const std::vector<Placed>& strokes, const Tablet& table
   for (std::size_t k = 0; k < strokes.size(); ++k) {
     const auto& pts = strokes[k].points;
     const BoxD box = bounding_box(pts);
-    const PointD center{cell_w * (static_cast<double>(k % how.columns) + 0.5),
-                        cell_h * (static_cast<double>(k / how.columns) + 0.5)};
+    const std::size_t column = k % how.columns;
+    const std::size_t row = k / how.columns; // whole rows of the grid above
+    const PointD center{cell_w * (static_cast<double>(column) + 0.5),
+                        cell_h * (static_cast<double>(row) + 0.5)};
     const double scale = std::min({how.mm_per_unit, 0.9 * cell_w / std::max(box.x1 - box.x0, 1e-9),
                                    0.9 * cell_h / std::max(box.y1 - box.y0, 1e-9)});
     comments += "# stroke " + std::to_string(k) + ": " + strokes[k].source + "\n";

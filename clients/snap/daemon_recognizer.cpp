@@ -122,10 +122,11 @@ std::vector<StrokeSnap> recognize_batch(v1::Geometry::Stub& stub,
   for (const v1::RecognizedGroup& g : response.groups()) {
     StrokeSnap snap;
     for (const std::uint32_t k : g.strokes()) {
-      if (k >= count)
+      if (k >= count) {
         throw DaemonCallFailed(
             "Recognize: a group names stroke " + std::to_string(k) + " of " + std::to_string(count),
             false);
+      }
       snap.strokes.push_back(first + k);
     }
     if (snap.strokes.empty()) continue;
@@ -138,7 +139,7 @@ std::vector<StrokeSnap> recognize_batch(v1::Geometry::Stub& stub,
 
 } // namespace
 
-PageRecognizer daemon_recognizer(std::shared_ptr<grpc::Channel> channel) {
+PageRecognizer daemon_recognizer(const std::shared_ptr<grpc::Channel>& channel) {
   auto stub = std::shared_ptr<v1::Geometry::Stub>(v1::Geometry::NewStub(channel));
   return [stub](const std::vector<InkStroke>& page, const SnapSettings& settings) {
     std::vector<StrokeSnap> out;

@@ -25,6 +25,6 @@ struct DaemonCallFailed : std::runtime_error {
 };
 
 // Throws DaemonCallFailed when a call fails.
-PageRecognizer daemon_recognizer(std::shared_ptr<grpc::Channel> channel);
+PageRecognizer daemon_recognizer(const std::shared_ptr<grpc::Channel>& channel);
 
 } // namespace penshape::snap

@@ -137,7 +137,7 @@ struct SearchInput {
 template <typename Request, typename Fields>
 grpc::Status read_search(const DaemonState& state, const Request& request, const char* rpc,
                          SearchInput& in, Fields fields) {
-  const grpc::Status status = validated([&] {
+  grpc::Status status = validated([&] {
     in.q = polygon_set_from_proto(request.polygon(), "polygon", state.limits);
     fields();
     in.engine = engine_from_proto(request.engine(), "engine");
@@ -181,7 +181,7 @@ grpc::Status GeometryServiceImpl::SearchTolerance(
   SearchInput in;
   Rational radius;
   Rational width;
-  const grpc::Status status = read_search(state_, *request, "SearchTolerance", in, [&] {
+  grpc::Status status = read_search(state_, *request, "SearchTolerance", in, [&] {
     radius = positive(request->radius(), request->has_radius(), "radius", state_.limits);
     width = positive(request->width(), request->has_width(), "width", state_.limits);
   });
@@ -212,7 +212,7 @@ grpc::Status GeometryServiceImpl::SearchRadius(
   Rational tolerance;
   Rational width;
   std::optional<Rational> upper;
-  const grpc::Status status = read_search(state_, *request, "SearchRadius", in, [&] {
+  grpc::Status status = read_search(state_, *request, "SearchRadius", in, [&] {
     tolerance =
         positive(request->tolerance(), request->has_tolerance(), "tolerance", state_.limits);
     width = positive(request->width(), request->has_width(), "width", state_.limits);
@@ -242,7 +242,7 @@ grpc::Status GeometryServiceImpl::SuggestRadius(
   const auto arrived = Clock::now();
   SearchInput in;
   SuggestOptions options;
-  const grpc::Status status = read_search(state_, *request, "SuggestRadius", in, [&] {
+  grpc::Status status = read_search(state_, *request, "SuggestRadius", in, [&] {
     options.from =
         positive(request->min_radius(), request->has_min_radius(), "min_radius", state_.limits);
     options.to = scalar_from_proto(request->max_radius(), request->has_max_radius(), "max_radius",

@@ -26,6 +26,9 @@ namespace penshape::daemon {
 namespace {
 
 constexpr std::chrono::seconds kShutdownGrace{5};
+// A stream whose handler has returned still has its status to send: gRPC gets this long to send
+// it before what is left is cancelled, so a subscriber that drained its queue ends with OK.
+constexpr std::chrono::milliseconds kStatusDelivery{250};
 
 } // namespace
 
@@ -125,7 +128,8 @@ void PenshapeServer::shutdown() {
     impl.state.hub.close();    // subscribers drain their queues, then end with OK
     // A grace period for streams to deliver their queues and geometry calls to finish; then the
     // rest is cancelled (their jobs see IsCancelled()). Shutdown(deadline) itself would also wait
-    // for idle client connections until the deadline, so the waiting is done here.
+    // for idle client connections until the deadline, so the long wait is done here and gRPC
+    // gets only kStatusDelivery for the statuses of handlers that have just returned.
     const auto grace_end = std::chrono::steady_clock::now() + kShutdownGrace;
     const auto busy = [&impl] {
       return impl.state.pool.busy() + impl.state.stroke_pool.busy() +
@@ -135,7 +139,7 @@ void PenshapeServer::shutdown() {
            std::chrono::steady_clock::now() < grace_end) {
       std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
-    impl.server->Shutdown(std::chrono::system_clock::now());
+    impl.server->Shutdown(std::chrono::system_clock::now() + kStatusDelivery);
     impl.server->Wait();
     impl.state.pool.drain();
     impl.state.stroke_pool.drain();

@@ -19,8 +19,8 @@ struct Edge {
   PointD a;
   PointD v;
   PointD n;
-  double h;
-  double len2;
+  double h = 0.0;
+  double len2 = 0.0;
 };
 
 // A boundary piece: a segment a -> b (parameter u in [0, 1]) or a circular arc around c of radius

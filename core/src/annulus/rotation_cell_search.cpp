@@ -18,7 +18,7 @@ constexpr double kPi = std::numbers::pi;
 constexpr int kFirstSlices = 16;
 
 struct Cell {
-  CellBox box;
+  CellBox box{};
   std::size_t sure = 0;   // weight covered everywhere in the cell (at delta)
   std::size_t upper = 0;  // sure + weight of the open points: no placement in the cell does better
   std::size_t centre = 0; // estimated count at the cell's centre (double measure)

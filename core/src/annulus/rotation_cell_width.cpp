@@ -20,7 +20,7 @@ constexpr double kPi = std::numbers::pi;
 constexpr int kFirstSlices = 16;
 
 struct WidthCell {
-  CellBox box;
+  CellBox box{};
   double lower = 0.0; // no placement in the cell has a smaller width
   std::vector<std::uint32_t> open;
 };

@@ -104,7 +104,7 @@ std::int64_t round_scaled(const Rational& v, int k, const mpz_class& t, mpz_clas
   num = v.get_num();
   den = v.get_den();
   if (k >= 0) {
-    mpz_mul_2exp(num.get_mpz_t(), num.get_mpz_t(), static_cast<mp_bitcnt_t>(k + 1));
+    mpz_mul_2exp(num.get_mpz_t(), num.get_mpz_t(), static_cast<mp_bitcnt_t>(k) + 1);
   } else {
     mpz_mul_2exp(den.get_mpz_t(), den.get_mpz_t(), static_cast<mp_bitcnt_t>(-k));
     mpz_mul_2exp(num.get_mpz_t(), num.get_mpz_t(), 1);
