@@ -216,13 +216,22 @@ void cli_stages() {
   c0 = cpu_ms();
   const std::size_t wkt = penshape::to_wkt(simple.result.solution).size();
   const double output = cpu_ms() - c0;
+  // What the CLI calls: both in one, the simplifier reusing the decision's work (issue 26).
+  c0 = cpu_ms();
+  const penshape::SimplifyResult both = penshape::deconstruct_simplified(
+      valid, {penshape::Rational(69), penshape::Rational(69, 2), penshape::Rational(69, 16)});
+  const double together = cpu_ms() - c0;
   std::printf(
       "\nthe CLI's stages in this process (200,000-vertex star, thread CPU ms):\n"
       "  read text %.1f | validation (once) %.1f | deconstruct %.1f (%s) | simplification %.1f "
-      "(%zu -> %zu vertices) | WKT %.1f (%zu chars) | total %.1f\n",
+      "(%zu -> %zu vertices) | WKT %.1f (%zu chars) | total %.1f\n"
+      "  deconstruct + simplification %.1f, deconstruct_simplified (reusing the decision's "
+      "grid, Q_s, walk) %.1f (%s, %zu vertices) | total with it %.1f\n",
       read, validation, decision, penshape::to_string(raw.answer), simplification,
       simple.raw_vertices, simple.solution_vertices, output, wkt,
-      read + validation + decision + simplification + output);
+      read + validation + decision + simplification + output, decision + simplification, together,
+      penshape::to_string(both.result.answer), both.solution_vertices,
+      read + validation + together + output);
 }
 
 } // namespace

@@ -156,8 +156,7 @@ int run_deconstruct(std::span<const std::string_view> args) {
   try {
     const ValidatedRegion valid = read_valid_polygon_file(path); // validated once, here
     const PolygonSet& q = valid.region();
-    const ReportedSolution rep =
-        report_solution(q, deconstruct(valid, params), !parsed.flag("--no-simplify"));
+    const ReportedSolution rep = decide_and_report(valid, params, !parsed.flag("--no-simplify"));
     std::optional<CurvedRegion> arcs;
     if (parsed.flag("--arcs") && rep.result.answer == Answer::kYes) {
       arcs = offset_with_arcs(rep.result.solution, to_double(params.radius));

@@ -93,19 +93,30 @@ Rational bounding_width(const PolygonSet& q) {
   return hi - lo;
 }
 
+namespace {
+ReportedSolution reported(SimplifyResult s) {
+  ReportedSolution out;
+  out.result = std::move(s.result);
+  out.raw_vertices = s.raw_vertices;
+  out.solution_vertices = s.solution_vertices;
+  out.simplified = s.simplified;
+  return out;
+}
+} // namespace
+
 ReportedSolution report_solution(const PolygonSet& q, const DeconstructResult& raw, bool simplify) {
   ReportedSolution out;
   out.result = raw;
   out.raw_vertices = distinct_vertex_count(raw.solution);
   out.solution_vertices = out.raw_vertices;
-  if (simplify && raw.answer == Answer::kYes) {
-    SimplifyResult s = simplify_solution(q, raw);
-    out.result = std::move(s.result);
-    out.raw_vertices = s.raw_vertices;
-    out.solution_vertices = s.solution_vertices;
-    out.simplified = s.simplified;
-  }
+  if (simplify && raw.answer == Answer::kYes) return reported(simplify_solution(q, raw));
   return out;
+}
+
+ReportedSolution decide_and_report(const ValidatedRegion& q, const DeconstructParams& params,
+                                   bool simplify) {
+  if (!simplify) return report_solution(q.region(), deconstruct(q, params), false);
+  return reported(deconstruct_simplified(q, params));
 }
 
 namespace {

@@ -45,6 +45,10 @@ struct ReportedSolution {
   bool simplified = false;
 };
 ReportedSolution report_solution(const PolygonSet& q, const DeconstructResult& raw, bool simplify);
+// The same for a deconstruction of a validated region: with `simplify`, through
+// deconstruct_simplified (the simplifier reuses the decision's grid and certified input).
+ReportedSolution decide_and_report(const ValidatedRegion& q, const DeconstructParams& params,
+                                   bool simplify);
 
 // [{"outer": RING, "holes": [RING, ...]}, ...] for polygons with an outer ring and holes (of
 // points, or of curves), each RING written by `write_ring`.

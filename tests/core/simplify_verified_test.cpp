@@ -11,6 +11,7 @@
 #include "penshape/core/deconstruct.hpp"
 #include "penshape/core/polygon_io.hpp"
 #include "penshape/core/simplify.hpp"
+#include "penshape/core/validated_region.hpp"
 #include "penshape/core/verify.hpp"
 #include "test_data.hpp"
 
@@ -45,6 +46,16 @@ SimplifyResult simplify_and_verify(const PolygonSet& q, const Rational& r) {
   return s;
 }
 
+// The same polygons, ring by ring and vertex by vertex (exact).
+bool same(const PolygonSet& a, const PolygonSet& b) {
+  if (a.polygons.size() != b.polygons.size()) return false;
+  for (std::size_t i = 0; i < a.polygons.size(); ++i) {
+    if (a.polygons[i].outer != b.polygons[i].outer || a.polygons[i].holes != b.polygons[i].holes)
+      return false;
+  }
+  return true;
+}
+
 TEST(SimplifyVerified, GeneratedPolygon) {
   const PolygonSet q = wavy_ring(400);
   const SimplifyResult s = simplify_and_verify(q, Rational(1, 2));
@@ -59,6 +70,31 @@ TEST(SimplifyVerified, LargeGeneratedPolygon) {
   const SimplifyResult s = simplify_and_verify(q, Rational(50));
   EXPECT_TRUE(s.simplified);
   EXPECT_LT(s.solution_vertices, s.raw_vertices);
+  // deconstruct_simplified, whose simplifier reuses the decision's grid, Q_s (the decision's own
+  // on this large input) and walk memo: the same solution.
+  const DeconstructParams params{Rational(50), Rational(25), Rational(25, 8), EngineKind::kFast};
+  const SimplifyResult both = deconstruct_simplified(ValidatedRegion::validate(q), params);
+  EXPECT_TRUE(both.simplified);
+  EXPECT_TRUE(same(both.result.solution, s.result.solution));
+  EXPECT_EQ(both.raw_vertices, s.raw_vertices);
+}
+
+// Small input (the simplifier's own finer Q_s, the decision's grid), a NO and a convex input
+// (no fast work kept): deconstruct_simplified answers as deconstruct + simplify_solution.
+TEST(SimplifyVerified, DeconstructSimplifiedMatchesTheTwoCalls) {
+  const PolygonSet wavy = wavy_ring(400);
+  const PolygonSet square{{{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {}}}};
+  for (const auto& [q, r] : {std::pair{wavy, Rational(1, 2)}, std::pair{wavy, Rational(30)},
+                             std::pair{square, Rational(2)}}) {
+    const DeconstructParams params{r, r / 2, r / 16, EngineKind::kFast};
+    const DeconstructResult raw = deconstruct(q, params);
+    const SimplifyResult both = deconstruct_simplified(ValidatedRegion::validate(q), params);
+    EXPECT_EQ(both.result.answer, raw.answer) << to_double(r);
+    if (raw.answer != Answer::kYes) continue;
+    const SimplifyResult s = simplify_solution(q, raw);
+    EXPECT_TRUE(same(both.result.solution, s.result.solution)) << to_double(r);
+    EXPECT_EQ(both.solution_vertices, s.solution_vertices);
+  }
 }
 
 TEST(SimplifyVerified, KazakhstanAtWidthOver30) {

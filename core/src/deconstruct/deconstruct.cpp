@@ -8,6 +8,7 @@
 
 #include "deconstruct/validate_input.hpp"
 #include "engine/engines.hpp"
+#include "engine/fast/fast_work.hpp"
 #include "penshape/core/disk_approximation.hpp"
 #include "penshape/core/validated_region.hpp"
 #include "penshape/types/lookup_table.hpp"
@@ -26,11 +27,14 @@ namespace {
 
 // The fast engine, and the reference engine when the fast one stayed UNDECIDED because its grid
 // lost a feature thinner than a grid unit. The result's `engine` names the one that answered.
+// `keep` (optional) receives the fast engine's work when the fast engine answers.
 DeconstructResult decide_default(const PolygonSet& q, const DeconstructParams& params,
-                                 const CancelHook& cancel, const DeconstructLimits& limits) {
+                                 const CancelHook& cancel, const DeconstructLimits& limits,
+                                 std::unique_ptr<detail::FastWork>* keep) {
   bool lost = false;
-  DeconstructResult result = detail::decide_fast(q, params, cancel, limits, &lost);
+  DeconstructResult result = detail::decide_fast(q, params, cancel, limits, &lost, keep);
   if (result.answer != Answer::kUndecided || !lost) return result;
+  if (keep != nullptr) keep->reset();
   DeconstructResult exact = detail::decide_reference(q, params, cancel, limits);
   exact.engine = EngineKind::kReference;
   return exact;
@@ -38,7 +42,8 @@ DeconstructResult decide_default(const PolygonSet& q, const DeconstructParams& p
 
 // Dispatch on oriented input with r > eps.
 DeconstructResult decide(const PolygonSet& q, const DeconstructParams& params,
-                         const CancelHook& cancel, const DeconstructLimits& limits) {
+                         const CancelHook& cancel, const DeconstructLimits& limits,
+                         std::unique_ptr<detail::FastWork>* keep) {
   if (params.engine == EngineKind::kReference) {
     DeconstructResult result = detail::decide_reference(q, params, cancel, limits);
     result.engine = EngineKind::kReference;
@@ -50,13 +55,14 @@ DeconstructResult decide(const PolygonSet& q, const DeconstructParams& params,
     result.engine = EngineKind::kFast;
     if (result.answer != Answer::kUndecided) return result;
   }
-  return decide_default(q, params, cancel, limits);
+  return decide_default(q, params, cancel, limits, keep);
 }
 
 // Everything after validation; `start` is when the caller's call began.
 DeconstructResult decide_valid(const PolygonSet& q, const DeconstructParams& params,
                                const CancelHook& cancel, const DeconstructLimits& limits,
-                               std::chrono::steady_clock::time_point start) {
+                               std::chrono::steady_clock::time_point start,
+                               std::unique_ptr<detail::FastWork>* keep = nullptr) {
   DeconstructResult result;
   if (params.radius <= params.tolerance) {
     // offset(Q, r) is r-close to Q and r <= eps: P = Q is a solution (paper, Section 2).
@@ -75,7 +81,7 @@ DeconstructResult decide_valid(const PolygonSet& q, const DeconstructParams& par
       normalize_orientation(reoriented);
     }
     const PolygonSet& oriented = needs_fix ? reoriented : q;
-    result = decide(oriented, params, cancel, limits);
+    result = decide(oriented, params, cancel, limits, keep);
     result.params = params;
   }
   result.elapsed = std::chrono::duration_cast<std::chrono::nanoseconds>(
@@ -94,12 +100,23 @@ DeconstructResult deconstruct(const PolygonSet& q, const DeconstructParams& para
 
 DeconstructResult deconstruct(const ValidatedRegion& q, const DeconstructParams& params,
                               const CancelHook& cancel, const DeconstructLimits& limits) {
+  std::unique_ptr<detail::FastWork> unused;
+  return detail::deconstruct_keeping(q, params, cancel, limits, unused);
+}
+
+namespace detail {
+
+DeconstructResult deconstruct_keeping(const ValidatedRegion& q, const DeconstructParams& params,
+                                      const CancelHook& cancel, const DeconstructLimits& limits,
+                                      std::unique_ptr<FastWork>& keep) {
   const auto start = std::chrono::steady_clock::now();
   validate_deconstruct_params(params, limits);
   // A spent token (its region released) holds an empty set.
   if (q.region().empty()) throw InvalidInput("the region is empty (no polygons)");
-  detail::check_vertex_limit(q.region(), limits.max_input_vertices);
-  return decide_valid(q.region(), params, cancel, limits, start);
+  check_vertex_limit(q.region(), limits.max_input_vertices);
+  return decide_valid(q.region(), params, cancel, limits, start, &keep);
 }
+
+} // namespace detail
 
 } // namespace penshape

@@ -69,13 +69,20 @@ int orientation_sign(const Ring& ring) {
   double sum = 0;
   double magnitude = 0;
   const std::size_t n = ring.size();
+  if (n == 0) return 0;
+  // Each vertex converted once (the conversion is most of the cost on 200,000 vertices).
+  const double x0 = fast_double(ring[0].x), y0 = fast_double(ring[0].y);
+  double ax = x0, ay = y0;
   for (std::size_t i = 0; i < n; ++i) {
-    const ExactPoint& a = ring[i];
-    const ExactPoint& b = ring[(i + 1) % n];
-    const double t1 = fast_double(a.x) * fast_double(b.y);
-    const double t2 = fast_double(a.y) * fast_double(b.x);
+    const bool last = i + 1 == n;
+    const double bx = last ? x0 : fast_double(ring[i + 1].x);
+    const double by = last ? y0 : fast_double(ring[i + 1].y);
+    const double t1 = ax * by;
+    const double t2 = ay * bx;
     sum += t1 - t2;
     magnitude += std::abs(t1) + std::abs(t2);
+    ax = bx;
+    ay = by;
   }
   if (std::isfinite(sum) && std::isfinite(magnitude) && magnitude > 1e-250 &&
       std::abs(sum) > 1e-12 * magnitude * static_cast<double>(n)) {

@@ -4,6 +4,7 @@
 
 #include "deconstruct/validate_input.hpp"
 #include "engine/engines.hpp"
+#include "engine/fast/fast_work.hpp"
 #include "geometry/distance_kernel.hpp"
 #include "geometry/douglas_peucker.hpp"
 #include "geometry/segment_distance.hpp"
@@ -159,47 +160,15 @@ std::size_t distinct_vertex_count(const PolygonSet& set) {
   return n;
 }
 
-SimplifyResult simplify_solution(const PolygonSet& q, const DeconstructResult& raw,
-                                 const CancelHook& cancel, const DeconstructLimits& limits,
-                                 const SimplifyOptions& options) {
-  if (raw.answer != Answer::kYes) throw InvalidInput("simplify_solution needs a YES solution");
-  SimplifyResult out;
-  out.result = raw;
-  out.raw_vertices = distinct_vertex_count(raw.solution);
-  out.solution_vertices = out.raw_vertices;
-  const DeconstructParams& params = raw.params;
-  if (params.radius <= params.tolerance) return out; // P = Q: nothing to gain by deciding again
+namespace {
 
-  // Convex Q: the greedy P^s over eyelets has at most OPT + 1 vertices (Theorem 29).
-  if (raw.engine == EngineKind::kFast && is_convex_region(q) && raw.solution.polygons.size() == 1 &&
-      !raw.solution.polygons[0].outer.empty() && is_convex_region(raw.solution)) {
-    const GreedyResult g =
-        convex_greedy_solution(q, raw.solution, params.radius + params.tolerance, cancel);
-    if (!g.fell_back && g.vertices < out.solution_vertices) {
-      out.result.solution = g.solution;
-      out.simplified = true;
-      out.solution_vertices = g.vertices;
-      return out;
-    }
-  }
-  // The fast engine's own certificate can check any candidate directly, which uses all the
-  // room Π leaves (not only the room between ε̂ and ε): try that first.
-  if (raw.engine == EngineKind::kFast) {
-    if (auto p = detail::simplify_fast_solution(q, params, raw.solution, cancel)) {
-      const std::size_t count = distinct_vertex_count(*p);
-      if (count < out.solution_vertices) {
-        out.result.solution = std::move(*p);
-        out.simplified = true;
-        out.solution_vertices = count;
-      }
-    }
-  }
-
-  // Each τ attempt is a whole decision: on a large input (where collapse_to_segment does not
-  // apply either), once the certificate's own simplification has succeeded, they are skipped
-  // (issue 26: four decisions took 2.4 s of the CLI's 200,000-vertex call).
-  const std::size_t attempts =
-      out.simplified && q.vertex_count() > kLargeInput ? 0 : options.attempts;
+// The decisions at ε' = ε - τ for τ = ε·tau_fraction, halving (options.attempts of them): each
+// YES at ε' gives a certified P at ε by τ-simplification (the header's argument); the fewest
+// vertices win, into `out`.
+void tau_attempts(const PolygonSet& q, SimplifyResult& out, const CancelHook& cancel,
+                  const DeconstructLimits& limits, const SimplifyOptions& options) {
+  const DeconstructParams params = out.result.params;
+  const std::size_t attempts = options.attempts;
   Rational tau = params.tolerance * options.tau_fraction;
   for (std::size_t attempt = 0; attempt < attempts; ++attempt, tau /= 2) {
     const Rational eps_prime = params.tolerance - tau;
@@ -229,7 +198,72 @@ SimplifyResult simplify_solution(const PolygonSet& q, const DeconstructResult& r
     out.solution_vertices = count;
     if (count <= 2) break; // a segment: nothing simpler
   }
+}
+
+// simplify_solution, with the fast decision's work on this q when `work` is set.
+SimplifyResult simplify_with(const PolygonSet& q, const DeconstructResult& raw,
+                             detail::FastWork* work, const CancelHook& cancel,
+                             const DeconstructLimits& limits, const SimplifyOptions& options) {
+  if (raw.answer != Answer::kYes) throw InvalidInput("simplify_solution needs a YES solution");
+  SimplifyResult out;
+  out.result = raw;
+  out.raw_vertices = distinct_vertex_count(raw.solution);
+  out.solution_vertices = out.raw_vertices;
+  const DeconstructParams& params = raw.params;
+  if (params.radius <= params.tolerance) return out; // P = Q: nothing to gain by deciding again
+
+  // Convex Q: the greedy P^s over eyelets has at most OPT + 1 vertices (Theorem 29).
+  if (raw.engine == EngineKind::kFast && is_convex_region(q) && raw.solution.polygons.size() == 1 &&
+      !raw.solution.polygons[0].outer.empty() && is_convex_region(raw.solution)) {
+    const GreedyResult g =
+        convex_greedy_solution(q, raw.solution, params.radius + params.tolerance, cancel);
+    if (!g.fell_back && g.vertices < out.solution_vertices) {
+      out.result.solution = g.solution;
+      out.simplified = true;
+      out.solution_vertices = g.vertices;
+      return out;
+    }
+  }
+  // The fast engine's own certificate can check any candidate directly, which uses all the
+  // room Π leaves (not only the room between ε̂ and ε): try that first.
+  if (raw.engine == EngineKind::kFast) {
+    if (auto p = detail::simplify_fast_solution(q, params, raw.solution, cancel, work)) {
+      const std::size_t count = distinct_vertex_count(*p);
+      if (count < out.solution_vertices) {
+        out.result.solution = std::move(*p);
+        out.simplified = true;
+        out.solution_vertices = count;
+      }
+    }
+  }
+
+  // Each τ attempt is a whole decision: on a large input (where collapse_to_segment does not
+  // apply either), once the certificate's own simplification has succeeded, they are skipped
+  // (issue 26: four decisions took 2.4 s of the CLI's 200,000-vertex call).
+  if (out.simplified && q.vertex_count() > kLargeInput) return out;
+  tau_attempts(q, out, cancel, limits, options);
   return out;
+}
+
+} // namespace
+
+SimplifyResult simplify_solution(const PolygonSet& q, const DeconstructResult& raw,
+                                 const CancelHook& cancel, const DeconstructLimits& limits,
+                                 const SimplifyOptions& options) {
+  return simplify_with(q, raw, nullptr, cancel, limits, options);
+}
+
+SimplifyResult deconstruct_simplified(const ValidatedRegion& q, const DeconstructParams& params,
+                                      const CancelHook& cancel, const DeconstructLimits& limits,
+                                      const SimplifyOptions& options) {
+  std::unique_ptr<detail::FastWork> work;
+  const DeconstructResult raw = detail::deconstruct_keeping(q, params, cancel, limits, work);
+  if (raw.answer != Answer::kYes) {
+    SimplifyResult out;
+    out.result = raw;
+    return out;
+  }
+  return simplify_with(q.region(), raw, work.get(), cancel, limits, options);
 }
 
 } // namespace penshape

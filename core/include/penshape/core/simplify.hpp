@@ -14,6 +14,7 @@
 #include <cstddef>
 
 #include "penshape/core/deconstruct.hpp"
+#include "penshape/core/validated_region.hpp"
 
 namespace penshape {
 
@@ -42,6 +43,15 @@ SimplifyResult simplify_solution(const PolygonSet& q, const DeconstructResult& r
                                  const CancelHook& cancel = {},
                                  const DeconstructLimits& limits = {},
                                  const SimplifyOptions& options = {});
+
+// deconstruct(q, params), then simplify_solution of a YES: the same results, but the simplifier
+// reuses what the fast engine built for the decision (the grid, Q̃, the certified Q_s and the
+// YES walk's deep pieces) instead of building it again. Not YES: the decision as it is
+// (`simplified` false, no vertex counts).
+SimplifyResult deconstruct_simplified(const ValidatedRegion& q, const DeconstructParams& params,
+                                      const CancelHook& cancel = {},
+                                      const DeconstructLimits& limits = {},
+                                      const SimplifyOptions& options = {});
 
 // Building blocks, exposed for tests.
 // Vertices of `ring` (a closed ring) to keep so that every dropped vertex is within distance τ

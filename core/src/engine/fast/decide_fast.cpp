@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -10,6 +11,7 @@
 #include "../engines.hpp"
 #include "clipper_stage.hpp"
 #include "douglas_peucker.hpp"
+#include "fast_work.hpp"
 #include "grid_frame.hpp"
 #include "level_set_check.hpp"
 #include "no_certificate.hpp"
@@ -149,6 +151,22 @@ std::vector<const ExactPoint*> vertex_candidates(const PolygonSet& q, const Grid
   return out;
 }
 
+// The grid, Q̃ and its index, the solid part of Q̃ (its left-out polygons into `left_out`) and
+// Q_s: what a decision builds first.
+std::unique_ptr<FastWork> build_work(const PolygonSet& q, const DeconstructParams& params,
+                                     std::vector<std::size_t>& left_out, IRings& solid) {
+  GridFrame frame(q, params);
+  const double eps = frame.units(params.tolerance);
+  const double tolerance = budget(frame.units(params.precision)).input;
+  GridInput grid = frame.round(q);
+  SegmentIndex q_index(grid.rings, eps / 2.0);
+  solid = grid.solid_rings(left_out);
+  CertifiedInput input = certified_input(solid, tolerance, eps / 2.0);
+  return std::unique_ptr<FastWork>(new FastWork{std::move(frame), std::move(grid),
+                                                std::move(q_index), std::move(input), tolerance,
+                                                std::nullopt});
+}
+
 // One decision: the grid, Q̃ and its solid part, then the YES and NO attempts.
 class FastDecision {
  public:
@@ -159,16 +177,19 @@ class FastDecision {
         cancel_(cancel),
         limits_(limits),
         result_(result),
-        frame_(q, params),
+        work_(build_work(q, params, left_out_, solid_)),
+        frame_(work_->frame),
         r_(frame_.units(params.radius)),
         eps_(frame_.units(params.tolerance)),
         unit_(frame_.units(Rational(1))),
         b_(budget(frame_.units(params.precision))),
-        grid_(frame_.round(q)),
-        q_index_(grid_.rings, eps_ / 2.0),
-        solid_(grid_.solid_rings(left_out_)),
-        input_(certified_input(solid_, b_.input, eps_ / 2.0)),
+        grid_(work_->grid),
+        q_index_(work_->q_index),
+        input_(work_->input),
         sigma_(input_.eta - kInputRounding) {}
+
+  // What the decision built, for the simplifier of the same call (fast_work.hpp).
+  std::unique_ptr<FastWork> release_work() { return std::move(work_); }
 
   // Whether the grid lost part of Q for the certificates: polygons left out of the solid region,
   // a solid region that is not simple, or a ring within the rounding's reach of collapsing.
@@ -192,7 +213,8 @@ class FastDecision {
     if (p.empty() || !is_certifiable_region(SegmentIndex(flatten(p), r_ / 2.0))) {
       p = simplify(pi_hat, b_.simplify);
     }
-    const YesCheckInput in = yes_check_input(input_, q_index_, frame_, q_, params_, b_.margin);
+    YesCheckInput in = yes_check_input(input_, q_index_, frame_, q_, params_, b_.margin);
+    in.memo = &work_->memo.emplace(*input_.index, level_a(in), in.max_sagitta);
     if (!verify_yes(in, p, cancel_)) return false;
     result_.answer = Answer::kYes;
     result_.solution = to_polygon_set(frame_, p);
@@ -247,14 +269,15 @@ class FastDecision {
   const CancelHook& cancel_;
   const DeconstructLimits& limits_;
   DeconstructResult& result_;
-  const GridFrame frame_;
+  std::vector<std::size_t> left_out_;
+  IRings solid_;
+  std::unique_ptr<FastWork> work_;
+  const GridFrame& frame_;
   const double r_, eps_, unit_;
   const Budget b_;
-  const GridInput grid_;
-  const SegmentIndex q_index_;
-  std::vector<std::size_t> left_out_;
-  const IRings solid_;
-  const CertifiedInput input_;
+  const GridInput& grid_;
+  const SegmentIndex& q_index_;
+  const CertifiedInput& input_;
   const double sigma_;
 
   // Q_s, the region the chains offset; without a certifiable Q_s the chains still run on the
@@ -268,7 +291,7 @@ class FastDecision {
 
 DeconstructResult decide_fast(const PolygonSet& q_any, const DeconstructParams& params,
                               const CancelHook& cancel, const DeconstructLimits& limits,
-                              bool* lost_features) {
+                              bool* lost_features, std::unique_ptr<FastWork>* keep) {
   const auto start = std::chrono::steady_clock::now();
   DeconstructResult result;
   result.engine = EngineKind::kFast;
@@ -290,6 +313,7 @@ DeconstructResult decide_fast(const PolygonSet& q_any, const DeconstructParams& 
   if (lost_features != nullptr) {
     *lost_features = result.answer == Answer::kUndecided && decision.lost_features();
   }
+  if (keep != nullptr) *keep = decision.release_work();
   result.elapsed = std::chrono::duration_cast<std::chrono::nanoseconds>(
       std::chrono::steady_clock::now() - start);
   return result;

@@ -21,6 +21,11 @@ using detail::IntervalNT;
 // Arc chords are refined down to this sagitta (grid units) before a piece counts as not
 // verified. It only limits the work spent on a piece; soundness rests on the derived errors.
 constexpr double kMinSagitta = 0.5;
+// Arcs are first walked with chords of this many times max_sagitta, then each chord that fails
+// is halved (coarse to fine): most chords of a level set are deep or far from B and pass at
+// once (KAZ's decision: 7% less time; the 200,000-vertex star: the same). Completeness rests on
+// kMinSagitta, soundness on each chord's derived error, so neither changes.
+constexpr double kFirstChordFactor = 4.0;
 
 struct Interval {
   double lo;
@@ -174,12 +179,18 @@ int cross_sign(DPt u, DPt w) {
 
 class Walker {
  public:
-  Walker(const LevelSetQuery& q, const CancelHook& cancel) : q_(q), cancel_(cancel) {}
+  Walker(const LevelSetQuery& q, const CancelHook& cancel)
+      : q_(q),
+        cancel_(cancel),
+        memo_(q.memo != nullptr && q.memo->serves(q.a, q.level, q.max_sagitta) ? q.memo : nullptr) {
+  }
 
   bool run() {
     const IRings& rings = q_.a->rings();
+    std::size_t base = 0; // index of the ring's first vertex among all of A's (the memo's)
     for (const IRing& ring : rings) {
       const std::size_t n = ring.size();
+      base += n;
       ends(ring);
       for (std::size_t i = 0; i < n; ++i) {
         const IPt prev = ring[(i + n - 1) % n];
@@ -190,10 +201,11 @@ class Walker {
         const Rep& p = out_[i];
         const Rep& q = in_[(i + 1) % n];
         const double dev = std::max(p.dev, q.dev);
-        if (!outside_window(p.p, q.p, dev) && !check({p.p, q.p, dev})) return false;
+        const std::size_t vertex = base - n + i;
+        if (!outside_window(p.p, q.p, dev) && !check({p.p, q.p, dev}, {vertex, 0})) return false;
         // Every point of the arc around v is within `level` of v (and its chords too).
         if (orientation(prev, v, next) > 0 && !outside_window(to_d(v), to_d(v), q_.level) &&
-            !arc(prev, v, next, in_[i], out_[i])) {
+            !arc(prev, v, next, in_[i], out_[i], vertex)) {
           return false;
         }
         if ((++pieces_ & 255U) == 0 && cancel_ && cancel_()) throw Cancelled();
@@ -250,14 +262,15 @@ class Walker {
 
   // The arc of radius `level` around a convex vertex v, from the right normal u0 of (prev, v)
   // to u1 of (v, next), counterclockwise, as chords of sagitta about max_sagitta.
-  bool arc(IPt prev, IPt v, IPt next, const Rep& start, const Rep& end) {
+  bool arc(IPt prev, IPt v, IPt next, const Rep& start, const Rep& end, std::size_t vertex) {
     const DPt u0 = right_direction(prev, v);
     const DPt u1 = right_direction(v, next);
     const double a0 = std::atan2(u0.y, u0.x);
     double sweep = std::atan2(u1.y, u1.x) - a0;
     while (sweep < 0.0) sweep += 2.0 * M_PI;
     while (sweep >= 2.0 * M_PI) sweep -= 2.0 * M_PI;
-    const double max_half = std::acos(std::max(0.0, 1.0 - q_.max_sagitta / q_.level));
+    const double first = kFirstChordFactor * q_.max_sagitta;
+    const double max_half = std::acos(std::max(0.0, 1.0 - first / q_.level));
     const int m = std::max(1, static_cast<int>(std::ceil(sweep / (2.0 * max_half))));
     const double step = sweep / m;
     Dir from{u0, start, true};
@@ -270,11 +283,20 @@ class Walker {
         const UpwardRounding rounding;
         to.rep = rep(v, to.u, q_.level);
       }
-      if (!arc_piece(v, from, to, a0 + step * k, angle, u0, u1)) return false;
+      const auto bit = static_cast<unsigned>(k + 1);
+      const Slot slot = bit < LevelSetMemo::kEntries ? Slot{vertex, bit} : Slot{};
+      if (!arc_piece(v, from, to, a0 + step * k, angle, u0, u1, slot)) return false;
       from = to;
     }
     return true;
   }
+
+  // A top-level piece's entry in the memo (LevelSetMemo); kNoSlot for split chords.
+  static constexpr unsigned kNoSlot = LevelSetMemo::kEntries;
+  struct Slot {
+    std::size_t vertex = 0;
+    unsigned bit = kNoSlot;
+  };
 
   // A direction of the arc: an end normal (exact_end) or a proposed one, with its point.
   struct Dir {
@@ -288,8 +310,8 @@ class Walker {
   // is convex) and consecutive directions turn counterclockwise: checked exactly (the end
   // normals are in the cone and in order by convexity), else the piece is not verified.
   // Error = sagitta bound + the endpoints' deviations, rounded up.
-  bool arc_piece(IPt c, const Dir& from, const Dir& to, double a_from, double a_to, DPt u0,
-                 DPt u1) {
+  bool arc_piece(IPt c, const Dir& from, const Dir& to, double a_from, double a_to, DPt u0, DPt u1,
+                 Slot slot) {
     if (!to.exact_end && (cross_sign(u0, to.u) < 0 || cross_sign(to.u, u1) < 0)) return false;
     if (!(from.exact_end && to.exact_end) && cross_sign(from.u, to.u) < 0) return false;
     Piece piece{};
@@ -301,7 +323,7 @@ class Walker {
       sagitta = sagitta_bound(from.u, to.u, q_.level);
       piece.error = (IntervalNT(sagitta) + IntervalNT(std::max(from.rep.dev, to.rep.dev))).sup();
     }
-    if (check(piece)) return true;
+    if (check(piece, slot)) return true;
     if (sagitta < kMinSagitta) return false;
     const double mid = 0.5 * (a_from + a_to);
     Dir m{{std::cos(mid), std::sin(mid)}, {}, false};
@@ -309,7 +331,8 @@ class Walker {
       const UpwardRounding rounding;
       m.rep = rep(c, m.u, q_.level);
     }
-    return arc_piece(c, from, m, a_from, mid, u0, u1) && arc_piece(c, m, to, mid, a_to, u0, u1);
+    return arc_piece(c, from, m, a_from, mid, u0, u1, {}) &&
+           arc_piece(c, m, to, mid, a_to, u0, u1, {});
   }
 
   // The sub-piece [t0, t1] lies in the open exterior of B: its rounded midpoint has winding 0
@@ -336,13 +359,25 @@ class Walker {
     return (IntervalNT(q_.level) - half - IntervalNT(s.error)).inf();
   }
 
-  bool check(const Piece& s) {
+  // Deep inside {d(·, A) < level}: every piece point is within half its length of the
+  // midpoint and every curve point within `error` of the piece (1-Lipschitz). The memo's answer
+  // when it has one for this piece (the same test on the same piece, see LevelSetMemo).
+  bool deep(const Piece& s, Slot slot) {
+    LevelSetMemo* memo = slot.bit == kNoSlot ? nullptr : memo_;
+    if (memo != nullptr && memo->known(slot.vertex, slot.bit)) {
+      return memo->deep(slot.vertex, slot.bit);
+    }
+    const bool is_deep = some_edge_closer(*q_.a, on(s, 0.5), deep_threshold(s));
+    if (memo != nullptr) memo->record(slot.vertex, slot.bit, is_deep);
+    return is_deep;
+  }
+
+  bool check(const Piece& s, Slot slot) {
     // Distance every represented curve point must keep from B's edges: clearance + error.
     const double need = add_up(q_.clearance, s.error);
-    // Deep inside {d(·, A) < level}: every piece point is within half its length of the
-    // midpoint and every curve point within `error` of the piece (1-Lipschitz). Tried first:
-    // most offset segments of a jagged A are, and this asks one edge, not all of B's near ones.
-    if (some_edge_closer(*q_.a, on(s, 0.5), deep_threshold(s))) return true;
+    // Deep tried first: most offset segments of a jagged A are, and this asks one edge, not all
+    // of B's near ones.
+    if (deep(s, slot)) return true;
     const bool far = far_from_b(s, 0.0, 1.0, need);
     if (far && outside_b(s, 0.0, 1.0, need)) return true;
     // Near or inside B: drop the parts proven closer than `level` to A (all of the piece when
@@ -432,6 +467,7 @@ class Walker {
 
   const LevelSetQuery& q_;
   const CancelHook& cancel_;
+  LevelSetMemo* memo_;
   unsigned pieces_ = 0;
   std::vector<Rep> in_, out_;
 };

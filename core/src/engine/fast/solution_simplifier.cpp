@@ -17,6 +17,7 @@
 #include "clipper_stage.hpp"
 #include "douglas_peucker.hpp"
 #include "engine/engines.hpp"
+#include "fast_work.hpp"
 #include "grid_frame.hpp"
 #include "level_set_check.hpp"
 #include "region_convert.hpp"
@@ -187,48 +188,99 @@ std::optional<IRegion> coarsest_verified(const YesCheckInput& in, const IRegion&
   return best;
 }
 
+// The simplifier's own grid, Q̃ and Q_s, each taken from the decision's work when it has one
+// (the decision's Q_s only when it is the one wanted here: on large inputs, see kFewChecks).
+class CheckSetup {
+ public:
+  CheckSetup(const PolygonSet& q, const DeconstructParams& params, FastWork* work) {
+    if (work == nullptr) own_frame_.emplace(q, params);
+    frame_ = work != nullptr ? &work->frame : &*own_frame_;
+    if (work == nullptr) own_grid_.emplace(frame_->round(q));
+    grid_ = work != nullptr ? &work->grid : &*own_grid_;
+    for (const IRing& ring : grid_->rings) q_count_ += ring.size();
+    const double eps = frame_->units(params.tolerance);
+    const double d = frame_->units(params.precision);
+    // Q_s for the checks is simplified at d / kInputFraction, or at the decision's own d / 4
+    // when the work cap leaves fewer than kFewChecks whole checks (see kFewChecksFraction).
+    const double tolerance =
+        d / (q_count_ > kDropWork / kFewChecks ? kFewChecksFraction : kInputFraction);
+    if (work != nullptr && work->input_tolerance == tolerance) {
+      input_ = &work->input;
+      memo_ = work->memo ? &*work->memo : nullptr;
+    } else {
+      std::vector<std::size_t> left_out;
+      own_input_ = certified_input(grid_->solid_rings(left_out), tolerance, eps / 2.0);
+      input_ = &own_input_;
+    }
+    if (work == nullptr) own_index_.emplace(grid_->rings, eps / 2.0);
+    q_index_ = work != nullptr ? &work->q_index : &*own_index_;
+  }
+
+  [[nodiscard]] const GridFrame& frame() const { return *frame_; }
+  [[nodiscard]] std::size_t q_count() const { return q_count_; }
+
+  // The YES check's input, with a memo of the (A1) walk's deep pieces (the decision's when its
+  // Q_s is used, so pieces it proved deep are not tested again); nothing without a Q_s.
+  std::optional<YesCheckInput> check_input(const PolygonSet& q, const DeconstructParams& params) {
+    if (!input_->index) return std::nullopt;
+    YesCheckInput in = yes_check_input(*input_, *q_index_, *frame_, q, params,
+                                       frame_->units(params.precision) / 32.0);
+    if (memo_ == nullptr || !memo_->serves(in.q, level_a(in), in.max_sagitta)) {
+      memo_ = &own_memo_.emplace(*input_->index, level_a(in), in.max_sagitta);
+    }
+    in.memo = memo_;
+    return in;
+  }
+
+ private:
+  std::optional<GridFrame> own_frame_;
+  std::optional<GridInput> own_grid_;
+  std::optional<SegmentIndex> own_index_;
+  CertifiedInput own_input_;
+  std::optional<LevelSetMemo> own_memo_;
+  const GridFrame* frame_ = nullptr;
+  const GridInput* grid_ = nullptr;
+  const SegmentIndex* q_index_ = nullptr;
+  const CertifiedInput* input_ = nullptr;
+  LevelSetMemo* memo_ = nullptr;
+  std::size_t q_count_ = 0;
+};
+
 } // namespace
 
 std::optional<PolygonSet> simplify_fast_solution(const PolygonSet& q_any,
                                                  const DeconstructParams& params,
                                                  const PolygonSet& solution,
-                                                 const CancelHook& cancel) {
+                                                 const CancelHook& cancel, FastWork* work) {
   // The grid keeps each ring's vertex order: orient Q exactly first (copying Q only when it
   // needs it: deconstruct() hands the engines oriented input, and a copy of 200,000 exact
-  // vertices costs more than the check).
+  // vertices costs more than the check). The decision's work was built from oriented Q.
   std::optional<PolygonSet> reoriented;
-  if (!has_normalized_orientation(q_any)) normalize_orientation(reoriented.emplace(q_any));
+  if (work == nullptr && !has_normalized_orientation(q_any)) {
+    normalize_orientation(reoriented.emplace(q_any));
+  }
   const PolygonSet& q = reoriented ? *reoriented : q_any;
-  const GridFrame frame(q, params);
-  const double eps = frame.units(params.tolerance);
-  const double d = frame.units(params.precision);
-  const GridInput grid = frame.round(q);
-  // The certificate's region A is a Douglas-Peucker copy Q_s of the solid part of Q̃, as in
-  // decide_fast, but finer (d/16 instead of d/4, unless the input is large): the drop pass checks
-  // up to two candidates per vertex of P, and each walks A's level set, so A's size is what they
-  // cost (the solid part itself made KAZ's pass take about 1 s and a 200,000-vertex input's 20 s);
-  // the finer tolerance leaves the drops most of the room. B is all of Q̃.
-  std::vector<std::size_t> left_out;
-  const IRings solid = grid.solid_rings(left_out);
-  std::size_t q_count = 0;
-  for (const IRing& ring : grid.rings) q_count += ring.size();
-  const double fraction = q_count > kDropWork / kFewChecks ? kFewChecksFraction : kInputFraction;
-  const CertifiedInput a = certified_input(solid, d / fraction, eps / 2.0);
-  if (!a.index) return std::nullopt;
-  const SegmentIndex q_index(grid.rings, eps / 2.0);
-  const YesCheckInput in = yes_check_input(a, q_index, frame, q, params, d / 32.0);
+  CheckSetup setup(q, params, work);
+  // The certificate's region A is a Douglas-Peucker copy Q_s of the solid part of Q̃ (finer
+  // than the decision's on small inputs): the drop pass checks up to two candidates per vertex
+  // of P, and each walks A's level set, so A's size is what they cost (the solid part itself
+  // made KAZ's pass take about 1 s and a 200,000-vertex input's 20 s). B is all of Q̃.
+  const std::optional<YesCheckInput> in = setup.check_input(q, params);
+  if (!in) return std::nullopt;
+  const double eps = setup.frame().units(params.tolerance);
+  const double d = setup.frame().units(params.precision);
 
-  const IRegion raw = to_grid(frame, solution);
+  const IRegion raw = to_grid(setup.frame(), solution);
   // Whole checks of Douglas-Peucker candidates, within the same work cap as the drops below.
-  std::size_t checks = std::max<std::size_t>(1, kDropWork / (q_count + vertex_count(raw)));
-  std::optional<IRegion> best = coarsest_verified(in, raw, eps, d, checks, cancel);
+  std::size_t checks = std::max<std::size_t>(1, kDropWork / (setup.q_count() + vertex_count(raw)));
+  std::optional<IRegion> best = coarsest_verified(*in, raw, eps, d, checks, cancel);
   if (!best) return std::nullopt;
   // Then single vertices: at most two checks per vertex, within the work cap.
   std::size_t budget =
-      std::min(2 * vertex_count(*best), kDropWork / (q_count + vertex_count(*best)));
-  while (budget > 0 && drop_vertices(in, *best, budget, cancel)) {
+      std::min(2 * vertex_count(*best), kDropWork / (setup.q_count() + vertex_count(*best)));
+  while (budget > 0 && drop_vertices(*in, *best, budget, cancel)) {
   }
-  return to_polygon_set(frame, *best);
+  return to_polygon_set(setup.frame(), *best);
 }
 
 } // namespace penshape::detail

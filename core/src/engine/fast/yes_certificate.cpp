@@ -36,7 +36,7 @@ bool verify(const YesCheckInput& in, const IRegion& p, const Window* changed,
   if (!is_certifiable_region(pi)) return false;
 
   // The levels are doubles rounded down from the exact bounds, and are then taken as exact.
-  const double level_a = sub_down(in.tolerance.lo, in.eta);        // <= eps - η
+  const double level_a = fast::level_a(in);                        // <= eps - η
   const double level_b = sub_down(in.radius.lo, -in.tolerance.lo); // <= r + eps
   if (level_a <= 1.0 || level_b <= 1.0) return false;
 
@@ -53,16 +53,16 @@ bool verify(const YesCheckInput& in, const IRegion& p, const Window* changed,
   // (A1) the level set {d(·, Q_s) = level_a} keeps distance > r (r <= radius.hi) from P.
   const Window near_a = changed ? grown(*changed, in.radius.hi) : Window{};
   if (!level_set_avoids(
-          {in.q, level_a, &pi, in.radius.hi, in.max_sagitta, changed ? &near_a : nullptr},
+          {in.q, level_a, &pi, in.radius.hi, in.max_sagitta, changed ? &near_a : nullptr, in.memo},
           cancel)) {
     return false;
   }
   // (B1) the level set {d(·, P) = level_b} stays outside Q: farther than η0 from Q̃ (the
   // unsimplified grid input, so the simplification does not eat into this margin).
   const Window near_b = changed ? grown(*changed, level_b) : Window{};
-  return level_set_avoids(
-      {&pi, level_b, in.q_grid, kInputRounding, in.max_sagitta, changed ? &near_b : nullptr},
-      cancel);
+  return level_set_avoids({&pi, level_b, in.q_grid, kInputRounding, in.max_sagitta,
+                           changed ? &near_b : nullptr, nullptr},
+                          cancel);
 }
 
 } // namespace

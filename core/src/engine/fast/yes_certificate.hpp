@@ -24,7 +24,13 @@ struct YesCheckInput {
   Bounds radius;                         // r, grid units (exact value enclosed)
   Bounds tolerance;                      // eps, grid units (exact value enclosed)
   double max_sagitta = 1.0;              // chord error when walking arcs
+  // Shared by the (A1) walks of every check with this input (A = q at one level): see
+  // LevelSetMemo. Optional; a caller checking many candidates sets it.
+  LevelSetMemo* memo = nullptr;
 };
+
+// The level of (A1)'s walk: eps - η rounded down (then taken as exact).
+inline double level_a(const YesCheckInput& in) { return sub_down(in.tolerance.lo, in.eta); }
 
 bool verify_yes(const YesCheckInput& in, const IRegion& p, const CancelHook& cancel);
 
