@@ -38,7 +38,7 @@ struct Interval {
 struct Piece {
   DPt p;
   DPt q;
-  double error;
+  double error = 0.0;
 };
 
 DPt at(const Piece& s, double t) {
@@ -90,7 +90,7 @@ bool stadium_interval(const Piece& s, DPt a, DPt b, double radius, Interval& out
   const double len2 = ux * ux + uy * uy;
   if (len2 > 0.0) {
     const double wx = s.p.x - a.x, wy = s.p.y - a.y;
-    Interval along, across;
+    Interval along{}, across{};
     if (linear_range(wx * ux + wy * uy, dx * ux + dy * uy, 0.0, len2, along) &&
         linear_range(ux * wy - uy * wx, ux * dy - uy * dx, -radius * std::sqrt(len2),
                      radius * std::sqrt(len2), across)) {
@@ -228,7 +228,7 @@ class Walker {
   // A double standing for an exact point of the level set, and its proven distance to it.
   struct Rep {
     DPt p;
-    double dev;
+    double dev = 0.0;
   };
 
   // The right normal direction of a -> b, exact (integer differences, |.| <= 2^32).
@@ -302,7 +302,7 @@ class Walker {
   struct Dir {
     DPt u;
     Rep rep;
-    bool exact_end;
+    bool exact_end = false;
   };
 
   // The sub-arc between directions `from` and `to` (angles given as hints for splitting). The
