@@ -201,6 +201,10 @@ void print_rule_folds(const std::vector<Drawing>& drawings) {
       "== rule thresholds per held-out writer: %zu drawings (shapes right / non-shapes "
       "snapped, shipped tolerance) ==\n",
       items.size());
+  if (items.empty()) {
+    std::printf("  no labelled drawings (../shared/data/strokes missing): nothing to choose on\n");
+    return;
+  }
   for (const Sweep& sw : sweeps) {
     std::printf("  %s\n", sw.name);
     const SweepCounts counts = run_sweep(items, sw);

@@ -31,6 +31,7 @@ std::vector<PointD> walk(const std::vector<PointD>& corners, double step) {
 
 std::vector<StrokePoint> samples(const std::vector<PointD>& points) {
   std::vector<StrokePoint> out;
+  out.reserve(points.size());
   double t = 0;
   for (const PointD& p : points) out.push_back({p.x, p.y, t += 0.01});
   return out;
