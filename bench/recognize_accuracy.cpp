@@ -9,10 +9,10 @@
 // (left, right, up, down: flicks, not drawn lines).
 //
 // The tolerance derivation: every stroke is recognized at epsilon = g * size for g on a grid;
-// on the writers used for tuning, f_max is the largest g whose non-shape snaps stay <= 1.5%,
-// and f the smallest g that names shapes within 1 point of f_max's rate (the room between them
-// is the pen's). Leave-one-subject-out: each writer is scored with the (f, f_max) derived
-// without them.
+// on the writers used for tuning, f_max is the largest g whose non-shape snaps stay <= 1.5% in
+// every corpus, and f the smallest g that names shapes within 1 point of f_max's rate (the room
+// between them is the pen's). Leave-one-subject-out: each writer is scored with the (f, f_max)
+// derived without them.
 #include "recognize_accuracy.hpp"
 
 #include <algorithm>
@@ -142,16 +142,25 @@ SubjectSweep sweep(const std::vector<Sample>& samples) {
   return out;
 }
 
-// The rule derived from every subject's sweep except `left_out` (empty: all subjects).
+// The rule derived from every subject's sweep except `left_out` (empty: all subjects). f_max
+// holds the false-snap limit in every corpus (subjects are "corpus/writer"), not only pooled:
+// the limit is each default run's, and one corpus must not pay for another's clean non-shapes.
 Rule derive(const SubjectSweep& sw, const std::string& left_out) {
   std::vector<Tally> total(kGridSteps);
+  std::map<std::string, std::vector<Tally>> by_corpus;
   for (const auto& [subject, row] : sw) {
     if (subject == left_out) continue;
-    for (std::size_t k = 0; k < row.size(); ++k) total[k].add(row[k]);
+    std::vector<Tally>& corpus = by_corpus[subject.substr(0, subject.find('/'))];
+    corpus.resize(kGridSteps);
+    for (std::size_t k = 0; k < row.size(); ++k) total[k].add(row[k]), corpus[k].add(row[k]);
   }
   int top = 0;
   for (int k = 0; k < kGridSteps; ++k) {
-    if (total[static_cast<std::size_t>(k)].false_snaps() <= kFalseSnapLimit) top = k;
+    bool within = true;
+    for (const auto& [corpus, row] : by_corpus) {
+      within = within && row[static_cast<std::size_t>(k)].false_snaps() <= kFalseSnapLimit;
+    }
+    if (within) top = k;
   }
   int low = top;
   const double best = total[static_cast<std::size_t>(top)].right();

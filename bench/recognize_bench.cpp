@@ -35,9 +35,12 @@
 // Per class (recognize_classes.hpp), after the accuracy tables or alone with --classes (one
 // recognition per drawing, quick): the shipped defaults on every labelled class, the diamonds and
 // squares on a corner made from real rectangles; --wrong lists every drawing named wrong.
+// --rule-folds (recognize_rule_folds.hpp): each plausibility threshold (kDiamondSkew,
+// kMaxBacktrack) chosen per held-out writer, the held-out figure beside the rule off and shipped.
 //
 // Usage: recognize_bench [--json] [--repeat N] [--khz-stride K] [--accuracy-only |
-//                         --timing-only | --derive-tolerance | --classes] [--wrong]
+//                         --timing-only | --derive-tolerance | --classes | --rule-folds]
+//                         [--wrong]
 //        (data dir: $PENSHAPE_SHARED_DATA_DIR)
 #include <time.h>
 
@@ -57,6 +60,7 @@
 #include "penshape/core/recognize.hpp"
 #include "recognize_accuracy.hpp"
 #include "recognize_classes.hpp"
+#include "recognize_rule_folds.hpp"
 #include "stroke_corpora.hpp"
 
 namespace {
@@ -175,6 +179,7 @@ struct AccuracyRun {
   bool derive_only = false;  // the tolerance derivation only
   bool classes_only = false; // the per-class table only
   bool list_wrong = false;   // every miss of the per-class table
+  bool rule_folds = false;   // the rule thresholds per held-out writer only
 };
 
 // Every corpus together: the rule derived on all of their writers, figures per corpus.
@@ -186,6 +191,10 @@ void print_accuracy_figures(const std::filesystem::path& strokes, const Accuracy
   all.insert(all.end(), gestures.begin(), gestures.end());
   std::printf("== accuracy: %zu $1 logs, %zu gesture drawings (single strokes) ==\n", dollar,
               gestures.size());
+  if (run.rule_folds) {
+    penshape::bench::print_rule_folds(all);
+    return;
+  }
   if (!run.classes_only) penshape::bench::print_accuracy(all, {run.derive_only});
   if (!run.derive_only) penshape::bench::print_classes(all, {run.list_wrong});
   std::fflush(stdout);
@@ -214,13 +223,15 @@ int main(int argc, char** argv) {
       timing = false, accuracy_run.derive_only = true;
     } else if (std::strcmp(argv[i], "--classes") == 0) {
       timing = false, accuracy_run.classes_only = true;
+    } else if (std::strcmp(argv[i], "--rule-folds") == 0) {
+      timing = false, accuracy_run.rule_folds = true;
     } else if (std::strcmp(argv[i], "--wrong") == 0) {
       accuracy_run.list_wrong = true;
     } else {
       std::fprintf(stderr,
                    "usage: recognize_bench [--json] [--repeat N] [--khz-stride K] "
-                   "[--accuracy-only | --timing-only | --derive-tolerance | --classes] "
-                   "[--wrong]\n");
+                   "[--accuracy-only | --timing-only | --derive-tolerance | --classes | "
+                   "--rule-folds] [--wrong]\n");
       return 2;
     }
   }

@@ -21,14 +21,13 @@
 namespace penshape::bench {
 namespace {
 
-constexpr double kDiamondAcross = 0.6; // half-diagonal ratio of the made diamonds (62 degrees)
-
 struct Count {
   int drawings = 0, right = 0;
   [[nodiscard]] double rate() const { return drawings ? 100.0 * right / drawings : 0.0; }
 };
 
-// The stroke's box to the unit square, turned 45 degrees, stretched by `across` along y.
+} // namespace
+
 std::vector<StrokePoint> on_corner(const std::vector<StrokePoint>& in, double across) {
   double xlo = in[0].x, xhi = xlo, ylo = in[0].y, yhi = ylo;
   for (const StrokePoint& p : in) {
@@ -44,6 +43,8 @@ std::vector<StrokePoint> on_corner(const std::vector<StrokePoint>& in, double ac
   }
   return out;
 }
+
+namespace {
 
 struct Row {
   std::string name;

@@ -75,7 +75,9 @@
 //   - the shape is drawn once: the stroke is at most 1.6 times as long as the clean shape
 //     (scribbles and writing go over the same region many times), and its total absolute
 //     turning (on 16 points along it, ignoring turns within epsilon / 4 of a straight run) exceeds
-//     the shape's by at most half a turn (writing wiggles);
+//     the shape's by at most half a turn (writing wiggles); it is traced one way round: its
+//     points, placed in order along the shape's path, run back over at most 10% of it (a stem
+//     drawn down and up again, as in a P or a note, only stays in the shape's band);
 //   - straight open shapes (segment, polyline) must certify within straight_fraction * epsilon
 //     (people draw straight strokes far more precisely than round ones; a curve that merely
 //     stays near a few segments is a letter or a brace, not a polyline);

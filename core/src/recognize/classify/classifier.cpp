@@ -9,6 +9,7 @@
 #include "recognize/certify/certificate.hpp"
 #include "recognize/certify/ink_certificate.hpp"
 #include "recognize/classify/annulus_polish.hpp"
+#include "recognize/classify/tracing.hpp"
 #include "recognize/fitting/dot.hpp"
 #include "recognize/fitting/skeleton_seeds.hpp"
 #include "recognize/thresholds.hpp"
@@ -133,10 +134,10 @@ std::string polygon_implausibility(const PreparedStroke& s, const Fit& f, const 
 // A diamond is a rhombus whose angles are far from 90 degrees: its acute angle, 2 atan(b / a)
 // for half-diagonals b <= a, is below a right angle by more than kDiamondSkew. Closer, it is a
 // square (standing on a corner, or a box drawn skewed).
-std::string diamond_implausibility(const Fit& f) {
+std::string diamond_implausibility(const Fit& f, double skew) {
   const double a = std::max(f.params.radius_x, f.params.radius_y);
   const double b = std::min(f.params.radius_x, f.params.radius_y);
-  if (std::numbers::pi / 2 - 2.0 * std::atan2(b, a) <= kDiamondSkew) {
+  if (std::numbers::pi / 2 - 2.0 * std::atan2(b, a) <= skew) {
     return "the rhombus's angles are within 15 degrees of right angles (a square or a skewed box)";
   }
   return {};
@@ -164,16 +165,30 @@ bool has_corners(ShapeClass shape) {
          shape == ShapeClass::kDiamond || shape == ShapeClass::kPolygon;
 }
 
+// A shape is traced once, one way round: a stroke that runs back over a share of the shape's path
+// (a stem drawn down and up, a question mark's hook) only stays in the shape's band.
+std::string tracing_implausibility(const PreparedStroke& s, const Fit& f, double max_backtrack) {
+  const std::vector<PointD> path =
+      f.clean.kind == CleanShape::Kind::kPolyline ? f.clean.path : f.clean.sample(s.size / 64.0);
+  if (backtrack_share(s.fit_points, path) > max_backtrack) {
+    return "the stroke runs back along the shape (a stem drawn twice: a letter or a note)";
+  }
+  return {};
+}
+
 // Why a certified candidate is not a plausible snap (empty when it is); rules in recognize.hpp.
 std::string implausibility(const PreparedStroke& s, const Fit& f, const Certificate& c,
-                           const RecognizerConfig& config) {
+                           const RecognizerConfig& config, const RuleThresholds& rules) {
   if (std::string why = drawing_implausibility(s, f, c, config); !why.empty()) return why;
+  if (std::string why = tracing_implausibility(s, f, rules.max_backtrack); !why.empty()) {
+    return why;
+  }
   if (f.shape == ShapeClass::kPolyline) return polyline_implausibility(f, c);
   if (f.shape == ShapeClass::kPolygon) {
     if (std::string why = polygon_implausibility(s, f, c); !why.empty()) return why;
   }
   if (f.shape == ShapeClass::kDiamond) {
-    if (std::string why = diamond_implausibility(f); !why.empty()) return why;
+    if (std::string why = diamond_implausibility(f, rules.diamond_skew); !why.empty()) return why;
   }
   if (has_corners(f.shape)) return corner_implausibility(f, c);
   if (f.shape == ShapeClass::kRegularPolygon) {
@@ -326,7 +341,8 @@ std::vector<Fit> fit_all(const PreparedStroke& s, const RecognizerConfig& config
 }
 
 std::vector<Scored> evaluate(const PreparedStroke& s, std::vector<Fit> fits, double epsilon,
-                             double pen_radius, const RecognizerConfig& config) {
+                             double pen_radius, const RecognizerConfig& config,
+                             const RuleThresholds& rules) {
   std::vector<Scored> out;
   for (Fit& f : fits) {
     Scored sc;
@@ -340,7 +356,7 @@ std::vector<Scored> evaluate(const PreparedStroke& s, std::vector<Fit> fits, dou
       c.certificate.pen_radius = pen_radius;
       c.certificate.bound = f.fit_error; // not certified; the fit's estimate for ranking
     }
-    if (c.certificate.certified) c.rejected = implausibility(s, f, c.certificate, config);
+    if (c.certificate.certified) c.rejected = implausibility(s, f, c.certificate, config, rules);
     c.rms = rms_distance(s.fit_points, f.clean);
     c.clean = display_path(f.clean, s.size);
     sc.rank = (c.certificate.bound + kRmsWeight * c.rms) / epsilon +

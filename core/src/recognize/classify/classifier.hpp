@@ -30,6 +30,13 @@ bool convex_polygon(ShapeClass c);
 std::vector<Fit> fit_all(const PreparedStroke& s, const RecognizerConfig& config, double epsilon,
                          const std::vector<Family>& skip = {});
 
+// The thresholds of the plausibility rules that the bench sweeps per held-out writer
+// (recognize_bench --rule-folds); everything else reads thresholds.hpp directly.
+struct RuleThresholds {
+  double diamond_skew = kDiamondSkew;
+  double max_backtrack = kMaxBacktrack;
+};
+
 // A fit with its certificate, plausibility and rank.
 struct Scored {
   Fit fit;
@@ -41,7 +48,8 @@ struct Scored {
 // Certifies the fits (skipping those whose fit error already exceeds the tolerance by far) and
 // checks their plausibility; sorted snaps first, then by rank.
 std::vector<Scored> evaluate(const PreparedStroke& s, std::vector<Fit> fits, double epsilon,
-                             double pen_radius, const RecognizerConfig& config);
+                             double pen_radius, const RecognizerConfig& config,
+                             const RuleThresholds& rules = {});
 // Certifies the snaps (the first, path-certified plausible candidates) again on the inks, best
 // rank first, until one passes: it is the winner; those that failed are no longer snaps, those
 // after the winner keep their path certificates. Re-sorted as evaluate() sorts.

@@ -1,0 +1,16 @@
+#pragma once
+// Leave-one-subject-out choice of the classifier's plausibility thresholds (recognize_bench
+// --rule-folds): each rule's threshold is swept over a grid on every labelled single-stroke
+// drawing (and the diamonds and squares on a corner made from real rectangles); for each writer
+// the value is chosen on the other writers only, and that writer is scored with it. The held-out
+// figure beside the rule off and the shipped value says whether the rule helps writers it was
+// not tuned on.
+#include <vector>
+
+#include "stroke_corpora.hpp"
+
+namespace penshape::bench {
+
+void print_rule_folds(const std::vector<Drawing>& drawings);
+
+} // namespace penshape::bench

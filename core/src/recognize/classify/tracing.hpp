@@ -1,0 +1,17 @@
+#pragma once
+// How the stroke traces a clean shape: the stroke's points taken in order along the shape's own
+// path. A shape drawn once advances along its path one way; a letter, a note or a question mark
+// that merely stays in a shape's band runs back over part of it (a stem drawn down and up again).
+#include <vector>
+
+#include "recognize/fitting/clean_shape.hpp"
+
+namespace penshape::recognize_detail {
+
+// The share of the shape's path length over which the stroke runs backwards: the stroke's points
+// (in drawing order) are placed at their nearest point along `path` (closed when it ends where it
+// starts: steps wrap around), and the steps against the net direction are summed. 0 for a shape
+// traced one way; about 2 x stem / perimeter for a stem drawn down and up in a box's band.
+double backtrack_share(const std::vector<PointD>& stroke, const std::vector<PointD>& path);
+
+} // namespace penshape::recognize_detail
