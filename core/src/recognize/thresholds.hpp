@@ -162,4 +162,13 @@ inline constexpr double kGrowthForRefit = 1.5;
 inline constexpr double kProspectLength = 1.5;
 inline constexpr double kProspectGap = 0.75;
 
+// --- arrow/ and group/, several strokes (a23) ----------------------------------------------
+
+// A head drawn in its own stroke may have barbs up to this many shafts: people draw a large head
+// on a short shaft (the MMG "arrowhead" template's barbs are 1.07 shafts; drawn ones reach 2).
+inline constexpr double kMaxSeparateHeadBarb = 2.0;
+// A shaft drawn in its own stroke runs along at least this share of the tail-to-tip distance
+// (people stop short of the tip; a stroke across the shaft, the bar of an A, spans nothing).
+inline constexpr double kMinShaftSpan = 0.5;
+
 } // namespace penshape::recognize_detail
