@@ -2,6 +2,7 @@
 // it fits, the tracing, the bends of its shaft and the shape of its head.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -27,7 +28,7 @@ bool spans_shaft(const std::vector<PointD>& piece, PointD tail, PointD tip) {
   const PointD axis = tip - tail;
   const double len2 = dot(axis, axis);
   if (len2 <= 0.0) return false;
-  double lo = INFINITY, hi = -INFINITY;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const PointD& p : piece) {
     const double t = dot(p - tail, axis) / len2;
     lo = std::min(lo, t), hi = std::max(hi, t);
