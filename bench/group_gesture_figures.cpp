@@ -112,6 +112,12 @@ void draw_miss(const std::filesystem::path& dir, const Drawing& d,
         << "' y='" << d.strokes[k].front().y << "'>" << k + 1 << "</text>\n";
   }
   for (const GroupedShape& g : out) {
+    // Which strokes each group holds and its vertices (an arrow's: tail, tip, barb ends).
+    svg << "<!-- " << to_string(g.recognition.shape) << " of strokes";
+    for (const std::size_t k : g.strokes) svg << ' ' << k + 1;
+    svg << ", vertices";
+    for (const PointD& q : g.recognition.params.vertices) svg << ' ' << q.x << ',' << q.y;
+    svg << " -->\n";
     svg << "<polyline fill='none' stroke='red' stroke-width='" << w << "' points='";
     for (const PointD& q : g.recognition.clean) svg << q.x << ',' << q.y << ' ';
     svg << "'/>\n";
@@ -141,27 +147,52 @@ std::string why_no_arrow(const Drawing& d, bool arrow) {
   return r.shape == ShapeClass::kArrow ? " [union is an arrow]" : " [no arrow candidate]";
 }
 
-void tally(const Drawing& d, Tally& t) {
+} // namespace
+
+GestureKind gesture_kind(const Drawing& d) {
   // LowVision's "arrow_right" is the touch gesture ">" (a chevron, no shaft): never an arrow.
-  const bool chevron = d.label == "arrow_right";
-  const bool square = d.label == "square";
-  const bool arrow = d.label == "arrowhead";
-  const bool non_shape = kNonShapes.contains(d.label) && d.strokes.size() >= 2;
-  if (!square && !arrow && !non_shape && !chevron) return;
-  const std::vector<GroupedShape> out = recognize_strokes(inputs_of(d));
+  if (d.label == "arrow_right") return GestureKind::kChevron;
+  if (d.label == "square") return GestureKind::kSquare;
+  if (d.label == "arrowhead") return GestureKind::kArrow;
+  if (kNonShapes.contains(d.label) && d.strokes.size() >= 2) return GestureKind::kNonShape;
+  return GestureKind::kNone;
+}
+
+bool gesture_hit(GestureKind kind, const std::vector<GroupedShape>& out) {
+  if (kind == GestureKind::kNonShape || kind == GestureKind::kChevron) {
+    bool hit = false;
+    for (const GroupedShape& g : out) {
+      hit = hit || (kind == GestureKind::kChevron
+                        ? kArrow.contains(to_string(g.recognition.shape))
+                        : g.strokes.size() > 1 && g.recognition.shape != ShapeClass::kFreeform);
+    }
+    return hit;
+  }
+  const std::set<std::string>& targets = kind == GestureKind::kSquare ? kRectangle : kArrow;
+  return out.size() == 1 && targets.contains(to_string(out[0].recognition.shape));
+}
+
+std::vector<GroupedShape> recognize_gesture(const Drawing& d) {
+  return recognize_strokes(inputs_of(d));
+}
+
+namespace {
+
+void tally(const Drawing& d, Tally& t) {
+  const GestureKind kind = gesture_kind(d);
+  const bool chevron = kind == GestureKind::kChevron;
+  const bool square = kind == GestureKind::kSquare;
+  const bool arrow = kind == GestureKind::kArrow;
+  const bool non_shape = kind == GestureKind::kNonShape;
+  if (kind == GestureKind::kNone) return;
+  const std::vector<GroupedShape> out = recognize_gesture(d);
   if (chevron) {
-    bool as_arrow = false;
-    for (const GroupedShape& g : out)
-      as_arrow = as_arrow || kArrow.contains(to_string(g.recognition.shape));
-    t.chevrons_as_arrows.add(d.subject, as_arrow);
+    t.chevrons_as_arrows.add(d.subject, gesture_hit(kind, out));
     ++t.misses["chevron (" + source_of(d) + ") -> " + answer_of(out)];
     return;
   }
   if (non_shape) {
-    bool merged = false;
-    for (const GroupedShape& g : out) {
-      merged = merged || (g.strokes.size() > 1 && g.recognition.shape != ShapeClass::kFreeform);
-    }
+    const bool merged = gesture_hit(kind, out);
     t.non_shapes.add(d.subject, merged);
     t.rows["non-shape " + d.label + " (" + source_of(d) + ")"].add(d.subject, merged);
     if (merged) {
@@ -170,8 +201,7 @@ void tally(const Drawing& d, Tally& t) {
     }
     return;
   }
-  const std::set<std::string>& targets = square ? kRectangle : kArrow;
-  const bool ok = out.size() == 1 && targets.contains(to_string(out[0].recognition.shape));
+  const bool ok = gesture_hit(kind, out);
   const std::string row = std::string(square ? "square" : "arrow") + " in " +
                           strokes_of(d.strokes.size()) + " (" + source_of(d) + ")";
   t.rows[row].add(d.subject, ok);

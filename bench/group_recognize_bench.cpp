@@ -14,8 +14,12 @@
 //   other people's drawings   the gestures corpus (group_gesture_figures.hpp): squares and
 //                             arrows in several strokes, non-shape drawings of several strokes,
 //                             by writers the rules were never tuned on (the held-out figures).
-// Usage: group_recognize_bench [--json] [--gestures-only] [--svg-dir DIR]
+// Usage: group_recognize_bench [--json] [--gestures-only] [--loso] [--svg-dir DIR]
 //   (data dir: $PENSHAPE_SHARED_DATA_DIR)
+//   --loso: only the leave-one-subject-out figures of the thresholds picked on real strokes
+//           (group_loso.hpp; each swept over a few values, about 30 s per value).
+//   --without RULE, --apart-barb X, --shaft-span X: a rule off, a head drawn apart's barb limit,
+//   a shaft stroke's least span (to measure).
 //   --gestures-only: only the figures on other people's drawings.
 //   --only CLASS: with --gestures-only, only the gestures of that class ("D", "arrowhead", ...).
 //   --svg-dir: every arrow missed is drawn to DIR (strokes, and the best arrow candidate with why
@@ -34,8 +38,10 @@
 
 #include "bench_data.hpp"
 #include "group_gesture_figures.hpp"
+#include "group_loso.hpp"
 #include "multi_stroke_cases.hpp"
 #include "penshape/core/group_recognize.hpp"
+#include "recognize/arrow/fit_arrow.hpp"
 #include "recognize/group/group_plausibility.hpp"
 
 namespace {
@@ -162,6 +168,8 @@ bool switch_off(const std::string& rule) {
     r.no_curved_sides = false;
   } else if (rule == "crossing_pieces") {
     r.no_crossing_pieces = false;
+  } else if (rule == "seed_from_strokes") {
+    penshape::recognize_detail::arrow_rules().seed_from_strokes = false;
   } else {
     std::fprintf(stderr, "group_recognize_bench: no rule %s\n", rule.c_str());
     return false;
@@ -178,7 +186,7 @@ double quantile(std::vector<double> v, double q) {
 } // namespace
 
 int main(int argc, char** argv) {
-  bool json = false, gestures_only = false;
+  bool json = false, gestures_only = false, loso = false;
   std::filesystem::path svg_dir;
   std::string only;
   for (int i = 1; i < argc; ++i) {
@@ -186,8 +194,14 @@ int main(int argc, char** argv) {
       json = true;
     } else if (std::strcmp(argv[i], "--gestures-only") == 0) {
       gestures_only = true;
+    } else if (std::strcmp(argv[i], "--loso") == 0) {
+      loso = true;
     } else if (std::strcmp(argv[i], "--without") == 0 && i + 1 < argc) {
       if (!switch_off(argv[++i])) return 2;
+    } else if (std::strcmp(argv[i], "--apart-barb") == 0 && i + 1 < argc) {
+      penshape::recognize_detail::arrow_rules().max_apart_barb = std::atof(argv[++i]);
+    } else if (std::strcmp(argv[i], "--shaft-span") == 0 && i + 1 < argc) {
+      penshape::recognize_detail::arrow_rules().min_shaft_span = std::atof(argv[++i]);
     } else if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc) {
       only = argv[++i];
     } else if (std::strcmp(argv[i], "--svg-dir") == 0 && i + 1 < argc) {
@@ -196,7 +210,7 @@ int main(int argc, char** argv) {
     } else {
       std::fprintf(stderr,
                    "usage: group_recognize_bench [--json] [--gestures-only [--only CLASS]] "
-                   "[--svg-dir DIR]\n");
+                   "[--loso] [--without RULE] [--apart-barb X] [--shaft-span X] [--svg-dir DIR]\n");
       return 2;
     }
   }
@@ -206,6 +220,10 @@ int main(int argc, char** argv) {
   if (!std::filesystem::exists(root)) {
     std::fprintf(stderr, "group_recognize_bench: no $1 logs under %s\n", root.c_str());
     return 2;
+  }
+  if (loso) {
+    penshape::bench::print_group_loso(root.parent_path() / "gestures", json);
+    return 0;
   }
   if (gestures_only) {
     penshape::bench::print_group_gesture_figures(root.parent_path() / "gestures", json, svg_dir,

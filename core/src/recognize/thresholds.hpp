@@ -77,8 +77,6 @@ inline constexpr double kMinHeadAngle = 10.0 * kDegree;
 inline constexpr double kMaxHeadAngle = 80.0 * kDegree;
 // A barb is at most this fraction of the shaft (a longer one makes a V or a chevron).
 inline constexpr double kMaxBarbFraction = 0.8;
-// A head drawn in its own stroke may be as long as the shaft (people draw it large).
-inline constexpr double kMaxApartBarbFraction = 1.0;
 // Arrows are straight pieces: they fit as tightly as polylines, a little looser for the small head.
 inline constexpr double kStraightFraction = 0.6;
 // An arrow's stroke may be at most this much longer than the clean arrow (as kMaxTracing).
@@ -169,5 +167,14 @@ inline constexpr double kProspectGap = 0.75;
 // Chosen per held-out writer (recognize_bench --rule-folds): 100 of 102 folds pick 0.1 (2: 0.05);
 // held out 98.2% shapes / 0.7% non-shapes snapped against 98.4% / 1.4% without the rule.
 inline constexpr double kMaxBacktrack = 0.1;
+
+// --- arrow/ and group/, several strokes (a23) ----------------------------------------------
+
+// A head drawn in its own stroke may have barbs up to this many shafts: people draw a large head
+// on a short shaft (the MMG "arrowhead" template's barbs are 1.07 shafts; drawn ones reach 2).
+inline constexpr double kMaxSeparateHeadBarb = 2.0;
+// A shaft drawn in its own stroke runs along at least this share of the tail-to-tip distance
+// (people stop short of the tip; a stroke across the shaft, the bar of an A, spans nothing).
+inline constexpr double kMinShaftSpan = 0.5;
 
 } // namespace penshape::recognize_detail

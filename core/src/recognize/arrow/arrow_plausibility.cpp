@@ -2,6 +2,7 @@
 // it fits, the tracing, the bends of its shaft and the shape of its head.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,20 @@ double deviation(const std::vector<PointD>& piece, PointD a, PointD b) {
   return far;
 }
 
+// Whether a stroke runs along the shaft from tail to tip for at least kMinShaftSpan of it: a
+// loose epsilon lets a short stroke across the shaft (the bar of an A) lie within it.
+bool spans_shaft(const std::vector<PointD>& piece, PointD tail, PointD tip) {
+  const PointD axis = tip - tail;
+  const double len2 = dot(axis, axis);
+  if (len2 <= 0.0) return false;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const PointD& p : piece) {
+    const double t = dot(p - tail, axis) / len2;
+    lo = std::min(lo, t), hi = std::max(hi, t);
+  }
+  return hi - lo >= arrow_rules().min_shaft_span;
+}
+
 // Which part of an arrow (vertices v: tail, tip, barb ends) one stroke draws: the shaft when it
 // lies along the shaft and starts or ends at the tail; the head when it lies along the barbs and
 // both its ends are at the tip or a barb's end, not both at one (a chevron that turns at the
@@ -35,7 +50,9 @@ PieceRole piece_role(const std::vector<PointD>& piece, const std::vector<PointD>
   }
   auto near = [&](PointD p, std::size_t k) { return distance(p, v[k]) <= epsilon; };
   const PointD a = piece.front(), b = piece.back();
-  if (on_shaft && !on_head && (near(a, 0) || near(b, 0))) return PieceRole::kShaft;
+  if (on_shaft && !on_head && (near(a, 0) || near(b, 0)) && spans_shaft(piece, v[0], v[1])) {
+    return PieceRole::kShaft;
+  }
   if (on_head && !on_shaft) {
     for (const std::size_t i : {std::size_t{1}, std::size_t{2}, std::size_t{3}}) {
       for (const std::size_t j : {std::size_t{1}, std::size_t{2}, std::size_t{3}}) {
@@ -106,7 +123,7 @@ std::string arrow_implausibility(const Fit& f, const Certificate& c, double draw
   if (!head_apart && c.bound > kStraightFraction * eps) {
     return "an arrow is straight pieces: it must fit within 0.6 epsilon";
   }
-  const double max_barb = head_apart ? kMaxApartBarbFraction : kMaxBarbFraction;
+  const double max_barb = head_apart ? arrow_rules().max_apart_barb : kMaxBarbFraction;
   if (drawn_length > kMaxTracingArrow * path_length(f.clean.path)) {
     return "the strokes are much longer than the arrow (traced over, a scribble or writing)";
   }
@@ -118,7 +135,7 @@ std::string arrow_implausibility(const Fit& f, const Certificate& c, double draw
     for (const PointD& b : {b1, b2}) {
       const double len = distance(b, head);
       if (len < eps) return "a barb is shorter than epsilon";
-      if (len > max_barb * shaft) return "a barb is longer than 0.8 shafts (1 when drawn apart)";
+      if (len > max_barb * shaft) return "a barb is longer than 0.8 shafts (2 when drawn apart)";
       // A bent shaft's end piece is fitted to the ink it follows, so ink along the shaft near
       // the head can pass for a barb: its barbs' ends must leave the end piece's line by
       // epsilon / 2 (as find_barbs asks of a barb, and a polyline of its corners).

@@ -470,7 +470,45 @@ std::optional<PointD> other_tip(const std::vector<PointD>& cloud, PointD tail, P
   return best;
 }
 
+// The head stroke's tip: its point farthest from its chord, when that stands out by more than
+// epsilon (a head turns at its tip, as piece_role asks of a head drawn alone).
+std::optional<PointD> head_tip(const std::vector<PointD>& head, double epsilon) {
+  std::optional<PointD> tip;
+  double far = epsilon;
+  for (const PointD& p : head) {
+    const double d = segment_distance(p, head.front(), head.back());
+    if (d > far) far = d, tip = p;
+  }
+  return tip;
+}
+
+// Arrows whose head is one stroke and shaft another, in either order: seeded from the strokes
+// themselves (tip at the head's turn, barbs at its ends, tail at the shaft's end away from the
+// tip), then polished. The farthest points of such a drawing need not be its tail and tip: a
+// long barb can reach farther than the shaft, and the shaft may stop short of the tip.
+void fit_from_strokes(const std::vector<PointD>& cloud, const UnionStroke& u, double epsilon,
+                      std::vector<Fit>& out) {
+  if (!arrow_rules().seed_from_strokes || u.pieces.size() != 2) return;
+  const Objective objective{cloud, u, ShapeClass::kArrow};
+  for (std::size_t h = 0; h < 2; ++h) {
+    const std::vector<PointD>& head = u.pieces[h];
+    const std::vector<PointD>& shaft = u.pieces[1 - h];
+    const std::optional<PointD> tip = head_tip(head, epsilon);
+    if (!tip) continue;
+    const PointD tail =
+        distance(shaft.front(), *tip) > distance(shaft.back(), *tip) ? shaft.front() : shaft.back();
+    ArrowState a{{tail, *tip, head.front(), head.back()}, 0.0, {}};
+    const double e = polish(a, objective, epsilon / 2.0, false);
+    out.push_back(make_fit(ShapeClass::kArrow, std::move(a), e));
+  }
+}
+
 } // namespace
+
+ArrowRules& arrow_rules() {
+  static ArrowRules rules;
+  return rules;
+}
 
 std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon, double rank_to_beat) {
   auto may_win = [&](double parameters) { return kPricePerParameter * parameters < rank_to_beat; };
@@ -509,6 +547,7 @@ std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon, double rank_to
       }
     }
   }
+  fit_from_strokes(cloud, u, epsilon, out);
   const auto at_a = find_barbs(cloud, cloud[a], cloud[b], epsilon);
   const auto at_b = find_barbs(cloud, cloud[b], cloud[a], epsilon);
   if (at_a && at_b && may_win(kDoubleParameters)) {

@@ -6,6 +6,7 @@
 
 #include "recognize/certify/union_certificate.hpp"
 #include "recognize/fitting/fit.hpp"
+#include "recognize/thresholds.hpp"
 
 namespace penshape::recognize_detail {
 
@@ -25,10 +26,23 @@ std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon, double rank_to
 // the head, which a tight fit must tell otherwise.
 bool head_drawn_apart(const Fit& f, const UnionStroke& u, double epsilon);
 
+// The arrow rules added with measured held-out figures, each switchable so that
+// group_recognize_bench and the tests can show what one rule does (as GroupRules). All on by
+// default; the library never changes them (set them before recognizing, from one thread).
+struct ArrowRules {
+  // Two strokes are also fitted as a head stroke and a shaft stroke (fit_arrows).
+  bool seed_from_strokes = true;
+  // A head drawn apart may have barbs up to this many shafts (arrow_implausibility).
+  double max_apart_barb = kMaxSeparateHeadBarb;
+  // A shaft drawn in its own stroke spans at least this share of the shaft (head_drawn_apart).
+  double min_shaft_span = kMinShaftSpan;
+};
+ArrowRules& arrow_rules();
+
 // Why a certified arrow is not a plausible snap (empty when it is); `drawn_length` is the summed
 // length of the strokes. An arrow must fit within 0.6 epsilon (it is straight pieces) with
 // barbs up to 0.8 shafts; with its head drawn apart, within epsilon (the certificate) with
-// barbs up to one shaft.
+// barbs up to ArrowRules::max_apart_barb shafts.
 std::string arrow_implausibility(const Fit& f, const Certificate& c, double drawn_length,
                                  bool head_apart = false);
 

@@ -67,7 +67,7 @@ bool rounds_corner(const std::vector<PointD>& piece, PointD before, PointD v, Po
   const PointD p = point_at(piece, lengths, at);
   const double turn = angle_between(p - point_at(piece, lengths, at - epsilon),
                                     point_at(piece, lengths, at + epsilon) - p);
-  return turn < kMinCornerTurnShare * angle_between(v - before, after - v);
+  return turn < group_rules().min_corner_turn_share * angle_between(v - before, after - v);
 }
 
 // Whether some piece rounds a corner of the closed polygon `outline` (first vertex repeated).

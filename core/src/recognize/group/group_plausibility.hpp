@@ -5,6 +5,7 @@
 #include <string>
 
 #include "penshape/core/group_recognize.hpp"
+#include "recognize/thresholds.hpp"
 
 namespace penshape::recognize_detail {
 
@@ -28,6 +29,8 @@ struct GroupRules {
   bool no_open_polylines = true;  // an open polyline in pieces stays apart
   bool no_curved_sides = true;    // a curve is no pair of straight sides
   bool no_crossing_pieces = true; // the pieces of an outline do not cross in their middles
+  // The least turn at a corner inside one stroke, as a share of the shape's (no_curved_sides).
+  double min_corner_turn_share = kMinCornerTurnShare;
 };
 GroupRules& group_rules();
 

@@ -1,0 +1,103 @@
+// The arrow rules of ArrowRules (fit_arrow.hpp) for arrows drawn as a shaft stroke and a head
+// stroke: each with a drawing it lets through, checked to decide (with the rule off, the drawing
+// is no arrow), and the certificate checked independently (group_test_support.hpp).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "group_test_support.hpp"
+#include "penshape/core/group_recognize.hpp"
+#include "recognize/arrow/fit_arrow.hpp"
+
+namespace penshape {
+namespace {
+
+using recognize_detail::arrow_rules;
+using recognize_detail::ArrowRules;
+using test::next_start;
+using test::stroke_along;
+
+class ArrowRulesTest : public ::testing::Test {
+ protected:
+  void TearDown() override { arrow_rules() = ArrowRules{}; }
+};
+
+// A head at `tip` pointing along +x: barbs of the given lengths leaving the shaft's line at 35
+// degrees, drawn from the upper barb's end through the tip to the lower one's.
+test::Path head(PointD tip, double upper, double lower) {
+  const double c = std::cos(35.0 * std::numbers::pi / 180.0);
+  const double s = std::sin(35.0 * std::numbers::pi / 180.0);
+  return {{tip.x - upper * c, tip.y - upper * s}, tip, {tip.x - lower * c, tip.y + lower * s}};
+}
+
+// Whether the strokes come out as one arrow of both strokes, certified on their union.
+bool one_arrow(const std::vector<StrokeInput>& s) {
+  const auto out = recognize_strokes(s);
+  if (out.size() != 1 || out[0].recognition.shape != ShapeClass::kArrow) return false;
+  const Recognition& r = out[0].recognition;
+  const double h =
+      test::union_hausdorff(test::paths_of(s, {0, 1}), test::clean_paths(r), r.epsilon / 20.0);
+  EXPECT_LE(h, r.certificate.bound + 1e-6);
+  return r.certificate.certified;
+}
+
+// A long lower barb reaches farther from the tip than the shaft's tail: the drawing's farthest
+// points are no tail and tip, and only the strokes themselves tell the head from the shaft.
+TEST_F(ArrowRulesTest, AHeadStrokeAndAShaftStrokeAreSeededFromTheStrokes) {
+  std::vector<StrokeInput> s{stroke_along({{0, 0}, {100, 0}}, 0.0)};
+  s.push_back(stroke_along(head({100, 0}, 25.0, 105.0), next_start(s)));
+  EXPECT_TRUE(one_arrow(s));
+  arrow_rules().seed_from_strokes = false;
+  EXPECT_FALSE(one_arrow(s));
+}
+
+// The same with the head drawn first and the shaft stopping a little short of the tip.
+TEST_F(ArrowRulesTest, TheHeadMayComeFirstAndTheShaftStopShort) {
+  std::vector<StrokeInput> s{stroke_along(head({100, 0}, 25.0, 105.0), 0.0)};
+  s.push_back(stroke_along({{0, 0}, {96, 0}}, next_start(s)));
+  EXPECT_TRUE(one_arrow(s));
+  arrow_rules().seed_from_strokes = false;
+  EXPECT_FALSE(one_arrow(s));
+}
+
+// A head drawn apart may be large beside its shaft (barbs up to kMaxSeparateHeadBarb shafts).
+TEST_F(ArrowRulesTest, AHeadDrawnApartMayHaveBarbsLongerThanTheShaft) {
+  std::vector<StrokeInput> s{stroke_along({{0, 0}, {100, 0}}, 0.0)};
+  s.push_back(stroke_along(head({100, 0}, 40.0, 150.0), next_start(s)));
+  EXPECT_TRUE(one_arrow(s));
+  arrow_rules().max_apart_barb = 1.0;
+  EXPECT_FALSE(one_arrow(s));
+}
+
+// A head far bigger than its shaft is a chevron beside a dash, not an arrow.
+TEST_F(ArrowRulesTest, ABarbOfMoreThanTwoShaftsIsNoArrow) {
+  std::vector<StrokeInput> s{stroke_along({{0, 0}, {60, 0}}, 0.0)};
+  s.push_back(stroke_along(head({60, 0}, 140.0, 140.0), next_start(s)));
+  EXPECT_FALSE(one_arrow(s));
+  arrow_rules().max_apart_barb = 3.0;
+  EXPECT_TRUE(one_arrow(s));
+}
+
+// An arrow pointing along +x with its tip at the origin and its tail at (-150, 0); its head V
+// drawn as one stroke, and `shaft` as the other: whether the head counts as drawn apart.
+bool apart_with(const test::Path& shaft) {
+  recognize_detail::Fit f;
+  f.shape = ShapeClass::kArrow;
+  f.params.vertices = {{-150, 0}, {0, 0}, {-100, -60}, {-100, 60}};
+  const recognize_detail::UnionStroke u =
+      recognize_detail::prepare_union({{{-100, -60}, {0, 0}, {-100, 60}}, shaft}, 0.0);
+  return recognize_detail::head_drawn_apart(f, u, 30.0);
+}
+
+// A stroke across the shaft (the bar of an A) lies within a loose epsilon of it near the tail but
+// draws no shaft: a shaft stroke runs along at least kMinShaftSpan of its shaft.
+TEST_F(ArrowRulesTest, AStrokeAcrossTheShaftIsNoShaft) {
+  EXPECT_TRUE(apart_with({{-150, 0}, {-20, 0}}));
+  EXPECT_FALSE(apart_with({{-150, -20}, {-150, 20}}));
+  arrow_rules().min_shaft_span = 0.0;
+  EXPECT_TRUE(apart_with({{-150, -20}, {-150, 20}}));
+}
+
+} // namespace
+} // namespace penshape
