@@ -86,7 +86,7 @@ double union_distance_above(const UnionStroke& u, PointD p, double floor, PieceH
     const std::size_t pi = (hint.piece + k) % n;
     const std::vector<PointD>& piece = u.pieces[pi];
     if (piece.size() == 1) best2 = std::min(best2, dot(p - piece[0], p - piece[0]));
-    const std::size_t segments = piece.size() > 0 ? piece.size() - 1 : 0;
+    const std::size_t segments = piece.empty() ? 0 : piece.size() - 1;
     const std::size_t from = k == 0 && hint.segment < segments ? hint.segment : 0;
     for (std::size_t j = 0; j < segments; ++j) {
       const std::size_t i = (from + j) % segments;

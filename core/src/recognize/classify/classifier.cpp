@@ -235,9 +235,8 @@ double degrees_of_freedom(const Fit& fit) {
       return 6;
     case ShapeClass::kCircle:
       return 3;
-    case ShapeClass::kEllipse:
-      return 5;
-    case ShapeClass::kArc:
+    case ShapeClass::kEllipse: // centre, two axes, angle
+    case ShapeClass::kArc:     // centre, radius, two end angles
       return 5;
     case ShapeClass::kArrow:
     case ShapeClass::kDoubleArrow: {

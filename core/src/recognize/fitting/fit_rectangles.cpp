@@ -45,7 +45,7 @@ void normalise(double& theta, double& w, double& h) {
 // degrees (angles times four, by length), extents and centre from its corners along those axes.
 struct RectangleStart {
   PointD centre;
-  double w, h, theta;
+  double w = 0.0, h = 0.0, theta = 0.0;
 };
 
 RectangleStart rectangle_start(const std::vector<PointD>& q, PointD c0) {

@@ -109,6 +109,7 @@ bool cross_in_middle(const std::vector<PointD>& a, const std::vector<PointD>& b,
 bool pieces_cross(const std::vector<std::vector<PointD>>& paths, double stroke_epsilon, double join,
                   bool in_both) {
   std::vector<std::vector<PointD>> thin;
+  thin.reserve(paths.size());
   for (const std::vector<PointD>& p : paths)
     thin.push_back(thin_path(p, kCrossingThinning * stroke_epsilon));
   for (std::size_t i = 0; i < thin.size(); ++i) {
