@@ -1,5 +1,6 @@
 #include "penshape/daemon/recognizing_analyzer.hpp"
 
+#include <atomic>
 #include <functional>
 #include <map>
 #include <memory>
@@ -97,7 +98,8 @@ class GroupSession final : public StrokeGroupSession {
       proto.build_if_not_started();
     }
     BuildOnce<InkPolygon> polygon;
-    BuildOnce<v1::PolygonSet> proto; // reads polygon: declared after it
+    BuildOnce<v1::PolygonSet> proto;    // reads polygon: declared after it
+    std::atomic<bool> abandoned{false}; // the call that asked for Q was cancelled
   };
 
  public:
@@ -168,8 +170,18 @@ class GroupSession final : public StrokeGroupSession {
       const InkOptions options = ink_options_for(settings_);
       ink = std::make_shared<StrokeInk>(ink_samples(stroke, options), options);
       if (offload.run_elsewhere)
-        (void)offload.run_elsewhere([ink] { ink->build_if_not_started(); });
-      input.ink_when_needed = [&ink] { return &ink->polygon.get(); };
+        (void)offload.run_elsewhere([ink] {
+          if (!ink->abandoned) ink->build_if_not_started();
+        });
+      // Q is needed once the unions and the stroke's fits are done: a cancelled call (a hold's
+      // work ahead that a pen-up overtook) stops there rather than wait for Q and certify.
+      input.ink_when_needed = [&ink, &cancel] {
+        if (cancel && cancel()) {
+          ink->abandoned = true; // a helper that has not started it leaves Q unbuilt
+          throw Cancelled();
+        }
+        return &ink->polygon.get();
+      };
     }
     const IntentDecision intent = no_path ? IntentDecision{} : decide(input.samples, held);
     const bool writing = intent.intent == Intent::kWriting && !settings_.snap_writing;

@@ -253,6 +253,32 @@ TEST(RecognizingAnalyzer, GroupSessionAnswersTheSameWithTheInkBuiltElsewhere) {
   EXPECT_TRUE(certified_on_ink); // the strand read Q for at least one answer
 }
 
+// A hold's work ahead (on a copy of the session, as try_hold does) is cancelled when a pen-up
+// overtakes it: a call whose cancel hook turns true while the stroke is fitted stops when it
+// would wait for Q (Cancelled); the session then answers the pen-up as a fresh one.
+TEST(RecognizingAnalyzer, AHeldStrokeCancelledDuringItsFitsStopsBeforeTheInk) {
+  std::vector<PointD> circle;
+  for (int k = 0; k <= 200; ++k) {
+    const double t = 2 * std::numbers::pi * k / 200.0;
+    circle.push_back({100 + 30 * std::cos(t), 80 + 30 * std::sin(t)});
+  }
+  circle.push_back(circle[1]);
+  const Stroke stroke = stroke_from(circle);
+  const auto analyzer = make_recognizing_analyzer();
+  PenSettings settings;
+  settings.pen_radius_mm = 0.8;
+  auto session = analyzer->group_session(settings, GroupingConfig{});
+  int asked = 0;
+  const CancelHook after_the_start = [&asked] { return ++asked > 1; }; // false at the start only
+  EXPECT_THROW((void)session->clone()->add_held(stroke, after_the_start, {}), Cancelled);
+  EXPECT_GT(asked, 1);
+  const GroupedStrokeAnalysis again = session->add(stroke, true, {});
+  const GroupedStrokeAnalysis fresh =
+      analyzer->group_session(settings, GroupingConfig{})->add(stroke, true, {});
+  EXPECT_EQ(again.analysis.shape.certificate().method(), "ink-hausdorff-sampling");
+  EXPECT_EQ(again.analysis.shape.SerializeAsString(), fresh.analysis.shape.SerializeAsString());
+}
+
 // A live grouping session keeps only the strokes its window can reach: through 200 short strokes
 // apart from each other, 0.1 s apart (all within the 2 s pause window), the strokes it keeps never
 // exceed the groups a stroke may join (6) times (max_strokes - 1), the oldest kept is recent, and
