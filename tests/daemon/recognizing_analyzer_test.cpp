@@ -190,18 +190,24 @@ TEST(RecognizingAnalyzer, GroupsAShaftAndItsHeadIntoOneArrow) {
   EXPECT_NEAR(dot.shape.vertices().vertices(0).x(), 5, 1e-9);
 }
 
-// The daemon's strand builds a stroke's ink polygon Q on a helper worker and hands the shape out
-// before Q's proto form (InkOffload::shape_first): the answers and the ink are those of a session
-// that builds everything on one thread. With a helper that has not started when Q is needed, the
-// strand builds Q and certifies on it, and the proto form follows the shape (ink_later).
-TEST(RecognizingAnalyzer, GroupSessionAnswersTheSameWithTheInkBuiltElsewhere) {
+// A circle of radius 30 mm around (100, 80), closed with the overlap a hand draws.
+std::vector<PointD> closed_circle() {
   std::vector<PointD> circle;
   for (int k = 0; k <= 200; ++k) {
     const double t = 2 * std::numbers::pi * k / 200.0;
     circle.push_back({100 + 30 * std::cos(t), 80 + 30 * std::sin(t)});
   }
   circle.push_back(circle[1]);
-  std::vector<Stroke> strokes{stroke_from(circle), stroke_from(along({{20, 20}, {90, 20}})),
+  return circle;
+}
+
+// The daemon's strand builds a stroke's ink polygon Q on a helper worker and hands the shape out
+// before Q's proto form (InkOffload::shape_first): the answers and the ink are those of a session
+// that builds everything on one thread. With a helper that has not started when Q is needed, the
+// strand builds Q and certifies on it, and the proto form follows the shape (ink_later).
+TEST(RecognizingAnalyzer, GroupSessionAnswersTheSameWithTheInkBuiltElsewhere) {
+  std::vector<Stroke> strokes{stroke_from(closed_circle()),
+                              stroke_from(along({{20, 20}, {90, 20}})),
                               stroke_from(along({{90, 20}, {90, 60}, {20, 60}, {20, 20}}))};
   for (std::size_t i = 0; i < strokes.size(); ++i) {
     strokes[i].id = 10 + i;
@@ -257,13 +263,7 @@ TEST(RecognizingAnalyzer, GroupSessionAnswersTheSameWithTheInkBuiltElsewhere) {
 // overtakes it: a call whose cancel hook turns true while the stroke is fitted stops when it
 // would wait for Q (Cancelled); the session then answers the pen-up as a fresh one.
 TEST(RecognizingAnalyzer, AHeldStrokeCancelledDuringItsFitsStopsBeforeTheInk) {
-  std::vector<PointD> circle;
-  for (int k = 0; k <= 200; ++k) {
-    const double t = 2 * std::numbers::pi * k / 200.0;
-    circle.push_back({100 + 30 * std::cos(t), 80 + 30 * std::sin(t)});
-  }
-  circle.push_back(circle[1]);
-  const Stroke stroke = stroke_from(circle);
+  const Stroke stroke = stroke_from(closed_circle());
   const auto analyzer = make_recognizing_analyzer();
   PenSettings settings;
   settings.pen_radius_mm = 0.8;
