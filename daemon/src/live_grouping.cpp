@@ -151,9 +151,8 @@ void LiveGrouping::analyse(Lane& lane, const std::string& device_id, const Pendi
     if (!ink_later) publish_finished(device_id, stroke, result.analysis.ink_polygon);
     publish(device_id, stroke, result, timings, h, !pending.hold_only);
     shape_out = true;
-    // The shape did not wait for Q's proto form (or for Q, when it read no Q): StrokeFinished
-    // follows as soon as it exists. Should Q fail now, the shape stands (it read no Q: certified
-    // on the path) and StrokeFinished carries the error instead.
+    // The shape did not read Q: StrokeFinished follows as soon as Q exists. Should Q fail now,
+    // the shape stands (certified on the path) and StrokeFinished carries the error instead.
     if (ink_later) {
       result.wait_ink();
       publish_finished(device_id, stroke, result.analysis.ink_polygon);

@@ -78,8 +78,8 @@ IntentDecision answer_intent(const std::vector<IntentDecision>& intents,
 // One tablet's live grouping: core's StrokeGrouper on the strokes' paths in mm; a lone stroke is
 // certified on its ink polygon (as analyze() does), a group on the union of its strokes' paths.
 class GroupSession final : public StrokeGroupSession {
-  // A stroke's ink polygon Q, then its proto form: the recognizer waits for Q alone (to certify
-  // on it); the proto form follows, on the worker that built Q or once the shape is out.
+  // A stroke's ink polygon Q, then its proto form (on the worker that builds Q, or where the
+  // answer needs it): the recognizer waits for Q alone, to certify on it.
   struct StrokeInk {
     StrokeInk(std::vector<InkSample> samples, const InkOptions& options)
         : polygon(
@@ -140,13 +140,13 @@ class GroupSession final : public StrokeGroupSession {
     return {};
   }
 
-  // Q's proto form into the answer, or (InkOffload::shape_first, the proto form not built yet:
-  // the answer read no Q, or read Q before its proto form was made) handed over as ink_later, so
-  // that the shape need not wait for it.
+  // Q's proto form into the answer, or (InkOffload::shape_first, Q not built yet: the answer read
+  // no Q) handed over as ink_later, so that the shape need not wait for it. A shape that read Q
+  // carries its proto form: StrokeFinished goes out before the shape, as subscribers expect.
   static void hand_over_ink(const std::shared_ptr<StrokeInk>& ink, const InkOffload& offload,
                             GroupedStrokeAnalysis& out) {
     if (!ink) return;
-    if (offload.shape_first && !ink->proto.built()) {
+    if (offload.shape_first && !ink->polygon.built()) {
       out.ink_later = [ink] { return std::move(ink->proto.get()); };
     } else {
       out.analysis.ink_polygon = std::move(ink->proto.get());
@@ -169,10 +169,11 @@ class GroupSession final : public StrokeGroupSession {
       // The job owns what it reads: a helper may start it after this session is gone.
       const InkOptions options = ink_options_for(settings_);
       ink = std::make_shared<StrokeInk>(ink_samples(stroke, options), options);
-      if (offload.run_elsewhere)
+      if (offload.run_elsewhere) {
         (void)offload.run_elsewhere([ink] {
           if (!ink->abandoned) ink->build_if_not_started();
         });
+      }
       // Q is needed once the unions and the stroke's fits are done: a cancelled call (a hold's
       // work ahead that a pen-up overtook) stops there rather than wait for Q and certify.
       input.ink_when_needed = [&ink, &cancel] {

@@ -29,7 +29,8 @@ using recognize_detail::UnionRecognition;
 template <typename Touch>
 Touch touch_path(const std::vector<StrokePoint>& samples) {
   std::vector<PointD> p;
-  PointD lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  PointD lo{kInf, kInf}, hi{-kInf, -kInf};
   for (const StrokePoint& s : samples) {
     const PointD q{s.x, s.y};
     if (p.empty() || !(p.back() == q)) p.push_back(q);
@@ -214,6 +215,7 @@ BestUnion best_union(const UnionContext& c, const std::vector<std::size_t>& rece
     inputs.push_back(path_only(c.stroke));
     all.insert(all.end(), c.stroke.samples.begin(), c.stroke.samples.end());
     keys.push_back(TouchCache<Touches>::kOwn);
+    slack.reserve(keys.size());
     for (const std::size_t k : keys) slack.push_back(touches.of(k).slack);
     const ToleranceChoice tol = choose_tolerance(all, c.config);
     const auto gap = [&](std::size_t i, std::size_t j) { return touches.gap(keys[i], keys[j]); };

@@ -37,10 +37,9 @@ struct GroupedStrokeAnalysis {
   std::vector<std::size_t> strokes;    // session indices of the strokes it covers, ascending
   std::vector<std::size_t> superseded; // session ids of the earlier answers it replaces
   std::vector<std::string> tidy;       // tidy-up constraints applied
-  // Set only with InkOffload::shape_first when add() returned before the proto form of the new
-  // stroke's ink polygon was built (its answer read no Q, or read Q before its proto form was
-  // made): gives that ink (waits for or builds it; throws its error). wait_ink() moves it into
-  // analysis.ink_polygon.
+  // Set only with InkOffload::shape_first when add() returned before the new stroke's ink
+  // polygon was built (its answer read no Q): gives that ink (waits for or builds it; throws
+  // its error). wait_ink() moves it into analysis.ink_polygon.
   std::function<v1::PolygonSet()> ink_later;
   void wait_ink() {
     if (!ink_later) return;
@@ -55,8 +54,8 @@ struct InkOffload {
   // Runs a job on another worker; false when none takes it. Empty, or a job not started by the
   // time Q is needed: add() builds Q itself.
   std::function<bool(std::function<void()>)> run_elsewhere;
-  // add() may return before Q's proto form is built (GroupedStrokeAnalysis::ink_later): the
-  // shape goes out first, the ink when it exists.
+  // add() may return before Q is built when its answer did not read Q (GroupedStrokeAnalysis::
+  // ink_later): the shape goes out first, the ink when it exists.
   bool shape_first = false;
 };
 
