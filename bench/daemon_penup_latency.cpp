@@ -23,7 +23,10 @@
 // Each stroke set is played 13 times by default (--rounds): 104 strokes per row, so that p99 is
 // the second worst stroke rather than the worst one (the max is printed too).
 //
-//   build/release/bench/daemon_penup_latency [--rounds N] [--json]
+//   build/release/bench/daemon_penup_latency [--rounds N] [--json] [--stages-only]
+//                                             [--set recorded|1khz] [--previews-only]
+// --set and --previews-only run a part of the rows (a quick look while iterating; the default
+// runs every row).
 #include <fcntl.h>
 #include <grpcpp/grpcpp.h>
 #include <spawn.h>
@@ -420,6 +423,8 @@ int main(int argc, char** argv) {
   }
   bool json = false;
   bool stages_only = false;
+  bool previews_only = false;
+  std::string only_set; // empty: both stroke sets
   int rounds = 13;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -427,10 +432,17 @@ int main(int argc, char** argv) {
       json = true;
     } else if (a == "--stages-only") {
       stages_only = true;
+    } else if (a == "--previews-only") {
+      previews_only = true;
     } else if (a == "--rounds" && i + 1 < argc) {
       rounds = std::max(1, std::atoi(argv[++i]));
+    } else if (a == "--set" && i + 1 < argc &&
+               (std::string(argv[i + 1]) == "recorded" || std::string(argv[i + 1]) == "1khz")) {
+      only_set = argv[++i];
     } else {
-      std::fprintf(stderr, "usage: daemon_penup_latency [--rounds N] [--json] [--stages-only]\n");
+      std::fprintf(stderr,
+                   "usage: daemon_penup_latency [--rounds N] [--json] [--stages-only] "
+                   "[--set recorded|1khz] [--previews-only]\n");
       return 2;
     }
   }
@@ -443,16 +455,19 @@ int main(int argc, char** argv) {
   StrokeSet dense{"resampled to 1 kHz", decoded.tablet, {}};
   for (const auto& stroke : decoded.strokes) dense.strokes.push_back(resampled_to_1khz(stroke));
 
+  std::vector<const StrokeSet*> sets;
+  if (only_set != "1khz") sets.push_back(&recorded);
+  if (only_set != "recorded") sets.push_back(&dense);
   auto analyzer = penshape::daemon::make_recognizing_analyzer();
   const std::string dir = penshape::bench::make_scratch_dir();
   if (!json) std::printf("%-48s %6s %10s %10s %10s\n", "case", "n", "p50", "p99", "max");
   if (stages_only) {
-    for (const StrokeSet* set : {&recorded, &dense}) print_stages(json, *set, rounds, *analyzer);
+    for (const StrokeSet* set : sets) print_stages(json, *set, rounds, *analyzer);
     return 0;
   }
   print_row(json, "baseline: this machine's 1 ms wake-up lateness",
             percentiles(penshape::bench::wakeup_lateness_us(5000)), "us", "(no delivery beats it)");
-  for (const StrokeSet* set : {&recorded, &dense}) {
+  for (const StrokeSet* set : sets) {
     // Baseline: the analyzer alone, on the same strokes.
     std::vector<double> direct_ms;
     for (int r = 0; r < rounds; ++r) {
@@ -490,10 +505,11 @@ int main(int argc, char** argv) {
     print_row(json, ("baseline: grouping session, ink on a 2nd worker" + tag).c_str(),
               percentiles(grouped_ms), "ms", "");
     for (bool previews : {false, true}) {
+      if (previews_only && !previews) continue;
       const PhaseResult phase = run_phase(dir, *set, analyzer, rounds, {.previews = previews});
       print_phase(json, tag + (previews ? " (+previews)" : ""), phase);
     }
-    if (set == &recorded) {
+    if (set == &recorded && !previews_only) {
       const PhaseResult former =
           run_phase(dir, *set, analyzer, rounds, {.subscriber_in_process = true});
       print_phase(json, " (subscriber in the daemon's process)", former);

@@ -172,10 +172,13 @@ void Pipeline::maybe_preview(const std::string& device_id, Drawing& drawing) {
       const Stroke partial = assemble(id, tablet, blocks, count); // here, on the preview lane
       std::vector<v1::Shape> candidates =
           state_.analyzer->preview(partial, settings, cancel_hook(stop));
-      // The group the stroke would complete with the device's recent strokes (certified).
-      std::optional<v1::PreviewGroup> group =
-          grouping_.preview_group(device_id, partial, cancel_hook(stop));
-      if (!candidates.empty() || group) {
+      // The group the stroke would complete with the device's recent strokes (certified); not
+      // started once the pen has lifted.
+      std::optional<v1::PreviewGroup> group;
+      if (!stop.cancelled()) group = grouping_.preview_group(device_id, partial, cancel_hook(stop));
+      // Once the pen has lifted, the stroke's shape supersedes any preview: publishing it would
+      // only compete with that shape for the subscribers' threads.
+      if ((!candidates.empty() || group) && !stop.cancelled()) {
         v1::LiveEvent event;
         event.set_device_id(device_id);
         v1::PreviewCandidates* preview = event.mutable_preview();

@@ -1,5 +1,6 @@
 #include "penshape/daemon/recognizing_analyzer.hpp"
 
+#include <atomic>
 #include <functional>
 #include <map>
 #include <memory>
@@ -77,16 +78,29 @@ IntentDecision answer_intent(const std::vector<IntentDecision>& intents,
 // One tablet's live grouping: core's StrokeGrouper on the strokes' paths in mm; a lone stroke is
 // certified on its ink polygon (as analyze() does), a group on the union of its strokes' paths.
 class GroupSession final : public StrokeGroupSession {
-  // A stroke's ink polygon and its proto form, built together (on whichever thread builds Q).
-  struct BuiltInk {
-    InkPolygon ink;
-    v1::PolygonSet proto;
+  // A stroke's ink polygon Q, then its proto form (on the worker that builds Q, or where the
+  // answer needs it): the recognizer waits for Q alone, to certify on it.
+  struct StrokeInk {
+    StrokeInk(std::vector<InkSample> samples, const InkOptions& options)
+        : polygon(
+              [samples = std::move(samples), options] { return ink_polygon(samples, options); }),
+          proto([this] {
+            v1::PolygonSet out;
+            to_proto(polygon.get().region, &out);
+            return out;
+          }) {}
+    StrokeInk(const StrokeInk&) = delete;
+    StrokeInk& operator=(const StrokeInk&) = delete;
+    // The helper's side: Q unless somebody has started it, then its proto form (waiting for Q
+    // when another thread builds it).
+    void build_if_not_started() {
+      polygon.build_if_not_started();
+      proto.build_if_not_started();
+    }
+    BuildOnce<InkPolygon> polygon;
+    BuildOnce<v1::PolygonSet> proto;    // reads polygon: declared after it
+    std::atomic<bool> abandoned{false}; // the call that asked for Q was cancelled
   };
-  static BuiltInk build_ink(const std::vector<InkSample>& samples, const InkOptions& options) {
-    BuiltInk out{ink_polygon(samples, options), {}};
-    to_proto(out.ink.region, &out.proto);
-    return out;
-  }
 
  public:
   // `finished` is told each finished stroke's id (the analyzer drops its preview state).
@@ -127,14 +141,15 @@ class GroupSession final : public StrokeGroupSession {
   }
 
   // Q's proto form into the answer, or (InkOffload::shape_first, Q not built yet: the answer read
-  // no Q) handed over as ink_later, so that the shape need not wait for it.
-  static void hand_over_ink(const std::shared_ptr<BuildOnce<BuiltInk>>& ink,
-                            const InkOffload& offload, GroupedStrokeAnalysis& out) {
+  // no Q) handed over as ink_later, so that the shape need not wait for it. A shape that read Q
+  // carries its proto form: StrokeFinished goes out before the shape, as subscribers expect.
+  static void hand_over_ink(const std::shared_ptr<StrokeInk>& ink, const InkOffload& offload,
+                            GroupedStrokeAnalysis& out) {
     if (!ink) return;
-    if (offload.shape_first && !ink->built()) {
-      out.ink_later = [ink] { return std::move(ink->get().proto); };
+    if (offload.shape_first && !ink->polygon.built()) {
+      out.ink_later = [ink] { return std::move(ink->proto.get()); };
     } else {
-      out.analysis.ink_polygon = std::move(ink->get().proto);
+      out.analysis.ink_polygon = std::move(ink->proto.get());
     }
   }
 
@@ -149,17 +164,25 @@ class GroupSession final : public StrokeGroupSession {
     const bool no_path = input.samples.empty(); // no tip-down sample: nothing to recognize
     // Q is built on another worker while the stroke is judged and fitted, or here once the
     // recognizer (or the answer) needs it.
-    std::shared_ptr<BuildOnce<BuiltInk>> ink;
+    std::shared_ptr<StrokeInk> ink;
     if (with_ink) {
       // The job owns what it reads: a helper may start it after this session is gone.
       const InkOptions options = ink_options_for(settings_);
-      ink =
-          std::make_shared<BuildOnce<BuiltInk>>([options, samples = ink_samples(stroke, options)] {
-            return build_ink(samples, options);
-          });
-      if (offload.run_elsewhere)
-        (void)offload.run_elsewhere([ink] { ink->build_if_not_started(); });
-      input.ink_when_needed = [&ink] { return &ink->get().ink; };
+      ink = std::make_shared<StrokeInk>(ink_samples(stroke, options), options);
+      if (offload.run_elsewhere) {
+        (void)offload.run_elsewhere([ink] {
+          if (!ink->abandoned) ink->build_if_not_started();
+        });
+      }
+      // Q is needed once the unions and the stroke's fits are done: a cancelled call (a hold's
+      // work ahead that a pen-up overtook) stops there rather than wait for Q and certify.
+      input.ink_when_needed = [&ink, &cancel] {
+        if (cancel && cancel()) {
+          ink->abandoned = true; // a helper that has not started it leaves Q unbuilt
+          throw Cancelled();
+        }
+        return &ink->polygon.get();
+      };
     }
     const IntentDecision intent = no_path ? IntentDecision{} : decide(input.samples, held);
     const bool writing = intent.intent == Intent::kWriting && !settings_.snap_writing;
@@ -277,6 +300,7 @@ class RecognizingAnalyzer final : public StrokeAnalyzer,
       const PenSample& s = partial.samples[st->fed];
       if (s.tip) st->live.add(point_mm(s, partial.tablet));
     }
+    if (cancel && cancel()) throw Cancelled(); // the stroke ended while its samples were fed
     std::vector<v1::Shape> out;
     const LivePreview& p = st->live.preview();
     if (p.shape != ShapeClass::kFreeform) {

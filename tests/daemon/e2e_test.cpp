@@ -338,6 +338,33 @@ TEST_F(DaemonE2E, AHangingPreviewIsCancelledAndTheStrokesShapeStillArrives) {
   rig.ctx.TryCancel();
 }
 
+// A preview still being computed when the pen lifts neither delays the stroke's shape nor is
+// published once it is done: the shape supersedes it.
+TEST_F(DaemonE2E, APreviewDoneAfterPenUpIsNotPublishedNorWaitedFor) {
+  LiveRig rig;
+  rig.analyzer->late_previews = true;
+  start_live_rig(rig, true);
+  rig.source->emit_stroke("pen0", 40, 2ms); // a preview starts at the first sample
+  v1::LiveEvent event;
+  bool shape = false;
+  while (!shape && rig.reader->Read(&event)) shape = event.has_shape();
+  ASSERT_TRUE(shape); // while the preview still runs
+  EXPECT_EQ(rig.analyzer->previews_returned_late.load(), 0);
+  rig.analyzer->release_previews = true;
+  const auto until = std::chrono::steady_clock::now() + 10s;
+  while (rig.analyzer->previews_returned_late.load() < 1 &&
+         std::chrono::steady_clock::now() < until) {
+    std::this_thread::sleep_for(1ms);
+  }
+  EXPECT_EQ(rig.analyzer->previews_returned_late.load(), 1);
+  // Shutdown waits for the preview job, then ends the stream after every event published.
+  std::thread stopper([&] { server_->shutdown(); });
+  int previews = 0;
+  while (rig.reader->Read(&event)) previews += event.has_preview() ? 1 : 0;
+  stopper.join();
+  EXPECT_EQ(previews, 0);
+}
+
 TEST_F(DaemonE2E, DeconstructionsFollowTheShapeOnlyForSubscribersThatAsk) {
   config_.settings.tolerance_fraction = 2; // eps >= r: the fake backend answers YES with P = Q
   auto source = std::make_shared<FakeSampleSource>();

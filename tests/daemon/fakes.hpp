@@ -128,7 +128,13 @@ class BoundingBoxAnalyzer final : public daemon::StrokeAnalyzer {
   // makes useless.
   std::vector<v1::Shape> preview(const Stroke& partial, const daemon::PenSettings& /*settings*/,
                                  const CancelHook& cancel) override {
-    if (hold_previews) {
+    if (late_previews) { // computed on, past the pen-up, until the test lets it return
+      const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+      while (!release_previews && std::chrono::steady_clock::now() < give_up) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      }
+      ++previews_returned_late;
+    } else if (hold_previews) {
       ++previews_started;
       const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
       while (!(cancel && cancel()) && std::chrono::steady_clock::now() < give_up) {
@@ -148,6 +154,11 @@ class BoundingBoxAnalyzer final : public daemon::StrokeAnalyzer {
   std::atomic<bool> hold_previews{false};
   std::atomic<int> previews_started{0};
   std::atomic<int> previews_cancelled{0};
+  // With late_previews, a preview ignores its cancel hook and returns its candidate once
+  // release_previews is set (like a preview step that does not look at the hook).
+  std::atomic<bool> late_previews{false};
+  std::atomic<bool> release_previews{false};
+  std::atomic<int> previews_returned_late{0};
 };
 
 // Deconstruct: with r <= eps answers YES with P = Q (the paper's trivial case); otherwise, when

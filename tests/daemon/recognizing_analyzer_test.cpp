@@ -4,7 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <numbers>
+#include <thread>
+#include <vector>
 
 #include "penshape/daemon/recognizing_analyzer.hpp"
 
@@ -185,6 +188,97 @@ TEST(RecognizingAnalyzer, GroupsAShaftAndItsHeadIntoOneArrow) {
   EXPECT_EQ(dot.shape.kind(), v1::SHAPE_KIND_DOT);
   ASSERT_EQ(dot.shape.vertices().vertices_size(), 1);
   EXPECT_NEAR(dot.shape.vertices().vertices(0).x(), 5, 1e-9);
+}
+
+// A circle of radius 30 mm around (100, 80), closed with the overlap a hand draws.
+std::vector<PointD> closed_circle() {
+  std::vector<PointD> circle;
+  for (int k = 0; k <= 200; ++k) {
+    const double t = 2 * std::numbers::pi * k / 200.0;
+    circle.push_back({100 + 30 * std::cos(t), 80 + 30 * std::sin(t)});
+  }
+  circle.push_back(circle[1]);
+  return circle;
+}
+
+// The daemon's strand builds a stroke's ink polygon Q on a helper worker and hands the shape out
+// before Q when it did not read Q (InkOffload::shape_first): the answers and the ink are those of
+// a session that builds everything on one thread, with a helper started at once or not at all.
+TEST(RecognizingAnalyzer, GroupSessionAnswersTheSameWithTheInkBuiltElsewhere) {
+  std::vector<Stroke> strokes{stroke_from(closed_circle()),
+                              stroke_from(along({{20, 20}, {90, 20}})),
+                              stroke_from(along({{90, 20}, {90, 60}, {20, 60}, {20, 20}}))};
+  for (std::size_t i = 0; i < strokes.size(); ++i) {
+    strokes[i].id = 10 + i;
+    for (PenSample& s : strokes[i].samples) s.time_us += static_cast<std::int64_t>(i) * 1'000'000;
+  }
+  const auto analyzer = make_recognizing_analyzer();
+  PenSettings settings;
+  settings.pen_radius_mm = 0.8;
+  settings.snap_writing = true;
+  std::vector<std::function<void()>> not_started; // a helper that starts only after add()
+  InkOffload late;
+  late.run_elsewhere = [&not_started](std::function<void()> job) {
+    not_started.push_back(std::move(job));
+    return true;
+  };
+  late.shape_first = true;
+  std::vector<std::thread> threads; // a helper that starts at once
+  InkOffload eager;
+  eager.run_elsewhere = [&threads](std::function<void()> job) {
+    threads.emplace_back(std::move(job));
+    return true;
+  };
+  eager.shape_first = true;
+  auto serial = analyzer->group_session(settings, GroupingConfig{});
+  auto later = analyzer->group_session(settings, GroupingConfig{});
+  auto helped = analyzer->group_session(settings, GroupingConfig{});
+  bool certified_on_ink = false;
+  for (const Stroke& stroke : strokes) {
+    const GroupedStrokeAnalysis a = serial->add(stroke, true, {});
+    GroupedStrokeAnalysis b = later->add(stroke, true, {}, late);
+    GroupedStrokeAnalysis c = helped->add(stroke, true, {}, eager);
+    // Q is handed over later exactly when the answer did not read it (StrokeFinished then
+    // follows the shape); a shape certified on Q carries Q.
+    const bool read_q = a.analysis.shape.certificate().method() == "ink-hausdorff-sampling";
+    EXPECT_EQ(static_cast<bool>(b.ink_later), !read_q);
+    b.wait_ink();
+    c.wait_ink();
+    for (auto& job : not_started) job(); // finds Q and its proto form built: does nothing
+    not_started.clear();
+    EXPECT_EQ(a.analysis.shape.SerializeAsString(), b.analysis.shape.SerializeAsString());
+    EXPECT_EQ(a.analysis.shape.SerializeAsString(), c.analysis.shape.SerializeAsString());
+    EXPECT_EQ(a.analysis.ink_polygon.SerializeAsString(),
+              b.analysis.ink_polygon.SerializeAsString());
+    EXPECT_EQ(a.analysis.ink_polygon.SerializeAsString(),
+              c.analysis.ink_polygon.SerializeAsString());
+    EXPECT_GT(a.analysis.ink_polygon.polygons_size(), 0);
+    EXPECT_EQ(a.strokes, b.strokes);
+    EXPECT_EQ(a.strokes, c.strokes);
+    certified_on_ink |= a.analysis.shape.certificate().method() == "ink-hausdorff-sampling";
+  }
+  for (std::thread& t : threads) t.join();
+  EXPECT_TRUE(certified_on_ink); // the strand read Q for at least one answer
+}
+
+// A hold's work ahead (on a copy of the session, as try_hold does) is cancelled when a pen-up
+// overtakes it: a call whose cancel hook turns true while the stroke is fitted stops when it
+// would wait for Q (Cancelled); the session then answers the pen-up as a fresh one.
+TEST(RecognizingAnalyzer, AHeldStrokeCancelledDuringItsFitsStopsBeforeTheInk) {
+  const Stroke stroke = stroke_from(closed_circle());
+  const auto analyzer = make_recognizing_analyzer();
+  PenSettings settings;
+  settings.pen_radius_mm = 0.8;
+  auto session = analyzer->group_session(settings, GroupingConfig{});
+  int asked = 0;
+  const CancelHook after_the_start = [&asked] { return ++asked > 1; }; // false at the start only
+  EXPECT_THROW((void)session->clone()->add_held(stroke, after_the_start, {}), Cancelled);
+  EXPECT_GT(asked, 1);
+  const GroupedStrokeAnalysis again = session->add(stroke, true, {});
+  const GroupedStrokeAnalysis fresh =
+      analyzer->group_session(settings, GroupingConfig{})->add(stroke, true, {});
+  EXPECT_EQ(again.analysis.shape.certificate().method(), "ink-hausdorff-sampling");
+  EXPECT_EQ(again.analysis.shape.SerializeAsString(), fresh.analysis.shape.SerializeAsString());
 }
 
 // A live grouping session keeps only the strokes its window can reach: through 200 short strokes

@@ -228,6 +228,22 @@ TEST(GroupRecognize, ArrowAsShaftThenV) {
   expect_arrow(out[0], s, {0, 0}, {200, 0}, 2);
 }
 
+// The grouper keeps each pair of strokes' gap across add() calls: each gap must be the pair's own.
+// A far stroke is drawn first, so that the head's gap to it is measured before its gap to the
+// shaft (the union with the most strokes is tried first); the head still joins the shaft only.
+TEST(GroupRecognize, ArrowAfterAFarStrokeGroupsTheShaftAndItsHead) {
+  std::vector<StrokeInput> s{input(line({0, 300}, {120, 300}, 0))};
+  s.push_back(input(line({0, 0}, {200, 0}, end_time(s) + 0.3)));
+  s.push_back(input(polyline({{160, 30}, {200, 0}, {160, -30}}, end_time(s) + 0.3)));
+  StrokeGrouper g;
+  for (const StrokeInput& in : s) (void)g.add(in);
+  const std::vector<GroupedShape> out = g.shapes();
+  ASSERT_EQ(out.size(), 2u);
+  EXPECT_EQ(out[0].strokes, (std::vector<std::size_t>{0}));
+  expect_arrow(out[1], s, {0, 0}, {200, 0}, 2);
+  EXPECT_EQ(out[1].strokes, (std::vector<std::size_t>{1, 2}));
+}
+
 TEST(GroupRecognize, ArrowAsShaftThenTwoBarbs) {
   std::vector<StrokeInput> s{input(line({0, 0}, {200, 0}, 0))};
   s.push_back(input(line({200, 0}, {160, 30}, end_time(s) + 0.3)));

@@ -161,8 +161,17 @@ class StrokeGrouper {
   // Samples and pen radius only (ink pointers dropped); strokes whose group can no longer grow
   // (older than max_pause_seconds) are dropped, so memory follows the window.
   std::map<std::size_t, StrokeInput> strokes_; // by stroke index, the strokes that may join
-  std::size_t added_ = 0;                      // strokes added (the next stroke's index)
-  std::vector<Entry> groups_;                  // current answers
+  // What unions test for touching, for each stroke in strokes_: its touch path (thinned once)
+  // and its gaps to the strokes before it (each measured once, by the earlier stroke's index).
+  struct Touch {
+    std::vector<PointD> path;
+    double slack = 0.0;
+    std::map<std::size_t, double> gaps;
+  };
+  std::map<std::size_t, Touch> touches_; // by stroke index, beside strokes_
+  void forget_stroke(std::size_t index); // from strokes_ and touches_
+  std::size_t added_ = 0;                // strokes added (the next stroke's index)
+  std::vector<Entry> groups_;            // current answers
   std::size_t next_id_ = 0;
 };
 

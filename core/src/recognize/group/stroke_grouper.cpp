@@ -24,14 +24,13 @@ using recognize_detail::kMaxRecentGroups;
 using recognize_detail::kTouchThinning;
 using recognize_detail::UnionRecognition;
 
-struct Touch {
-  std::vector<PointD> path;
-  double slack = 0.0;
-};
-
+// A stroke's touch path (what unions test for touching) and the slack its thinning allows;
+// `Touch` is StrokeGrouper's kept form (path, slack, gaps).
+template <typename Touch>
 Touch touch_path(const std::vector<StrokePoint>& samples) {
   std::vector<PointD> p;
-  PointD lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  PointD lo{kInf, kInf}, hi{-kInf, -kInf};
   for (const StrokePoint& s : samples) {
     const PointD q{s.x, s.y};
     if (p.empty() || !(p.back() == q)) p.push_back(q);
@@ -39,29 +38,33 @@ Touch touch_path(const std::vector<StrokePoint>& samples) {
     hi = {std::max(hi.x, q.x), std::max(hi.y, q.y)};
   }
   const double tau = kTouchThinning * distance(lo, hi);
-  return {recognize_detail::thin_path(p, tau), tau};
+  Touch out;
+  out.path = recognize_detail::thin_path(p, tau);
+  out.slack = tau;
+  return out;
 }
 
-// Whether the strokes form one connected graph when strokes within `join` are linked.
-bool connected(const std::vector<const Touch*>& t, double join) {
-  std::vector<bool> seen(t.size(), false);
+// Whether the strokes form one connected graph when strokes within `join` are linked; `gap(i, j)`
+// is the gap between strokes i and j.
+template <typename Gap>
+bool connected(std::size_t n, const std::vector<double>& slack, double join, Gap&& gap) {
+  std::vector<bool> seen(n, false);
   std::vector<std::size_t> stack{0};
   seen[0] = true;
   std::size_t count = 1;
   while (!stack.empty()) {
     const std::size_t i = stack.back();
     stack.pop_back();
-    for (std::size_t j = 0; j < t.size(); ++j) {
+    for (std::size_t j = 0; j < n; ++j) {
       if (seen[j]) continue;
-      const double gap = recognize_detail::polyline_gap(t[i]->path, t[j]->path);
-      if (gap <= join + t[i]->slack + t[j]->slack) {
+      if (gap(i, j) <= join + slack[i] + slack[j]) {
         seen[j] = true;
         ++count;
         stack.push_back(j);
       }
     }
   }
-  return count == t.size();
+  return count == n;
 }
 
 bool snaps(const Recognition& r) { return r.shape != ShapeClass::kFreeform; }
@@ -128,22 +131,44 @@ std::vector<std::size_t> growable_groups(const Entries& groups, const GroupingCo
   return recent;
 }
 
-// The strokes' touch paths, each thinned once per add().
+// The strokes' touch paths and the gaps between them: the kept strokes' are kept by the grouper
+// across add() calls (each thinned and measured once, the unions tried share most pairs), the
+// new stroke's are made once per add(). polyline_gap is symmetric (a minimum over both
+// directions, and an exact crossing test), so a pair is one entry, under the later stroke.
+template <typename Touches> // StrokeGrouper's touches_
 class TouchCache {
  public:
-  TouchCache(const std::map<std::size_t, StrokeInput>& strokes, const StrokeInput& stroke)
-      : strokes_(strokes), own_(touch_path(stroke.samples)) {}
-  const Touch& of(std::size_t s) {
-    auto it = cache_.find(s);
-    if (it == cache_.end()) it = cache_.emplace(s, touch_path(strokes_.at(s).samples)).first;
+  using Touch = typename Touches::mapped_type;
+  static constexpr std::size_t kOwn = std::numeric_limits<std::size_t>::max(); // the new stroke
+
+  TouchCache(Touches& kept, const std::map<std::size_t, StrokeInput>& strokes,
+             const StrokeInput& stroke)
+      : kept_(kept), strokes_(strokes), own_(touch_path<Touch>(stroke.samples)) {}
+  Touch& of(std::size_t s) {
+    if (s == kOwn) return own_;
+    auto it = kept_.find(s);
+    if (it == kept_.end()) it = kept_.emplace(s, touch_path<Touch>(strokes_.at(s).samples)).first;
     return it->second;
   }
-  [[nodiscard]] const Touch& own() const { return own_; }
+  // The gap between the touch paths of strokes a and b (kOwn: the new stroke).
+  double gap(std::size_t a, std::size_t b) {
+    const std::size_t later = std::max(a, b); // kOwn is the largest
+    const std::size_t earlier = std::min(a, b);
+    Touch& t = of(later);
+    auto it = t.gaps.find(earlier);
+    if (it == t.gaps.end()) {
+      const double g = recognize_detail::polyline_gap(of(earlier).path, t.path);
+      it = t.gaps.emplace(earlier, g).first;
+    }
+    return it->second;
+  }
+  // The new stroke's touch (path, slack, gaps measured), for the grouper to keep.
+  Touch take_own() { return std::move(own_); }
 
  private:
+  Touches& kept_;
   const std::map<std::size_t, StrokeInput>& strokes_;
   Touch own_;
-  std::map<std::size_t, Touch> cache_;
 };
 
 // The best union of recent groups with the new stroke: the most strokes, then the best rank,
@@ -161,11 +186,10 @@ struct UnionContext {
   const std::map<std::size_t, StrokeInput>& strokes;
 };
 
-template <typename Entries>
+template <typename Entries, typename Touches>
 BestUnion best_union(const UnionContext& c, const std::vector<std::size_t>& recent,
-                     const Entries& groups) {
+                     const Entries& groups, TouchCache<Touches>& touches) {
   BestUnion out;
-  TouchCache touches(c.strokes, c.stroke);
   std::size_t best_count = 2;
   for (const std::size_t mask : masks_by_size(recent, groups)) {
     std::vector<std::size_t> members;
@@ -180,18 +204,22 @@ BestUnion best_union(const UnionContext& c, const std::vector<std::size_t>& rece
     std::sort(members.begin(), members.end());
     std::vector<StrokeInput> inputs;
     std::vector<StrokePoint> all;
-    std::vector<const Touch*> t;
+    std::vector<std::size_t> keys; // the touch cache's keys of the union's strokes
+    std::vector<double> slack;
     for (const std::size_t s : members) {
       const StrokeInput& kept = c.strokes.at(s);
       inputs.push_back(kept);
       all.insert(all.end(), kept.samples.begin(), kept.samples.end());
-      t.push_back(&touches.of(s));
+      keys.push_back(s);
     }
     inputs.push_back(path_only(c.stroke));
     all.insert(all.end(), c.stroke.samples.begin(), c.stroke.samples.end());
-    t.push_back(&touches.own());
+    keys.push_back(TouchCache<Touches>::kOwn);
+    slack.reserve(keys.size());
+    for (const std::size_t k : keys) slack.push_back(touches.of(k).slack);
     const ToleranceChoice tol = choose_tolerance(all, c.config);
-    if (!connected(t, 2.0 * tol.pen_radius + tol.epsilon)) continue;
+    const auto gap = [&](std::size_t i, std::size_t j) { return touches.gap(keys[i], keys[j]); };
+    if (!connected(keys.size(), slack, 2.0 * tol.pen_radius + tol.epsilon, gap)) continue;
     UnionRecognition u = recognize_detail::recognize_union_detail(inputs, c.recognizer);
     if (!snaps(u.recognition)) continue;
     if (!recognize_detail::group_implausibility(u.recognition, inputs, c.config).empty()) continue;
@@ -228,8 +256,14 @@ StrokeGrouper::StrokeGrouper(GroupingConfig grouping, RecognizerConfig recognize
   }
 }
 
+void StrokeGrouper::forget_stroke(std::size_t index) {
+  strokes_.erase(index);
+  touches_.erase(index);
+}
+
 void StrokeGrouper::clear() {
   strokes_.clear();
+  touches_.clear();
   groups_.clear();
   added_ = 0;
 }
@@ -247,7 +281,7 @@ void StrokeGrouper::forget_unreachable() {
       keep[g] = true;
     } else if (e.joinable) {
       e.joinable = false;
-      for (const std::size_t i : e.shape.strokes) strokes_.erase(i);
+      for (const std::size_t i : e.shape.strokes) forget_stroke(i);
     }
     // Tidy-up refers to the last max_strokes shapes that snapped, once add() has removed the
     // (at most kMaxRecentGroups) groups the new stroke absorbs.
@@ -285,8 +319,9 @@ GroupUpdate StrokeGrouper::add(const StrokeInput& stroke) {
 
   // The best union with recent groups that snaps; else the new stroke alone (ink certificate
   // when its ink is given), arrows included.
+  TouchCache touches(touches_, strokes_, stroke);
   BestUnion chosen = best_union({stroke, config, recognizer_, grouping_, strokes_},
-                                growable_groups(groups_, grouping_, start, dot), groups_);
+                                growable_groups(groups_, grouping_, start, dot), groups_, touches);
   std::vector<std::size_t>& best_groups = chosen.groups;
   if (!chosen.best)
     chosen.best = recognize_detail::recognize_union_detail({&stroke, 1}, recognizer_);
@@ -327,9 +362,12 @@ GroupUpdate StrokeGrouper::add(const StrokeInput& stroke) {
   for (Entry& e : groups_) {
     if (!e.joinable || !new_run) continue;
     e.joinable = false;
-    for (const std::size_t i : e.shape.strokes) strokes_.erase(i);
+    for (const std::size_t i : e.shape.strokes) forget_stroke(i);
   }
-  if (!dot) strokes_[index] = path_only(stroke); // a dot's group is never joined
+  if (!dot) { // a dot's group is never joined
+    strokes_[index] = path_only(stroke);
+    touches_[index] = touches.take_own();
+  }
   ++added_;
   groups_.push_back({shape, stroke.samples.back().t, !dot});
   return update;
