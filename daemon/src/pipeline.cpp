@@ -219,9 +219,9 @@ void Pipeline::stroke_finished(const std::string& device_id, Stroke stroke) {
       hold_only = it->second.hold_only;
     }
     if (it != drawing_.end()) it->second.ended->store(true);
-    if (it != drawing_.end() && !it->second.preview_running)
+    if (it != drawing_.end() && !it->second.preview_running) {
       drawing_.erase(it);
-    else if (it != drawing_.end()) {
+    } else if (it != drawing_.end()) {
       // Its preview job still runs (and stops soon): drop the samples, keep the entry.
       it->second.restart(0, TabletInfo{});
     }

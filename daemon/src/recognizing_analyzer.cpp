@@ -264,6 +264,7 @@ class RecognizingAnalyzer final : public StrokeAnalyzer,
     }
     // The strokes are the page: each stroke's intent has the strokes around it as context.
     std::vector<IntentStroke> page;
+    page.reserve(inputs.size());
     for (const StrokeInput& in : inputs) page.emplace_back(in.samples);
     const std::vector<IntentDecision> intents = decide_intent(page);
     IntentGrouper grouper(grouping, config_for(settings), settings.snap_writing);

@@ -42,9 +42,10 @@ class ShapeDistance {
       const PointD v{0.5 * (box.x.inf() + box.x.sup()), 0.5 * (box.y.inf() + box.y.sup())};
       const Guard rounding;
       reach = std::max(reach, detail::distance_upper(box, enclose(v)));
-      if (k > 0)
+      if (k > 0) {
         step =
             std::max(step, (IntervalNT(speed) * CGAL::abs(IntervalNT(t) - IntervalNT(prev))).sup());
+      }
       prev = t;
       pts.push_back(v);
     }

@@ -93,6 +93,7 @@ std::vector<std::size_t> masks_by_size(const std::vector<std::size_t>& recent,
   std::stable_sort(sized.begin(), sized.end(),
                    [](const auto& a, const auto& b) { return a.first > b.first; });
   std::vector<std::size_t> out;
+  out.reserve(sized.size());
   for (const auto& [n, mask] : sized) out.push_back(mask);
   return out;
 }

@@ -56,7 +56,7 @@ class RefitRound {
     kEllipse,
   };
   struct Step {
-    Kind kind;
+    Kind kind = Kind::kSegment;
     std::size_t n = 0;        // polyline vertices / regular polygon sides
     bool prospective = false; // a closed family tried on an open stroke
   };
