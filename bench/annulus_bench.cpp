@@ -143,6 +143,7 @@ std::string cover(const MaxCoverResult& r) {
 
 std::vector<PointD> rotated(const std::vector<PointD>& pts, double a) {
   std::vector<PointD> rp;
+  rp.reserve(pts.size());
   for (const PointD& q : pts) {
     rp.push_back({std::cos(a) * q.x + std::sin(a) * q.y, -std::sin(a) * q.x + std::cos(a) * q.y});
   }
@@ -181,7 +182,7 @@ int main(int argc, char** argv) {
   const std::vector<std::size_t> ns =
       quick ? std::vector<std::size_t>{100} : std::vector<std::size_t>{100, 1000};
   for (std::size_t n : field_only ? std::vector<std::size_t>{} : ns) {
-    for (std::size_t m : {4, 8, 16, 32, 64}) {
+    for (std::size_t m : {4U, 8U, 16U, 32U, 64U}) {
       const TemplatePolygon tp = make_convex_template(make_template(m));
       // Min width: every point counts, so no outliers. Max cover: 10% outliers, delta = 3.
       const auto pts = make_points(tp.vertices(), n, static_cast<unsigned>(n * 100 + m), 0.0);
@@ -196,7 +197,7 @@ int main(int argc, char** argv) {
           MinWidthResult res;
           r.target_s = seconds([&] { res = min_width_translation(tp, outer, pts); });
           r.target_result = width(res);
-          if (n * n * m * m <= 100 * 100 * 16 * 16) {
+          if (n * n * m * m <= std::size_t{100} * 100 * 16 * 16) {
             double b = 0;
             r.baseline_s =
                 seconds([&] { b = naive_min_width(tp, outer, pts, res.delta_upper * 2); });
@@ -210,7 +211,7 @@ int main(int argc, char** argv) {
           MaxCoverResult res;
           r.target_s = seconds([&] { res = max_cover_translation(tp, outer, 3.0, noisy, {true}); });
           r.target_result = cover(res);
-          if (n * n * m * m <= 1000 * 1000 * 4 * 4) {
+          if (n * n * m * m <= std::size_t{1000} * 1000 * 4 * 4) {
             MaxCoverResult b;
             r.baseline_s =
                 seconds([&] { b = max_cover_translation(tp, outer, 3.0, noisy, {false}); });
@@ -270,7 +271,7 @@ int main(int argc, char** argv) {
   }
   // Bucketing pays when the points spread far beyond one template: five noisy copies of the
   // shape scattered over a 4,000 x 4,000 field (Section 3.2).
-  for (std::size_t m : {8, 32}) {
+  for (std::size_t m : {8U, 32U}) {
     const TemplatePolygon tp = make_convex_template(make_template(m));
     std::vector<PointD> field;
     for (int copy = 0; copy < 5; ++copy) {

@@ -128,6 +128,7 @@ Row through_daemon(const v1::DeconstructRequest& req, int clients, double second
   const auto end = Clock::now() + std::chrono::duration<double>(seconds);
   const auto t0 = Clock::now();
   std::vector<std::thread> threads;
+  threads.reserve(static_cast<std::size_t>(clients));
   for (int c = 0; c < clients; ++c) {
     threads.emplace_back([&, c] {
       // One channel per client, as separate programs would have.

@@ -167,7 +167,7 @@ Row run_case(const std::string& name, int grpc_subscribers, int samples, const s
     });
   }
   while (server.hub().subscriber_count() <
-         static_cast<std::size_t>(row.subscribers + raw_captures)) {
+         static_cast<std::size_t>(row.subscribers) + static_cast<std::size_t>(raw_captures)) {
     std::this_thread::sleep_for(1ms);
   }
   std::this_thread::sleep_for(100ms); // connections settle

@@ -117,7 +117,9 @@ penshape::Stroke resampled_to_1khz(const penshape::Stroke& in) {
     p.time_us = t;
     p.x = static_cast<std::int32_t>(std::lround(a.x + f * (b.x - a.x)));
     p.y = static_cast<std::int32_t>(std::lround(a.y + f * (b.y - a.y)));
-    p.pressure = static_cast<std::int32_t>(std::lround(a.pressure + f * (b.pressure - a.pressure)));
+    // In double: the unsigned difference would wrap where the pressure falls.
+    p.pressure = static_cast<std::uint32_t>(
+        std::lround(a.pressure + f * (static_cast<double>(b.pressure) - a.pressure)));
     p.tip = true;
     out.samples.push_back(p);
   }

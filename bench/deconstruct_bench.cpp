@@ -235,6 +235,7 @@ int main(int argc, char** argv) {
   }
   std::vector<double> pressure_s;
   penshape::InkPolygon pressure_ink;
+  pressure_s.reserve(static_cast<std::size_t>(stroke_runs));
   for (int i = 0; i < stroke_runs; ++i) {
     pressure_s.push_back(
         seconds_of([&] { pressure_ink = penshape::ink_polygon(pressure_samples, ink_options); }));

@@ -25,8 +25,7 @@ using namespace penshape::drivers;
 using Clock = std::chrono::steady_clock;
 
 std::filesystem::path hid_dir() {
-  const std::filesystem::path dir =
-      std::filesystem::path(penshape::bench::shared_data_dir()) / "hid";
+  std::filesystem::path dir = std::filesystem::path(penshape::bench::shared_data_dir()) / "hid";
   penshape::bench::say_data("drivers_decode_bench", dir.string() + " (real tablet data)");
   return dir;
 }
@@ -89,6 +88,11 @@ std::uint32_t le16(const std::vector<std::uint8_t>& r, std::size_t at) {
   return static_cast<std::uint32_t>(r[at] | (r[at + 1] << 8));
 }
 
+// A tilt byte read as two's complement.
+std::int16_t signed_byte(std::uint8_t b) {
+  return static_cast<std::int16_t>(b >= 0x80 ? b - 0x100 : b);
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -113,7 +117,7 @@ int main(int argc, char** argv) {
   results.push_back(measure("firmware HID layout: PenDecoder", firmware, seconds,
                             [&](const auto& r, std::int64_t t) {
                               fw.decoder.decode(r, t, s);
-                              return static_cast<std::uint64_t>(s.x + s.pressure);
+                              return static_cast<std::uint64_t>(std::int64_t{s.x} + s.pressure);
                             }));
   results.push_back(measure("firmware: baseline fixed offsets", firmware, seconds,
                             [&](const auto& r, std::int64_t t) {
@@ -124,30 +128,30 @@ int main(int argc, char** argv) {
                               s.x = static_cast<std::int32_t>(le16(r, 2));
                               s.y = static_cast<std::int32_t>(le16(r, 4));
                               s.pressure = le16(r, 6);
-                              s.tilt_x = static_cast<std::int8_t>(r[8]);
-                              s.tilt_y = static_cast<std::int8_t>(r[9]);
-                              return static_cast<std::uint64_t>(s.x + s.pressure);
+                              s.tilt_x = signed_byte(r[8]);
+                              s.tilt_y = signed_byte(r[9]);
+                              return static_cast<std::uint64_t>(std::int64_t{s.x} + s.pressure);
                             }));
   results.push_back(measure("vendor UC-Logic v2 layout: PenDecoder", vendor, seconds,
                             [&](const auto& r, std::int64_t t) {
                               vend.decoder.decode(r, t, s);
-                              return static_cast<std::uint64_t>(s.x + s.pressure);
+                              return static_cast<std::uint64_t>(std::int64_t{s.x} + s.pressure);
                             }));
-  results.push_back(measure("vendor: baseline fixed offsets", vendor, seconds,
-                            [&](const auto& r, std::int64_t t) {
-                              if (r.size() < 12 || r[0] != 0x08 || (r[1] & 0x60) != 0) {
-                                return std::uint64_t{0};
-                              }
-                              s.time_us = t;
-                              s.tip = (r[1] & 1) != 0;
-                              s.in_range = (r[1] & 0x80) != 0;
-                              s.x = static_cast<std::int32_t>(le16(r, 2) | (r[8] << 16));
-                              s.y = static_cast<std::int32_t>(le16(r, 4) | (r[9] << 16));
-                              s.pressure = le16(r, 6);
-                              s.tilt_x = static_cast<std::int8_t>(r[10]);
-                              s.tilt_y = static_cast<std::int8_t>(r[11]);
-                              return static_cast<std::uint64_t>(s.x + s.pressure);
-                            }));
+  results.push_back(measure(
+      "vendor: baseline fixed offsets", vendor, seconds, [&](const auto& r, std::int64_t t) {
+        if (r.size() < 12 || r[0] != 0x08 || (r[1] & 0x60) != 0) {
+          return std::uint64_t{0};
+        }
+        s.time_us = t;
+        s.tip = (r[1] & 1) != 0;
+        s.in_range = (r[1] & 0x80) != 0;
+        s.x = static_cast<std::int32_t>(le16(r, 2) | (std::uint32_t{r[8]} << 16));
+        s.y = static_cast<std::int32_t>(le16(r, 4) | (std::uint32_t{r[9]} << 16));
+        s.pressure = le16(r, 6);
+        s.tilt_x = signed_byte(r[10]);
+        s.tilt_y = signed_byte(r[11]);
+        return static_cast<std::uint64_t>(std::int64_t{s.x} + s.pressure);
+      }));
   std::uint64_t strokes = 0;
   PenPipeline pipeline(vend, {}, {.on_sample = {}, .on_stroke = [&](Stroke&&) { ++strokes; }});
   results.push_back(measure("vendor: full pipeline (decode+segment)", vendor, seconds,

@@ -69,6 +69,7 @@ struct Rate {
 
 std::vector<StrokeInput> inputs_of(const std::vector<Points>& strokes) {
   std::vector<StrokeInput> in;
+  in.reserve(strokes.size());
   for (const Points& p : strokes) in.push_back({p, nullptr, nullptr, 0.0, {}});
   return in;
 }
@@ -356,9 +357,10 @@ int main(int argc, char** argv) {
                   target);
     }
   };
-  if (!json)
+  if (!json) {
     std::printf("group_recognize_bench: %zu $1 gestures from %s\n\n", gestures.size(),
                 root.c_str());
+  }
   row("polygons in 2-4 strokes: class + grouping", polygons_all, ">= 95%");
   for (const auto& [k, r] : polygons) row(("  " + k).c_str(), r, "");
   row("arrows, whole (1 stroke)", arrows_whole, ">= 95%");

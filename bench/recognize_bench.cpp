@@ -46,6 +46,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -106,7 +107,7 @@ struct Series {
 double percentile(std::vector<double> v, double q) {
   if (v.empty()) return 0.0;
   std::sort(v.begin(), v.end());
-  const auto i = static_cast<std::size_t>(q * static_cast<double>(v.size() - 1) + 0.5);
+  const auto i = static_cast<std::size_t>(std::lround(q * static_cast<double>(v.size() - 1)));
   return v[std::min(i, v.size() - 1)];
 }
 
@@ -159,6 +160,7 @@ Density run(const std::string& name, const std::vector<std::vector<StrokePoint>>
       // The ink polygon with the pen radius the recognizer uses, then the ink-certified run.
       const penshape::ToleranceChoice tol = penshape::choose_tolerance(s, {});
       std::vector<penshape::InkSample> ink_samples;
+      ink_samples.reserve(s.size());
       for (const StrokePoint& p : s) ink_samples.push_back({p.x, p.y, tol.pen_radius});
       penshape::InkOptions options;
       options.radius_mm = tol.pen_radius;
@@ -249,6 +251,7 @@ int main(int argc, char** argv) {
       generated.size(), static_cast<unsigned long long>(penshape::gen::kCorpusSeed));
   const auto points_of = [](const std::vector<penshape::bench::LabelledStroke>& in) {
     std::vector<std::vector<StrokePoint>> out;
+    out.reserve(in.size());
     for (const auto& s : in) out.push_back(s.points);
     return out;
   };

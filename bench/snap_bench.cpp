@@ -67,7 +67,8 @@ std::vector<Stroke> shapes_page() {
   std::vector<Stroke> out;
   out.reserve(50);
   for (int i = 0; i < 50; ++i) {
-    out.push_back(drawn_shape(i, 20.0 + 120 * (i % 10), 20.0 + 120.0 * (i / 10), rng));
+    const int row = i / 10;
+    out.push_back(drawn_shape(i, 20.0 + 120 * (i % 10), 20.0 + 120.0 * row, rng));
   }
   return out;
 }

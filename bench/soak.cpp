@@ -56,16 +56,17 @@ Options parse(int argc, char** argv) {
   Options o;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i];
-    if (key == "--penshaped")
+    if (key == "--penshaped") {
       o.penshaped = argv[i + 1];
-    else if (key == "--recordings")
+    } else if (key == "--recordings") {
       o.recordings = argv[i + 1];
-    else if (key == "--minutes")
+    } else if (key == "--minutes") {
       o.minutes = std::atof(argv[i + 1]);
-    else if (key == "--warmup-seconds")
+    } else if (key == "--warmup-seconds") {
       o.warmup_seconds = std::atof(argv[i + 1]);
-    else
+    } else {
       throw std::invalid_argument("unknown option " + key);
+    }
   }
   if ((argc - 1) % 2 != 0) throw std::invalid_argument("options take a value each");
   if (o.penshaped.empty()) throw std::invalid_argument("--penshaped PATH is required");
@@ -85,10 +86,11 @@ Footprint footprint(pid_t pid) {
   std::ifstream status("/proc/" + std::to_string(pid) + "/status");
   std::string key;
   while (status >> key) {
-    if (key == "VmRSS:")
+    if (key == "VmRSS:") {
       status >> f.rss_kb;
-    else if (key == "Threads:")
+    } else if (key == "Threads:") {
       status >> f.threads;
+    }
   }
   for (const auto& e : fs::directory_iterator("/proc/" + std::to_string(pid) + "/fd")) {
     (void)e;
@@ -111,6 +113,7 @@ class Daemon {
     pid_ = fork();
     if (pid_ == 0) {
       std::vector<char*> argv;
+      argv.reserve(args.size() + 1);
       for (auto& a : args) argv.push_back(a.data());
       argv.push_back(nullptr);
       execv(argv[0], argv.data());

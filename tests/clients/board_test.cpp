@@ -32,7 +32,8 @@ struct Image {
   int height = 0;
   std::vector<Rgb> pixels;
   [[nodiscard]] Rgb at(int x, int y) const {
-    return pixels[static_cast<std::size_t>(y * width + x)];
+    return pixels[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+                  static_cast<std::size_t>(x)];
   }
   [[nodiscard]] std::size_t count(Rgb c) const {
     return static_cast<std::size_t>(std::count(pixels.begin(), pixels.end(), c));
@@ -138,8 +139,8 @@ ScriptedStroke rectangle_script(const std::string& shot1, const std::string& sho
 }
 
 std::filesystem::path temp_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("penshape-board-" + name + "-" + std::to_string(::getpid()));
+  auto dir = std::filesystem::temp_directory_path() /
+             ("penshape-board-" + name + "-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
@@ -174,7 +175,7 @@ std::string board_asan_options() {
 }
 
 struct BoardRun {
-  int exit_code;
+  int exit_code = 0;
   std::string output;
   Image snapped;
   Image undone;

@@ -30,12 +30,14 @@ class ChildProcess {
       const std::string key = entry.substr(0, entry.find('='));
       if (env.count(key) == 0) env_strings.push_back(entry);
     }
-    for (const auto& [k, v] : env) env_strings.push_back(k + "=" + v);
+    for (const auto& [k, v] : env) env_strings.push_back(std::string(k).append("=").append(v));
     std::vector<char*> envp;
+    envp.reserve(env_strings.size() + 1);
     for (auto& e : env_strings) envp.push_back(e.data());
     envp.push_back(nullptr);
     std::vector<std::string> argv_copy = argv;
     std::vector<char*> args;
+    args.reserve(argv_copy.size() + 1);
     for (auto& a : argv_copy) args.push_back(a.data());
     args.push_back(nullptr);
     int fds[2];

@@ -13,7 +13,7 @@
 namespace penshape::testing {
 
 inline std::string write_generated(const std::string& name, const std::string& text) {
-  const std::string path = std::string(PENSHAPE_BINARY_DIR) + "/generated_" + name;
+  std::string path = std::string(PENSHAPE_BINARY_DIR) + "/generated_" + name;
   std::ofstream out(path, std::ios::binary);
   out << text;
   if (!out) throw std::runtime_error("cannot write " + path);

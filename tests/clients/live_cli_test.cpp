@@ -34,8 +34,8 @@ std::vector<std::string> lines(const std::string& text) {
 }
 
 std::filesystem::path temp_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("penshape-clients-" + name + "-" + std::to_string(::getpid()));
+  auto dir = std::filesystem::temp_directory_path() /
+             ("penshape-clients-" + name + "-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
@@ -311,7 +311,7 @@ TEST(LiveCli, RecordWritesAHidRecorderFileOfTheSamples) {
     if (line.rfind("R: ", 0) == 0) {
       std::size_t n = 0;
       fields >> n;
-      for (unsigned b; fields >> std::hex >> b;) descriptor.push_back(b);
+      for (unsigned b = 0; fields >> std::hex >> b;) descriptor.push_back(b);
       EXPECT_EQ(descriptor.size(), n) << line;
     } else if (line.rfind("N: ", 0) == 0) {
       name = line.substr(3);
@@ -324,7 +324,7 @@ TEST(LiveCli, RecordWritesAHidRecorderFileOfTheSamples) {
       const auto dot = stamp.find('.');
       Report r{std::stoll(stamp.substr(0, dot)) * 1'000'000 + std::stoll(stamp.substr(dot + 1)),
                {}};
-      for (unsigned b; fields >> std::hex >> b;) r.bytes.push_back(b);
+      for (unsigned b = 0; fields >> std::hex >> b;) r.bytes.push_back(b);
       EXPECT_EQ(r.bytes.size(), n) << line;
       reports.push_back(r);
     }

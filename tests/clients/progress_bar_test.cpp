@@ -23,7 +23,7 @@ std::string contents(std::FILE* f) {
   std::fflush(f);
   std::rewind(f);
   std::string out;
-  for (int c; (c = std::fgetc(f)) != EOF;) out += static_cast<char>(c);
+  for (int c = 0; (c = std::fgetc(f)) != EOF;) out += static_cast<char>(c);
   return out;
 }
 

@@ -26,8 +26,8 @@ const std::string kOriginal =
     std::string(PENSHAPE_SOURCE_DIR) + "/recordings/generated-graphire.hidrec";
 
 fs::path temp_dir(const std::string& name) {
-  const auto dir = fs::temp_directory_path() /
-                   ("penshape-record-raw-" + name + "-" + std::to_string(::getpid()));
+  auto dir = fs::temp_directory_path() /
+             ("penshape-record-raw-" + name + "-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
@@ -59,7 +59,7 @@ std::vector<std::string> replay_lines(const fs::path& file) {
   std::vector<std::string> lines;
   std::istringstream in(out);
   for (std::string line; std::getline(in, line);) {
-    if (line.rfind("{", 0) == 0) lines.push_back(line);
+    if (line.rfind('{', 0) == 0) lines.push_back(line);
   }
   return lines;
 }

@@ -121,7 +121,7 @@ TEST(SvgFigure, DeconstructionHasTheLayersOfThePaperFigures) {
 
   // Everything lies inside the picture, whose drawing is at most 900 pixels (the default).
   std::istringstream vb(*attribute(root, "viewBox"));
-  double x0, y0, w, h;
+  double x0 = 0, y0 = 0, w = 0, h = 0;
   vb >> x0 >> y0 >> w >> h;
   EXPECT_LE(w, 900 + 1e-3);
   EXPECT_GT(w, 800); // the wheel is about as wide as high

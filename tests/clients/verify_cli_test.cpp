@@ -41,9 +41,8 @@ std::string cli() { return PENSHAPE_CLI; }
 
 // Each test in its own file names: ctest runs the tests of this file in parallel processes.
 std::string write(const std::string& name, const std::string& text) {
-  const std::string path = std::string(PENSHAPE_BINARY_DIR) + "/verify_cli_" +
-                           ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
-                           name;
+  std::string path = std::string(PENSHAPE_BINARY_DIR) + "/verify_cli_" +
+                     ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" + name;
   std::ofstream(path) << text;
   return path;
 }

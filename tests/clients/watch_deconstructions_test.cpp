@@ -31,7 +31,7 @@ TEST(WatchDeconstructions, JsonCarriesTheCertifiedOutlineAfterTheShape) {
   std::vector<std::string> events;
   std::istringstream in(watch.output());
   for (std::string line; std::getline(in, line);) {
-    if (line.rfind("{", 0) == 0) events.push_back(line);
+    if (line.rfind('{', 0) == 0) events.push_back(line);
   }
   ASSERT_EQ(events.size(), 4U) << watch.output();
   EXPECT_NE(events[2].find("\"type\":\"shape\""), std::string::npos) << events[2];

@@ -20,11 +20,11 @@ PolygonSet demo(const std::string& name) {
   return file ? read_xy(test::read_file(*file)) : PolygonSet{};
 }
 
-#define DEMO_OR_SKIP(var, name)                                                       \
-  const PolygonSet var = demo(name);                                                  \
-  if (var.empty())                                                                    \
-  GTEST_SKIP() << "needs the shared data corpus (polygons/authors_demo_1_01_" << name \
-               << ".txt under " << test::shared_data_location()                       \
+#define DEMO_OR_SKIP(var, name)                                                         \
+  const PolygonSet var = demo(name);                                                    \
+  if ((var).empty())                                                                    \
+  GTEST_SKIP() << "needs the shared data corpus (polygons/authors_demo_1_01_" << (name) \
+               << ".txt under " << test::shared_data_location()                         \
                << "); set PENSHAPE_SHARED_DATA_DIR to run it"
 
 DeconstructParams params(const Rational& r, const Rational& eps, const Rational& delta) {

@@ -19,6 +19,7 @@ namespace {
 
 std::vector<InkSample> with_radius(const std::vector<PointD>& pts, double r) {
   std::vector<InkSample> out;
+  out.reserve(pts.size());
   for (const auto& p : pts) out.push_back({p.x, p.y, r});
   return out;
 }
@@ -189,6 +190,7 @@ TEST(InkPolygon, SeveralStrokesGiveSeveralComponents) {
   const std::vector<std::vector<PointD>> strokes{
       {{0, 0}, {20, 0}}, {{0, 10}, {20, 10}}, {{40, 0}, {40, 10}, {45, 12}}};
   std::vector<std::vector<InkSample>> samples;
+  samples.reserve(strokes.size());
   for (const auto& s : strokes) samples.push_back(with_radius(s, 1.0));
   const InkPolygon ink = ink_polygon(samples, {.radius_mm = 1.0});
   EXPECT_EQ(ink.region.polygons.size(), 3U);

@@ -328,7 +328,7 @@ TEST(InkAnalyzerRpc, SubmitStrokeReturnsTheInkPolygon) {
   tablet->set_y_resolution(100);
   for (int i = 0; i <= 10; ++i) {
     auto* s = request.mutable_stroke()->add_samples();
-    s->set_time_us(i * 1000);
+    s->set_time_us(std::int64_t{i} * 1000);
     s->set_x(1000 + 100 * i);
     s->set_y(1000);
     s->set_tip(i < 10);
@@ -363,7 +363,7 @@ void add_line(v1::Stroke* stroke, double x0, double y0, double x1, double y1, st
   tablet->set_y_resolution(100);
   for (int i = 0; i <= 20; ++i) {
     auto* s = stroke->add_samples();
-    s->set_time_us(t0_us + i * 5000);
+    s->set_time_us(t0_us + std::int64_t{i} * 5000);
     s->set_x(static_cast<std::int32_t>(std::lround(100 * (x0 + (x1 - x0) * i / 20.0))));
     s->set_y(static_cast<std::int32_t>(std::lround(100 * (y0 + (y1 - y0) * i / 20.0))));
     s->set_tip(true);

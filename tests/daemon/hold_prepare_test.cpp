@@ -80,7 +80,7 @@ penshape::Stroke circle(std::uint64_t id, std::int64_t t0_us) {
     penshape::PenSample p;
     p.x = static_cast<std::int32_t>(std::lround((50 + 15 * std::cos(a)) * 100));
     p.y = static_cast<std::int32_t>(std::lround((50 + 15 * std::sin(a)) * 100));
-    p.time_us = t0_us + i * 1000;
+    p.time_us = t0_us + std::int64_t{i} * 1000;
     p.tip = true;
     p.in_range = true;
     s.samples.push_back(p);

@@ -96,6 +96,7 @@ std::vector<StrokeEvents> replay(const fs::path& recording, d::SnapTrigger trigg
   }
   ctx.TryCancel();
   std::vector<StrokeEvents> out;
+  out.reserve(ids.size());
   for (const std::uint64_t id : ids) out.push_back(by_id[id]);
   EXPECT_EQ(out.size(), strokes);
   out.resize(strokes);
@@ -150,7 +151,7 @@ std::vector<DrawnStroke> drawn_strokes() {
 }
 
 fs::path temp_dir() {
-  const fs::path dir = fs::temp_directory_path() / ("penshape-hold-" + std::to_string(::getpid()));
+  fs::path dir = fs::temp_directory_path() / ("penshape-hold-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   return dir;
 }
@@ -160,7 +161,7 @@ fs::path drawn_recording(int rate_hz) {
   std::vector<TimedPath> paths;
   for (const DrawnStroke& s : drawn_strokes()) paths.push_back(s.path);
   write_strokes(dir / "drawn.jsonl", paths);
-  const fs::path out = dir / ("drawn-" + std::to_string(rate_hz) + ".hidrec");
+  fs::path out = dir / ("drawn-" + std::to_string(rate_hz) + ".hidrec");
   synthesize(dir / "drawn.jsonl", out, rate_hz, 1.0);
   return out;
 }
@@ -168,7 +169,7 @@ fs::path drawn_recording(int rate_hz) {
 // A held stroke: one HOLD of the right class before its StrokeFinished, certified on the drawn
 // part; its RELEASE after it, moved as the drag says.
 void check_held(const DrawnStroke& plan, const StrokeEvents& got) {
-  ASSERT_EQ(got.before.size() >= 1, true) << "no HOLD before pen-up";
+  ASSERT_EQ(!got.before.empty(), true) << "no HOLD before pen-up";
   const v1::ShapeRecognized& hold = got.before.front();
   EXPECT_EQ(hold.trigger(), v1::SHAPE_TRIGGER_HOLD);
   EXPECT_TRUE(plan.kind_ok(hold.shape().kind())) << v1::ShapeKind_Name(hold.shape().kind());
@@ -384,6 +385,7 @@ TEST(HoldSnapDrawnLive, TheHeldShapeFollowsThePenBeforePenUp) {
     if (s.plan == Plan::kHoldDrag && plans.size() < 2) plans.push_back(s);
   }
   std::vector<TimedPath> paths;
+  paths.reserve(plans.size());
   for (const DrawnStroke& s : plans) paths.push_back(s.path);
   const fs::path dir = temp_dir();
   write_strokes(dir / "follow.jsonl", paths);

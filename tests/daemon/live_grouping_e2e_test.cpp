@@ -291,7 +291,8 @@ TEST(LiveGrouping, RectanglesAfterHundredsOfStrokesStillGroup) {
   d.source->attach("tablet");
   auto unrelated = [&](int from, int to) {
     for (int i = from; i < to; ++i) {
-      const PointD o{10.0 * (i % 20), 10.0 * (i / 20)};
+      const int row = i / 20;
+      const PointD o{10.0 * (i % 20), 10.0 * row};
       const PointD end = i % 2 == 0 ? PointD{o.x + 5, o.y} : PointD{o.x, o.y + 5};
       d.source->draw("tablet", side(o, end), i % 25 == 24 ? 3'000'000 : 300'000);
     }

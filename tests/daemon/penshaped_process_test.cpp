@@ -24,8 +24,6 @@
 #include "penshape/v1/live.grpc.pb.h"
 #include "test_data.hpp"
 
-extern char** environ;
-
 namespace {
 
 const std::string kPenshaped = std::string(PENSHAPE_BINARY_DIR) + "/daemon/penshaped";
@@ -50,7 +48,7 @@ class Sandbox {
     notify_fd_ = ::socket(AF_UNIX, SOCK_DGRAM | SOCK_CLOEXEC, 0);
     sockaddr_un address{};
     address.sun_family = AF_UNIX;
-    const std::string p = path("notify");
+    std::string p = path("notify");
     std::strncpy(address.sun_path, p.c_str(), sizeof address.sun_path - 1);
     if (::bind(notify_fd_, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0) {
       throw std::runtime_error("bind notify socket");
@@ -71,6 +69,7 @@ class Sandbox {
     std::vector<std::string> argv_storage = {kPenshaped};
     argv_storage.insert(argv_storage.end(), args.begin(), args.end());
     std::vector<char*> argv;
+    argv.reserve(argv_storage.size() + 1);
     for (auto& a : argv_storage) argv.push_back(a.data());
     argv.push_back(nullptr);
     std::vector<std::string> env_storage = env;
@@ -83,6 +82,7 @@ class Sandbox {
       }
     }
     std::vector<char*> envp;
+    envp.reserve(env_storage.size() + 1);
     for (auto& e : env_storage) envp.push_back(e.data());
     envp.push_back(nullptr);
     posix_spawn_file_actions_t actions;
@@ -245,7 +245,7 @@ TEST(Penshaped, AFileThatIsNotARecordingExitsTwoNamingIt) {
   std::ofstream(box.path("truncated.hidrec")) << text.substr(0, text.find("E: ") + 20);
   std::ofstream(box.path("no-events.hidrec")) << text.substr(0, text.find("E: "));
   std::ofstream(box.path("garbage.bin")) << std::string("\x05\x0d\x09\x02\xa1\x01\xff\xff", 8);
-  std::ofstream(box.path("empty.hidrec"));
+  std::ofstream(box.path("empty.hidrec")).close();
   const std::vector<std::pair<std::string, std::string>> cases = {
       {box.path("missing.hidrec"), "cannot open"},
       {(penshape::test::recordings_dir() / "generated-graphire.expected").string(),

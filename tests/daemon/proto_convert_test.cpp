@@ -210,7 +210,7 @@ TEST(ProtoConvert, StrokesAreValidated) {
   stroke.mutable_tablet()->set_y_resolution(10);
   for (int i = 0; i < 3; ++i) {
     auto* s = stroke.add_samples();
-    s->set_time_us(1000 * i);
+    s->set_time_us(std::int64_t{1000} * i);
     s->set_x(10 * i);
     s->set_y(50);
     s->set_tip(i < 2);

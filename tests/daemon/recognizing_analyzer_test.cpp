@@ -295,7 +295,8 @@ TEST(RecognizingAnalyzer, GroupSessionMemoryFollowsTheWindow) {
   const auto session = analyzer->group_session(settings, grouping);
   ASSERT_NE(session, nullptr);
   for (int i = 0; i < 200; ++i) {
-    const PointD o{20.0 * (i % 20), 20.0 * (i / 20)}; // 14 mm gaps: beyond any group's epsilon
+    const int row = i / 20;
+    const PointD o{20.0 * (i % 20), 20.0 * row}; // 14 mm gaps: beyond any group's epsilon
     std::vector<PointD> mm;
     for (int k = 0; k <= 12; ++k) mm.push_back({o.x + 0.5 * k, o.y + 0.1 * std::sin(k)});
     Stroke s = stroke_from(mm);
@@ -305,7 +306,7 @@ TEST(RecognizingAnalyzer, GroupSessionMemoryFollowsTheWindow) {
     ASSERT_TRUE(r.grouped);
     EXPECT_EQ(r.strokes, std::vector<std::size_t>{static_cast<std::size_t>(i)}) << "stroke " << i;
     EXPECT_LE(session->retained_stroke_count(), 6U * 3U) << "stroke " << i;
-    EXPECT_GE(session->oldest_retained_stroke() + 6U * 4U, static_cast<std::size_t>(i));
+    EXPECT_GE(session->oldest_retained_stroke() + std::size_t{6} * 4U, static_cast<std::size_t>(i));
   }
   EXPECT_EQ(session->stroke_count(), 200U);
 }

@@ -280,7 +280,8 @@ TEST(DeviceManager, StopEndsAnOpenStroke) {
   fake->plug(penpartner_candidate("/dev/hidraw-fake2"));
   m.start();
   ASSERT_TRUE(j.wait_for([&] { return fake->last_source() != nullptr; }));
-  for (int i = 0; i < 3; ++i) fake->last_source()->push(pen(true, 10, 10 + i, 9), 1000 * i);
+  for (int i = 0; i < 3; ++i)
+    fake->last_source()->push(pen(true, 10, 10 + i, 9), std::int64_t{1000} * i);
   ASSERT_TRUE(j.wait_for([&] { return j.samples.size() == 3; }));
   m.stop();
   ASSERT_EQ(j.strokes.size(), 1U);

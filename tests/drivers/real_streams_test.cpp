@@ -17,8 +17,6 @@
 namespace penshape::drivers {
 namespace {
 
-using testing::hid_dir;
-
 struct Summary {
   std::size_t samples = 0, tip_samples = 0;
   std::set<std::uint32_t> pressures;

@@ -12,7 +12,7 @@ TEST(Proto, StrokeRoundTrip) {
   stroke.mutable_tablet()->set_x_resolution(100.0);
   for (int i = 0; i < 3; ++i) {
     auto* s = stroke.add_samples();
-    s->set_time_us(1000 * i);
+    s->set_time_us(std::int64_t{1000} * i);
     s->set_x(10 * i);
     s->set_y(-5 * i);
     s->set_tip(i < 2);

@@ -47,9 +47,11 @@ TEST(OutlineCenterline, BlobsAndTinyRingsAreNoStrokes) {
   EXPECT_FALSE(outline_centerline({{0, 0}, {1, 0}, {0, 1}}).has_value());
   // A disk: P^2 = 4 pi A exactly for a circle, less for its inscribed polygon: no real root.
   std::vector<PointD> disk;
-  for (int i = 0; i < 64; ++i)
+  disk.reserve(64);
+  for (int i = 0; i < 64; ++i) {
     disk.push_back(
         {10 * std::cos(i * std::numbers::pi / 32), 10 * std::sin(i * std::numbers::pi / 32)});
+  }
   const auto c = outline_centerline(disk);
   if (c) {
     EXPECT_GT(c->radius, 5.0) << "a disk is at best a dot of its own radius";

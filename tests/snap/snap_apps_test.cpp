@@ -25,7 +25,7 @@ const std::string kInkex = "/usr/share/inkscape/extensions";
 constexpr unsigned kParse = pugi::parse_full | pugi::parse_ws_pcdata;
 
 fs::path out_dir() {
-  const fs::path d = fs::path(PENSHAPE_BINARY_DIR) / "tests" / "snap" / "apps";
+  fs::path d = fs::path(PENSHAPE_BINARY_DIR) / "tests" / "snap" / "apps";
   fs::create_directories(d);
   return d;
 }
@@ -49,6 +49,7 @@ double inked_share(const Pixels& px, const std::vector<PointD>& pts) {
 
 std::vector<PointD> circle_points(double cx, double cy, double r) {
   std::vector<PointD> out;
+  out.reserve(90);
   for (int i = 0; i < 90; ++i)
     out.push_back({cx + r * std::cos(i * M_PI / 45), cy + r * std::sin(i * M_PI / 45)});
   return out;
@@ -212,9 +213,15 @@ TEST(XournalExport, ShowsTheCleanShapeAndNotTheRawStroke) {
   ASSERT_EQ(snap.exit_code, 0) << snap.out;
   for (const char* name : {"notes", "notes-snapped"}) {
     const std::string stem = (dir / name).string();
-    const auto r = run_command(
-        with_display("xournalpp --create-pdf=" + stem + ".pdf " + stem + ".xopp") +
-        " >/dev/null 2>&1 && pdftoppm -r 72 -png -singlefile " + stem + ".pdf " + stem + " 2>&1");
+    std::string to_pdf = "xournalpp --create-pdf=";
+    to_pdf.append(stem).append(".pdf ").append(stem).append(".xopp");
+    std::string command = with_display(to_pdf);
+    command.append(" >/dev/null 2>&1 && pdftoppm -r 72 -png -singlefile ")
+        .append(stem)
+        .append(".pdf ")
+        .append(stem)
+        .append(" 2>&1");
+    const auto r = run_command(command);
     ASSERT_EQ(r.exit_code, 0) << r.out;
   }
   const Pixels before = read_png((dir / "notes.png").string());

@@ -39,7 +39,7 @@ inline std::vector<double> numbers_of(const std::string& text) {
   std::replace(s.begin(), s.end(), ',', ' ');
   std::istringstream in(s);
   std::vector<double> out;
-  for (double v; in >> v;) out.push_back(v);
+  for (double v = 0; in >> v;) out.push_back(v);
   return out;
 }
 

@@ -32,7 +32,8 @@ std::string gunzip_file(const fs::path& p) {
   if (f == nullptr) throw std::runtime_error("cannot open " + p.string());
   std::string out;
   char buf[65536];
-  for (int n; (n = gzread(f, buf, sizeof buf)) > 0;) out.append(buf, static_cast<std::size_t>(n));
+  for (int n = 0; (n = gzread(f, buf, sizeof buf)) > 0;)
+    out.append(buf, static_cast<std::size_t>(n));
   gzclose(f);
   return out;
 }

@@ -139,6 +139,7 @@ Fixture inkscape_fixture() {
   const auto tri = placed_gesture(gesture("triangle", 5), 40, 260, 140);
   const auto notes = placed_gesture(gesture("circle", 7), 320, 380, 110);
   std::vector<PointD> notes_page;
+  notes_page.reserve(notes.size());
   for (const PointD& p : notes) notes_page.push_back({p.x, p.y + 20});
   f.strokes = {{"pencil-circle", circle, 8, "circle"},
                {"pencil-rect", rect, 8, "rectangle"},

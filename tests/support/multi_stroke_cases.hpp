@@ -43,6 +43,7 @@ inline std::vector<Gesture> dollar_gestures(const std::filesystem::path& root) {
   }
   std::sort(files.begin(), files.end());
   std::vector<Gesture> out;
+  out.reserve(files.size());
   for (const auto& f : files) out.push_back(read_dollar(f));
   return out;
 }

@@ -54,9 +54,10 @@ namespace penshape::test {
 
 std::string data_file(const std::string& relative) {
   const auto path = data_path(relative);
-  if (!path)
+  if (!path) {
     throw std::runtime_error(relative + " is not in the shared corpus (" + shared_data_location() +
                              "); outside data is never bundled in the repository");
+  }
   return path->string();
 }
 

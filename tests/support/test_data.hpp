@@ -44,7 +44,7 @@ std::string read_data(const std::string& relative);
     auto penshape_found_ = ::penshape::test::shared_path(relative);           \
     return penshape_found_ ? *penshape_found_ : std::filesystem::path{};      \
   }();                                                                        \
-  if (var.empty())                                                            \
+  if ((var).empty())                                                          \
   GTEST_SKIP() << "needs the shared data corpus (" << (relative) << " under " \
                << ::penshape::test::shared_data_location()                    \
                << "); set PENSHAPE_SHARED_DATA_DIR to run it"

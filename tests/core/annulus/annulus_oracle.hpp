@@ -120,6 +120,7 @@ inline std::size_t max_cover_translation(const std::vector<PointD>& poly, Kind k
                                          const std::vector<PointD>& pts, double theta = 0) {
   // Rotating the points by -theta about the origin is the same as rotating the template by theta.
   std::vector<PointD> rp;
+  rp.reserve(pts.size());
   const double c = std::cos(theta), s = std::sin(theta);
   for (const PointD& q : pts) rp.push_back({c * q.x + s * q.y, -s * q.x + c * q.y});
   std::size_t best = 0;
@@ -225,6 +226,7 @@ inline std::vector<PointD> random_convex(std::mt19937& rng, std::size_t m, doubl
   }
   const double sx = r * (0.6 + 0.8 * u(rng)), sy = r * (0.6 + 0.8 * u(rng));
   std::vector<PointD> v;
+  v.reserve(ang.size());
   for (double a : ang) v.push_back({sx * std::cos(a), sy * std::sin(a)});
   return v;
 }

@@ -34,6 +34,7 @@ double oracle_width(const std::vector<PointD>& poly, oracle::Kind kind,
   double best = hi;
   for (int k = 0; k < kAngles; ++k) {
     std::vector<PointD> rp;
+    rp.reserve(pts.size());
     const double c = std::cos(sample(k)), s = std::sin(sample(k));
     for (const PointD& q : pts) rp.push_back({c * q.x + s * q.y, -s * q.x + c * q.y});
     // Only angles that can beat the best so far need the full bisection.

@@ -93,6 +93,7 @@ inline Rings to_rings(const PolygonSet& set) {
     rings.push_back(outer);
     for (const auto& hole : poly.holes) {
       std::vector<Pt> h;
+      h.reserve(hole.size());
       for (const auto& p : hole) h.push_back({p.x.get_d(), p.y.get_d()});
       rings.push_back(h);
     }

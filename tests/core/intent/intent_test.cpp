@@ -28,6 +28,7 @@ using penshape::test::ink::Points;
 
 std::vector<Points> points_of(const std::vector<PageStroke>& page) {
   std::vector<Points> out;
+  out.reserve(page.size());
   for (const PageStroke& s : page) out.push_back(s.points);
   return out;
 }

@@ -30,7 +30,7 @@ std::string fingerprint() {
 
 fs::path materialize(const std::string& name, const std::function<void(const fs::path&)>& fill) {
   static const std::string version = fingerprint();
-  const fs::path target = fs::path(PENSHAPE_BINARY_DIR) / "generated" / version / name;
+  fs::path target = fs::path(PENSHAPE_BINARY_DIR) / "generated" / version / name;
   std::error_code ec;
   if (fs::is_directory(target, ec)) return target;
   fs::create_directories(target.parent_path());

@@ -106,6 +106,7 @@ std::vector<Pt> spiral(Pt centre, double radius, double turns, bool clockwise) {
 
 std::vector<Pt> scribble(Pt centre, double size, int count, Rng& rng) {
   std::vector<Pt> pts;
+  pts.reserve(static_cast<std::size_t>(std::max(count, 0)));
   for (int k = 0; k < count; ++k) {
     pts.push_back(
         {centre.x + size * rng.uniform(-0.5, 0.5), centre.y + size * rng.uniform(-0.5, 0.5)});

@@ -158,6 +158,7 @@ OffsetInstance rounded_convex(std::uint64_t seed, int vertices, double size, dou
                               double max_error) {
   Rng rng(seed);
   std::vector<double> angle;
+  angle.reserve(static_cast<std::size_t>(std::max(vertices, 0)));
   for (int i = 0; i < vertices; ++i)
     angle.push_back(kTau * (i + rng.uniform(-0.25, 0.25)) / vertices);
   Ring p, q;

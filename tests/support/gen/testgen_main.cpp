@@ -36,14 +36,15 @@ Args parse(int argc, char** argv) {
   for (int i = 2; i < argc; ++i) {
     const std::string s = argv[i];
     const bool has_value = i + 1 < argc;
-    if (s == "--seed" && has_value)
+    if (s == "--seed" && has_value) {
       a.seed = std::stoull(argv[++i]);
-    else if (s == "--subjects" && has_value)
+    } else if (s == "--subjects" && has_value) {
       a.subjects = std::stoi(argv[++i]);
-    else if (s == "--per-kind" && has_value)
+    } else if (s == "--per-kind" && has_value) {
       a.per_kind = std::stoi(argv[++i]);
-    else
+    } else {
       a.positional.push_back(s);
+    }
   }
   return a;
 }
