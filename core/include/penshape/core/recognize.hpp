@@ -59,8 +59,8 @@
 // 0.115 the smallest within one point of its shape rate (leaving one writer out: 0.11..0.13).
 // Measured there (recognize_bench --accuracy-only): the $1 default run 97.6% of shapes right,
 // 0.8% non-shape snaps (leave-one-subject-out 98.5% / 1.3%); held out, every cell of 15..150 mm by
-// 0.25..2 mm pens >= 96.9% / <= 1.3% on $1, >= 98.5% / <= 0.9% on the gestures. When no pen radius is
-// given, r = default_pen_radius_fraction * size. Every entry point (recognize, the live
+// 0.25..2 mm pens >= 96.9% / <= 1.3% on $1, >= 98.5% / <= 0.9% on the gestures. When no pen radius
+// is given, r = default_pen_radius_fraction * size. Every entry point (recognize, the live
 // recognizer, the grouper, penshape recognize and snap, the daemon, the board through the
 // daemon) calls choose_tolerance(); an explicit tolerance overrides the rule.
 //
