@@ -190,9 +190,10 @@ TEST(FilteredPoint, DoublesStandForThePointOnlyWhenExact) {
   EXPECT_EQ(compare_lex(fa, fb), -1);
   EXPECT_EQ(compare_lex(fb, fa), 1);
   EXPECT_EQ(compare_lex(fa, fc), -1); // same x, y decides by its rational
-  const ExactPoint a_again = a;       // another object, the same point
+  // Deliberate copies: another object holding the same point must compare equal.
+  const ExactPoint a_again = a; // NOLINT(performance-unnecessary-copy-initialization)
   EXPECT_EQ(compare_lex(fa, filtered(a_again)), 0);
-  const ExactPoint g_again = grid;
+  const ExactPoint g_again = grid; // NOLINT(performance-unnecessary-copy-initialization)
   EXPECT_EQ(compare_lex(g, filtered(g_again)), 0);
 }
 

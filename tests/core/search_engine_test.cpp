@@ -222,6 +222,7 @@ void expect_stroke_simplified_certified(const std::vector<PointD>& points,
                                         const std::string& file) {
   {
     std::vector<InkSample> samples;
+    samples.reserve(points.size());
     for (const auto& pt : points) samples.push_back({pt.x, pt.y, 3.0});
     InkOptions opt;
     opt.radius_mm = 3.0;

@@ -25,10 +25,8 @@ struct Adversary {
     res.params = {r, eps, delta, EngineKind::kReference};
     const Rational e = eps_hat(r);
     const bool coin = std::uniform_int_distribution<int>(0, 1)(rng) == 1;
-    if (r <= eps) {
-      res.answer = Answer::kYes; // P = Q
-    } else if (eps - e >= 2 * delta) {
-      res.answer = Answer::kYes; // Theorem 11 forces YES
+    if (r <= eps || eps - e >= 2 * delta) {
+      res.answer = Answer::kYes; // P = Q, or Theorem 11 forces YES
     } else if (e - eps >= 2 * delta) {
       res.answer = Answer::kNo; // Theorem 13 forces NO
     } else if (eps >= e) {
@@ -49,7 +47,7 @@ TEST(SearchTolerance, IntervalHoldsEpsHatAndSolutionIsWithinDelta) {
     Adversary adv;
     adv.rng.seed(static_cast<unsigned>(seed));
     const Rational target(37 + seed, 100); // ε̂ for r = 1 (< r)
-    adv.eps_hat = [target](const Rational&) { return target; };
+    adv.eps_hat = [target](const Rational&) { return Rational(target); };
     const Rational delta(1, 1000);
     const ToleranceSearchResult res = search_tolerance(as_decider(adv), Rational(1), delta);
     EXPECT_LE(res.eps_low, target) << seed;
@@ -102,7 +100,7 @@ TEST(SearchTolerance, FallbackSettlesABrokenPromise) {
     const Rational target(17, 100);
     Adversary honest;
     honest.rng.seed(static_cast<unsigned>(seed));
-    honest.eps_hat = [target](const Rational&) { return target; };
+    honest.eps_hat = [target](const Rational&) { return Rational(target); };
     const Decider gappy = [&honest](const Rational& r, const Rational& e, const Rational& d) {
       DeconstructResult res = honest(r, e, d);
       if (e > Rational(1, 4) && e < Rational(3, 5)) res.answer = Answer::kUndecided;
@@ -133,7 +131,7 @@ TEST(SearchTolerance, WithoutFallbackTheProvenIntervalHoldsEpsHat) {
     const Rational target(17, 100);
     Adversary honest;
     honest.rng.seed(static_cast<unsigned>(seed));
-    honest.eps_hat = [target](const Rational&) { return target; };
+    honest.eps_hat = [target](const Rational&) { return Rational(target); };
     const Decider gappy = [&honest](const Rational& r, const Rational& e, const Rational& d) {
       DeconstructResult res = honest(r, e, d);
       if (e > Rational(1, 4) && e < Rational(3, 5)) res.answer = Answer::kUndecided;
@@ -196,7 +194,7 @@ TEST(SearchRadius, FlatEpsHatStopsWithHonestBounds) {
   Adversary adv;
   adv.eps_hat = [eps](const Rational& r) -> Rational {
     if (r < 2) return Rational(eps * r / 2);
-    if (r <= 5) return eps;
+    if (r <= 5) return Rational(eps);
     return Rational(eps + (r - 5));
   };
   // Make the adversary maximally unhelpful: always UNDECIDED when allowed.

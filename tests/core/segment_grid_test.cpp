@@ -73,7 +73,8 @@ double plain_d(Plain p, Plain a, Plain b) {
 
 // The gap between the intervals [lo, hi] and [qlo, qhi], exactly (0 when they meet).
 Rational axis_gap(double lo, double hi, double qlo, double qhi) {
-  const Rational above = Rational(lo) - Rational(qhi), below = Rational(qlo) - Rational(hi);
+  Rational above = Rational(lo) - Rational(qhi);
+  Rational below = Rational(qlo) - Rational(hi);
   if (sgn(above) > 0) return above;
   if (sgn(below) > 0) return below;
   return Rational(0);
@@ -229,6 +230,7 @@ void check_not_farther(const detail::SegmentGrid<S>& grid, std::mt19937_64& rng,
       return Rational(gx * gx + gy * gy);
     };
     std::vector<Rational> gaps;
+    gaps.reserve(segs.size());
     for (const S& s : segs) gaps.push_back(gap2(s));
     for (std::size_t j = 0; j < 12; ++j) {
       const Rational& probe = gaps[(static_cast<std::size_t>(q) * 37 + j * 101) % segs.size()];

@@ -435,6 +435,7 @@ TEST_F(DaemonE2E, SixtyFourClientsKeepUpWhileOneSubscriberNeverReads) {
   auto slow = slow_live->Subscribe(&slow_ctx, slow_request);
 
   std::vector<std::future<Received>> readers;
+  readers.reserve(kClients);
   for (int c = 0; c < kClients; ++c) {
     readers.push_back(std::async(std::launch::async, [&] {
       auto live = v1::Live::NewStub(channel());
@@ -483,7 +484,7 @@ TEST_F(DaemonE2E, SixtyFourClientsKeepUpWhileOneSubscriberNeverReads) {
   std::uint64_t dropped = 0;
   std::uint64_t last_total = 0;
   v1::LiveEvent event;
-  while (received + dropped < 2U * kStrokes && slow->Read(&event)) {
+  while (received + dropped < std::uint64_t{2} * kStrokes && slow->Read(&event)) {
     if (event.has_dropped()) {
       dropped += event.dropped().count();
       last_total = event.dropped().total();
@@ -738,7 +739,7 @@ TEST_F(DaemonE2E, StreamSamplesCutsTheAppsStrokesAndAnswersEach) {
   const bool tips[] = {false, true, true, false, false, true, true};
   for (int i = 0; i < 7; ++i) {
     auto* s = samples.mutable_samples()->add_samples();
-    s->set_time_us(i * 1000);
+    s->set_time_us(std::int64_t{i} * 1000);
     s->set_x(100 * i);
     s->set_y(100);
     s->set_tip(tips[i]);
@@ -774,7 +775,7 @@ std::vector<v1::LiveEvent> stream_batched_stroke(v1::Live::Stub& live, bool incl
     for (int i = 0; i < 5; ++i) {
       const int k = batch * 5 + i;
       auto* s = samples.mutable_samples()->add_samples();
-      s->set_time_us(k * 1000);
+      s->set_time_us(std::int64_t{k} * 1000);
       s->set_x(100 * k);
       s->set_y(100);
       s->set_tip(k < 19);

@@ -62,7 +62,7 @@ class FakeSampleSource final : public daemon::SampleSource {
     sink_->stroke_started(device, stroke.id);
     for (int i = 0; i < samples; ++i) {
       PenSample s;
-      s.time_us = static_cast<std::int64_t>(stroke.id) * 1'000'000 + i * 1000;
+      s.time_us = static_cast<std::int64_t>(stroke.id) * 1'000'000 + std::int64_t{i} * 1000;
       s.x = 1000 + 10 * i;
       s.y = 2000 + (i % 50);
       s.pressure = 500;

@@ -164,6 +164,7 @@ TEST(CertifiedThinning, ExactlyTauIsWithinOneUlpFartherIsNot) {
   EXPECT_EQ(thin_path(beyond, 0.1).size(), 3U);
   // A long wobbly path: every dropped point within tau of the chord of the kept ones around it.
   std::vector<PointD> path;
+  path.reserve(2000);
   for (int k = 0; k < 2000; ++k) path.push_back({k * 0.37, std::sin(k * 0.05) * 3});
   const double tau = 0.2;
   const std::vector<PointD> kept = thin_path(path, tau);

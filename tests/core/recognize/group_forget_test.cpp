@@ -30,7 +30,8 @@ std::vector<StrokeInput> long_session() {
   std::vector<StrokeInput> out;
   double t = 0;
   for (int i = 0; i < 300; ++i) {
-    const PointD o{100.0 * (i % 20), 100.0 * (i / 20)};
+    const int row = i / 20; // whole rows of 20 cells
+    const PointD o{100.0 * (i % 20), 100.0 * row};
     const PointD d = i % 3 == 0 ? PointD{40, 0} : (i % 3 == 1 ? PointD{0, 40} : PointD{28, 28});
     out.push_back({line(o, {o.x + d.x, o.y + d.y}, t), nullptr, nullptr, 0.0, {}});
     t = out.back().samples.back().t + (i % 25 == 24 ? 3.0 : 0.1);

@@ -30,6 +30,7 @@ std::vector<Gesture> subjects(const std::filesystem::path& root) {
 
 std::vector<StrokeInput> inputs_of(const std::vector<Points>& strokes) {
   std::vector<StrokeInput> in;
+  in.reserve(strokes.size());
   for (const Points& p : strokes) in.push_back({p, nullptr, nullptr, 0.0, {}});
   return in;
 }

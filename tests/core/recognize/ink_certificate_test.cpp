@@ -155,6 +155,7 @@ void expect_tight_and_valid(const InkPolygon& ink, ShapeClass shape, const Shape
 
 InkPolygon ink_of(const std::vector<StrokePoint>& pts, double radius) {
   std::vector<InkSample> s;
+  s.reserve(pts.size());
   for (const auto& p : pts) s.push_back({p.x, p.y, radius});
   InkOptions o;
   o.radius_mm = radius;

@@ -99,6 +99,7 @@ inline std::vector<Gesture> all_dollar_gestures() {
   }
   std::sort(files.begin(), files.end());
   std::vector<Gesture> out;
+  out.reserve(files.size());
   for (const auto& f : files) out.push_back(read_gesture(f));
   return out;
 }
@@ -210,6 +211,7 @@ struct IndependentCheck {
 inline IndependentCheck independent_hausdorff(const std::vector<StrokePoint>& samples,
                                               const Recognition& r, double step) {
   std::vector<PointD> stroke;
+  stroke.reserve(samples.size());
   for (const auto& s : samples) stroke.push_back({s.x, s.y});
   const std::size_t steps = 4096;
   const std::vector<PointD> clean = clean_path_from_params(r, steps);
@@ -238,6 +240,7 @@ inline IndependentCheck independent_hausdorff(const std::vector<StrokePoint>& sa
 inline double ink_distance_lower_estimate(const std::vector<StrokePoint>& samples,
                                           const Recognition& r, double step) {
   std::vector<PointD> stroke_points;
+  stroke_points.reserve(samples.size());
   for (const auto& s : samples) stroke_points.push_back({s.x, s.y});
   const std::vector<PointD>& stroke = stroke_points;
   const std::vector<PointD> clean = clean_path_from_params(r, 2048);

@@ -103,6 +103,7 @@ double circle_wobble(StrokeGenerator& gen, double scale, Speed speed) {
     for (const auto& q : p)
       cx += q.x / static_cast<double>(p.size()), cy += q.y / static_cast<double>(p.size());
     std::vector<double> r;
+    r.reserve(p.size());
     for (const auto& q : p) r.push_back(std::hypot(q.x - cx, q.y - cy));
     const double mean = std::accumulate(r.begin(), r.end(), 0.0) / static_cast<double>(r.size());
     double var = 0.0;

@@ -37,6 +37,7 @@ struct Canvas {
 
 std::vector<Pt> polygon_at(const Canvas& c, const std::vector<Pt>& unit) {
   std::vector<Pt> out;
+  out.reserve(unit.size());
   for (const Pt& p : unit) out.push_back({c.centre.x + c.size * p.x, c.centre.y + c.size * p.y});
   return out;
 }
@@ -325,9 +326,10 @@ Drawing StrokeGenerator::draw(const std::string& kind, const DrawOptions& option
   for (auto& path : plan.paths) {
     if (plan.closed) path = round_corners(path, measured::kCornerRounding * canvas.size);
     std::vector<Pt> dense = resample(path, 1.0);
-    if (kind != "dot")
+    if (kind != "dot") {
       add_wobble(dense, wobble_rms(canvas.size, speed) * (plan.is_shape ? 1.0 : 0.5), canvas.size,
                  rng);
+    }
     if (options.hooks && !plan.closed && kind != "dot" && rng.chance(measured::kHookShare))
       add_hook(dense, measured::kHookLength * canvas.size, rng);
     out.strokes.push_back(sample_pen(dense, speed, t, rng));
