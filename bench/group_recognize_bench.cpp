@@ -18,8 +18,10 @@
 //   (data dir: $PENSHAPE_SHARED_DATA_DIR)
 //   --loso: only the leave-one-subject-out figures of the thresholds picked on real strokes
 //           (group_loso.hpp; each swept over a few values, about 30 s per value).
-//   --without RULE, --apart-barb X, --shaft-span X: a rule off, a head drawn apart's barb limit,
-//   a shaft stroke's least span (to measure).
+//   --without RULE, --apart-barb X, --shaft-span X, --continuation-angle DEG: a rule off
+//   (open_polylines, curved_sides, crossing_pieces, continued_tips, arrow_when_refused,
+//   a_stroke_per_arrow_part, seed_from_strokes), a head drawn apart's barb limit, a shaft stroke's
+//   least span, the cone of a stroke continuing an arrow's tip (to measure).
 //   --gestures-only: only the figures on other people's drawings.
 //   --only CLASS: with --gestures-only, only the gestures of that class ("D", "arrowhead", ...).
 //   --svg-dir: every arrow missed is drawn to DIR (strokes, and the best arrow candidate with why
@@ -169,6 +171,12 @@ bool switch_off(const std::string& rule) {
     r.no_curved_sides = false;
   } else if (rule == "crossing_pieces") {
     r.no_crossing_pieces = false;
+  } else if (rule == "continued_tips") {
+    r.no_continued_tips = false;
+  } else if (rule == "a_stroke_per_arrow_part") {
+    r.a_stroke_per_arrow_part = false;
+  } else if (rule == "arrow_when_refused") {
+    r.arrow_when_refused = false;
   } else if (rule == "seed_from_strokes") {
     penshape::recognize_detail::arrow_rules().seed_from_strokes = false;
   } else {
@@ -203,6 +211,9 @@ int main(int argc, char** argv) {
       penshape::recognize_detail::arrow_rules().max_apart_barb = std::atof(argv[++i]);
     } else if (std::strcmp(argv[i], "--shaft-span") == 0 && i + 1 < argc) {
       penshape::recognize_detail::arrow_rules().min_shaft_span = std::atof(argv[++i]);
+    } else if (std::strcmp(argv[i], "--continuation-angle") == 0 && i + 1 < argc) {
+      penshape::recognize_detail::group_rules().max_continuation_angle =
+          std::atof(argv[++i]) * penshape::recognize_detail::kDegree;
     } else if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc) {
       only = argv[++i];
     } else if (std::strcmp(argv[i], "--svg-dir") == 0 && i + 1 < argc) {
@@ -211,7 +222,8 @@ int main(int argc, char** argv) {
     } else {
       std::fprintf(stderr,
                    "usage: group_recognize_bench [--json] [--gestures-only [--only CLASS]] "
-                   "[--loso] [--without RULE] [--apart-barb X] [--shaft-span X] [--svg-dir DIR]\n");
+                   "[--loso] [--without RULE] [--apart-barb X] [--shaft-span X] "
+                   "[--continuation-angle DEG] [--svg-dir DIR]\n");
       return 2;
     }
   }

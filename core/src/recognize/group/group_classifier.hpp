@@ -20,4 +20,10 @@ std::vector<PointD> distinct_path(const std::vector<StrokePoint>& samples);
 UnionRecognition recognize_union_detail(std::span<const StrokeInput> strokes,
                                         const RecognizerConfig& config);
 
+// The union read as its best arrow instead of its winner: the first alternative that is an arrow
+// certified on the union and plausible becomes the winner (the winner goes first among the
+// alternatives, the rank is the arrow's). False, and `u` unchanged, when there is none. For a
+// winner the grouping rules refuse (an open polyline in pieces) while an arrow also snaps.
+bool read_as_arrow(UnionRecognition& u);
+
 } // namespace penshape::recognize_detail
