@@ -20,8 +20,9 @@
 //           (group_loso.hpp; each swept over a few values, about 30 s per value).
 //   --without RULE, --apart-barb X, --shaft-span X, --continuation-angle DEG: a rule off
 //   (open_polylines, curved_sides, crossing_pieces, continued_tips, arrow_when_refused,
-//   a_stroke_per_arrow_part, seed_from_strokes), a head drawn apart's barb limit, a shaft stroke's
-//   least span, the cone of a stroke continuing an arrow's tip (to measure).
+//   a_stroke_per_arrow_part, round_arrow_pieces, seed_from_strokes), a head drawn apart's barb
+//   limit, a shaft stroke's least span, the cone of a stroke continuing an arrow's tip (to
+//   measure).
 //   --gestures-only: only the figures on other people's drawings.
 //   --only CLASS: with --gestures-only, only the gestures of that class ("D", "arrowhead", ...).
 //   --svg-dir: every arrow missed is drawn to DIR (strokes, and the best arrow candidate with why
@@ -173,6 +174,8 @@ bool switch_off(const std::string& rule) {
     r.no_crossing_pieces = false;
   } else if (rule == "continued_tips") {
     r.no_continued_tips = false;
+  } else if (rule == "round_arrow_pieces") {
+    r.no_round_arrow_pieces = false;
   } else if (rule == "a_stroke_per_arrow_part") {
     r.a_stroke_per_arrow_part = false;
   } else if (rule == "arrow_when_refused") {

@@ -2,6 +2,7 @@
 // checked to decide: with the rule switched off, the drawing it refuses passes (GroupRules).
 #include <gtest/gtest.h>
 
+#include <numbers>
 #include <vector>
 
 #include "group_test_support.hpp"
@@ -74,6 +75,23 @@ TEST_F(ArrowGroupRulesTest, AnArrowHasNoMoreStrokesThanParts) {
   EXPECT_NE(recognize_detail::group_implausibility(arrow, s, {}).find("parts"), std::string::npos);
   EXPECT_EQ(recognize_detail::group_implausibility(arrow, std::span(s).last(3), {}), "");
   group_rules().a_stroke_per_arrow_part = false;
+  EXPECT_EQ(recognize_detail::group_implausibility(arrow, s, {}), "");
+}
+
+TEST_F(ArrowGroupRulesTest, NoStrokeOfAnArrowIsALoop) {
+  // A half note: a ring as its head and a stem from its side.
+  test::Path ring;
+  for (int k = 0; k <= 64; ++k) {
+    const double a = 2.0 * std::numbers::pi * k / 64.0;
+    ring.push_back({20.0 * std::cos(a), 15.0 * std::sin(a)});
+  }
+  const std::vector<StrokeInput> s{stroke_along(ring, 0.0),
+                                   stroke_along({{20, 0}, {20, -100}}, 1.0)};
+  Recognition arrow;
+  arrow.shape = ShapeClass::kArrow;
+  arrow.epsilon = 15.0;
+  EXPECT_NE(recognize_detail::group_implausibility(arrow, s, {}).find("circle"), std::string::npos);
+  group_rules().no_round_arrow_pieces = false;
   EXPECT_EQ(recognize_detail::group_implausibility(arrow, s, {}), "");
 }
 

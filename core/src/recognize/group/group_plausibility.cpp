@@ -121,6 +121,16 @@ bool pieces_cross(const std::vector<std::vector<PointD>>& paths, double stroke_e
   return false;
 }
 
+// Why a stroke recognized alone is no piece of a `shape` (kind_mismatch; empty when none).
+std::string mismatched_piece(ShapeClass shape, std::span<const StrokeInput> strokes,
+                             const RecognizerConfig& config) {
+  for (const StrokeInput& s : strokes) {
+    std::string why = kind_mismatch(shape, recognize(s.samples, config).shape);
+    if (!why.empty()) return why;
+  }
+  return {};
+}
+
 // The rules of GroupRules for a union that chains end to end (empty when none refuses it).
 std::string piece_rules(const Recognition& r, const std::vector<std::vector<PointD>>& paths,
                         double stroke_epsilon, double join) {
@@ -204,7 +214,8 @@ std::string group_implausibility(const Recognition& r, std::span<const StrokeInp
     const std::size_t parts = r.shape == ShapeClass::kArrow ? 3 : 5;
     if (group_rules().a_stroke_per_arrow_part && strokes.size() > parts)
       return "more strokes than the arrow has parts (a shaft and its barbs): a figure, no arrow";
-    return {};
+    // Straight pieces or an arc: a loop alone (a note's head, a null sign's ring) is no part.
+    return group_rules().no_round_arrow_pieces ? mismatched_piece(r.shape, strokes, config) : "";
   }
   for (const double jump : chain_jumps(paths)) {
     if (jump > join) {
@@ -215,11 +226,7 @@ std::string group_implausibility(const Recognition& r, std::span<const StrokeInp
   if (std::string why = piece_rules(r, paths, stroke_epsilon, join); !why.empty()) return why;
   // Each piece is a piece of the shape's own kind: a D or a P (a bar and a bowl) is no ellipse,
   // a circle crossed by a bar no polygon, whatever band covers the union.
-  for (const StrokeInput& s : strokes) {
-    std::string why = kind_mismatch(r.shape, recognize(s.samples, config).shape);
-    if (!why.empty()) return why;
-  }
-  return {};
+  return mismatched_piece(r.shape, strokes, config);
 }
 
 } // namespace penshape::recognize_detail

@@ -19,7 +19,8 @@ namespace penshape::recognize_detail {
 // Besides (GroupRules): an open polyline is never a group; no stroke of a straight-sided closed
 // shape is a curve (the bowl of a D or a P); no two strokes of a closed shape cross each other
 // away from their ends (a stick figure, a crossed circle); an arrow is drawn in at most as many
-// strokes as it has straight parts (a shaft and two or four barbs).
+// strokes as it has straight parts (a shaft and two or four barbs), none of them a circle or an
+// ellipse alone (a half note's head, a null sign's ring).
 std::string group_implausibility(const Recognition& r, std::span<const StrokeInput> strokes,
                                  const RecognizerConfig& config);
 
@@ -37,6 +38,7 @@ struct GroupRules {
   double max_continuation_angle = kMaxContinuationAngle;
   bool arrow_when_refused = true; // a refused winner gives way to the union's arrow (keep_union)
   bool a_stroke_per_arrow_part = true; // an arrow has at most a stroke per shaft and barb
+  bool no_round_arrow_pieces = true;   // no stroke of an arrow is a circle or ellipse alone
 };
 GroupRules& group_rules();
 
