@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "geometry/exact_predicates.hpp"
@@ -189,11 +190,10 @@ bool keep_union(UnionRecognition& u, std::span<const StrokeInput> strokes,
       u.recognition.shape == ShapeClass::kDoubleArrow) {
     return false;
   }
-  UnionRecognition arrow = u;
-  if (!read_as_arrow(arrow) || !why_not_kept(arrow.recognition, strokes, others, config).empty()) {
-    return false;
-  }
-  u = std::move(arrow);
+  std::optional<ArrowReading> arrow = read_as_arrow(u.recognition);
+  if (!arrow || !why_not_kept(arrow->recognition, strokes, others, config).empty()) return false;
+  u.recognition = std::move(arrow->recognition);
+  u.rank = arrow->rank;
   return true;
 }
 
