@@ -165,23 +165,20 @@ void draw_miss(const std::filesystem::path& file, const std::vector<Points>& str
 
 // Turns one of the grouping rules (GroupRules) off, to measure what it does.
 bool switch_off(const std::string& rule) {
-  penshape::recognize_detail::GroupRules& r = penshape::recognize_detail::group_rules();
-  if (rule == "open_polylines") {
-    r.no_open_polylines = false;
-  } else if (rule == "curved_sides") {
-    r.no_curved_sides = false;
-  } else if (rule == "crossing_pieces") {
-    r.no_crossing_pieces = false;
-  } else if (rule == "continued_tips") {
-    r.no_continued_tips = false;
-  } else if (rule == "round_arrow_pieces") {
-    r.no_round_arrow_pieces = false;
-  } else if (rule == "a_stroke_per_arrow_part") {
-    r.a_stroke_per_arrow_part = false;
-  } else if (rule == "arrow_when_refused") {
-    r.arrow_when_refused = false;
-  } else if (rule == "seed_from_strokes") {
+  using penshape::recognize_detail::GroupRules;
+  // Each rule's name on the command line and its switch in GroupRules.
+  const std::map<std::string, bool GroupRules::*> switches{
+      {"open_polylines", &GroupRules::no_open_polylines},
+      {"curved_sides", &GroupRules::no_curved_sides},
+      {"crossing_pieces", &GroupRules::no_crossing_pieces},
+      {"continued_tips", &GroupRules::no_continued_tips},
+      {"round_arrow_pieces", &GroupRules::no_round_arrow_pieces},
+      {"a_stroke_per_arrow_part", &GroupRules::a_stroke_per_arrow_part},
+      {"arrow_when_refused", &GroupRules::arrow_when_refused}};
+  if (rule == "seed_from_strokes") {
     penshape::recognize_detail::arrow_rules().seed_from_strokes = false;
+  } else if (const auto it = switches.find(rule); it != switches.end()) {
+    penshape::recognize_detail::group_rules().*(it->second) = false;
   } else {
     std::fprintf(stderr, "group_recognize_bench: no rule %s\n", rule.c_str());
     return false;
