@@ -2,6 +2,7 @@
 // (group_loso.hpp).
 #include "group_loso.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <map>
@@ -122,18 +123,23 @@ void print_group_loso(const std::filesystem::path& gestures_root, bool json) {
     if (gesture_kind(d) != GestureKind::kNone) drawings.push_back(std::move(d));
   }
   if (drawings.empty()) return;
-  const std::vector<Knob> knobs{{"kMaxSeparateHeadBarb",
-                                 {1.0, 1.5, 2.0, 2.5, 3.0},
-                                 recognize_detail::kMaxSeparateHeadBarb,
-                                 [](double v) { arrow_rules().max_apart_barb = v; }},
-                                {"kMinShaftSpan",
-                                 {0.0, 0.3, 0.5, 0.7},
-                                 recognize_detail::kMinShaftSpan,
-                                 [](double v) { arrow_rules().min_shaft_span = v; }},
-                                {"kMinCornerTurnShare",
-                                 {0.3, 0.35, 0.4, 0.45, 0.5},
-                                 recognize_detail::kMinCornerTurnShare,
-                                 [](double v) { group_rules().min_corner_turn_share = v; }}};
+  const std::vector<Knob> knobs{
+      {"kMaxSeparateHeadBarb",
+       {1.0, 1.5, 2.0, 2.5, 3.0},
+       recognize_detail::kMaxSeparateHeadBarb,
+       [](double v) { arrow_rules().max_apart_barb = v; }},
+      {"kMinShaftSpan",
+       {0.0, 0.3, 0.5, 0.7},
+       recognize_detail::kMinShaftSpan,
+       [](double v) { arrow_rules().min_shaft_span = v; }},
+      {"kMaxContinuationAngle (deg)",
+       {30.0, 45.0, 60.0, 75.0},
+       std::round(recognize_detail::kMaxContinuationAngle / recognize_detail::kDegree),
+       [](double v) { group_rules().max_continuation_angle = v * recognize_detail::kDegree; }},
+      {"kMinCornerTurnShare",
+       {0.3, 0.35, 0.4, 0.45, 0.5},
+       recognize_detail::kMinCornerTurnShare,
+       [](double v) { group_rules().min_corner_turn_share = v; }}};
   if (!json) {
     std::printf(
         "\nleave-one-subject-out on other people's drawings (squares and arrows of several "

@@ -18,8 +18,11 @@
 //   (data dir: $PENSHAPE_SHARED_DATA_DIR)
 //   --loso: only the leave-one-subject-out figures of the thresholds picked on real strokes
 //           (group_loso.hpp; each swept over a few values, about 30 s per value).
-//   --without RULE, --apart-barb X, --shaft-span X: a rule off, a head drawn apart's barb limit,
-//   a shaft stroke's least span (to measure).
+//   --without RULE, --apart-barb X, --shaft-span X, --continuation-angle DEG: a rule off
+//   (open_polylines, curved_sides, crossing_pieces, continued_tips, arrow_when_refused,
+//   a_stroke_per_arrow_part, round_arrow_pieces, seed_from_strokes), a head drawn apart's barb
+//   limit, a shaft stroke's least span, the cone of a stroke continuing an arrow's tip (to
+//   measure).
 //   --gestures-only: only the figures on other people's drawings.
 //   --only CLASS: with --gestures-only, only the gestures of that class ("D", "arrowhead", ...).
 //   --svg-dir: every arrow missed is drawn to DIR (strokes, and the best arrow candidate with why
@@ -162,15 +165,20 @@ void draw_miss(const std::filesystem::path& file, const std::vector<Points>& str
 
 // Turns one of the grouping rules (GroupRules) off, to measure what it does.
 bool switch_off(const std::string& rule) {
-  penshape::recognize_detail::GroupRules& r = penshape::recognize_detail::group_rules();
-  if (rule == "open_polylines") {
-    r.no_open_polylines = false;
-  } else if (rule == "curved_sides") {
-    r.no_curved_sides = false;
-  } else if (rule == "crossing_pieces") {
-    r.no_crossing_pieces = false;
-  } else if (rule == "seed_from_strokes") {
+  using penshape::recognize_detail::GroupRules;
+  // Each rule's name on the command line and its switch in GroupRules.
+  const std::map<std::string, bool GroupRules::*> switches{
+      {"open_polylines", &GroupRules::no_open_polylines},
+      {"curved_sides", &GroupRules::no_curved_sides},
+      {"crossing_pieces", &GroupRules::no_crossing_pieces},
+      {"continued_tips", &GroupRules::no_continued_tips},
+      {"round_arrow_pieces", &GroupRules::no_round_arrow_pieces},
+      {"a_stroke_per_arrow_part", &GroupRules::a_stroke_per_arrow_part},
+      {"arrow_when_refused", &GroupRules::arrow_when_refused}};
+  if (rule == "seed_from_strokes") {
     penshape::recognize_detail::arrow_rules().seed_from_strokes = false;
+  } else if (const auto it = switches.find(rule); it != switches.end()) {
+    penshape::recognize_detail::group_rules().*(it->second) = false;
   } else {
     std::fprintf(stderr, "group_recognize_bench: no rule %s\n", rule.c_str());
     return false;
@@ -203,6 +211,9 @@ int main(int argc, char** argv) {
       penshape::recognize_detail::arrow_rules().max_apart_barb = std::atof(argv[++i]);
     } else if (std::strcmp(argv[i], "--shaft-span") == 0 && i + 1 < argc) {
       penshape::recognize_detail::arrow_rules().min_shaft_span = std::atof(argv[++i]);
+    } else if (std::strcmp(argv[i], "--continuation-angle") == 0 && i + 1 < argc) {
+      penshape::recognize_detail::group_rules().max_continuation_angle =
+          std::atof(argv[++i]) * penshape::recognize_detail::kDegree;
     } else if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc) {
       only = argv[++i];
     } else if (std::strcmp(argv[i], "--svg-dir") == 0 && i + 1 < argc) {
@@ -211,7 +222,8 @@ int main(int argc, char** argv) {
     } else {
       std::fprintf(stderr,
                    "usage: group_recognize_bench [--json] [--gestures-only [--only CLASS]] "
-                   "[--loso] [--without RULE] [--apart-barb X] [--shaft-span X] [--svg-dir DIR]\n");
+                   "[--loso] [--without RULE] [--apart-barb X] [--shaft-span X] "
+                   "[--continuation-angle DEG] [--svg-dir DIR]\n");
       return 2;
     }
   }

@@ -243,6 +243,31 @@ UnionRecognition recognize_union_detail(std::span<const StrokeInput> strokes,
   return out;
 }
 
+std::optional<ArrowReading> read_as_arrow(const Recognition& r) {
+  const auto& alt = r.alternatives;
+  const auto arrow = std::find_if(alt.begin(), alt.end(), [](const Candidate& c) {
+    const bool arrow_class = c.shape == ShapeClass::kArrow || c.shape == ShapeClass::kDoubleArrow;
+    return arrow_class && c.certificate.certified && c.rejected.empty();
+  });
+  if (arrow == alt.end()) return std::nullopt;
+  ArrowReading out;
+  Recognition& a = out.recognition;
+  a = r;
+  a.alternatives.erase(a.alternatives.begin() + (arrow - alt.begin()));
+  if (r.shape != ShapeClass::kFreeform) {
+    a.alternatives.insert(a.alternatives.begin(),
+                          Candidate{r.shape, r.params, r.clean, r.certificate, {}, r.rms});
+  }
+  a.shape = arrow->shape;
+  a.params = arrow->params;
+  a.clean = arrow->clean;
+  a.certificate = arrow->certificate;
+  a.rms = arrow->rms;
+  a.confidence = std::clamp(1.0 - a.certificate.bound / (2.0 * a.epsilon), 0.0, 1.0);
+  out.rank = recognition_rank(a);
+  return out;
+}
+
 } // namespace penshape::recognize_detail
 
 namespace penshape {

@@ -1,5 +1,6 @@
 #pragma once
 // recognize_union() with what tidy-up needs afterwards: the strokes as a certified union.
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -19,5 +20,15 @@ std::vector<PointD> distinct_path(const std::vector<StrokePoint>& samples);
 
 UnionRecognition recognize_union_detail(std::span<const StrokeInput> strokes,
                                         const RecognizerConfig& config);
+
+// The recognition `r` of a union read as its best arrow instead of its winner: the first
+// alternative that is an arrow certified on the union and plausible becomes the winner (the
+// winner goes first among the alternatives), with its rank; none when there is no such arrow. For
+// a winner the grouping rules refuse (an open polyline in pieces) while an arrow also snaps.
+struct ArrowReading {
+  Recognition recognition;
+  double rank = 0.0;
+};
+std::optional<ArrowReading> read_as_arrow(const Recognition& r);
 
 } // namespace penshape::recognize_detail

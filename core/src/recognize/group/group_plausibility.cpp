@@ -3,12 +3,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "geometry/exact_predicates.hpp"
 #include "recognize/arrow/arrow_limits.hpp"
 #include "recognize/classify/classifier.hpp"
 #include "recognize/fitting/thin_path.hpp"
+#include "recognize/group/arrow_tip.hpp"
 #include "recognize/group/group_classifier.hpp"
 #include "recognize/group/stroke_chain.hpp"
 #include "recognize/thresholds.hpp"
@@ -120,6 +122,16 @@ bool pieces_cross(const std::vector<std::vector<PointD>>& paths, double stroke_e
   return false;
 }
 
+// Why a stroke recognized alone is no piece of a `shape` (kind_mismatch; empty when none).
+std::string mismatched_piece(ShapeClass shape, std::span<const StrokeInput> strokes,
+                             const RecognizerConfig& config) {
+  for (const StrokeInput& s : strokes) {
+    std::string why = kind_mismatch(shape, recognize(s.samples, config).shape);
+    if (!why.empty()) return why;
+  }
+  return {};
+}
+
 // The rules of GroupRules for a union that chains end to end (empty when none refuses it).
 std::string piece_rules(const Recognition& r, const std::vector<std::vector<PointD>>& paths,
                         double stroke_epsilon, double join) {
@@ -145,24 +157,65 @@ GroupRules& group_rules() {
   return rules;
 }
 
+namespace {
+
+// The largest epsilon of a stroke alone: a gap between pieces is measured against the pieces
+// drawn, not against the whole group, whose epsilon grows with every piece added.
+double stroke_epsilon_of(std::span<const StrokeInput> strokes, const RecognizerConfig& config) {
+  double e = 0.0;
+  for (const StrokeInput& s : strokes) e = std::max(e, choose_tolerance(s.samples, config).epsilon);
+  return e;
+}
+
+// Why `r` is not kept as the group of `strokes` among the recent strokes `others`.
+std::string why_not_kept(const Recognition& r, std::span<const StrokeInput> strokes,
+                         std::span<const StrokeInput* const> others,
+                         const RecognizerConfig& config) {
+  std::string why = group_implausibility(r, strokes, config);
+  if (!why.empty() || (r.shape != ShapeClass::kArrow && r.shape != ShapeClass::kDoubleArrow)) {
+    return why;
+  }
+  std::vector<std::vector<PointD>> paths;
+  paths.reserve(others.size());
+  for (const StrokeInput* s : others) paths.push_back(distinct_path(s->samples));
+  return tip_continued(r, paths, 2.0 * r.pen_radius + stroke_epsilon_of(strokes, config));
+}
+
+} // namespace
+
+bool keep_union(UnionRecognition& u, std::span<const StrokeInput> strokes,
+                std::span<const StrokeInput* const> others, const RecognizerConfig& config) {
+  if (why_not_kept(u.recognition, strokes, others, config).empty()) return true;
+  if (!group_rules().arrow_when_refused || u.recognition.shape == ShapeClass::kArrow ||
+      u.recognition.shape == ShapeClass::kDoubleArrow) {
+    return false;
+  }
+  std::optional<ArrowReading> arrow = read_as_arrow(u.recognition);
+  if (!arrow || !why_not_kept(arrow->recognition, strokes, others, config).empty()) return false;
+  u.recognition = std::move(arrow->recognition);
+  u.rank = arrow->rank;
+  return true;
+}
+
 std::string group_implausibility(const Recognition& r, std::span<const StrokeInput> strokes,
                                  const RecognizerConfig& config) {
   if (strokes.size() < 2) return {};
   std::vector<std::vector<PointD>> paths;
-  double stroke_epsilon = 0.0;
-  for (const StrokeInput& s : strokes) {
-    paths.push_back(distinct_path(s.samples));
-    // The tolerance of the stroke alone: a gap between pieces is measured against the pieces
-    // drawn, not against the whole group, whose epsilon grows with every piece added.
-    stroke_epsilon = std::max(stroke_epsilon, choose_tolerance(s.samples, config).epsilon);
-  }
+  paths.reserve(strokes.size());
+  for (const StrokeInput& s : strokes) paths.push_back(distinct_path(s.samples));
+  const double stroke_epsilon = stroke_epsilon_of(strokes, config);
   const double join = 2.0 * r.pen_radius + stroke_epsilon;
   // An arrow's head meets its shaft at the head's middle (its tip), not at an end; no two of
   // its strokes cross in both their middles (the arms across a stick figure's body).
   if (r.shape == ShapeClass::kArrow || r.shape == ShapeClass::kDoubleArrow) {
     if (group_rules().no_crossing_pieces && pieces_cross(paths, stroke_epsilon, join, true))
       return "two strokes of an arrow cross in their middles (a figure, no arrow)";
-    return {};
+    // A shaft and its barbs: a stroke more than the arrow has parts draws no part of it.
+    const std::size_t parts = r.shape == ShapeClass::kArrow ? 3 : 5;
+    if (group_rules().a_stroke_per_arrow_part && strokes.size() > parts)
+      return "more strokes than the arrow has parts (a shaft and its barbs): a figure, no arrow";
+    // Straight pieces or an arc: a loop alone (a note's head, a null sign's ring) is no part.
+    return group_rules().no_round_arrow_pieces ? mismatched_piece(r.shape, strokes, config) : "";
   }
   for (const double jump : chain_jumps(paths)) {
     if (jump > join) {
@@ -173,11 +226,7 @@ std::string group_implausibility(const Recognition& r, std::span<const StrokeInp
   if (std::string why = piece_rules(r, paths, stroke_epsilon, join); !why.empty()) return why;
   // Each piece is a piece of the shape's own kind: a D or a P (a bar and a bowl) is no ellipse,
   // a circle crossed by a bar no polygon, whatever band covers the union.
-  for (const StrokeInput& s : strokes) {
-    std::string why = kind_mismatch(r.shape, recognize(s.samples, config).shape);
-    if (!why.empty()) return why;
-  }
-  return {};
+  return mismatched_piece(r.shape, strokes, config);
 }
 
 } // namespace penshape::recognize_detail

@@ -18,7 +18,9 @@ namespace penshape::recognize_detail {
 // a round one (circle, ellipse, arc). An arc alone may be a side and a rounded corner.
 // Besides (GroupRules): an open polyline is never a group; no stroke of a straight-sided closed
 // shape is a curve (the bowl of a D or a P); no two strokes of a closed shape cross each other
-// away from their ends (a stick figure, a crossed circle).
+// away from their ends (a stick figure, a crossed circle); an arrow is drawn in at most as many
+// strokes as it has straight parts (a shaft and two or four barbs), none of them a circle or an
+// ellipse alone (a half note's head, a null sign's ring).
 std::string group_implausibility(const Recognition& r, std::span<const StrokeInput> strokes,
                                  const RecognizerConfig& config);
 
@@ -31,7 +33,22 @@ struct GroupRules {
   bool no_crossing_pieces = true; // the pieces of an outline do not cross in their middles
   // The least turn at a corner inside one stroke, as a share of the shape's (no_curved_sides).
   double min_corner_turn_share = kMinCornerTurnShare;
+  bool no_continued_tips = true; // no recent stroke leaves an arrow's tip forward (arrow_tip.hpp)
+  // The half-angle of the cone around the shaft's direction a continuation stays in.
+  double max_continuation_angle = kMaxContinuationAngle;
+  bool arrow_when_refused = true; // a refused winner gives way to the union's arrow (keep_union)
+  bool a_stroke_per_arrow_part = true; // an arrow has at most a stroke per shaft and barb
+  bool no_round_arrow_pieces = true;   // no stroke of an arrow is a circle or ellipse alone
 };
 GroupRules& group_rules();
+
+struct UnionRecognition;
+// Whether the grouper keeps the union `u` of `strokes` as one group: its winner is drawn as its
+// shape is in pieces (group_implausibility) and, for an arrow, no stroke of `others` (the recent
+// strokes outside the union) leaves its tip forward (tip_continued). A winner refused gives way
+// to the union's best certified, plausible arrow (read_as_arrow) when that one passes: `u` then
+// holds the arrow.
+bool keep_union(UnionRecognition& u, std::span<const StrokeInput> strokes,
+                std::span<const StrokeInput* const> others, const RecognizerConfig& config);
 
 } // namespace penshape::recognize_detail

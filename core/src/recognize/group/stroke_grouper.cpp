@@ -223,7 +223,11 @@ BestUnion best_union(const UnionContext& c, const std::vector<std::size_t>& rece
     if (!connected(keys.size(), slack, 2.0 * tol.pen_radius + tol.epsilon, gap)) continue;
     UnionRecognition u = recognize_detail::recognize_union_detail(inputs, c.recognizer);
     if (!snaps(u.recognition)) continue;
-    if (!recognize_detail::group_implausibility(u.recognition, inputs, c.config).empty()) continue;
+    std::vector<const StrokeInput*> others; // the recent strokes outside the union
+    for (const auto& [k, kept] : c.strokes) {
+      if (!std::binary_search(members.begin(), members.end(), k)) others.push_back(&kept);
+    }
+    if (!recognize_detail::keep_union(u, inputs, others, c.config)) continue;
     const std::size_t count = members.size() + 1;
     if (!out.best || count > best_count || (count == best_count && u.rank < out.best->rank)) {
       out.best = std::move(u);
