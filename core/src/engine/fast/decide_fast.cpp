@@ -291,14 +291,14 @@ class FastDecision {
 
 DeconstructResult decide_fast(const PolygonSet& q_any, const DeconstructParams& params,
                               const CancelHook& cancel, const DeconstructLimits& limits,
-                              bool* lost_features, std::unique_ptr<FastWork>* keep) {
+                              bool* lost_features, std::unique_ptr<FastWork>* keep, bool oriented) {
   const auto start = std::chrono::steady_clock::now();
   DeconstructResult result;
   result.engine = EngineKind::kFast;
   result.params = params;
   // The grid keeps each ring's vertex order: orient Q exactly first (deconstruct() already has).
   PolygonSet fixed;
-  const bool needs_fix = !has_normalized_orientation(q_any);
+  const bool needs_fix = !oriented && !has_normalized_orientation(q_any);
   if (needs_fix) {
     fixed = q_any;
     normalize_orientation(fixed);
