@@ -131,6 +131,18 @@ TEST(FastEngine, SharedPolygonsAtThreeRadii) {
   }
 }
 
+// The interior chain first insets a simplified stage-1 region a little deeper (faster); a thin
+// Π̂ can vanish there, and the chain then insets the region itself as it used to. The authors'
+// S (width 273) at r = 364, eps = 3r/4 is such a case: Π̂ is a sliver, YES only through the
+// second candidate.
+TEST(FastEngine, ThinInteriorCandidateIsStillFound) {
+  PENSHAPE_SHARED_OR_SKIP(file, "polygons/authors_S.txt");
+  const PolygonSet q = read_polygon_file(file.string());
+  ASSERT_EQ(width(q), Rational(273));
+  const Rational r = 364, eps = r * 3 / 4;
+  expect_yes_solution_checks(q, decide(q, params_of(r, eps, eps / 8)), "authors_S r=364");
+}
+
 TEST(FastEngine, GeneratedPolygonsAtThreeRadii) {
   for (const auto& g : gen::polygon_suite(23)) expect_checked_at_three_radii(generated(g), g.name);
 }
