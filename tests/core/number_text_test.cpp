@@ -95,5 +95,17 @@ TEST(NumberText, MalformedNumbersKeepTheirErrors) {
   }
 }
 
+// Every white space character of the C locale separates fields, pads lines and blanks a line
+// (the reader tests them itself since issue 26, without std::isspace).
+TEST(NumberText, EveryWhiteSpaceCharacterSeparates) {
+  const PolygonSet q = read_xy("\t0 \v0\r\n1\f0\n 1\t1 \n\n \t\v\f\r\n5 5\n6 5\n6 6\n");
+  ASSERT_EQ(q.polygons.size(), 2U);
+  ASSERT_EQ(q.polygons[0].outer.size(), 3U);
+  EXPECT_EQ(q.polygons[0].outer[1].x, Rational(1));
+  EXPECT_EQ(q.polygons[0].outer[2].y, Rational(1));
+  EXPECT_EQ(q.polygons[1].outer.size(), 3U);
+  EXPECT_THROW(read_xy("0 0\n1 0\n1\a1\n"), ParseError); // BEL is not white space
+}
+
 } // namespace
 } // namespace penshape

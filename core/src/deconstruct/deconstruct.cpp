@@ -32,7 +32,8 @@ DeconstructResult decide_default(const PolygonSet& q, const DeconstructParams& p
                                  const CancelHook& cancel, const DeconstructLimits& limits,
                                  std::unique_ptr<detail::FastWork>* keep) {
   bool lost = false;
-  DeconstructResult result = detail::decide_fast(q, params, cancel, limits, &lost, keep);
+  // decide_valid() has oriented q: the engine need not check it again.
+  DeconstructResult result = detail::decide_fast(q, params, cancel, limits, &lost, keep, true);
   if (result.answer != Answer::kUndecided || !lost) return result;
   if (keep != nullptr) keep->reset();
   DeconstructResult exact = detail::decide_reference(q, params, cancel, limits);

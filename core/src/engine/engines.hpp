@@ -24,11 +24,13 @@ DeconstructResult decide_reference(const PolygonSet& q, const DeconstructParams&
 // when the answer is UNDECIDED and the integer grid could not represent all of Q for the
 // certificates (a feature thinner than a grid unit: a sliver ring, a non-simple rounding, a ring
 // the rounding nearly collapses): that UNDECIDED may be one the reference engine settles, and
-// deconstruct() asks it. `keep` (optional) receives what the decision built.
+// deconstruct() asks it. `keep` (optional) receives what the decision built. `oriented`: the
+// caller guarantees outer rings counterclockwise and holes clockwise (deconstruct() has made them
+// so), which the engine otherwise checks first.
 DeconstructResult decide_fast(const PolygonSet& q, const DeconstructParams& params,
                               const CancelHook& cancel, const DeconstructLimits& limits,
                               bool* lost_features = nullptr,
-                              std::unique_ptr<FastWork>* keep = nullptr);
+                              std::unique_ptr<FastWork>* keep = nullptr, bool oriented = false);
 
 // Fewer vertices for a YES solution of decide_fast (same q and params): indented caps removed
 // (Theorem 5) and coarser simplification, each candidate certified by the fast engine's

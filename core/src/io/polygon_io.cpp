@@ -16,6 +16,12 @@ constexpr long kMaxExponent = 400;
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
+// The C locale's white space, without std::isspace's call and locale lookup per character (it
+// was 2% of reading a 200,000-vertex file).
+constexpr bool is_space(char c) {
+  return c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r';
+}
+
 // Plain decimals [+-]digits[.digits] with at most 19 digits (so the digits, and 10^scale, fit in
 // 64 bits), read without strings or big-number parsing: the value is m / 10^scale exactly, put in
 // lowest terms by one gcd. False leaves `t` to the general reader (exponents, fractions, longer
@@ -160,9 +166,8 @@ std::size_t lines_until_blank(std::string_view text, std::size_t pos) {
   while (pos < text.size()) {
     const std::size_t end = std::min(text.find('\n', pos), text.size());
     const auto blank = std::all_of(text.begin() + static_cast<std::ptrdiff_t>(pos),
-                                   text.begin() + static_cast<std::ptrdiff_t>(end), [](char c) {
-                                     return std::isspace(static_cast<unsigned char>(c));
-                                   });
+                                   text.begin() + static_cast<std::ptrdiff_t>(end),
+                                   [](char c) { return is_space(c); });
     if (blank) break;
     ++lines;
     pos = end + 1;
@@ -216,8 +221,8 @@ PolygonSet assemble_by_nesting(std::vector<Ring> rings) {
 }
 
 std::string_view trim(std::string_view s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+  while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
+  while (!s.empty() && is_space(s.back())) s.remove_suffix(1);
   return s;
 }
 
@@ -227,9 +232,9 @@ std::size_t first_two_fields(std::string_view s, std::array<std::string_view, 2>
   std::size_t count = 0;
   std::size_t i = 0;
   while (i < s.size()) {
-    while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+    while (i < s.size() && is_space(s[i])) ++i;
     const std::size_t start = i;
-    while (i < s.size() && !std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+    while (i < s.size() && !is_space(s[i])) ++i;
     if (i > start) {
       if (count < first.size()) first[count] = s.substr(start, i - start);
       ++count;
@@ -253,7 +258,7 @@ std::vector<Token> wkt_tokens(std::string_view text) {
     if (c == '\n') {
       ++line;
       ++i;
-    } else if (std::isspace(static_cast<unsigned char>(c))) {
+    } else if (is_space(c)) {
       ++i;
     } else if (c == '#') {
       while (i < text.size() && text[i] != '\n') ++i;
@@ -262,8 +267,8 @@ std::vector<Token> wkt_tokens(std::string_view text) {
       ++i;
     } else {
       const std::size_t start = i;
-      while (i < text.size() && !std::isspace(static_cast<unsigned char>(text[i])) &&
-             text[i] != '(' && text[i] != ')' && text[i] != ',') {
+      while (i < text.size() && !is_space(text[i]) && text[i] != '(' && text[i] != ')' &&
+             text[i] != ',') {
         ++i;
       }
       out.push_back({std::string(text.substr(start, i - start)), line});

@@ -4,12 +4,14 @@
 // answers across eps and delta on random polygons, and clear errors at the documented limits.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <random>
 #include <string>
 
 #include "engine/engines.hpp"
 #include "fast_test_support.hpp"
+#include "penshape/core/deconstruct.hpp"
 #include "penshape/core/polygon_io.hpp"
 #include "polygon_gen.hpp"
 #include "test_data.hpp"
@@ -129,6 +131,18 @@ TEST(FastEngine, SharedPolygonsAtThreeRadii) {
   }
 }
 
+// The interior chain first insets a simplified stage-1 region a little deeper (faster); a thin
+// Π̂ can vanish there, and the chain then insets the region itself as it used to. The authors'
+// S (width 273) at r = 364, eps = 3r/4 is such a case: Π̂ is a sliver, YES only through the
+// second candidate.
+TEST(FastEngine, ThinInteriorCandidateIsStillFound) {
+  PENSHAPE_SHARED_OR_SKIP(file, "polygons/authors_S.txt");
+  const PolygonSet q = read_polygon_file(file.string());
+  ASSERT_EQ(width(q), Rational(273));
+  const Rational r = 364, eps = r * 3 / 4;
+  expect_yes_solution_checks(q, decide(q, params_of(r, eps, eps / 8)), "authors_S r=364");
+}
+
 TEST(FastEngine, GeneratedPolygonsAtThreeRadii) {
   for (const auto& g : gen::polygon_suite(23)) expect_checked_at_three_radii(generated(g), g.name);
 }
@@ -230,6 +244,25 @@ TEST(FastEngine, CancelHookStopsTheComputation) {
   const Rational r = width(q) / 30;
   EXPECT_THROW(detail::decide_fast(q, params_of(r, r / 2, r / 16), [] { return true; }, {}),
                Cancelled);
+}
+
+// deconstruct() orients Q before the engine and tells it so (the engine then skips its own
+// check): a clockwise copy of a polygon gets the answer and solution of the polygon itself.
+TEST(FastEngine, ClockwiseInputIsOrientedOnceBeforeTheEngine) {
+  const PolygonSet q = generated(gen::country(4, 400, 1000.0));
+  PolygonSet clockwise = q;
+  std::reverse(clockwise.polygons[0].outer.begin(), clockwise.polygons[0].outer.end());
+  const Rational r = width(q) / 30;
+  const DeconstructParams p = params_of(r, r / 2, r / 16);
+  const DeconstructResult want = deconstruct(q, p);
+  const DeconstructResult got = deconstruct(clockwise, p);
+  ASSERT_EQ(want.answer, Answer::kYes);
+  EXPECT_EQ(got.answer, want.answer);
+  ASSERT_EQ(got.solution.polygons.size(), want.solution.polygons.size());
+  for (std::size_t i = 0; i < want.solution.polygons.size(); ++i) {
+    EXPECT_EQ(got.solution.polygons[i].outer, want.solution.polygons[i].outer);
+    EXPECT_EQ(got.solution.polygons[i].holes, want.solution.polygons[i].holes);
+  }
 }
 
 } // namespace

@@ -26,16 +26,18 @@ using namespace penshape::fast;
 
 // Budget of the working precision delta (grid units d), see README.md: every stage of each chain
 // loses less than d (the paper allows d per stage, Theorems 11 and 13): stage 1 loses
-// 2·margin + input + arc = 13d/16, stage 2 2·margin + arc = 9d/16, and the YES test of stage 3
-// is exact up to the simplification of P (d/32).
+// 2·margin + input + arc = 13d/16, stage 2 2·margin + arc = 9d/16 (the interior chain's
+// 2·margin + stage_input + arc = 13d/16), and the YES test of stage 3 is exact up to the
+// simplification of P (d/32).
 struct Budget {
   double margin;        // slack left for the certificates on each side
   double arc_tolerance; // chord depth of the round joins
   double simplify;      // Douglas-Peucker tolerance for P
   double input;         // Douglas-Peucker tolerance for the copy of Q̃ the chains offset
+  double stage_input;   // Douglas-Peucker tolerance for stage 1's result before the inset
 };
 
-Budget budget(double d) { return {d / 32.0, d / 2.0, d / 32.0, d / 4.0}; }
+Budget budget(double d) { return {d / 32.0, d / 2.0, d / 32.0, d / 4.0, d / 4.0}; }
 
 void check_cancel(const CancelHook& cancel) {
   if (cancel && cancel()) throw Cancelled();
@@ -198,13 +200,26 @@ class FastDecision {
   }
 
   // Interior chain (Algorithm 2 with margins) on Q_s: P ⊆ inset(offset(Q_s, eps - 2m - σ),
-  // r + 2m), then the certificate of yes_certificate.hpp.
+  // r + 2m), then the certificate of yes_certificate.hpp. Stage 1's result X is first
+  // simplified by s = stage_input and inset s deeper: a point whose disk of radius r' + s lies in
+  // the simplified X has its r' disk in X (the simplification moves ∂X by at most s, README.md),
+  // so the chain's bounds hold with s more loss, and the inset's Clipper pass meets far fewer
+  // crossings. When that candidate does not verify (a thin Π̂ the deeper inset loses), X itself
+  // is inset as before: every YES the former chain found is still found.
   bool try_yes() {
     if (!input_.index) return false;
     const IRegion q_eps = offset_stepped(q_simple(), eps_ - 2 * b_.margin - sigma_,
                                          b_.arc_tolerance, limits_, unit_, result_.disk_vertices);
     check_cancel(cancel_);
-    const IRegion pi_hat = offset_stepped(flatten(q_eps), -(r_ + 2 * b_.margin + b_.arc_tolerance),
+    YesCheckInput in = yes_check_input(input_, q_index_, frame_, q_, params_, b_.margin);
+    in.memo = &work_->memo.emplace(*input_.index, level_a(in), in.max_sagitta);
+    return yes_from(flatten(simplify_rings_only(q_eps, b_.stage_input)), b_.stage_input, in) ||
+           yes_from(flatten(q_eps), 0.0, in);
+  }
+
+  // The candidate inset(x, r + 2m + arc + extra), simplified: YES when it verifies.
+  bool yes_from(const IRings& x, double extra, const YesCheckInput& in) {
+    const IRegion pi_hat = offset_stepped(x, -(r_ + 2 * b_.margin + b_.arc_tolerance + extra),
                                           b_.arc_tolerance, limits_, unit_, result_.disk_vertices);
     check_cancel(cancel_);
     if (pi_hat.empty()) return false;
@@ -213,8 +228,6 @@ class FastDecision {
     if (p.empty() || !is_certifiable_region(SegmentIndex(flatten(p), r_ / 2.0))) {
       p = simplify(pi_hat, b_.simplify);
     }
-    YesCheckInput in = yes_check_input(input_, q_index_, frame_, q_, params_, b_.margin);
-    in.memo = &work_->memo.emplace(*input_.index, level_a(in), in.max_sagitta);
     if (!verify_yes(in, p, cancel_)) return false;
     result_.answer = Answer::kYes;
     result_.solution = to_polygon_set(frame_, p);
@@ -291,14 +304,14 @@ class FastDecision {
 
 DeconstructResult decide_fast(const PolygonSet& q_any, const DeconstructParams& params,
                               const CancelHook& cancel, const DeconstructLimits& limits,
-                              bool* lost_features, std::unique_ptr<FastWork>* keep) {
+                              bool* lost_features, std::unique_ptr<FastWork>* keep, bool oriented) {
   const auto start = std::chrono::steady_clock::now();
   DeconstructResult result;
   result.engine = EngineKind::kFast;
   result.params = params;
   // The grid keeps each ring's vertex order: orient Q exactly first (deconstruct() already has).
   PolygonSet fixed;
-  const bool needs_fix = !has_normalized_orientation(q_any);
+  const bool needs_fix = !oriented && !has_normalized_orientation(q_any);
   if (needs_fix) {
     fixed = q_any;
     normalize_orientation(fixed);
