@@ -123,9 +123,9 @@ TEST(InkBuilder, InvalidSampleThrowsAsOneShot) {
   const InkOptions options{.radius_mm = 0.5};
   std::vector<InkSample> s = random_stroke(rng, 150, false);
   s[70].x = std::nan("");
-  EXPECT_THROW(ink_polygon(s, options), InvalidInput);
-  EXPECT_THROW(built_ahead(s, 4, s, options), InvalidInput);
-  EXPECT_THROW(InkBuilder(options).polygon({}), InvalidInput);
+  EXPECT_THROW((void)ink_polygon(s, options), InvalidInput);
+  EXPECT_THROW((void)built_ahead(s, 4, s, options), InvalidInput);
+  EXPECT_THROW((void)InkBuilder(options).polygon({}), InvalidInput);
 }
 
 TEST(InkBuilder, RealStrokesEqualOneShot) {
