@@ -3,7 +3,9 @@
 // figure that stays meaningful on a loaded machine, where wall time measures the other programs)
 // beside wall time: the steps the daemon's grouping session runs for each finished stroke, each
 // timed on its own on the same strokes, added in drawing order as the daemon's strand adds them.
-//   ink      the ink polygon Q and its proto form (core ink_polygon + to_proto)
+//   ink      the ink polygon Q and its proto form (core ink_polygon + to_proto); of it at
+//            pen-up: what is left when its chunks were built while the pen was down (InkBuilder,
+//            as the daemon does); the two Q must be equal bit for bit (a mismatch is printed)
 //   intent   the writing/drawing decision with the 24 strokes before it as context: as before
 //            (decide_intent on that page, every stroke measured again), and as the daemon now
 //            decides it (LiveIntent: each stroke measured once)
@@ -33,6 +35,7 @@
 #include "bench_support.hpp"
 #include "penshape/core/group_recognize.hpp"
 #include "penshape/core/ink.hpp"
+#include "penshape/core/ink_builder.hpp"
 #include "penshape/core/intent.hpp"
 #include "penshape/core/recognize.hpp"
 #include "penshape/daemon/ink_analyzer.hpp"
@@ -122,6 +125,32 @@ struct PathStepTimes {
   }
 };
 
+// Q as the daemon's pen-up builds it: the chunks the samples complete built ahead (untimed, as
+// the daemon builds them while the pen is down), then the rest and the union with the proto form
+// (timed). Q must equal the one-shot one bit for bit (a mismatch is printed).
+struct AheadInkTimes {
+  StepTime penup;
+  std::size_t mismatches = 0;
+  void time(const Stroke& stroke, const InkOptions& options, const InkPolygon& one_shot) {
+    const std::vector<InkSample> samples = ink_samples(stroke, options);
+    InkBuilder builder(options);
+    builder.add(samples);
+    while (builder.build_next()) {
+    }
+    InkPolygon q;
+    v1::PolygonSet proto, expected;
+    penup.time([&] {
+      q = builder.polygon(samples);
+      daemon::to_proto(q.region, &proto);
+    });
+    daemon::to_proto(one_shot.region, &expected);
+    if (proto.SerializeAsString() != expected.SerializeAsString() ||
+        q.hausdorff_bound != one_shot.hausdorff_bound) {
+      ++mismatches;
+    }
+  }
+};
+
 // Times each step on `strokes` (already back to back in time, in drawing order) and prints one
 // row per step: thread CPU p50/p99/max, then wall p50/p99.
 inline void print_penup_stages(bool json, const std::string& tag,
@@ -135,6 +164,7 @@ inline void print_penup_stages(bool json, const std::string& tag,
   LiveIntent live_context;
   InkScanTimes ink_scan;
   PathStepTimes path_steps;
+  AheadInkTimes ahead;
   StrokeGrouper core_grouper(GroupingConfig{}, config);
   auto whole = analyzer.group_session(settings, GroupingConfig{});
   auto live = analyzer.group_session(settings, GroupingConfig{});
@@ -156,6 +186,7 @@ inline void print_penup_stages(bool json, const std::string& tag,
       v1::PolygonSet proto;
       daemon::to_proto(q.region, &proto);
     });
+    ahead.time(stroke, ink_options, q);
     intent.time([&] {
       std::vector<IntentStroke> page(context.begin(), context.end());
       page.emplace_back(input.samples);
@@ -180,6 +211,7 @@ inline void print_penup_stages(bool json, const std::string& tag,
   }
   const std::pair<const char*, StepTime*> steps[] = {
       {"ink polygon + proto", &ink},
+      {"  of it at pen-up, chunks built ahead", &ahead.penup},
       {"intent decision, page (as before)", &intent},
       {"intent decision, LiveIntent", &live_intent},
       {"stroke alone, ink certificate", &alone},
@@ -203,6 +235,10 @@ inline void print_penup_stages(bool json, const std::string& tag,
                   ("step: " + std::string(name) + tag).c_str(), c.n, c.p50, c.p99, c.max, w.p50,
                   w.p99);
     }
+  }
+  if (ahead.mismatches > 0) {
+    std::printf("ink polygon: built ahead differs from one-shot on %zu strokes (a bug)\n",
+                ahead.mismatches);
   }
   if (ink_scan.mismatches > 0) {
     std::printf(

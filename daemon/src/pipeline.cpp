@@ -94,6 +94,7 @@ void Pipeline::sample(const std::string& device_id, std::uint64_t stroke_id,
     it->second.open.push_back(sample);
     ++it->second.samples;
     maybe_preview(device_id, it->second);
+    maybe_work_ahead(device_id, it->second);
     work = on_hold_sample(device_id, it->second, sample);
   }
   // Outside mutex_: the strand's accounting takes it (job_started).
@@ -204,6 +205,42 @@ void Pipeline::maybe_preview(const std::string& device_id, Drawing& drawing) {
                            [ended = drawing.ended] { return ended->load(); });
   if (!state_.preview_pool.submit(std::move(job), stop)) {
     drawing.preview_running = false;
+    if (--in_flight_ == 0) idle_.notify_all();
+  }
+}
+
+// Called with mutex_ held: a grouped stroke's ink polygon is built on a stroke worker while the
+// pen is down, a chunk at a time (the pen-up then reuses it).
+void Pipeline::maybe_work_ahead(const std::string& device_id, Drawing& drawing) {
+  if (drawing.ahead_running || drawing.samples < drawing.ahead_asked + kWorkAheadSamples) return;
+  if (!grouping_.groups()) return; // analyze() alone builds Q at once
+  drawing.ahead_running = true;
+  drawing.ahead_asked = drawing.samples;
+  auto job = [this, device_id, id = drawing.stroke_id, tablet = drawing.tablet,
+              blocks = drawing.seal(), count = drawing.samples,
+              settings = settings_for(state_, drawing.tablet)](const StopCondition& stop) {
+    try {
+      if (!stop.cancelled()) { // a stroke already ended: its pen-up took over
+        state_.analyzer->work_ahead(assemble(id, tablet, blocks, count), settings,
+                                    cancel_hook(stop));
+      }
+    } catch (...) {
+      // Work ahead is optional: the pen-up does whatever is missing (and reports its errors).
+    }
+    {
+      std::lock_guard lock(mutex_);
+      const auto it = drawing_.find(device_id);
+      if (it != drawing_.end() && it->second.stroke_id == id) it->second.ahead_running = false;
+    }
+    job_done();
+  };
+  ++in_flight_;
+  // It stops once its stroke ends: the pen-up takes over what is left.
+  const StopCondition stop(
+      std::chrono::steady_clock::now() + std::chrono::seconds(state_.limits.max_call_seconds),
+      [ended = drawing.ended] { return ended->load(); });
+  if (!state_.stroke_pool.submit(std::move(job), stop)) {
+    drawing.ahead_running = false;
     if (--in_flight_ == 0) idle_.notify_all();
   }
 }

@@ -23,6 +23,7 @@
 #include "hold_snap.hpp"
 #include "hold_state.hpp"
 #include "live_grouping.hpp"
+#include "penshape/core/ink.hpp"
 
 namespace penshape::daemon {
 
@@ -30,6 +31,9 @@ class Pipeline final : public SampleSink {
  public:
   // At most one preview per device per interval (about three display frames).
   static constexpr std::chrono::milliseconds kPreviewInterval{50};
+  // A grouped stroke's ink polygon is built ahead each time this many samples arrived (its
+  // chunks' length: InkBuilder).
+  static constexpr std::size_t kWorkAheadSamples = kInkChunkSegments;
 
   explicit Pipeline(DaemonState& state)
       : state_(state),
@@ -67,6 +71,9 @@ class Pipeline final : public SampleSink {
     std::size_t samples = 0;
     std::chrono::steady_clock::time_point last_preview{};
     bool preview_running = false;
+    // Work ahead (StrokeAnalyzer::work_ahead): samples it was last asked with, and one at a time.
+    std::size_t ahead_asked = 0;
+    bool ahead_running = false;
     // Set when the stroke ends: its preview job (if any) stops.
     std::shared_ptr<std::atomic<bool>> ended = std::make_shared<std::atomic<bool>>(false);
     // Hold to snap (snap_trigger hold or both, and an analyzer that groups).
@@ -82,6 +89,7 @@ class Pipeline final : public SampleSink {
       sealed.clear();
       open.clear();
       samples = 0;
+      ahead_asked = 0;
       detector.reset();
       hold.reset();
       hold_only = false;
@@ -107,6 +115,7 @@ class Pipeline final : public SampleSink {
   void job_started();
   void job_done();
   void maybe_preview(const std::string& device_id, Drawing& drawing);
+  void maybe_work_ahead(const std::string& device_id, Drawing& drawing);
   void maybe_deconstruct(const std::string& device_id, std::uint64_t stroke_id,
                          const v1::PolygonSet& ink, const PenSettings& settings);
 

@@ -16,6 +16,8 @@
 #include "penshape/daemon/proto_convert.hpp"
 #include "penshape/proto/shape_kind.hpp"
 
+#include "ink_ahead.hpp"
+
 namespace penshape::daemon {
 namespace {
 
@@ -81,9 +83,12 @@ class GroupSession final : public StrokeGroupSession {
   // A stroke's ink polygon Q, then its proto form (on the worker that builds Q, or where the
   // answer needs it): the recognizer waits for Q alone, to certify on it.
   struct StrokeInk {
-    StrokeInk(std::vector<InkSample> samples, const InkOptions& options)
-        : polygon(
-              [samples = std::move(samples), options] { return ink_polygon(samples, options); }),
+    // `ahead`: the chunks of Q built while the stroke was drawn (null: none).
+    StrokeInk(std::vector<InkSample> samples, const InkOptions& options,
+              std::shared_ptr<InkAhead> ahead)
+        : polygon([samples = std::move(samples), options, ahead = std::move(ahead)] {
+            return ahead ? ahead->polygon(samples, options) : ink_polygon(samples, options);
+          }),
           proto([this] {
             v1::PolygonSet out;
             to_proto(polygon.get().region, &out);
@@ -104,11 +109,14 @@ class GroupSession final : public StrokeGroupSession {
 
  public:
   // `finished` is told each finished stroke's id (the analyzer drops its preview state).
+  // `ahead` gives a stroke's Q built while it was drawn (or null).
   GroupSession(const PenSettings& settings, const GroupingConfig& grouping,
-               std::function<void(std::uint64_t)> finished)
+               std::function<void(std::uint64_t)> finished,
+               std::function<std::shared_ptr<InkAhead>(std::uint64_t)> ahead)
       : settings_(settings),
         grouper_(grouping, config_for(settings)),
-        finished_(std::move(finished)) {}
+        finished_(std::move(finished)),
+        ahead_(std::move(ahead)) {}
 
   using StrokeGroupSession::add;
   GroupedStrokeAnalysis add(const Stroke& stroke, bool with_ink, const CancelHook& cancel,
@@ -156,6 +164,7 @@ class GroupSession final : public StrokeGroupSession {
   GroupedStrokeAnalysis add_stroke(const Stroke& stroke, bool with_ink, bool held,
                                    const CancelHook& cancel, const InkOffload& offload) {
     GroupedStrokeAnalysis out;
+    std::shared_ptr<InkAhead> ahead = with_ink && ahead_ ? ahead_(stroke.id) : nullptr;
     if (with_ink && finished_) finished_(stroke.id);
     StrokeInput input;
     input.samples = path_mm(stroke);
@@ -168,7 +177,7 @@ class GroupSession final : public StrokeGroupSession {
     if (with_ink) {
       // The job owns what it reads: a helper may start it after this session is gone.
       const InkOptions options = ink_options_for(settings_);
-      ink = std::make_shared<StrokeInk>(ink_samples(stroke, options), options);
+      ink = std::make_shared<StrokeInk>(ink_samples(stroke, options), options, std::move(ahead));
       if (offload.run_elsewhere) {
         (void)offload.run_elsewhere([ink] {
           if (!ink->abandoned) ink->build_if_not_started();
@@ -210,6 +219,7 @@ class GroupSession final : public StrokeGroupSession {
   PenSettings settings_;
   StrokeGrouper grouper_;
   std::function<void(std::uint64_t)> finished_;
+  std::function<std::shared_ptr<InkAhead>(std::uint64_t)> ahead_;
   // The last 24 strokes' measures (core's default context), each measured once.
   LiveIntent intent_;
 };
@@ -243,10 +253,20 @@ class RecognizingAnalyzer final : public StrokeAnalyzer,
 
   std::unique_ptr<StrokeGroupSession> group_session(const PenSettings& settings,
                                                     const GroupingConfig& grouping) override {
-    return std::make_unique<GroupSession>(settings, grouping,
-                                          [self = weak_from_this()](std::uint64_t id) {
-                                            if (auto analyzer = self.lock()) analyzer->forget(id);
-                                          });
+    return std::make_unique<GroupSession>(
+        settings, grouping,
+        [self = weak_from_this()](std::uint64_t id) {
+          if (auto analyzer = self.lock()) analyzer->forget(id);
+        },
+        [self = weak_from_this()](std::uint64_t id) {
+          auto analyzer = self.lock();
+          return analyzer ? analyzer->ink_ahead_.find(id) : nullptr;
+        });
+  }
+
+  void work_ahead(const Stroke& partial, const PenSettings& settings,
+                  const CancelHook& cancel) override {
+    ink_ahead_.open(partial.id, ink_options_for(settings))->feed(partial, cancel);
   }
 
   std::vector<v1::RecognizedGroup> recognize_group(const std::vector<Stroke>& strokes,
@@ -331,11 +351,13 @@ class RecognizingAnalyzer final : public StrokeAnalyzer,
     return it->second;
   }
   void forget(std::uint64_t stroke_id) {
+    ink_ahead_.forget(stroke_id); // a pen-up's analysis already holds what it needs
     std::lock_guard lock(mutex_); // a preview still running keeps its own reference
     live_.erase(stroke_id);
   }
   std::mutex mutex_; // guards live_ only
   std::map<std::uint64_t, std::shared_ptr<State>> live_;
+  InkAheadTable ink_ahead_; // live strokes' Q in progress
 };
 
 } // namespace

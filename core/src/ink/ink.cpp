@@ -1,4 +1,5 @@
-// The ink polygon: union of per-segment hulls of pen disks with Clipper (int64), see ink.hpp.
+// The ink polygon: union of per-segment hulls of pen disks with Clipper (int64), in chunks of the
+// stroke (ink_chunks.hpp), see ink.hpp.
 #include "penshape/core/ink.hpp"
 
 #include <clipper.hpp>
@@ -10,6 +11,7 @@
 #include <numbers>
 #include <string>
 
+#include "ink_chunks.hpp"
 #include "ink_union.hpp"
 #include "penshape/core/base.hpp"
 
@@ -250,7 +252,7 @@ std::vector<InkSample> ink_samples(const Stroke& stroke, const InkOptions& optio
   return out;
 }
 
-namespace {
+namespace ink_detail {
 
 // The options' maximal error, after checking the options and the sample count.
 double checked_max_error(const InkOptions& options, std::size_t total) {
@@ -275,35 +277,44 @@ double checked_max_error(const InkOptions& options, std::size_t total) {
 }
 
 // The largest radius and coordinate magnitude of the samples (mm), after checking each sample.
-struct Reach {
-  double r_min = HUGE_VAL;
-  double r_max = 0;
-  double extent = 0;
-};
+void widen_reach(const std::vector<InkSample>& samples, std::size_t j, Reach& reach) {
+  if (samples.empty()) throw InvalidInput("stroke " + std::to_string(j) + " has no samples");
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    check_finite(samples[i].x, "x", i);
+    check_finite(samples[i].y, "y", i);
+    check_finite(samples[i].radius, "radius", i);
+    if (!(samples[i].radius > 0)) {
+      throw InvalidInput("sample " + std::to_string(i) + ": radius must be positive");
+    }
+    if (std::abs(samples[i].x) > kMaxCoordinateMm || std::abs(samples[i].y) > kMaxCoordinateMm) {
+      throw InvalidInput("sample " + std::to_string(i) + ": coordinate beyond 10^9 mm");
+    }
+    reach.r_min = std::min(reach.r_min, samples[i].radius);
+    reach.r_max = std::max(reach.r_max, samples[i].radius);
+    reach.extent = std::max({reach.extent, std::abs(samples[i].x), std::abs(samples[i].y)});
+  }
+}
 
 Reach checked_reach(const std::vector<std::vector<InkSample>>& strokes) {
   Reach reach;
-  for (std::size_t j = 0; j < strokes.size(); ++j) {
-    const auto& samples = strokes[j];
-    if (samples.empty()) throw InvalidInput("stroke " + std::to_string(j) + " has no samples");
-    for (std::size_t i = 0; i < samples.size(); ++i) {
-      check_finite(samples[i].x, "x", i);
-      check_finite(samples[i].y, "y", i);
-      check_finite(samples[i].radius, "radius", i);
-      if (!(samples[i].radius > 0)) {
-        throw InvalidInput("sample " + std::to_string(i) + ": radius must be positive");
-      }
-      if (std::abs(samples[i].x) > kMaxCoordinateMm || std::abs(samples[i].y) > kMaxCoordinateMm) {
-        throw InvalidInput("sample " + std::to_string(i) + ": coordinate beyond 10^9 mm");
-      }
-      reach.r_min = std::min(reach.r_min, samples[i].radius);
-      reach.r_max = std::max(reach.r_max, samples[i].radius);
-      reach.extent = std::max({reach.extent, std::abs(samples[i].x), std::abs(samples[i].y)});
-    }
-  }
+  for (std::size_t j = 0; j < strokes.size(); ++j) widen_reach(strokes[j], j, reach);
   if (reach.r_max > kMaxCoordinateMm) throw InvalidInput("the pen radius exceeds 10^9 mm");
   return reach;
 }
+
+Reach checked_reach(const std::vector<InkSample>& samples) {
+  Reach reach;
+  widen_reach(samples, 0, reach);
+  if (reach.r_max > kMaxCoordinateMm) throw InvalidInput("the pen radius exceeds 10^9 mm");
+  return reach;
+}
+
+} // namespace ink_detail
+
+namespace {
+
+using ink_detail::Plan;
+using ink_detail::Reach;
 
 // What an offset stroke goes through (the most of any piece): four roundings of half a grid
 // diagonal (input points, offset vertices, the offset's own union, the final union) and two
@@ -331,17 +342,9 @@ double choose_grid(double max_error, const Reach& reach) {
   return rho_there == rho ? grid : grid_for(max_error, rho_there);
 }
 
-// The grid, the disk polygon and the bound for each kind of piece.
-struct Plan {
-  double grid = 0;
-  std::size_t k = 0;
-  double tau = 0;
-  double arc_tolerance = 0;
-  double hull_bound = 0;
-  double offset_bound = 0;
-  double final_union = 0; // the final union's share of either bound (rounding, doubles, sweep)
-  double min_radius = 0;  // mm: smaller disks are drawn this large
-};
+} // namespace
+
+namespace ink_detail {
 
 Plan plan_for(double max_error, const Reach& reach) {
   Plan plan;
@@ -378,6 +381,10 @@ Plan plan_for(double max_error, const Reach& reach) {
               clipper_turning(r_max, plan.arc_tolerance), up(kOffsetUnions * per_union), widened});
   return plan;
 }
+
+} // namespace ink_detail
+
+namespace {
 
 // The k-gon inscribed in a sample's disk, rounded onto the grid.
 class DiskPolygon {
@@ -416,65 +423,94 @@ void add_offset(const std::vector<InkSample>& kept, const Plan& plan, Grid grid,
   pieces.insert(pieces.end(), outline.begin(), outline.end());
 }
 
-// The pieces of one stroke; returns the bound that holds for them.
-double add_stroke(const std::vector<InkSample>& samples, const Plan& plan, Paths& pieces) {
+} // namespace
+
+namespace ink_detail {
+
+ChunkPieces build_chunk(const InkSample* first, std::size_t count, const Plan& plan) {
   const Grid grid{1.0 / plan.grid};
-  std::vector<InkSample> widened = samples;
+  std::vector<InkSample> widened(first, first + count);
   for (InkSample& x : widened) x.radius = std::max(x.radius, plan.min_radius);
   const std::vector<InkSample> kept = simplify(widened, plan.tau);
   const bool constant_radius = std::all_of(kept.begin(), kept.end(), [&](const InkSample& x) {
     return x.radius == kept.front().radius;
   });
+  ChunkPieces out;
+  out.grid = plan.grid;
   if (constant_radius && kept.size() > 1) {
-    add_offset(kept, plan, grid, pieces);
-    return plan.offset_bound;
+    out.offset = true;
+    add_offset(kept, plan, grid, out.paths);
+  } else {
+    out.k = plan.k;
+    const DiskPolygon disk(plan.k, grid);
+    if (kept.size() == 1) {
+      Path one;
+      disk.add(one, kept.front());
+      out.paths.push_back(convex_hull(std::move(one)));
+    }
+    // Varying radius: the hull of the two end disks per segment.
+    for (std::size_t i = 0; i + 1 < kept.size(); ++i) {
+      Path both;
+      both.reserve(2 * plan.k);
+      disk.add(both, kept[i]);
+      disk.add(both, kept[i + 1]);
+      out.paths.push_back(convex_hull(std::move(both)));
+    }
   }
-  const DiskPolygon disk(plan.k, grid);
-  if (kept.size() == 1) {
-    Path one;
-    disk.add(one, kept.front());
-    pieces.push_back(convex_hull(std::move(one)));
-    return plan.hull_bound;
-  }
-  // Varying radius: the hull of the two end disks per segment.
-  for (std::size_t i = 0; i + 1 < kept.size(); ++i) {
-    Path both;
-    both.reserve(2 * plan.k);
-    disk.add(both, kept[i]);
-    disk.add(both, kept[i + 1]);
-    pieces.push_back(convex_hull(std::move(both)));
-  }
-  return plan.hull_bound;
+  out.pinch = clipper_pinch_factor(out.paths);
+  return out;
 }
 
-} // namespace
+bool same_pieces(const ChunkPieces& pieces, const Plan& plan) {
+  return pieces.grid == plan.grid && (pieces.offset || pieces.k == plan.k);
+}
 
-InkPolygon ink_polygon(const std::vector<std::vector<InkSample>>& strokes,
-                       const InkOptions& options) {
-  std::size_t total = 0;
-  for (const auto& stroke : strokes) total += stroke.size();
-  const double max_error = checked_max_error(options, total);
-  const Plan plan = plan_for(max_error, checked_reach(strokes));
+InkPolygon assemble(const std::vector<const ChunkPieces*>& chunks, const Plan& plan) {
   InkPolygon result;
   result.grid = plan.grid;
   result.disk_vertices = plan.k;
   Paths pieces;
-  for (const auto& samples : strokes) {
-    result.hausdorff_bound = std::max(result.hausdorff_bound, add_stroke(samples, plan, pieces));
+  double pinch = 1.0;
+  for (const ChunkPieces* chunk : chunks) {
+    const double bound = chunk->offset ? plan.offset_bound : plan.hull_bound;
+    result.hausdorff_bound = std::max(result.hausdorff_bound, bound);
+    pinch = std::max(pinch, chunk->pinch);
+    pieces.insert(pieces.end(), chunk->paths.begin(), chunk->paths.end());
   }
   // Sharp piece corners (a disk far below the grid's scale beside a large one) let the final,
   // StrictlySimple union pinch off more than its sweep term (ink_union.hpp).
-  const double pinch = ink_detail::clipper_pinch_factor(pieces);
   if (pinch > 1) {
     result.hausdorff_bound = up(result.hausdorff_bound + up((pinch - 1) * plan.final_union));
   }
   ClipperLib::PolyTree tree;
-  if (!ink_detail::clipper_union(pieces, tree)) {
+  if (!clipper_union(pieces, tree)) {
     throw InvalidInput("the union of the pen hulls failed (coordinates out of range)");
   }
   for (const ClipperLib::PolyNode* node : tree.Childs) collect(*node, result.grid, result.region);
   normalize_orientation(result.region);
   return result;
+}
+
+} // namespace ink_detail
+
+InkPolygon ink_polygon(const std::vector<std::vector<InkSample>>& strokes,
+                       const InkOptions& options) {
+  std::size_t total = 0;
+  for (const auto& stroke : strokes) total += stroke.size();
+  const double max_error = ink_detail::checked_max_error(options, total);
+  const Plan plan = ink_detail::plan_for(max_error, ink_detail::checked_reach(strokes));
+  std::vector<ink_detail::ChunkPieces> chunks;
+  for (const auto& samples : strokes) {
+    for (std::size_t c = 0; c < ink_detail::chunk_count(samples.size()); ++c) {
+      const std::size_t first = c * ink_detail::kChunkSegments;
+      const std::size_t count = std::min(ink_detail::kChunkSegments + 1, samples.size() - first);
+      chunks.push_back(ink_detail::build_chunk(samples.data() + first, count, plan));
+    }
+  }
+  std::vector<const ink_detail::ChunkPieces*> all;
+  all.reserve(chunks.size());
+  for (const auto& chunk : chunks) all.push_back(&chunk);
+  return ink_detail::assemble(all, plan);
 }
 
 InkPolygon ink_polygon(const std::vector<InkSample>& samples, const InkOptions& options) {

@@ -5,8 +5,13 @@
 // a point (x, y) in device units is (x / x_resolution, y / y_resolution) mm; a resolution of 0
 // (unknown) takes device units as millimetres).
 //
-// Construction: the stroke's samples, in order, form a polyline (one sample: a point), first
-// simplified (Douglas-Peucker on position plus radius, tolerance tau). Each segment sweeps the
+// Construction: the stroke's samples, in order, form a polyline (one sample: a point), cut into
+// chunks of kInkChunkSegments segments from its first sample (consecutive chunks share their end
+// sample), each chunk simplified on its own (Douglas-Peucker on position plus radius, tolerance
+// tau, keeping the chunk's ends) and turned into pieces on its own as below; Q is the one union
+// of all chunks' pieces. Chunks let Q be built while the stroke is drawn (ink_builder.hpp) with
+// the same result; each chunk's pieces go through the same roundings and unions as a whole
+// stroke's would, so the bound below holds for them alike. Each segment sweeps the
 // convex hull of the pen disks at its two ends; Q is the union of these hulls (Clipper, int64,
 // non-zero fill; with one radius throughout, Clipper's round-joined offset of the open
 // polyline, the same region with arcs of the same accuracy). So doubling back, self-crossings
@@ -49,6 +54,9 @@
 
 namespace penshape {
 
+// Segments per chunk of a stroke (above).
+inline constexpr std::size_t kInkChunkSegments = 64;
+
 struct InkOptions {
   double radius_mm = 0.5;            // pen radius (at full pressure), > 0
   double max_error_mm = 0.0;         // bound on the total approximation error; 0: radius_mm / 50
@@ -56,6 +64,7 @@ struct InkOptions {
   double min_fraction = 0.25;        // radius fraction at zero pressure, in [0, 1]
   double gamma = 1.0;                // pressure exponent, > 0
   std::size_t max_samples = 100'000; // longer strokes are InvalidInput
+  bool operator==(const InkOptions&) const = default;
 };
 
 // A sample in millimetres with its pen radius.

@@ -121,6 +121,11 @@ class StrokeAnalyzer {
                                          const CancelHook& /*cancel*/) {
     return {};
   }
+  // Work ahead on a live stroke while it is drawn (its ink polygon's chunks), reused by the
+  // stroke's pen-up analysis. `partial` holds the samples so far. Called on a stroke worker now and
+  // then, never twice at once for one stroke; optional: a pen-up does whatever was not done.
+  virtual void work_ahead(const Stroke& /*partial*/, const PenSettings& /*settings*/,
+                          const CancelHook& /*cancel*/) {}
 };
 
 } // namespace penshape::daemon
