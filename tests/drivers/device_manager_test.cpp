@@ -324,7 +324,11 @@ TEST(DeviceManager, ReplayYieldsTheStrokesOfTheLivePath) {
 
   auto backend = std::make_unique<FakeBackend>();
   FakeBackend* fake = backend.get();
-  fake->make_source = [&] {
+  // The recording is served once: the device stays plugged, so a rescan after the replay ended
+  // may open it again (a quiet source then), which must not replay the strokes a second time.
+  fake->make_source = [&rec, served = false]() mutable -> std::unique_ptr<ReportSource> {
+    if (served) return std::make_unique<FakeSource>();
+    served = true;
     return std::make_unique<RecordingSource>(rec.events, ReplaySpeed::kAsFastAsPossible);
   };
   Journal j;
