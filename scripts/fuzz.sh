@@ -46,6 +46,10 @@ copy_all "$work/seeds-descriptor" "" "${descriptors[@]}"
 mapfile -t texts < <({ ls recordings/*.hidrec; find "$shared/hid" \( -name 'hidrecord.txt' -o \
   -name '*.hidrec.txt' -o -path '*dumps*' -name 'pen_*.txt' -size -64k \) 2>/dev/null; } | sort)
 copy_all "$work/seeds-text" "" "${texts[@]}" drivers/data/tablets.tsv
+# A pause of thirty thousand years between two reports: replay must cross it in a few timeouts.
+awk '/^E: / && ++e > 40 { exit } { print }' recordings/generated-shapes.hidrec >"$work/seeds-text/pause"
+grep -m 1 '^E: ' recordings/generated-shapes.hidrec |
+  sed 's/^E: [0-9.]*/E: 999999999999.000000/' >>"$work/seeds-text/pause"
 # File readers: the first byte picks the reader (0 polygon, 1 JSON lines, 2 $1 XML, 3 config,
 # 4 verify's JSON answers).
 mapfile -t polygons < <(find "$work/generated/polygons" tests/data/adversarial -name '*.txt' \

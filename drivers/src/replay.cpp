@@ -25,6 +25,18 @@ void RecordingSource::interrupt() {
   cv_.notify_all();
 }
 
+// The next timeout's step in a gap of `left` µs. Live, a gap of g µs is g / poll timeouts; a
+// recording may hold a gap of years, so the steps double (1, 1, 2, 4... polls) and stay whole
+// polls that end before the report, landing last on the live path's last timeout. Idle handling
+// only asks whether a deadline has passed since the last sample, so these timeouts close the same
+// strokes as every live one would.
+std::int64_t RecordingSource::gap_tick(std::int64_t left, std::int64_t poll_us) {
+  const std::int64_t polls_before_due = (left - 1) / poll_us;
+  const std::int64_t polls = std::min(gap_polls_, polls_before_due);
+  gap_polls_ = polls * 2;
+  return polls * poll_us;
+}
+
 ReadStatus RecordingSource::read(std::vector<std::uint8_t>& bytes, std::int64_t& time_us,
                                  std::chrono::milliseconds timeout) {
   std::unique_lock lock(mutex_);
@@ -35,8 +47,8 @@ ReadStatus RecordingSource::read(std::vector<std::uint8_t>& bytes, std::int64_t&
       std::chrono::duration_cast<std::chrono::microseconds>(timeout).count();
   if (speed_ == ReplaySpeed::kAsFastAsPossible) {
     // Virtual time: a gap longer than the poll period is a timeout, as it would be live.
-    if (due - virtual_now_ > timeout_us) {
-      virtual_now_ += timeout_us;
+    if (timeout_us > 0 && due - virtual_now_ > timeout_us) {
+      virtual_now_ += gap_tick(due - virtual_now_, timeout_us);
       return ReadStatus::kTimeout;
     }
   } else {
@@ -48,6 +60,7 @@ ReadStatus RecordingSource::read(std::vector<std::uint8_t>& bytes, std::int64_t&
     if (std::chrono::steady_clock::now() < due_at) return ReadStatus::kTimeout;
   }
   virtual_now_ = std::max(virtual_now_, due);
+  gap_polls_ = 1;
   bytes = e.bytes;
   time_us = due;
   ++next_;

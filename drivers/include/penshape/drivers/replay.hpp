@@ -19,8 +19,9 @@ enum class ReplaySpeed : std::uint8_t { kOriginal, kAsFastAsPossible };
 
 // A ReportSource over recorded events. Report times are the recorded ones (relative to the
 // first event). At kOriginal the source sleeps (interruptibly) until each event is due; at
-// kAsFastAsPossible it never sleeps and reports the gap to the next event as a timeout when
-// that gap exceeds the caller's poll period, so idle handling matches the live path.
+// kAsFastAsPossible it never sleeps and reports the gap to the next event as timeouts when that
+// gap exceeds the caller's poll period, so idle handling matches the live path; a gap of any
+// length costs a number of timeouts logarithmic in it.
 class RecordingSource final : public ReportSource {
  public:
   RecordingSource(std::vector<HidEvent> events, ReplaySpeed speed);
@@ -31,11 +32,14 @@ class RecordingSource final : public ReportSource {
   void interrupt() override;
 
  private:
+  std::int64_t gap_tick(std::int64_t left, std::int64_t poll_us);
+
   std::vector<HidEvent> events_;
   ReplaySpeed speed_;
   std::size_t next_ = 0;
   std::int64_t t0_ = 0; // first event's time
   std::int64_t virtual_now_ = 0;
+  std::int64_t gap_polls_ = 1; // polls the next timeout in this gap steps over
   std::chrono::steady_clock::time_point start_;
   mutable std::mutex mutex_;
   std::condition_variable cv_;
