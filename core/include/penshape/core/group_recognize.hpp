@@ -167,6 +167,7 @@ class StrokeGrouper {
     std::vector<PointD> path;
     double slack = 0.0;
     std::map<std::size_t, double> gaps;
+    PointD lo, hi; // the samples' bounding box: a union's tolerance without its samples
   };
   std::map<std::size_t, Touch> touches_; // by stroke index, beside strokes_
   void forget_stroke(std::size_t index); // from strokes_ and touches_

@@ -13,6 +13,7 @@
 #include "recognize/group/group_classifier.hpp"
 #include "recognize/group/group_plausibility.hpp"
 #include "recognize/group/stroke_chain.hpp"
+#include "recognize/group/union_tolerance.hpp"
 #include "recognize/thresholds.hpp"
 #include "recognize/tidy/tidy.hpp"
 
@@ -41,6 +42,8 @@ Touch touch_path(const std::vector<StrokePoint>& samples) {
   Touch out;
   out.path = recognize_detail::thin_path(p, tau);
   out.slack = tau;
+  out.lo = lo;
+  out.hi = hi;
   return out;
 }
 
@@ -203,24 +206,25 @@ BestUnion best_union(const UnionContext& c, const std::vector<std::size_t>& rece
     }
     if (members.size() + 1 > c.grouping.max_strokes || members.size() + 1 < best_count) continue;
     std::sort(members.begin(), members.end());
-    std::vector<StrokeInput> inputs;
-    std::vector<StrokePoint> all;
-    std::vector<std::size_t> keys; // the touch cache's keys of the union's strokes
-    std::vector<double> slack;
-    for (const std::size_t s : members) {
-      const StrokeInput& kept = c.strokes.at(s);
-      inputs.push_back(kept);
-      all.insert(all.end(), kept.samples.begin(), kept.samples.end());
-      keys.push_back(s);
-    }
-    inputs.push_back(path_only(c.stroke));
-    all.insert(all.end(), c.stroke.samples.begin(), c.stroke.samples.end());
+    std::vector<std::size_t> keys(members); // the touch cache's keys of the union's strokes
     keys.push_back(TouchCache<Touches>::kOwn);
+    std::vector<double> slack;
+    std::vector<recognize_detail::SampleBox> boxes;
     slack.reserve(keys.size());
-    for (const std::size_t k : keys) slack.push_back(touches.of(k).slack);
-    const ToleranceChoice tol = choose_tolerance(all, c.config);
+    boxes.reserve(keys.size());
+    for (const std::size_t k : keys) {
+      const auto& t = touches.of(k);
+      slack.push_back(t.slack);
+      boxes.push_back({t.lo, t.hi});
+    }
+    const ToleranceChoice tol = recognize_detail::union_tolerance(boxes, c.config);
     const auto gap = [&](std::size_t i, std::size_t j) { return touches.gap(keys[i], keys[j]); };
     if (!connected(keys.size(), slack, 2.0 * tol.pen_radius + tol.epsilon, gap)) continue;
+    // Only a connected union is recognized: its strokes are copied then only.
+    std::vector<StrokeInput> inputs;
+    inputs.reserve(keys.size());
+    for (const std::size_t s : members) inputs.push_back(c.strokes.at(s));
+    inputs.push_back(path_only(c.stroke));
     UnionRecognition u = recognize_detail::recognize_union_detail(inputs, c.recognizer);
     if (!snaps(u.recognition)) continue;
     std::vector<const StrokeInput*> others; // the recent strokes outside the union
