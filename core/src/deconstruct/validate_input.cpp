@@ -123,8 +123,12 @@ struct EdgeRef {
 
 // Shamos–Hoey over every edge of every ring: O(n log n) exact predicates.
 void check_no_crossings(const std::vector<RingRef>& rings, const CancelHook& cancel) {
+  std::size_t total = 0;
+  for (const RingRef& r : rings) total += r.points.size();
   std::vector<detail::SweepSegment> segments;
   std::vector<EdgeRef> edges;
+  segments.reserve(total); // 200k edges: no regrowth copies
+  edges.reserve(total);
   for (std::size_t k = 0; k < rings.size(); ++k) {
     const auto& pts = rings[k].points;
     for (std::size_t i = 0; i < pts.size(); ++i) {
