@@ -408,6 +408,18 @@ Recognition choose(std::vector<Scored> scored, double epsilon, double pen_radius
   return out;
 }
 
+ToleranceChoice tolerance_for_box(PointD lo, PointD hi, const RecognizerConfig& config) {
+  ToleranceChoice t;
+  t.size = std::hypot(hi.x - lo.x, hi.y - lo.y);
+  t.pen_radius =
+      config.pen_radius > 0 ? config.pen_radius : config.default_pen_radius_fraction * t.size;
+  t.epsilon = config.tolerance > 0 ? config.tolerance
+                                   : std::min(config.tolerance_size_fraction * t.size +
+                                                  config.tolerance_pen_radii * t.pen_radius,
+                                              config.max_tolerance_fraction * t.size);
+  return t;
+}
+
 } // namespace penshape::recognize_detail
 
 namespace penshape {
@@ -416,23 +428,14 @@ using recognize_detail::PreparedStroke;
 
 ToleranceChoice choose_tolerance(const std::vector<StrokePoint>& samples,
                                  const RecognizerConfig& config) {
-  ToleranceChoice t;
-  if (samples.empty()) return t;
-  double xlo = samples[0].x, xhi = xlo, ylo = samples[0].y, yhi = ylo;
+  if (samples.empty()) return {};
+  PointD lo{samples[0].x, samples[0].y};
+  PointD hi = lo;
   for (const StrokePoint& s : samples) {
-    xlo = std::min(xlo, s.x);
-    xhi = std::max(xhi, s.x);
-    ylo = std::min(ylo, s.y);
-    yhi = std::max(yhi, s.y);
+    lo = {std::min(lo.x, s.x), std::min(lo.y, s.y)};
+    hi = {std::max(hi.x, s.x), std::max(hi.y, s.y)};
   }
-  t.size = std::hypot(xhi - xlo, yhi - ylo);
-  t.pen_radius =
-      config.pen_radius > 0 ? config.pen_radius : config.default_pen_radius_fraction * t.size;
-  t.epsilon = config.tolerance > 0 ? config.tolerance
-                                   : std::min(config.tolerance_size_fraction * t.size +
-                                                  config.tolerance_pen_radii * t.pen_radius,
-                                              config.max_tolerance_fraction * t.size);
-  return t;
+  return recognize_detail::tolerance_for_box(lo, hi, config);
 }
 
 Recognition recognize(const std::vector<StrokePoint>& samples, const RecognizerConfig& config) {

@@ -64,4 +64,8 @@ double degrees_of_freedom(const Fit& fit);
 std::vector<Family> all_families(const RecognizerConfig& config);
 double minimum_rank(const Family& family);
 
+// choose_tolerance()'s rule from the samples' bounding box alone (lo, hi: its corners), for
+// callers that already hold the box, e.g. the grouper's candidate unions.
+ToleranceChoice tolerance_for_box(PointD lo, PointD hi, const RecognizerConfig& config);
+
 } // namespace penshape::recognize_detail

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "recognize/classify/classifier.hpp"
+
 namespace penshape::recognize_detail {
 namespace {
 
@@ -20,7 +22,7 @@ ToleranceChoice union_tolerance(std::span<const SampleBox> boxes, const Recogniz
   SampleBox box{{kInf, kInf}, {-kInf, -kInf}};
   for (const SampleBox& b : boxes) include(box, b.lo, b.hi);
   if (!(box.lo.x <= box.hi.x)) return choose_tolerance({}, config); // no samples at all
-  return choose_tolerance({{box.lo.x, box.lo.y, 0.0}, {box.hi.x, box.hi.y, 0.0}}, config);
+  return tolerance_for_box(box.lo, box.hi, config);
 }
 
 } // namespace penshape::recognize_detail
