@@ -2,13 +2,16 @@
 // every pair written here in plain rational arithmetic: random rings on a coarse grid (so
 // touching vertices, collinear overlaps and vertical edges are common), the same rings moved
 // by 1e-30 (near-degenerate: doubles cannot tell, exact arithmetic must), star polygons of a
-// few hundred edges with and without a planted contact, and soups of free segments.
+// few hundred edges with and without a planted contact, and soups of free segments. The ring
+// form (`find_ring_contact`, one event per vertex) on the same kinds of rings, and on rings
+// with repeated vertices (zero-length edges, one- and two-vertex rings), against both.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <random>
 #include <set>
+#include <span>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -186,6 +189,114 @@ TEST(SegmentSweep, AgreesWithBruteForceOnLargeStars) {
   }
   EXPECT_GT(clean, 5);
   EXPECT_GT(contact, 5);
+}
+
+// The ring form on the same rings: its verdict against brute force and against the segment
+// form, and the edges it names (ring, index) are a forbidden pair, the first one first.
+void expect_ring_form_agrees(const std::vector<std::vector<Pt>>& rings, const std::string& what) {
+  Soup soup;
+  std::vector<std::size_t> first_edge;
+  std::vector<std::vector<detail::FilteredPoint>> points;
+  for (const auto& ring : rings) {
+    first_edge.push_back(soup.segments.size());
+    soup.add_ring(ring);
+    points.emplace_back();
+    for (const Pt& p : ring) points.back().push_back(detail::filtered(p));
+  }
+  const std::vector<std::span<const detail::FilteredPoint>> spans(points.begin(), points.end());
+  const auto found = detail::find_ring_contact(spans);
+  const bool expected = soup.brute_force();
+  ASSERT_EQ(found.has_value(), expected) << what;
+  std::vector<detail::SweepSegment> segs;
+  for (const auto& [a, b] : soup.segments) {
+    segs.push_back({detail::filtered(a), detail::filtered(b)});
+  }
+  const auto by_segments = detail::find_forbidden_contact(
+      segs, [&](std::size_t i, std::size_t j) { return soup.adjacent(i, j); });
+  EXPECT_EQ(by_segments.has_value(), expected) << what;
+  if (found) {
+    const std::size_t i = first_edge[found->first.ring] + found->first.index;
+    const std::size_t j = first_edge[found->second.ring] + found->second.index;
+    EXPECT_LT(i, j) << what;
+    EXPECT_TRUE(soup.forbidden(i, j)) << what;
+  }
+}
+
+// Any vertices at all, repeats included (consecutive ones make zero-length edges).
+std::vector<Pt> ring_with_repeats(std::mt19937& rng, int grid, const Rational& nudge) {
+  std::uniform_int_distribution<int> size(1, 7);
+  const int n = size(rng);
+  std::vector<Pt> ring;
+  ring.reserve(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) ring.push_back(grid_point(rng, grid, nudge));
+  return ring;
+}
+
+TEST(SegmentSweep, RingFormAgreesWithBruteForceOnRandomRings) {
+  std::mt19937 rng(17);
+  int clean = 0, contact = 0;
+  for (int t = 0; t < 3000; ++t) {
+    std::vector<std::vector<Pt>> rings;
+    for (int k = 0; k < 1 + t % 4; ++k) {
+      auto ring = random_ring(rng, 6 + t % 3, Rational(0));
+      if (ring.size() >= 3) rings.push_back(std::move(ring));
+    }
+    expect_ring_form_agrees(rings, "trial " + std::to_string(t));
+    Soup soup;
+    for (const auto& ring : rings) soup.add_ring(ring);
+    (soup.brute_force() ? contact : clean) += 1;
+  }
+  EXPECT_GT(clean, 100); // both verdicts are exercised
+  EXPECT_GT(contact, 100);
+}
+
+TEST(SegmentSweep, RingFormAgreesWithBruteForceOnNearDegenerateRings) {
+  std::mt19937 rng(19);
+  const Rational nudge = Rational(1) / Rational(mpz_class("1000000000000000000000000000000"));
+  for (int t = 0; t < 2000; ++t) {
+    std::vector<std::vector<Pt>> rings;
+    for (int k = 0; k < 1 + t % 2; ++k) {
+      auto ring = random_ring(rng, 4, nudge);
+      if (ring.size() >= 3) rings.push_back(std::move(ring));
+    }
+    expect_ring_form_agrees(rings, "trial " + std::to_string(t));
+  }
+}
+
+// Repeated vertices, consecutive or not: the fast engine's rounded rings may have them (a ring
+// may even round to one or two points).
+TEST(SegmentSweep, RingFormAgreesWithBruteForceOnRepeatedVertices) {
+  std::mt19937 rng(23);
+  for (int t = 0; t < 3000; ++t) {
+    std::vector<std::vector<Pt>> rings(static_cast<std::size_t>(1 + t % 3));
+    for (auto& ring : rings) ring = ring_with_repeats(rng, 3, Rational(0));
+    expect_ring_form_agrees(rings, "trial " + std::to_string(t));
+  }
+}
+
+// Large star rings, with and without a planted contact, beside a small ring: vertices of the
+// star's many edges meet at one event point and the status is long.
+TEST(SegmentSweep, RingFormAgreesWithBruteForceOnLargeStars) {
+  std::mt19937 rng(29);
+  for (int t = 0; t < 40; ++t) {
+    const int n = 80 + 5 * t;
+    std::uniform_real_distribution<double> radius(20.0, 60.0);
+    std::vector<Pt> ring;
+    for (int i = 0; i < n; ++i) {
+      const double a = 2 * 3.141592653589793 * i / n;
+      const double r = radius(rng);
+      const Pt p{Rational(static_cast<long>(std::lround(r * std::cos(a)))),
+                 Rational(static_cast<long>(std::lround(r * std::sin(a))))};
+      if (ring.empty() || !(ring.back() == p)) ring.push_back(p);
+    }
+    if (ring.front() == ring.back()) ring.pop_back();
+    if (t % 3 == 0) ring[ring.size() / 3] = ring[ring.size() / 3 + 5]; // a planted contact
+    const std::vector<Pt> square{{Rational(70), Rational(0)},
+                                 {Rational(72), Rational(0)},
+                                 {Rational(72), Rational(2)},
+                                 {Rational(70), Rational(2)}};
+    expect_ring_form_agrees({square, ring}, "star " + std::to_string(t));
+  }
 }
 
 } // namespace

@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "geometry/exact_predicates.hpp"
 #include "geometry/segment_sweep.hpp"
@@ -73,18 +75,13 @@ void check_simple(const std::vector<PointD>& v) {
   std::vector<ExactPoint> exact_v;
   exact_v.reserve(m);
   for (const PointD& p : v) exact_v.push_back(exact(p));
-  std::vector<::penshape::detail::SweepSegment> edges;
-  edges.reserve(m);
-  for (std::size_t i = 0; i < m; ++i) {
-    edges.push_back({::penshape::detail::filtered(exact_v[i]),
-                     ::penshape::detail::filtered(exact_v[(i + 1) % m])});
-  }
-  const auto adjacent = [m](std::size_t i, std::size_t j) {
-    return (i + 1) % m == j || (j + 1) % m == i;
-  };
-  if (const auto pair = ::penshape::detail::find_forbidden_contact(edges, adjacent)) {
-    throw InvalidInput("template is not simple: edges " + std::to_string(pair->first) + " and " +
-                       std::to_string(pair->second) + " intersect");
+  std::vector<::penshape::detail::FilteredPoint> points;
+  points.reserve(m);
+  for (const ExactPoint& p : exact_v) points.push_back(::penshape::detail::filtered(p));
+  const std::vector<std::span<const ::penshape::detail::FilteredPoint>> ring{points};
+  if (const auto pair = ::penshape::detail::find_ring_contact(ring)) {
+    throw InvalidInput("template is not simple: edges " + std::to_string(pair->first.index) +
+                       " and " + std::to_string(pair->second.index) + " intersect");
   }
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -116,37 +117,14 @@ void check_no_fold_backs(const std::vector<RingRef>& rings) {
   }
 }
 
-struct EdgeRef {
-  std::size_t ring = 0;
-  std::size_t index = 0;
-};
-
-// Shamos–Hoey over every edge of every ring: O(n log n) exact predicates.
+// Shamos–Hoey over every edge of every ring: O(n log n) exact predicates, one event per vertex.
 void check_no_crossings(const std::vector<RingRef>& rings, const CancelHook& cancel) {
-  std::size_t total = 0;
-  for (const RingRef& r : rings) total += r.points.size();
-  std::vector<detail::SweepSegment> segments;
-  std::vector<EdgeRef> edges;
-  segments.reserve(total); // 200k edges: no regrowth copies
-  edges.reserve(total);
-  for (std::size_t k = 0; k < rings.size(); ++k) {
-    const auto& pts = rings[k].points;
-    for (std::size_t i = 0; i < pts.size(); ++i) {
-      segments.push_back({pts[i], pts[(i + 1) % pts.size()]});
-      edges.push_back({k, i});
-    }
-  }
-  const auto adjacent = [&](std::size_t s, std::size_t t) {
-    const EdgeRef& a = edges[s];
-    const EdgeRef& b = edges[t];
-    if (a.ring != b.ring) return false;
-    const std::size_t n = rings[a.ring].ring->size();
-    return (a.index + 1) % n == b.index || (b.index + 1) % n == a.index;
-  };
-  const auto contact = detail::find_forbidden_contact(segments, adjacent, cancel);
+  std::vector<std::span<const FilteredPoint>> points;
+  points.reserve(rings.size());
+  for (const RingRef& r : rings) points.emplace_back(r.points);
+  const auto contact = detail::find_ring_contact(points, cancel);
   if (!contact) return;
-  const EdgeRef& a = edges[contact->first];
-  const EdgeRef& e = edges[contact->second];
+  const auto& [a, e] = *contact;
   const RingRef& ra = rings[a.ring];
   const RingRef& re = rings[e.ring];
   const std::string what = a.ring == e.ring ? ring_name(ra) + " is self-intersecting: "

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <vector>
 
 #include <CGAL/FPU.h>
@@ -482,17 +483,9 @@ bool level_set_avoids(const LevelSetQuery& query, const CancelHook& cancel) {
 bool rings_are_simple(const SegmentIndex& index) {
   // The kernel's sweep: consecutive edges of a ring may share their common vertex (and do not
   // fold back), no other two edges may meet.
-  const std::vector<Segment>& segs = index.segments();
-  std::vector<detail::SweepSegmentOf<IPt>> edges;
-  edges.reserve(segs.size());
-  for (const Segment& s : segs) edges.push_back({s.a, s.b});
-  const auto consecutive = [&](std::size_t i, std::size_t j) {
-    const Segment& s = segs[i];
-    const Segment& t = segs[j];
-    return s.ring == t.ring &&
-           ((s.pos + 1) % s.ring_size == t.pos || (t.pos + 1) % t.ring_size == s.pos);
-  };
-  return !detail::find_forbidden_contact(edges, consecutive).has_value();
+  const IRings& rings = index.rings();
+  std::vector<std::span<const IPt>> spans(rings.begin(), rings.end());
+  return !detail::find_ring_contact(spans).has_value();
 }
 
 bool rings_are_nested_consistently(const SegmentIndex& index) {
