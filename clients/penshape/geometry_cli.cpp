@@ -1,8 +1,12 @@
 #include "geometry_cli.hpp"
 
+#include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <system_error>
 #include <utility>
 
 #include "command.hpp"
@@ -60,15 +64,34 @@ void check_coordinates(const PolygonSet& q) {
   }
 }
 
+// The whole file: one read of its size when it is a regular file (streaming 5.8 MB through a
+// stringstream took 10 ms of a 200,000-vertex run), then whatever a pipe (or a file that grew)
+// still holds.
+std::string read_text_file(const std::string& path) {
+  std::error_code error;
+  const std::uintmax_t size =
+      std::filesystem::is_regular_file(path, error) ? std::filesystem::file_size(path, error) : 0;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("cannot read '" + path + "'");
+  std::string text;
+  if (!error && size > 0) {
+    text.resize(static_cast<std::size_t>(size));
+    in.read(text.data(), static_cast<std::streamsize>(size));
+    text.resize(static_cast<std::size_t>(in.gcount()));
+    in.clear();
+  }
+  std::ostringstream rest;
+  rest << in.rdbuf();
+  text += rest.view();
+  return text;
+}
+
 } // namespace
 
 ValidatedRegion read_valid_polygon_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot read '" + path + "'");
-  std::ostringstream text;
-  text << in.rdbuf();
+  const std::string text = read_text_file(path);
   try {
-    PolygonSet q = read_polygon_text(text.view());
+    PolygonSet q = read_polygon_text(text);
     check_coordinates(q);
     return ValidatedRegion::validate(std::move(q));
   } catch (const InvalidInput& e) {

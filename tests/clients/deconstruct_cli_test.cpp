@@ -72,6 +72,24 @@ TEST(DeconstructCli, MalformedFileNamesTheLine) {
   EXPECT_NE(r.out.find("line 4"), std::string::npos) << r.out;
 }
 
+// The file is read in one piece of its size when it is a regular file; a pipe has no size and
+// is read to its end, and a directory is refused without reading gigabytes of zeros.
+TEST(DeconstructCli, PipeIsReadLikeTheFile) {
+  const std::string args = " --radius 1 --tolerance 0.1 --engine reference";
+  const Result from_file = run(rounded_hexagon_file() + args);
+  const Result from_pipe = penshape::test::run_command(
+      "cat " + rounded_hexagon_file() + " | " + PENSHAPE_CLI + " deconstruct /dev/stdin" + args);
+  ASSERT_EQ(from_file.exit_code, 0) << from_file.out;
+  ASSERT_EQ(from_pipe.exit_code, 0) << from_pipe.out;
+  const auto without_seconds = [](const std::string& out) {
+    const std::size_t at = out.find("seconds:");
+    return out.substr(0, at) + out.substr(out.find('\n', at));
+  };
+  EXPECT_EQ(without_seconds(from_pipe.out), without_seconds(from_file.out));
+  const Result directory = run(std::string(PENSHAPE_BINARY_DIR) + args);
+  EXPECT_EQ(directory.exit_code, 2) << directory.out;
+}
+
 TEST(DeconstructCli, SelfIntersectingFileIsRejected) {
   const std::string path = std::string(PENSHAPE_BINARY_DIR) + "/deconstruct_cli_bowtie.txt";
   std::ofstream(path) << "0 0\n4 4\n4 0\n0 6\n";

@@ -146,17 +146,18 @@ bool point_in_ring(const Ring& ring, const ExactPoint& p) {
   return in;
 }
 
-// push_back that moves the points when the ring grows: mpq_class's move is not noexcept, so
-// std::vector would copy every point at each reallocation (and even a move allocates: callers
-// reserve what they know first).
-void push_moving(Ring& ring, ExactPoint p) {
+// A new last vertex (0, 0), to be set in place: mpq_class's move is not noexcept, so std::vector
+// would copy every point at each reallocation, and even a move allocates (gmpxx re-initialises
+// the moved-from rational, which allocates its denominator): callers reserve what they know
+// first, and the ring grows by moves only when they could not.
+ExactPoint& append_point(Ring& ring) {
   if (ring.size() == ring.capacity()) {
     Ring grown;
     grown.reserve(std::max<std::size_t>(16, 2 * ring.size()));
     for (ExactPoint& v : ring) grown.push_back(std::move(v));
     ring.swap(grown);
   }
-  ring.push_back(std::move(p));
+  return ring.emplace_back();
 }
 
 // Lines from `pos` up to the next blank one (or the end): at least the vertices of the x-y ring
@@ -327,7 +328,9 @@ class WktParser {
     do {
       const Token& x = next("an x coordinate");
       const Token& y = next("a y coordinate");
-      push_moving(r, {number(x), number(y)});
+      ExactPoint& p = append_point(r);
+      p.x = number(x); // moved in by a swap
+      p.y = number(y);
     } while (accept(","));
     expect(")");
     drop_closing_repeat(r);
@@ -441,14 +444,13 @@ PolygonSet read_xy(std::string_view text) {
       throw ParseError(line_number, "expected two numbers 'x y', got " +
                                         std::to_string(field_count) + " fields");
     }
-    ExactPoint p;
+    ExactPoint& p = append_point(current); // read in place: no point is moved
     if (!try_parse_rational(fields[0], p.x)) {
       throw ParseError(line_number, "'" + std::string(fields[0]) + "' is not a number");
     }
     if (!try_parse_rational(fields[1], p.y)) {
       throw ParseError(line_number, "'" + std::string(fields[1]) + "' is not a number");
     }
-    push_moving(current, std::move(p));
   }
   if (!current.empty()) {
     drop_closing_repeat(current);
