@@ -197,5 +197,44 @@ TEST(FilteredPoint, DoublesStandForThePointOnlyWhenExact) {
   EXPECT_EQ(compare_lex(g, filtered(g_again)), 0);
 }
 
+// The limb fast path of to_double_checked against GMP's own reading: mpq_get_d (truncated
+// towards zero) and is_double_exactly's GMP checks, on dyadic rationals at the edges of
+// the fast path (numerators of 52-54 bits, denominators 2^0 to 2^64, signs, zero) and on others.
+TEST(ExactDouble, LimbFastPathAgreesWithGmp) {
+  std::mt19937_64 rng(41);
+  std::vector<Rational> values{Rational(0), Rational(1), Rational(-1)};
+  for (int bits : {1, 52, 53, 54, 64, 65}) {
+    for (int k : {0, 1, 10, 62, 63, 64, 65, 200}) {
+      mpz_class n = mpz_class(1) << static_cast<mp_bitcnt_t>(bits - 1);
+      n += static_cast<unsigned long>(rng() >> 12);
+      for (const mpz_class& sn : {n, mpz_class(-n)}) {
+        Rational v(sn, mpz_class(1) << static_cast<mp_bitcnt_t>(k));
+        v.canonicalize();
+        values.push_back(v);
+      }
+    }
+  }
+  values.emplace_back(1, 3);
+  values.emplace_back(-7, 10);
+  values.emplace_back(mpz_class("123456789012345678901234567890"), 1024);
+  int fast = 0;
+  for (const Rational& v : values) {
+    bool exact = false;
+    const double d = to_double_checked(v, exact);
+    EXPECT_EQ(d, v.get_d()) << v;
+    EXPECT_EQ(exact, is_double_exactly(v)) << v; // the flag GMP's checks gave before
+    if (exact) {
+      EXPECT_EQ(Rational(d), v) << v;
+    }
+    double limb = 0;
+    if (small_dyadic_to_double(v, limb)) {
+      ++fast;
+      EXPECT_EQ(limb, d) << v;
+      EXPECT_TRUE(exact) << v;
+    }
+  }
+  EXPECT_GT(fast, 20); // the fast path is exercised
+}
+
 } // namespace
 } // namespace penshape::detail
