@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -126,6 +127,22 @@ TEST(InkBuilder, InvalidSampleThrowsAsOneShot) {
   EXPECT_THROW((void)ink_polygon(s, options), InvalidInput);
   EXPECT_THROW((void)built_ahead(s, 4, s, options), InvalidInput);
   EXPECT_THROW((void)InkBuilder(options).polygon({}), InvalidInput);
+}
+
+// The work ahead checks each sample once, as it arrives: an invalid sample after a built chunk
+// stops the next one (and polygon() throws ink_polygon's error).
+TEST(InkBuilder, InvalidSampleAfterABuiltChunkStopsTheWorkAhead) {
+  std::mt19937 rng(5);
+  const InkOptions options{.radius_mm = 0.5};
+  std::vector<InkSample> s = random_stroke(rng, 3 * kChunk, false);
+  s[kChunk + 10].y = std::numeric_limits<double>::infinity();
+  InkBuilder builder(options);
+  builder.add(std::vector<InkSample>(s.begin(), s.begin() + kChunk + 5));
+  EXPECT_TRUE(builder.build_next());
+  builder.add(std::vector<InkSample>(s.begin() + kChunk + 5, s.end()));
+  EXPECT_FALSE(builder.build_next());
+  EXPECT_EQ(builder.built_chunks(), 1U);
+  EXPECT_THROW((void)builder.polygon(s), InvalidInput);
 }
 
 TEST(InkBuilder, RealStrokesEqualOneShot) {

@@ -2,6 +2,7 @@
 #include "penshape/core/ink_builder.hpp"
 
 #include <algorithm>
+#include <memory>
 
 #include "ink_chunks.hpp"
 #include "penshape/core/base.hpp"
@@ -11,7 +12,8 @@ namespace penshape {
 using ink_detail::ChunkPieces;
 using ink_detail::kChunkSegments;
 
-InkBuilder::InkBuilder(const InkOptions& options) : options_(options) {}
+InkBuilder::InkBuilder(const InkOptions& options)
+    : options_(options), reach_(std::make_unique<ink_detail::Reach>()) {}
 InkBuilder::~InkBuilder() = default;
 InkBuilder::InkBuilder(InkBuilder&&) noexcept = default;
 InkBuilder& InkBuilder::operator=(InkBuilder&&) noexcept = default;
@@ -45,7 +47,11 @@ bool InkBuilder::build_next() {
   // stroke there makes it the last chunk, with the same samples).
   if (invalid_ || samples_.size() < (c + 1) * kChunkSegments + 1) return false;
   try {
-    chunks_.push_back(chunk_of(samples_, c, plan_of(samples_, options_)));
+    // The plan reads the reach of all samples so far: each new sample is checked once.
+    const double max_error = ink_detail::checked_max_error(options_, samples_.size());
+    ink_detail::widen_checked_reach(samples_, reached_, *reach_);
+    reached_ = samples_.size();
+    chunks_.push_back(chunk_of(samples_, c, ink_detail::plan_for(max_error, *reach_)));
   } catch (const InvalidInput&) {
     invalid_ = true; // polygon() throws it again, as ink_polygon() would
     return false;

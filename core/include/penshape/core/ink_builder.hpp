@@ -15,6 +15,7 @@ namespace penshape {
 
 namespace ink_detail {
 struct ChunkPieces;
+struct Reach;
 } // namespace ink_detail
 
 class InkBuilder {
@@ -43,6 +44,8 @@ class InkBuilder {
   InkOptions options_;
   std::vector<InkSample> samples_;
   std::vector<ink_detail::ChunkPieces> chunks_;
+  std::unique_ptr<ink_detail::Reach> reach_; // of samples_[0, reached_), checked
+  std::size_t reached_ = 0;
   bool invalid_ = false;
 };
 
