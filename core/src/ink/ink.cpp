@@ -237,10 +237,18 @@ Rational on_grid(ClipperLib::cInt v, double grid) {
 }
 
 bool clipper_union(const Paths& pieces, ClipperLib::PolyTree& tree) {
-  ClipperLib::Clipper clipper;
-  clipper.StrictlySimple(true);
-  clipper.AddPaths(pieces, ClipperLib::ptSubject, true);
-  return clipper.Execute(ClipperLib::ctUnion, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  FedUnion fed;
+  fed.add(pieces);
+  return fed.execute(tree);
+}
+
+FedUnion::FedUnion() { clipper_.StrictlySimple(true); }
+
+void FedUnion::add(const Paths& pieces) { clipper_.AddPaths(pieces, ClipperLib::ptSubject, true); }
+
+bool FedUnion::execute(ClipperLib::PolyTree& tree) {
+  return clipper_.Execute(ClipperLib::ctUnion, tree, ClipperLib::pftNonZero,
+                          ClipperLib::pftNonZero);
 }
 
 } // namespace ink_detail
@@ -486,16 +494,22 @@ bool same_pieces(const ChunkPieces& pieces, const Plan& plan) {
 }
 
 InkPolygon assemble(const std::vector<const ChunkPieces*>& chunks, const Plan& plan) {
+  FedUnion fed;
+  return assemble(chunks, plan, fed, 0);
+}
+
+InkPolygon assemble(const std::vector<const ChunkPieces*>& chunks, const Plan& plan, FedUnion& fed,
+                    std::size_t fed_chunks) {
   InkPolygon result;
   result.grid = plan.grid;
   result.disk_vertices = plan.k;
-  Paths pieces;
   double pinch = 1.0;
-  for (const ChunkPieces* chunk : chunks) {
-    const double bound = chunk->offset ? plan.offset_bound : plan.hull_bound;
+  for (std::size_t c = 0; c < chunks.size(); ++c) {
+    const ChunkPieces& chunk = *chunks[c];
+    const double bound = chunk.offset ? plan.offset_bound : plan.hull_bound;
     result.hausdorff_bound = std::max(result.hausdorff_bound, bound);
-    pinch = std::max(pinch, chunk->pinch);
-    pieces.insert(pieces.end(), chunk->paths.begin(), chunk->paths.end());
+    pinch = std::max(pinch, chunk.pinch);
+    if (c >= fed_chunks) fed.add(chunk.paths);
   }
   // Sharp piece corners (a disk far below the grid's scale beside a large one) let the final,
   // StrictlySimple union pinch off more than its sweep term (ink_union.hpp).
@@ -503,7 +517,7 @@ InkPolygon assemble(const std::vector<const ChunkPieces*>& chunks, const Plan& p
     result.hausdorff_bound = up(result.hausdorff_bound + up((pinch - 1) * plan.final_union));
   }
   ClipperLib::PolyTree tree;
-  if (!clipper_union(pieces, tree)) {
+  if (!fed.execute(tree)) {
     throw InvalidInput("the union of the pen hulls failed (coordinates out of range)");
   }
   for (const ClipperLib::PolyNode* node : tree.Childs) collect(*node, result.grid, result.region);

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <utility>
 
 #include "ink_chunks.hpp"
 #include "penshape/core/base.hpp"
@@ -13,7 +14,9 @@ using ink_detail::ChunkPieces;
 using ink_detail::kChunkSegments;
 
 InkBuilder::InkBuilder(const InkOptions& options)
-    : options_(options), reach_(std::make_unique<ink_detail::Reach>()) {}
+    : options_(options),
+      reach_(std::make_unique<ink_detail::Reach>()),
+      fed_(std::make_unique<ink_detail::FedUnion>()) {}
 InkBuilder::~InkBuilder() = default;
 InkBuilder::InkBuilder(InkBuilder&&) noexcept = default;
 InkBuilder& InkBuilder::operator=(InkBuilder&&) noexcept = default;
@@ -45,7 +48,7 @@ bool InkBuilder::build_next() {
   const std::size_t c = chunks_.size();
   // Chunk c ends at sample (c + 1)·kChunkSegments: complete once that sample arrived (ending the
   // stroke there makes it the last chunk, with the same samples).
-  if (invalid_ || samples_.size() < (c + 1) * kChunkSegments + 1) return false;
+  if (invalid_ || !reach_ || samples_.size() < (c + 1) * kChunkSegments + 1) return false;
   try {
     // The plan reads the reach of all samples so far: each new sample is checked once.
     const double max_error = ink_detail::checked_max_error(options_, samples_.size());
@@ -56,10 +59,15 @@ bool InkBuilder::build_next() {
     invalid_ = true; // polygon() throws it again, as ink_polygon() would
     return false;
   }
+  // Q's final union takes the chunk's pieces now rather than at pen-up (ink_union.hpp FedUnion).
+  if (fed_ && fed_chunks_ == c) {
+    fed_->add(chunks_.back().paths);
+    ++fed_chunks_;
+  }
   return true;
 }
 
-InkPolygon InkBuilder::polygon(const std::vector<InkSample>& samples) const {
+InkPolygon InkBuilder::polygon(const std::vector<InkSample>& samples) {
   const ink_detail::Plan plan = plan_of(samples, options_);
   // The built chunks count while the samples they read are the same (bit for bit) and the plan
   // gives the same pieces.
@@ -86,6 +94,11 @@ InkPolygon InkBuilder::polygon(const std::vector<InkSample>& samples) const {
   all.reserve(whole);
   for (std::size_t c = 0; c < reusable; ++c) all.push_back(&chunks_[c]);
   for (const ChunkPieces& chunk : rest) all.push_back(&chunk);
+  // The union fed while the pen was down holds the first fed_chunks_ chunks in order: usable when
+  // all of them are reused. It is spent either way (one execute).
+  std::unique_ptr<ink_detail::FedUnion> fed = std::move(fed_);
+  const std::size_t fed_chunks = std::exchange(fed_chunks_, 0);
+  if (fed && fed_chunks <= reusable) return ink_detail::assemble(all, plan, *fed, fed_chunks);
   return ink_detail::assemble(all, plan);
 }
 

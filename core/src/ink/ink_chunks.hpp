@@ -10,6 +10,7 @@
 #include <limits>
 #include <vector>
 
+#include "ink_union.hpp"
 #include "penshape/core/base.hpp"
 #include "penshape/core/ink.hpp"
 
@@ -73,5 +74,9 @@ Rational on_grid(ClipperLib::cInt v, double grid);
 
 // Q of the chunks' pieces, in order: the final union and the bound.
 InkPolygon assemble(const std::vector<const ChunkPieces*>& chunks, const Plan& plan);
+// The same, with `fed` already given the pieces of chunks[0, fed_chunks) in order (ink_union.hpp
+// FedUnion): the rest are added and the union executed (once: `fed` is spent).
+InkPolygon assemble(const std::vector<const ChunkPieces*>& chunks, const Plan& plan, FedUnion& fed,
+                    std::size_t fed_chunks);
 
 } // namespace penshape::ink_detail
