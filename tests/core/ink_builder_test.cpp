@@ -130,19 +130,22 @@ TEST(InkBuilder, InvalidSampleThrowsAsOneShot) {
 }
 
 // The final union given the built chunks' pieces while the pen was down is spent by the first
-// polygon() that uses it: a second call (the hold's stroke, then the whole one) builds its union
-// whole, and neither Q holds the other's last chunk.
+// polygon() that uses it: a second call builds its union whole, and neither Q holds the other's
+// last chunk. A call that cannot use it (fewer samples: a hold's stroke drawn before the pen came
+// to rest) leaves it to the next.
 TEST(InkBuilder, TheUnionFedAheadIsUsedOnce) {
   std::mt19937 rng(6);
   const InkOptions options{.radius_mm = 0.5};
   const std::vector<InkSample> s = random_stroke(rng, 3 * kChunk + 8, false);
   std::vector<InkSample> moved = s;
   moved.back().x += 50.0; // the last chunk only: the built chunks are reused
+  const std::vector<InkSample> shorter(s.begin(), s.begin() + kChunk + 20);
   InkBuilder builder(options);
   builder.add(s);
   while (builder.build_next()) {
   }
   ASSERT_EQ(builder.built_chunks(), 3U);
+  expect_same_polygon(builder.polygon(shorter), ink_polygon(shorter, options));
   expect_same_polygon(builder.polygon(moved), ink_polygon(moved, options));
   expect_same_polygon(builder.polygon(s), ink_polygon(s, options));
 }

@@ -95,10 +95,12 @@ InkPolygon InkBuilder::polygon(const std::vector<InkSample>& samples) {
   for (std::size_t c = 0; c < reusable; ++c) all.push_back(&chunks_[c]);
   for (const ChunkPieces& chunk : rest) all.push_back(&chunk);
   // The union fed while the pen was down holds the first fed_chunks_ chunks in order: usable when
-  // all of them are reused. It is spent either way (one execute).
-  std::unique_ptr<ink_detail::FedUnion> fed = std::move(fed_);
-  const std::size_t fed_chunks = std::exchange(fed_chunks_, 0);
-  if (fed && fed_chunks <= reusable) return ink_detail::assemble(all, plan, *fed, fed_chunks);
+  // all of them are reused, and then spent (one execute); else kept for a later call (a hold's
+  // stroke drawn before the pen came to rest, then the whole stroke).
+  if (fed_ && fed_chunks_ <= reusable) {
+    const std::unique_ptr<ink_detail::FedUnion> fed = std::move(fed_);
+    return ink_detail::assemble(all, plan, *fed, std::exchange(fed_chunks_, 0));
+  }
   return ink_detail::assemble(all, plan);
 }
 
