@@ -5,7 +5,10 @@
 // timed on its own on the same strokes, added in drawing order as the daemon's strand adds them.
 //   ink      the ink polygon Q and its proto form (core ink_polygon + to_proto); of it at
 //            pen-up: what is left when its chunks were built while the pen was down (InkBuilder,
-//            as the daemon does); the two Q must be equal bit for bit (a mismatch is printed)
+//            as the daemon does); the two Q must be equal bit for bit (a mismatch is printed);
+//            of that: Q's final union alone (Clipper), and the union of the closed chunks' union
+//            with the last chunk (not used: not the same Q, penup_stages_ink.hpp; how often its
+//            vertices differ, and how often its set provably differs, is printed)
 //   intent   the writing/drawing decision with the 24 strokes before it as context: as before
 //            (decide_intent on that page, every stroke measured again), and as the daemon now
 //            decides it (LiveIntent: each stroke measured once)
@@ -42,33 +45,14 @@
 #include "penshape/daemon/proto_convert.hpp"
 #include "penshape/daemon/stroke_analyzer.hpp"
 #include "penshape/daemon/worker_pool.hpp"
+#include "penup_stages_ink.hpp"
+#include "penup_stages_time.hpp"
 #include "recognize/certify/ink_certificate.hpp"
 #include "recognize/classify/classifier.hpp"
 #include "recognize/fitting/clean_shape.hpp"
 #include "recognize/fitting/dot.hpp"
 
 namespace penshape::bench {
-
-// This thread's CPU time, ms.
-inline double thread_cpu_ms() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) * 1e-6;
-}
-
-// Thread CPU and wall time of one call, ms.
-struct StepTime {
-  std::vector<double> cpu_ms, wall_ms;
-  template <typename F>
-  void time(F&& f) {
-    const double c0 = thread_cpu_ms();
-    const auto w0 = std::chrono::steady_clock::now();
-    f();
-    wall_ms.push_back(
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - w0).count());
-    cpu_ms.push_back(thread_cpu_ms() - c0);
-  }
-};
 
 // The tip-down path in millimetres, as the daemon's analyzer reads a stroke.
 inline std::vector<StrokePoint> stage_path_mm(const Stroke& stroke) {
@@ -165,6 +149,7 @@ inline void print_penup_stages(bool json, const std::string& tag,
   InkScanTimes ink_scan;
   PathStepTimes path_steps;
   AheadInkTimes ahead;
+  InkUnionTimes unions;
   StrokeGrouper core_grouper(GroupingConfig{}, config);
   auto whole = analyzer.group_session(settings, GroupingConfig{});
   auto live = analyzer.group_session(settings, GroupingConfig{});
@@ -187,6 +172,7 @@ inline void print_penup_stages(bool json, const std::string& tag,
       daemon::to_proto(q.region, &proto);
     });
     ahead.time(stroke, ink_options, q);
+    unions.time(ink_samples(stroke, ink_options), ink_options);
     intent.time([&] {
       std::vector<IntentStroke> page(context.begin(), context.end());
       page.emplace_back(input.samples);
@@ -212,6 +198,8 @@ inline void print_penup_stages(bool json, const std::string& tag,
   const std::pair<const char*, StepTime*> steps[] = {
       {"ink polygon + proto", &ink},
       {"  of it at pen-up, chunks built ahead", &ahead.penup},
+      {"    of that: Q's final union (Clipper)", &unions.final_union},
+      {"    not used: closed chunks' union + last", &unions.chain_union},
       {"intent decision, page (as before)", &intent},
       {"intent decision, LiveIntent", &live_intent},
       {"stroke alone, ink certificate", &alone},
@@ -239,6 +227,12 @@ inline void print_penup_stages(bool json, const std::string& tag,
   if (ahead.mismatches > 0) {
     std::printf("ink polygon: built ahead differs from one-shot on %zu strokes (a bug)\n",
                 ahead.mismatches);
+  }
+  if (!json) {
+    std::printf(
+        "not used: closed chunks' union + last chunk: vertices differ from Q's on %zu of "
+        "%zu strokes, the set provably differs on %zu\n",
+        unions.other_vertices, unions.strokes, unions.other_sets);
   }
   if (ink_scan.mismatches > 0) {
     std::printf(

@@ -1,5 +1,6 @@
 #include "penshape/daemon/proto_convert.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -16,6 +17,22 @@ std::string number_text(double v) {
   char text[64];
   std::snprintf(text, sizeof text, "%.17g", v);
   return text;
+}
+
+// value.get_str(10) ("num" or "num/den"), formatted without GMP's digit conversion when both
+// fit a machine word, as an ink polygon's grid coordinates do (its proto form has one per
+// coordinate at every pen-up).
+std::string rational_text(const Rational& value) {
+  const mpz_srcptr num = value.get_num_mpz_t();
+  const mpz_srcptr den = value.get_den_mpz_t();
+  if (!mpz_fits_slong_p(num) || !mpz_fits_ulong_p(den)) return value.get_str(10);
+  char text[48]; // a long (20 characters with its sign), '/', an unsigned long (20)
+  char* end = std::to_chars(text, text + sizeof text, mpz_get_si(num)).ptr;
+  if (mpz_cmp_ui(den, 1) != 0) {
+    *end++ = '/';
+    end = std::to_chars(end, text + sizeof text, mpz_get_ui(den)).ptr;
+  }
+  return {text, end};
 }
 
 Rational checked_coordinate(double v, const std::string& field, const Limits& limits) {
@@ -276,21 +293,23 @@ PenSettingsUpdate settings_update_from_proto(const v1::PenSettings& message,
 }
 
 void to_proto(const Rational& value, v1::ExactScalar* out) {
-  out->set_rational(value.get_str(10));
+  out->set_rational(rational_text(value));
   out->set_approx(to_double(value));
 }
 
 void to_proto(const PolygonSet& set, v1::PolygonSet* out) {
   out->Clear();
   auto ring_to_proto = [](const Ring& ring, v1::Ring* r) {
+    r->mutable_points()->Reserve(static_cast<int>(ring.size()));
+    r->mutable_exact_points()->Reserve(static_cast<int>(ring.size()));
     for (const ExactPoint& p : ring) {
       const PointD d = to_double(p);
       auto* point = r->add_points();
       point->set_x(d.x);
       point->set_y(d.y);
       auto* e = r->add_exact_points();
-      e->set_x(p.x.get_str(10));
-      e->set_y(p.y.get_str(10));
+      e->set_x(rational_text(p.x));
+      e->set_y(rational_text(p.y));
     }
   };
   for (const PolygonWithHoles& polygon : set.polygons) {

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -126,6 +127,43 @@ TEST(InkBuilder, InvalidSampleThrowsAsOneShot) {
   EXPECT_THROW((void)ink_polygon(s, options), InvalidInput);
   EXPECT_THROW((void)built_ahead(s, 4, s, options), InvalidInput);
   EXPECT_THROW((void)InkBuilder(options).polygon({}), InvalidInput);
+}
+
+// The final union given the built chunks' pieces while the pen was down is spent by the first
+// polygon() that uses it: a second call builds its union whole, and neither Q holds the other's
+// last chunk. A call that cannot use it (fewer samples: a hold's stroke drawn before the pen came
+// to rest) leaves it to the next.
+TEST(InkBuilder, TheUnionFedAheadIsUsedOnce) {
+  std::mt19937 rng(6);
+  const InkOptions options{.radius_mm = 0.5};
+  const std::vector<InkSample> s = random_stroke(rng, 3 * kChunk + 8, false);
+  std::vector<InkSample> moved = s;
+  moved.back().x += 50.0; // the last chunk only: the built chunks are reused
+  const std::vector<InkSample> shorter(s.begin(), s.begin() + kChunk + 20);
+  InkBuilder builder(options);
+  builder.add(s);
+  while (builder.build_next()) {
+  }
+  ASSERT_EQ(builder.built_chunks(), 3U);
+  expect_same_polygon(builder.polygon(shorter), ink_polygon(shorter, options));
+  expect_same_polygon(builder.polygon(moved), ink_polygon(moved, options));
+  expect_same_polygon(builder.polygon(s), ink_polygon(s, options));
+}
+
+// The work ahead checks each sample once, as it arrives: an invalid sample after a built chunk
+// stops the next one (and polygon() throws ink_polygon's error).
+TEST(InkBuilder, InvalidSampleAfterABuiltChunkStopsTheWorkAhead) {
+  std::mt19937 rng(5);
+  const InkOptions options{.radius_mm = 0.5};
+  std::vector<InkSample> s = random_stroke(rng, 3 * kChunk, false);
+  s[kChunk + 10].y = std::numeric_limits<double>::infinity();
+  InkBuilder builder(options);
+  builder.add(std::vector<InkSample>(s.begin(), s.begin() + kChunk + 5));
+  EXPECT_TRUE(builder.build_next());
+  builder.add(std::vector<InkSample>(s.begin() + kChunk + 5, s.end()));
+  EXPECT_FALSE(builder.build_next());
+  EXPECT_EQ(builder.built_chunks(), 1U);
+  EXPECT_THROW((void)builder.polygon(s), InvalidInput);
 }
 
 TEST(InkBuilder, RealStrokesEqualOneShot) {

@@ -6,8 +6,10 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <random>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -247,6 +249,45 @@ TEST(ProtoConvert, StrokesAreValidated) {
   two.max_stroke_samples = 2;
   EXPECT_EQ(error_of([&] { penshape::daemon::stroke_from_proto(stroke, "stroke", two, true); }),
             "stroke.samples has 3 samples, beyond the limit 2");
+}
+
+// Exact strings are GMP's own ("num" or "num/den"), also where they are formatted without GMP
+// (both parts in a machine word): signs, whole numbers, powers of two and other denominators,
+// and values beyond a word on either side.
+TEST(ProtoConvert, ExactStringsAreGmpsOwn) {
+  std::vector<Rational> values{Rational(0),
+                               Rational(-1),
+                               Rational(7),
+                               Rational(-3, 4),
+                               Rational(1, 3),
+                               Rational("9223372036854775807"),
+                               Rational("-9223372036854775808"),
+                               Rational("9223372036854775808"),
+                               Rational("1/18446744073709551615"),
+                               Rational("-5/18446744073709551616")};
+  std::mt19937_64 rng(26);
+  for (int i = 0; i < 300; ++i) {
+    Rational v(mpz_class(static_cast<long>(rng() >> static_cast<unsigned>(1 + i % 62))));
+    mpq_div_2exp(v.get_mpq_t(), v.get_mpq_t(), static_cast<mp_bitcnt_t>(i % 70));
+    values.push_back(i % 3 == 0 ? Rational(-v) : v);
+  }
+  penshape::PolygonSet set;
+  set.polygons.emplace_back();
+  for (std::size_t i = 0; i + 1 < values.size(); ++i) {
+    set.polygons[0].outer.push_back({values[i], values[i + 1]});
+  }
+  v1::PolygonSet message;
+  penshape::daemon::to_proto(set, &message);
+  for (std::size_t i = 0; i + 1 < values.size(); ++i) {
+    const auto& e = message.polygons(0).outer().exact_points(static_cast<int>(i));
+    EXPECT_EQ(e.x(), values[i].get_str(10));
+    EXPECT_EQ(e.y(), values[i + 1].get_str(10));
+  }
+  v1::ExactScalar scalar;
+  for (const Rational& v : values) {
+    penshape::daemon::to_proto(v, &scalar);
+    EXPECT_EQ(scalar.rational(), v.get_str(10));
+  }
 }
 
 TEST(ProtoConvert, DeconstructResultCarriesExactValues) {

@@ -121,13 +121,12 @@ void check_finite(double v, const char* what, std::size_t i) {
   }
 }
 
+// The ring in mm: grid is a power of two (plan_for), so each coordinate is an integer shifted.
 Ring to_ring(const Path& path, double grid) {
   Ring ring;
   ring.reserve(path.size());
-  const Rational g = exact(grid);
   for (const auto& p : path) {
-    ring.push_back({Rational(mpz_class(static_cast<long>(p.X))) * g,
-                    Rational(mpz_class(static_cast<long>(p.Y))) * g});
+    ring.push_back({ink_detail::on_grid(p.X, grid), ink_detail::on_grid(p.Y, grid)});
   }
   return ring;
 }
@@ -224,11 +223,32 @@ double clipper_pinch_factor(const Paths& pieces) {
   return factor;
 }
 
+Rational on_grid(ClipperLib::cInt v, double grid) {
+  // GMP shifts the power of two in and cancels it against the other side: the canonical form
+  // of v times exact(grid), without a product and its gcd per coordinate.
+  const int exponent = std::ilogb(grid);
+  Rational q(static_cast<long>(v));
+  if (exponent < 0) {
+    mpq_div_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(-exponent));
+  } else {
+    mpq_mul_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(exponent));
+  }
+  return q;
+}
+
 bool clipper_union(const Paths& pieces, ClipperLib::PolyTree& tree) {
-  ClipperLib::Clipper clipper;
-  clipper.StrictlySimple(true);
-  clipper.AddPaths(pieces, ClipperLib::ptSubject, true);
-  return clipper.Execute(ClipperLib::ctUnion, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  FedUnion fed;
+  fed.add(pieces);
+  return fed.execute(tree);
+}
+
+FedUnion::FedUnion() { clipper_.StrictlySimple(true); }
+
+void FedUnion::add(const Paths& pieces) { clipper_.AddPaths(pieces, ClipperLib::ptSubject, true); }
+
+bool FedUnion::execute(ClipperLib::PolyTree& tree) {
+  return clipper_.Execute(ClipperLib::ctUnion, tree, ClipperLib::pftNonZero,
+                          ClipperLib::pftNonZero);
 }
 
 } // namespace ink_detail
@@ -277,22 +297,25 @@ double checked_max_error(const InkOptions& options, std::size_t total) {
 }
 
 // The largest radius and coordinate magnitude of the samples (mm), after checking each sample.
+// Checks sample i and widens the reach by it.
+void check_sample(const InkSample& sample, std::size_t i, Reach& reach) {
+  check_finite(sample.x, "x", i);
+  check_finite(sample.y, "y", i);
+  check_finite(sample.radius, "radius", i);
+  if (!(sample.radius > 0)) {
+    throw InvalidInput("sample " + std::to_string(i) + ": radius must be positive");
+  }
+  if (std::abs(sample.x) > kMaxCoordinateMm || std::abs(sample.y) > kMaxCoordinateMm) {
+    throw InvalidInput("sample " + std::to_string(i) + ": coordinate beyond 10^9 mm");
+  }
+  reach.r_min = std::min(reach.r_min, sample.radius);
+  reach.r_max = std::max(reach.r_max, sample.radius);
+  reach.extent = std::max({reach.extent, std::abs(sample.x), std::abs(sample.y)});
+}
+
 void widen_reach(const std::vector<InkSample>& samples, std::size_t j, Reach& reach) {
   if (samples.empty()) throw InvalidInput("stroke " + std::to_string(j) + " has no samples");
-  for (std::size_t i = 0; i < samples.size(); ++i) {
-    check_finite(samples[i].x, "x", i);
-    check_finite(samples[i].y, "y", i);
-    check_finite(samples[i].radius, "radius", i);
-    if (!(samples[i].radius > 0)) {
-      throw InvalidInput("sample " + std::to_string(i) + ": radius must be positive");
-    }
-    if (std::abs(samples[i].x) > kMaxCoordinateMm || std::abs(samples[i].y) > kMaxCoordinateMm) {
-      throw InvalidInput("sample " + std::to_string(i) + ": coordinate beyond 10^9 mm");
-    }
-    reach.r_min = std::min(reach.r_min, samples[i].radius);
-    reach.r_max = std::max(reach.r_max, samples[i].radius);
-    reach.extent = std::max({reach.extent, std::abs(samples[i].x), std::abs(samples[i].y)});
-  }
+  for (std::size_t i = 0; i < samples.size(); ++i) check_sample(samples[i], i, reach);
 }
 
 Reach checked_reach(const std::vector<std::vector<InkSample>>& strokes) {
@@ -307,6 +330,11 @@ Reach checked_reach(const std::vector<InkSample>& samples) {
   widen_reach(samples, 0, reach);
   if (reach.r_max > kMaxCoordinateMm) throw InvalidInput("the pen radius exceeds 10^9 mm");
   return reach;
+}
+
+void widen_checked_reach(const std::vector<InkSample>& samples, std::size_t from, Reach& reach) {
+  for (std::size_t i = from; i < samples.size(); ++i) check_sample(samples[i], i, reach);
+  if (reach.r_max > kMaxCoordinateMm) throw InvalidInput("the pen radius exceeds 10^9 mm");
 }
 
 } // namespace ink_detail
@@ -466,16 +494,22 @@ bool same_pieces(const ChunkPieces& pieces, const Plan& plan) {
 }
 
 InkPolygon assemble(const std::vector<const ChunkPieces*>& chunks, const Plan& plan) {
+  FedUnion fed;
+  return assemble(chunks, plan, fed, 0);
+}
+
+InkPolygon assemble(const std::vector<const ChunkPieces*>& chunks, const Plan& plan, FedUnion& fed,
+                    std::size_t fed_chunks) {
   InkPolygon result;
   result.grid = plan.grid;
   result.disk_vertices = plan.k;
-  Paths pieces;
   double pinch = 1.0;
-  for (const ChunkPieces* chunk : chunks) {
-    const double bound = chunk->offset ? plan.offset_bound : plan.hull_bound;
+  for (std::size_t c = 0; c < chunks.size(); ++c) {
+    const ChunkPieces& chunk = *chunks[c];
+    const double bound = chunk.offset ? plan.offset_bound : plan.hull_bound;
     result.hausdorff_bound = std::max(result.hausdorff_bound, bound);
-    pinch = std::max(pinch, chunk->pinch);
-    pieces.insert(pieces.end(), chunk->paths.begin(), chunk->paths.end());
+    pinch = std::max(pinch, chunk.pinch);
+    if (c >= fed_chunks) fed.add(chunk.paths);
   }
   // Sharp piece corners (a disk far below the grid's scale beside a large one) let the final,
   // StrictlySimple union pinch off more than its sweep term (ink_union.hpp).
@@ -483,7 +517,7 @@ InkPolygon assemble(const std::vector<const ChunkPieces*>& chunks, const Plan& p
     result.hausdorff_bound = up(result.hausdorff_bound + up((pinch - 1) * plan.final_union));
   }
   ClipperLib::PolyTree tree;
-  if (!clipper_union(pieces, tree)) {
+  if (!fed.execute(tree)) {
     throw InvalidInput("the union of the pen hulls failed (coordinates out of range)");
   }
   for (const ClipperLib::PolyNode* node : tree.Childs) collect(*node, result.grid, result.region);

@@ -2,6 +2,8 @@
 #include "penshape/core/ink_builder.hpp"
 
 #include <algorithm>
+#include <memory>
+#include <utility>
 
 #include "ink_chunks.hpp"
 #include "penshape/core/base.hpp"
@@ -11,7 +13,10 @@ namespace penshape {
 using ink_detail::ChunkPieces;
 using ink_detail::kChunkSegments;
 
-InkBuilder::InkBuilder(const InkOptions& options) : options_(options) {}
+InkBuilder::InkBuilder(const InkOptions& options)
+    : options_(options),
+      reach_(std::make_unique<ink_detail::Reach>()),
+      fed_(std::make_unique<ink_detail::FedUnion>()) {}
 InkBuilder::~InkBuilder() = default;
 InkBuilder::InkBuilder(InkBuilder&&) noexcept = default;
 InkBuilder& InkBuilder::operator=(InkBuilder&&) noexcept = default;
@@ -43,17 +48,26 @@ bool InkBuilder::build_next() {
   const std::size_t c = chunks_.size();
   // Chunk c ends at sample (c + 1)·kChunkSegments: complete once that sample arrived (ending the
   // stroke there makes it the last chunk, with the same samples).
-  if (invalid_ || samples_.size() < (c + 1) * kChunkSegments + 1) return false;
+  if (invalid_ || !reach_ || samples_.size() < (c + 1) * kChunkSegments + 1) return false;
   try {
-    chunks_.push_back(chunk_of(samples_, c, plan_of(samples_, options_)));
+    // The plan reads the reach of all samples so far: each new sample is checked once.
+    const double max_error = ink_detail::checked_max_error(options_, samples_.size());
+    ink_detail::widen_checked_reach(samples_, reached_, *reach_);
+    reached_ = samples_.size();
+    chunks_.push_back(chunk_of(samples_, c, ink_detail::plan_for(max_error, *reach_)));
   } catch (const InvalidInput&) {
     invalid_ = true; // polygon() throws it again, as ink_polygon() would
     return false;
   }
+  // Q's final union takes the chunk's pieces now rather than at pen-up (ink_union.hpp FedUnion).
+  if (fed_ && fed_chunks_ == c) {
+    fed_->add(chunks_.back().paths);
+    ++fed_chunks_;
+  }
   return true;
 }
 
-InkPolygon InkBuilder::polygon(const std::vector<InkSample>& samples) const {
+InkPolygon InkBuilder::polygon(const std::vector<InkSample>& samples) {
   const ink_detail::Plan plan = plan_of(samples, options_);
   // The built chunks count while the samples they read are the same (bit for bit) and the plan
   // gives the same pieces.
@@ -80,6 +94,13 @@ InkPolygon InkBuilder::polygon(const std::vector<InkSample>& samples) const {
   all.reserve(whole);
   for (std::size_t c = 0; c < reusable; ++c) all.push_back(&chunks_[c]);
   for (const ChunkPieces& chunk : rest) all.push_back(&chunk);
+  // The union fed while the pen was down holds the first fed_chunks_ chunks in order: usable when
+  // all of them are reused, and then spent (one execute); else kept for a later call (a hold's
+  // stroke drawn before the pen came to rest, then the whole stroke).
+  if (fed_ && fed_chunks_ <= reusable) {
+    const std::unique_ptr<ink_detail::FedUnion> fed = std::move(fed_);
+    return ink_detail::assemble(all, plan, *fed, std::exchange(fed_chunks_, 0));
+  }
   return ink_detail::assemble(all, plan);
 }
 

@@ -10,6 +10,8 @@
 #include <limits>
 #include <vector>
 
+#include "ink_union.hpp"
+#include "penshape/core/base.hpp"
 #include "penshape/core/ink.hpp"
 
 namespace penshape::ink_detail {
@@ -47,6 +49,9 @@ double checked_max_error(const InkOptions& options, std::size_t total);
 // The strokes' reach, after checking each sample (InvalidInput); one stroke's alike.
 Reach checked_reach(const std::vector<std::vector<InkSample>>& strokes);
 Reach checked_reach(const std::vector<InkSample>& samples);
+// Widens `reach` (of samples [0, from), checked) by samples [from, end) after checking them, so
+// that the reach of a growing stroke costs each sample once; the same reach as checked_reach.
+void widen_checked_reach(const std::vector<InkSample>& samples, std::size_t from, Reach& reach);
 Plan plan_for(double max_error, const Reach& reach);
 
 // One chunk's Clipper pieces, with what they depend on in the plan.
@@ -64,7 +69,14 @@ ChunkPieces build_chunk(const InkSample* first, std::size_t count, const Plan& p
 // True when `pieces` were built under a plan that gives the same pieces as `plan`.
 bool same_pieces(const ChunkPieces& pieces, const Plan& plan);
 
+// v grid units in mm, exactly (grid a power of two, as plan_for chooses it).
+Rational on_grid(ClipperLib::cInt v, double grid);
+
 // Q of the chunks' pieces, in order: the final union and the bound.
 InkPolygon assemble(const std::vector<const ChunkPieces*>& chunks, const Plan& plan);
+// The same, with `fed` already given the pieces of chunks[0, fed_chunks) in order (ink_union.hpp
+// FedUnion): the rest are added and the union executed (once: `fed` is spent).
+InkPolygon assemble(const std::vector<const ChunkPieces*>& chunks, const Plan& plan, FedUnion& fed,
+                    std::size_t fed_chunks);
 
 } // namespace penshape::ink_detail

@@ -112,4 +112,19 @@ double clipper_pinch_factor(const ClipperLib::Paths& pieces);
 // false when Clipper refuses (coordinates out of its range).
 bool clipper_union(const ClipperLib::Paths& pieces, ClipperLib::PolyTree& tree);
 
+// That union given its pieces in parts (InkBuilder adds each chunk's as the chunk is built while
+// the pen is down): Clipper adds paths one by one (AddPaths is a loop of AddPath), so adding the
+// same pieces in the same order, in one call or several, leaves the same edges and local minima,
+// and one execute() gives clipper_union's result bit for bit. execute() once only: Clipper sorts
+// its minima in place, so pieces added after an execute() would not be in a fresh union's order.
+class FedUnion {
+ public:
+  FedUnion();
+  void add(const ClipperLib::Paths& pieces);
+  bool execute(ClipperLib::PolyTree& tree); // false when Clipper refuses (as clipper_union)
+
+ private:
+  ClipperLib::Clipper clipper_;
+};
+
 } // namespace penshape::ink_detail

@@ -15,6 +15,8 @@ namespace penshape {
 
 namespace ink_detail {
 struct ChunkPieces;
+struct Reach;
+class FedUnion;
 } // namespace ink_detail
 
 class InkBuilder {
@@ -33,8 +35,10 @@ class InkBuilder {
   // samples so far are invalid (polygon() then throws ink_polygon's error).
   bool build_next();
   // Q of `samples` (the whole stroke): the chunks built for a prefix of them are reused, the rest
-  // built here. Throws as ink_polygon(samples, options) does.
-  [[nodiscard]] InkPolygon polygon(const std::vector<InkSample>& samples) const;
+  // built here. Throws as ink_polygon(samples, options) does. The first call also takes the final
+  // union's pieces given while the chunks were built, when they all are reused; later calls
+  // build the union whole (same Q, more work).
+  [[nodiscard]] InkPolygon polygon(const std::vector<InkSample>& samples);
 
   [[nodiscard]] std::size_t samples() const { return samples_.size(); }
   [[nodiscard]] std::size_t built_chunks() const;
@@ -43,6 +47,10 @@ class InkBuilder {
   InkOptions options_;
   std::vector<InkSample> samples_;
   std::vector<ink_detail::ChunkPieces> chunks_;
+  std::unique_ptr<ink_detail::Reach> reach_; // of samples_[0, reached_), checked
+  std::size_t reached_ = 0;
+  std::unique_ptr<ink_detail::FedUnion> fed_; // Q's final union, given chunks_[0, fed_chunks_)
+  std::size_t fed_chunks_ = 0;
   bool invalid_ = false;
 };
 
