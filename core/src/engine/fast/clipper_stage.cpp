@@ -1,6 +1,7 @@
 #include "clipper_stage.hpp"
 
 #include "douglas_peucker.hpp"
+#include "raw_offset.hpp"
 #include "stripe_union.hpp"
 
 #include <clipper.hpp>
@@ -108,61 +109,13 @@ double round_join_steps(double delta, double arc_tolerance) {
 
 namespace {
 
-// The raw outward offset path of each ring: round joins with ceil'd step counts (so chords are
-// exactly as deep as asked and no deeper), a loop through the vertex at reflex corners. Its
-// positive-winding region is the offset, as in ClipperOffset.
-cl::Paths raw_outward(const IRings& rings, double delta, double arc_tolerance) {
-  const double max_angle = 2.0 * std::acos(std::max(-1.0, 1.0 - arc_tolerance / delta));
-  cl::Paths raw;
-  raw.reserve(rings.size());
-  for (const IRing& ring : rings) {
-    const std::size_t n = ring.size();
-    if (n < 3) continue;
-    std::vector<DPt> normals(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      const IPt a = ring[i], b = ring[(i + 1) % n];
-      const double dx = static_cast<double>(b.x - a.x), dy = static_cast<double>(b.y - a.y);
-      const double len = std::sqrt(dx * dx + dy * dy);
-      normals[i] = {dy / len, -dx / len}; // right normal: outward for a region on the left
-    }
-    cl::Path path;
-    path.reserve(3 * n);
-    auto push = [&](const IPt& v, DPt nrm) {
-      path.emplace_back(
-          static_cast<cl::cInt>(std::llround(static_cast<double>(v.x) + delta * nrm.x)),
-          static_cast<cl::cInt>(std::llround(static_cast<double>(v.y) + delta * nrm.y)));
-    };
-    for (std::size_t i = 0; i < n; ++i) {
-      const IPt& v = ring[i];
-      const DPt n0 = normals[(i + n - 1) % n], n1 = normals[i];
-      const double sin_a = n0.x * n1.y - n0.y * n1.x;
-      const double cos_a = n0.x * n1.x + n0.y * n1.y;
-      if (sin_a < 0.0) { // reflex: the loop through v is removed by the union
-        push(v, n0);
-        path.emplace_back(v.x, v.y);
-        push(v, n1);
-        continue;
-      }
-      const double a = std::atan2(sin_a, cos_a);
-      const int steps = std::max(1, static_cast<int>(std::ceil(a / max_angle)));
-      for (int k = 0; k <= steps; ++k) {
-        const double t = a * k / steps;
-        const double c = std::cos(t), s = std::sin(t);
-        push(v, {n0.x * c - n0.y * s, n0.x * s + n0.y * c});
-      }
-    }
-    raw.push_back(std::move(path));
-  }
-  return raw;
-}
-
-IRegion offset_outward(const IRings& rings, double delta, double arc_tolerance) {
+IRegion offset_outward(const IRings& rings, double delta, double arc_tolerance, Spokes spokes) {
   cl::PolyTree tree;
   if (g_offset_mode == OffsetMode::kStriped) {
-    union_positive(raw_outward(rings, delta, arc_tolerance), tree);
+    union_positive(raw_outward(rings, delta, arc_tolerance, spokes), tree);
   } else {
     cl::Clipper c;
-    c.AddPaths(raw_outward(rings, delta, arc_tolerance), cl::ptSubject, true);
+    c.AddPaths(raw_outward(rings, delta, arc_tolerance, Spokes::kKeep), cl::ptSubject, true);
     c.Execute(cl::ctUnion, tree, cl::pftPositive, cl::pftPositive);
   }
   IRegion out;
@@ -173,7 +126,7 @@ IRegion offset_outward(const IRings& rings, double delta, double arc_tolerance) 
 // Inset by d = |delta|: the complement (within a box d + 2 units wider than the rings) offset
 // outwards by d; the inset is what that offset leaves of the box: the box's holes, with the
 // islands in them as their holes (and the islands' holes as polygons again).
-IRegion offset_inward(const IRings& rings, double d, double arc_tolerance) {
+IRegion offset_inward(const IRings& rings, double d, double arc_tolerance, Spokes spokes) {
   IRings complement;
   complement.reserve(rings.size() + 1);
   cl::cInt x0 = 0, y0 = 0, x1 = 0, y1 = 0;
@@ -192,7 +145,7 @@ IRegion offset_inward(const IRings& rings, double d, double arc_tolerance) {
   complement.push_back({{x0 - m, y0 - m}, {x1 + m, y0 - m}, {x1 + m, y1 + m}, {x0 - m, y1 + m}});
   for (const IRing& ring : rings) complement.emplace_back(ring.rbegin(), ring.rend());
   cl::PolyTree tree;
-  union_positive(raw_outward(complement, d, arc_tolerance), tree);
+  union_positive(raw_outward(complement, d, arc_tolerance, spokes), tree);
   IRegion out;
   for (const cl::PolyNode* box : tree.Childs) {
     for (const cl::PolyNode* hole : box->Childs) collect_hole_as_outer(*hole, out);
@@ -202,9 +155,11 @@ IRegion offset_inward(const IRings& rings, double d, double arc_tolerance) {
 
 } // namespace
 
-IRegion offset_round(const IRings& rings, double delta, double arc_tolerance) {
-  if (delta > 0.0) return offset_outward(rings, delta, arc_tolerance);
-  if (g_offset_mode == OffsetMode::kStriped) return offset_inward(rings, -delta, arc_tolerance);
+IRegion offset_round(const IRings& rings, double delta, double arc_tolerance, Spokes spokes) {
+  if (delta > 0.0) return offset_outward(rings, delta, arc_tolerance, spokes);
+  if (g_offset_mode == OffsetMode::kStriped) {
+    return offset_inward(rings, -delta, arc_tolerance, spokes);
+  }
   cl::ClipperOffset offset(2.0, arc_tolerance / kJoinDepthFactor);
   offset.AddPaths(to_paths(rings), cl::jtRound, cl::etClosedPolygon);
   cl::PolyTree tree;

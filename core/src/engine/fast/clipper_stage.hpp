@@ -16,12 +16,25 @@ using IRegion = std::vector<IPolygon>;
 
 IRings flatten(const IRegion& region);
 
+// Which spokes of the raw path are replaced by the direct step v + delta n0 -> v + delta n1:
+// kKeep none (the former path); kCovered those `spoke_is_covered` (raw_offset.hpp) proves change
+// nothing (the positive-winding region is the same wherever the rings' winding number is >= 0:
+// every region of simple, consistently nested rings, and the complement of one within a box);
+// kNarrow also every spoke of a corner that turns by at most 90 degrees. kNarrow is for candidates
+// that are checked afterwards: near v both edges' quadrilaterals cover the dropped triangle (v, a,
+// b), but farther out only the ring's other pieces may, so the region can lose slivers along a
+// dropped spoke where the edges beside it are shorter than delta.
+enum class Spokes { kKeep, kCovered, kNarrow };
+
 // Offset (delta > 0) or inset (delta < 0) of the region bounded by `rings` (nonzero winding)
 // with round joins: arc vertices on the circle of radius |delta|, chords at distance at least
 // |delta| - arc_tolerance (Clipper's own tolerance parameter is tightened to guarantee it).
 // Straight parts are exact up to grid rounding. Insets are the outward offset of the complement
-// (OffsetMode::kStriped) or ClipperOffset's (kFormer).
-IRegion offset_round(const IRings& rings, double delta, double arc_tolerance);
+// (OffsetMode::kStriped) or ClipperOffset's (kFormer). `spokes`: which spokes of reflex corners
+// the raw path leaves out (raw_offset.hpp; kStriped only): kCovered keeps the region, kNarrow
+// is for candidates only.
+IRegion offset_round(const IRings& rings, double delta, double arc_tolerance,
+                     Spokes spokes = Spokes::kCovered);
 
 // How offsets are computed: kStriped (the default) builds the raw path of insets too (as the
 // outward offset of the complement) and unions large raw paths stripe by stripe

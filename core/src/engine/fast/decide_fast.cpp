@@ -46,7 +46,7 @@ void check_cancel(const CancelHook& cancel) {
 // One offset stage, with the disk-size limit enforced before Clipper runs. `unit` is the number
 // of grid units per input unit (for the message).
 IRegion offset_stage(const IRings& rings, double delta, double tol, const DeconstructLimits& limits,
-                     double unit, std::size_t& disk_vertices) {
+                     double unit, std::size_t& disk_vertices, Spokes spokes = Spokes::kCovered) {
   const double steps = std::ceil(round_join_steps(delta, tol));
   if (steps > static_cast<double>(limits.max_disk_vertices)) {
     throw InvalidInput("fast engine: a disk of radius " + std::to_string(std::fabs(delta) / unit) +
@@ -56,7 +56,7 @@ IRegion offset_stage(const IRings& rings, double delta, double tol, const Decons
                        " (precision too fine for the radius)");
   }
   disk_vertices = std::max(disk_vertices, static_cast<std::size_t>(steps));
-  return offset_round(rings, delta, tol);
+  return offset_round(rings, delta, tol, spokes);
 }
 
 // Offsets and insets of inputs with more vertices than this go in steps (below).
@@ -73,11 +73,12 @@ constexpr std::size_t kStepwiseOffsetVertices = 4096;
 // arc vertices per step) cost less than the former four (delta/32, delta/8, delta/2, delta at
 // tol/4), which OffsetMode::kFormer keeps for the bench's side-by-side figure.
 IRegion offset_stepped(const IRings& rings, double delta, double tol,
-                       const DeconstructLimits& limits, double unit, std::size_t& disk_vertices) {
+                       const DeconstructLimits& limits, double unit, std::size_t& disk_vertices,
+                       Spokes spokes = Spokes::kCovered) {
   std::size_t n = 0;
   for (const IRing& ring : rings) n += ring.size();
   if (n <= kStepwiseOffsetVertices || std::fabs(delta) <= 4.0 * tol) {
-    return offset_stage(rings, delta, tol, limits, unit, disk_vertices);
+    return offset_stage(rings, delta, tol, limits, unit, disk_vertices, spokes);
   }
   static constexpr double kFormer[] = {1.0 / 32, 1.0 / 8, 1.0 / 2};
   static constexpr double kStriped[] = {1.0 / 16, 1.0 / 4};
@@ -87,11 +88,11 @@ IRegion offset_stepped(const IRings& rings, double delta, double tol,
   IRings current = rings;
   double done = 0.0;
   for (const double f : fractions) {
-    current =
-        flatten(offset_stage(current, delta * f - done, step_tol, limits, unit, disk_vertices));
+    current = flatten(
+        offset_stage(current, delta * f - done, step_tol, limits, unit, disk_vertices, spokes));
     done = delta * f;
   }
-  return offset_stage(current, delta - done, step_tol, limits, unit, disk_vertices);
+  return offset_stage(current, delta - done, step_tol, limits, unit, disk_vertices, spokes);
 }
 
 // Points of Q̃ \ Q̂' (exterior chain) worth trying as NO witnesses: inside Q̃ away from its
@@ -206,21 +207,41 @@ class FastDecision {
   // so the chain's bounds hold with s more loss, and the inset's Clipper pass meets far fewer
   // crossings. When that candidate does not verify (a thin Π̂ the deeper inset loses), X itself
   // is inset as before: every YES the former chain found is still found.
+  //
+  // Before all that, the same chain runs once with the spokes of narrow reflex corners left out
+  // of the raw offset paths (Spokes::kNarrow, raw_offset.hpp): Clipper then meets far fewer
+  // crossings (KAZ at r = w/30: the decision 6.5-6.9 -> 5.5-5.8 ms CPU), but the regions may miss
+  // slivers along a dropped spoke, so its P is only a candidate like any other. When it does
+  // not verify, the exact chain runs as before (its YES are all still found). Only on inputs
+  // offset in one step: the stepped offsets of large inputs meet few spokes' crossings (the
+  // small first step fills the jags), and on the 200,000-vertex star of scale_bench the
+  // candidate did not verify (425 -> 580 ms).
   bool try_yes() {
     if (!input_.index) return false;
-    const IRegion q_eps = offset_stepped(q_simple(), eps_ - 2 * b_.margin - sigma_,
-                                         b_.arc_tolerance, limits_, unit_, result_.disk_vertices);
-    check_cancel(cancel_);
     YesCheckInput in = yes_check_input(input_, q_index_, frame_, q_, params_, b_.margin);
     in.memo = &work_->memo.emplace(*input_.index, level_a(in), in.max_sagitta);
-    return yes_from(flatten(simplify_rings_only(q_eps, b_.stage_input)), b_.stage_input, in) ||
-           yes_from(flatten(q_eps), 0.0, in);
+    std::size_t n = 0;
+    for (const IRing& ring : q_simple()) n += ring.size();
+    return (n <= kStepwiseOffsetVertices && yes_chain(in, Spokes::kNarrow)) ||
+           yes_chain(in, Spokes::kCovered);
+  }
+
+  // Stage 1, then stage 2 on X_s (and, with the exact raw paths, on X).
+  bool yes_chain(const YesCheckInput& in, Spokes spokes) {
+    const IRegion q_eps =
+        offset_stepped(q_simple(), eps_ - 2 * b_.margin - sigma_, b_.arc_tolerance, limits_, unit_,
+                       result_.disk_vertices, spokes);
+    check_cancel(cancel_);
+    return yes_from(flatten(simplify_rings_only(q_eps, b_.stage_input)), b_.stage_input, in,
+                    spokes) ||
+           (spokes == Spokes::kCovered && yes_from(flatten(q_eps), 0.0, in, spokes));
   }
 
   // The candidate inset(x, r + 2m + arc + extra), simplified: YES when it verifies.
-  bool yes_from(const IRings& x, double extra, const YesCheckInput& in) {
-    const IRegion pi_hat = offset_stepped(x, -(r_ + 2 * b_.margin + b_.arc_tolerance + extra),
-                                          b_.arc_tolerance, limits_, unit_, result_.disk_vertices);
+  bool yes_from(const IRings& x, double extra, const YesCheckInput& in, Spokes spokes) {
+    const IRegion pi_hat =
+        offset_stepped(x, -(r_ + 2 * b_.margin + b_.arc_tolerance + extra), b_.arc_tolerance,
+                       limits_, unit_, result_.disk_vertices, spokes);
     check_cancel(cancel_);
     if (pi_hat.empty()) return false;
     // Ring-wise simplification is usually still a valid region; otherwise let Clipper union it.

@@ -172,13 +172,28 @@ bool GridInput::has_thin_ring() const {
   return false;
 }
 
+namespace {
+
+// (v + t) / 2^k in lowest terms without a gcd: the denominator is a power of two, so only the
+// trailing zero bits of the numerator cancel (mpz_scan1 counts them, for negative numbers too).
+Rational scaled_back(std::int64_t v, const mpz_class& t, int k) {
+  mpz_class num = mpz_class(static_cast<long>(v)) + t;
+  if (k <= 0) {
+    mpz_mul_2exp(num.get_mpz_t(), num.get_mpz_t(), static_cast<mp_bitcnt_t>(-k));
+    return Rational(num);
+  }
+  if (num == 0) return Rational(0);
+  const mp_bitcnt_t shift = std::min(mpz_scan1(num.get_mpz_t(), 0), static_cast<mp_bitcnt_t>(k));
+  mpz_tdiv_q_2exp(num.get_mpz_t(), num.get_mpz_t(), shift); // exact: those bits are zero
+  mpz_class den;
+  mpz_setbit(den.get_mpz_t(), static_cast<mp_bitcnt_t>(k) - shift);
+  return Rational(num, den); // already canonical: num odd or den = 1
+}
+
+} // namespace
+
 ExactPoint GridFrame::exact(IPt p) const {
-  const Rational s = pow2(-k_);
-  Rational x = Rational(mpz_class(static_cast<long>(p.x)) + tx_) * s;
-  Rational y = Rational(mpz_class(static_cast<long>(p.y)) + ty_) * s;
-  x.canonicalize();
-  y.canonicalize();
-  return {x, y};
+  return {scaled_back(p.x, tx_, k_), scaled_back(p.y, ty_, k_)};
 }
 
 } // namespace penshape::fast
