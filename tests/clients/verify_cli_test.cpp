@@ -18,21 +18,32 @@
 
 namespace {
 
-// One stroke drawn through the corners in order, 30 samples a side, 10 ms apart (a JSON line).
-std::string polyline_stroke_json(const std::vector<std::array<double, 2>>& corners) {
-  std::string text = "{\"points\": [";
+// Strokes along polylines, one JSON line each, 30 samples a side 10 ms apart, the times running
+// on from stroke to stroke.
+std::string strokes_json(const std::vector<std::vector<std::array<double, 2>>>& strokes) {
+  std::string text;
   double t = 0;
-  for (std::size_t i = 0; i + 1 < corners.size(); ++i) {
-    for (int k = i == 0 ? 0 : 1; k <= 30; ++k, t += 0.01) {
-      const double f = k / 30.0;
-      char buf[96];
-      std::snprintf(buf, sizeof buf, "%s[%.6f, %.6f, %.3f]", text.back() == '[' ? "" : ", ",
-                    corners[i][0] + f * (corners[i + 1][0] - corners[i][0]),
-                    corners[i][1] + f * (corners[i + 1][1] - corners[i][1]), t);
-      text += buf;
+  for (const auto& corners : strokes) {
+    text += "{\"points\": [";
+    for (std::size_t i = 0; i + 1 < corners.size(); ++i) {
+      for (int k = i == 0 ? 0 : 1; k <= 30; ++k, t += 0.01) {
+        const double f = k / 30.0;
+        char buf[96];
+        std::snprintf(buf, sizeof buf, "%s[%.6f, %.6f, %.3f]", text.back() == '[' ? "" : ", ",
+                      corners[i][0] + f * (corners[i + 1][0] - corners[i][0]),
+                      corners[i][1] + f * (corners[i + 1][1] - corners[i][1]), t);
+        text += buf;
+      }
     }
+    text += "]}\n";
+    t += 0.3;
   }
-  return text + "]}\n";
+  return text;
+}
+
+// One stroke drawn through the corners in order (a JSON line).
+std::string polyline_stroke_json(const std::vector<std::array<double, 2>>& corners) {
+  return strokes_json({corners});
 }
 
 using Result = penshape::test::CommandResult;
@@ -323,28 +334,6 @@ TEST(VerifyCli, BentArrowAnswerVerifiesAndAMovedBendDoesNot) {
   const Result bad = penshape::test::run_command(cli() + " verify " + strokes + " " +
                                                  write("hockey_stick_moved.json", moved));
   EXPECT_EQ(bad.exit_code, 1) << bad.out;
-}
-
-// Strokes along polylines, one JSON line each, the times running on from stroke to stroke.
-std::string strokes_json(const std::vector<std::vector<std::array<double, 2>>>& strokes) {
-  std::string text;
-  double t = 0;
-  for (const auto& corners : strokes) {
-    text += "{\"points\": [";
-    for (std::size_t i = 0; i + 1 < corners.size(); ++i) {
-      for (int k = i == 0 ? 0 : 1; k <= 30; ++k, t += 0.01) {
-        const double f = k / 30.0;
-        char buf[96];
-        std::snprintf(buf, sizeof buf, "%s[%.6f, %.6f, %.3f]", text.back() == '[' ? "" : ", ",
-                      corners[i][0] + f * (corners[i + 1][0] - corners[i][0]),
-                      corners[i][1] + f * (corners[i + 1][1] - corners[i][1]), t);
-        text += buf;
-      }
-    }
-    text += "]}\n";
-    t += 0.3;
-  }
-  return text;
 }
 
 // An arrow drawn as a shaft stroke that stops 45 short of the head's tip (0.9 barbs, about 3

@@ -7,6 +7,7 @@
 #include <random>
 #include <vector>
 
+#include "group_test_support.hpp"
 #include "penshape/core/ink.hpp"
 #include "penshape/core/ink_certificate.hpp"
 #include "recognize/certify/certified_distance.hpp"
@@ -15,24 +16,13 @@
 namespace penshape::recognize_detail {
 namespace {
 
-using Piece = std::vector<PointD>;
-
-double seg_dist(PointD p, PointD a, PointD b) {
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  const double len2 = dx * dx + dy * dy;
-  double t = len2 > 0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / len2 : 0.0;
-  t = std::max(0.0, std::min(1.0, t));
-  return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
-}
+using Piece = test::Path;
+using test::seg_dist;
 
 // The distance to the union of the pieces, segment by segment.
 double to_pieces(PointD p, const std::vector<Piece>& pieces) {
   double best = INFINITY;
-  for (const Piece& piece : pieces) {
-    for (std::size_t i = 0; i + 1 < piece.size(); ++i) {
-      best = std::min(best, seg_dist(p, piece[i], piece[i + 1]));
-    }
-  }
+  for (const Piece& piece : pieces) best = std::min(best, test::path_dist(p, piece));
   return best;
 }
 
@@ -40,15 +30,8 @@ double to_pieces(PointD p, const std::vector<Piece>& pieces) {
 std::vector<PointD> dense(const std::vector<Piece>& pieces, double step) {
   std::vector<PointD> out;
   for (const Piece& piece : pieces) {
-    for (std::size_t i = 0; i + 1 < piece.size(); ++i) {
-      const auto n = static_cast<std::size_t>(
-          std::ceil(std::hypot(piece[i + 1].x - piece[i].x, piece[i + 1].y - piece[i].y) / step));
-      for (std::size_t k = 0; k <= n; ++k) {
-        const double f = static_cast<double>(k) / static_cast<double>(std::max<std::size_t>(n, 1));
-        out.push_back({piece[i].x + f * (piece[i + 1].x - piece[i].x),
-                       piece[i].y + f * (piece[i + 1].y - piece[i].y)});
-      }
-    }
+    const Piece d = test::dense(piece, step);
+    out.insert(out.end(), d.begin(), d.end());
   }
   return out;
 }
