@@ -158,9 +158,11 @@ void draw_miss(const std::filesystem::path& file, const std::vector<Points>& str
     out << "'/>\n";
   }
   if (arrow != nullptr) {
-    out << "<polyline fill='none' stroke='red' stroke-width='0.7' points='";
-    for (const auto& q : arrow->clean) out << q.x << ',' << q.y << ' ';
-    out << "'/>\n";
+    for (const auto& piece : penshape::clean_pieces(arrow->shape, arrow->params, arrow->clean)) {
+      out << "<polyline fill='none' stroke='red' stroke-width='0.7' points='";
+      for (const auto& q : piece) out << q.x << ',' << q.y << ' ';
+      out << "'/>\n";
+    }
   }
   out << "</svg>\n";
 }
