@@ -55,7 +55,7 @@
 // then two pieces, the shaft tail -> [bends] -> shaft_end (ShapeParams::shaft_end, seeded at the
 // shaft stroke's end nearest the tip) and the head barb 1 -> tip -> barb 2, certified as that
 // union (the gap is no part of it), with two more free parameters. Plausible only with the head
-// drawn apart, the gap at most one mean barb long and aimed at the tip (within 12 degrees of the
+// drawn apart, the gap at most 1.3 mean barbs long and aimed at the tip (within 12 degrees of the
 // shaft's direction, or the tip within epsilon / 2 of the shaft's line), and only when no arrow
 // whose shaft runs to its tip is a snap. Two strokes up to 2 epsilon farther apart than touching
 // are tried together for it, and kept together only as an arrow.

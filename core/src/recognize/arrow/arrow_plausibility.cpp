@@ -108,7 +108,7 @@ std::string gap_implausibility(const ShapeParams& p, double epsilon, bool head_a
   }
   const double barb = 0.5 * (distance(v[2], v[1]) + distance(v[3], v[1]));
   if (norm(gap) > arrow_rules().max_gap_barb * barb) {
-    return "a shaft stops short of its tip by more than a barb";
+    return "a shaft stops short of its tip by more than 1.3 barbs";
   }
   return {};
 }
