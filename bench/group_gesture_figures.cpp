@@ -118,9 +118,12 @@ void draw_miss(const std::filesystem::path& dir, const Drawing& d,
     svg << ", vertices";
     for (const PointD& q : g.recognition.params.vertices) svg << ' ' << q.x << ',' << q.y;
     svg << " -->\n";
-    svg << "<polyline fill='none' stroke='red' stroke-width='" << w << "' points='";
-    for (const PointD& q : g.recognition.clean) svg << q.x << ',' << q.y << ' ';
-    svg << "'/>\n";
+    const Recognition& r = g.recognition;
+    for (const std::vector<PointD>& piece : clean_pieces(r.shape, r.params, r.clean)) {
+      svg << "<polyline fill='none' stroke='red' stroke-width='" << w << "' points='";
+      for (const PointD& q : piece) svg << q.x << ',' << q.y << ' ';
+      svg << "'/>\n";
+    }
   }
   svg << "</svg>\n";
 }

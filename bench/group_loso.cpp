@@ -117,7 +117,8 @@ void sweep(const Knob& k, const std::vector<Drawing>& drawings, bool json) {
 
 } // namespace
 
-void print_group_loso(const std::filesystem::path& gestures_root, bool json) {
+void print_group_loso(const std::filesystem::path& gestures_root, bool json,
+                      const std::string& only) {
   std::vector<Drawing> drawings;
   for (Drawing& d : load_gestures(gestures_root)) {
     if (gesture_kind(d) != GestureKind::kNone) drawings.push_back(std::move(d));
@@ -139,13 +140,27 @@ void print_group_loso(const std::filesystem::path& gestures_root, bool json) {
       {"kMinCornerTurnShare",
        {0.3, 0.35, 0.4, 0.45, 0.5},
        recognize_detail::kMinCornerTurnShare,
-       [](double v) { group_rules().min_corner_turn_share = v; }}};
+       [](double v) { group_rules().min_corner_turn_share = v; }},
+      {"kMaxGapBarb",
+       {0.7, 1.0, 1.3, 1.6},
+       recognize_detail::kMaxGapBarb,
+       [](double v) { arrow_rules().max_gap_barb = v; }},
+      {"kApartJoin",
+       {0.0, 1.0, 2.0, 3.0},
+       recognize_detail::kApartJoin,
+       [](double v) { group_rules().apart_join = v; }},
+      {"kMaxGapAim (deg)",
+       {8.0, 12.0, 16.0, 20.0},
+       std::round(recognize_detail::kMaxGapAim / recognize_detail::kDegree),
+       [](double v) { arrow_rules().max_gap_aim = v * recognize_detail::kDegree; }}};
   if (!json) {
     std::printf(
         "\nleave-one-subject-out on other people's drawings (squares and arrows of several "
         "strokes, non-shape drawings; each value chosen on the other writers):\n");
   }
-  for (const Knob& k : knobs) sweep(k, drawings, json);
+  for (const Knob& k : knobs) {
+    if (std::string(k.name).starts_with(only)) sweep(k, drawings, json);
+  }
 }
 
 } // namespace penshape::bench

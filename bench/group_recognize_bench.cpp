@@ -18,10 +18,12 @@
 //   (data dir: $PENSHAPE_SHARED_DATA_DIR)
 //   --loso: only the leave-one-subject-out figures of the thresholds picked on real strokes
 //           (group_loso.hpp; each swept over a few values, about 30 s per value).
-//   --without RULE, --apart-barb X, --shaft-span X, --continuation-angle DEG: a rule off
-//   (open_polylines, curved_sides, crossing_pieces, continued_tips, arrow_when_refused,
-//   a_stroke_per_arrow_part, round_arrow_pieces, seed_from_strokes), a head drawn apart's barb
-//   limit, a shaft stroke's least span, the cone of a stroke continuing an arrow's tip (to
+//   --loso-only KNOB: the same for the thresholds whose name starts with KNOB.
+//   --without RULE, --apart-barb X, --shaft-span X, --continuation-angle DEG, --gap-barb X,
+//   --gap-aim DEG: a rule off (open_polylines, curved_sides, crossing_pieces, continued_tips,
+//   arrow_when_refused, a_stroke_per_arrow_part, round_arrow_pieces, seed_from_strokes,
+//   gapped_shafts), a head drawn apart's barb limit, a shaft stroke's least span, the cone of a
+//   stroke continuing an arrow's tip, a shaft's gap to its tip in barbs and its aim (to
 //   measure).
 //   --gestures-only: only the figures on other people's drawings.
 //   --only CLASS: with --gestures-only, only the gestures of that class ("D", "arrowhead", ...).
@@ -156,9 +158,11 @@ void draw_miss(const std::filesystem::path& file, const std::vector<Points>& str
     out << "'/>\n";
   }
   if (arrow != nullptr) {
-    out << "<polyline fill='none' stroke='red' stroke-width='0.7' points='";
-    for (const auto& q : arrow->clean) out << q.x << ',' << q.y << ' ';
-    out << "'/>\n";
+    for (const auto& piece : penshape::clean_pieces(arrow->shape, arrow->params, arrow->clean)) {
+      out << "<polyline fill='none' stroke='red' stroke-width='0.7' points='";
+      for (const auto& q : piece) out << q.x << ',' << q.y << ' ';
+      out << "'/>\n";
+    }
   }
   out << "</svg>\n";
 }
@@ -177,6 +181,8 @@ bool switch_off(const std::string& rule) {
       {"arrow_when_refused", &GroupRules::arrow_when_refused}};
   if (rule == "seed_from_strokes") {
     penshape::recognize_detail::arrow_rules().seed_from_strokes = false;
+  } else if (rule == "gapped_shafts") {
+    penshape::recognize_detail::arrow_rules().gapped_shafts = false;
   } else if (const auto it = switches.find(rule); it != switches.end()) {
     penshape::recognize_detail::group_rules().*(it->second) = false;
   } else {
@@ -197,7 +203,7 @@ double quantile(std::vector<double> v, double q) {
 int main(int argc, char** argv) {
   bool json = false, gestures_only = false, loso = false;
   std::filesystem::path svg_dir;
-  std::string only;
+  std::string only, loso_only;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--json") == 0) {
       json = true;
@@ -205,6 +211,14 @@ int main(int argc, char** argv) {
       gestures_only = true;
     } else if (std::strcmp(argv[i], "--loso") == 0) {
       loso = true;
+    } else if (std::strcmp(argv[i], "--loso-only") == 0 && i + 1 < argc) {
+      loso = true;
+      loso_only = argv[++i];
+    } else if (std::strcmp(argv[i], "--gap-barb") == 0 && i + 1 < argc) {
+      penshape::recognize_detail::arrow_rules().max_gap_barb = std::atof(argv[++i]);
+    } else if (std::strcmp(argv[i], "--gap-aim") == 0 && i + 1 < argc) {
+      penshape::recognize_detail::arrow_rules().max_gap_aim =
+          std::atof(argv[++i]) * penshape::recognize_detail::kDegree;
     } else if (std::strcmp(argv[i], "--without") == 0 && i + 1 < argc) {
       if (!switch_off(argv[++i])) return 2;
     } else if (std::strcmp(argv[i], "--apart-barb") == 0 && i + 1 < argc) {
@@ -222,8 +236,9 @@ int main(int argc, char** argv) {
     } else {
       std::fprintf(stderr,
                    "usage: group_recognize_bench [--json] [--gestures-only [--only CLASS]] "
-                   "[--loso] [--without RULE] [--apart-barb X] [--shaft-span X] "
-                   "[--continuation-angle DEG] [--svg-dir DIR]\n");
+                   "[--loso | --loso-only KNOB] [--without RULE] [--apart-barb X] "
+                   "[--shaft-span X] [--continuation-angle DEG] [--gap-barb X] [--gap-aim DEG] "
+                   "[--svg-dir DIR]\n");
       return 2;
     }
   }
@@ -235,7 +250,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (loso) {
-    penshape::bench::print_group_loso(root.parent_path() / "gestures", json);
+    penshape::bench::print_group_loso(root.parent_path() / "gestures", json, loso_only);
     return 0;
   }
   if (gestures_only) {

@@ -185,7 +185,7 @@ std::string device_line(const v1::DeviceInfo& device) {
 namespace {
 
 // ArrowParams as "arrow" {tail, tip, barbs, tail_barbs, head_angle_rad, shaft_bulge,
-// shaft_bends}.
+// shaft_bends, shaft_end (only when the shaft stops short of the tip)}.
 void write_arrow_json(JsonWriter& json, const v1::ArrowParams& a) {
   auto points = [&](const char* key, const auto& list) {
     json.key(key).begin_array();
@@ -202,6 +202,10 @@ void write_arrow_json(JsonWriter& json, const v1::ArrowParams& a) {
   json.key("head_angle_rad").number(a.head_angle_rad());
   json.key("shaft_bulge").number(a.shaft_bulge());
   points("shaft_bends", a.shaft_bends());
+  if (a.has_shaft_end()) {
+    json.key("shaft_end");
+    write_point(json, a.shaft_end());
+  }
   json.end_object();
 }
 

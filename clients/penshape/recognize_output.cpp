@@ -63,6 +63,11 @@ void write_params(JsonWriter& json, ShapeClass c, const ShapeParams& p) {
     json.key("shaft_bends").begin_array();
     for (const PointD& b : p.shaft_bends) write_point(json, b);
     json.end_array();
+    // A shaft that stops short of the tip ends here (absent: it runs to the tip).
+    if (p.shaft_end) {
+      json.key("shaft_end");
+      write_point(json, *p.shaft_end);
+    }
   }
   json.end_object();
 }

@@ -143,6 +143,10 @@ std::string json_line(const snap::Replacement& rep) {
     json.key("shaft_bends").begin_array();
     for (const PointD& b : r.params.shaft_bends) write_point(json, b);
     json.end_array();
+    if (r.params.shaft_end) {
+      json.key("shaft_end");
+      write_point(json, *r.params.shaft_end);
+    }
   }
   json.end_object();
   json.key("tidy").begin_array();

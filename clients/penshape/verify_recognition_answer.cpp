@@ -67,6 +67,7 @@ ShapeParams params_of(const JsonValue& p) {
           point(b->items[i], "params.shaft_bends[" + std::to_string(i) + "]"));
     }
   }
+  if (const JsonValue* e = p.find("shaft_end")) out.shaft_end = point(*e, "params.shaft_end");
   return out;
 }
 

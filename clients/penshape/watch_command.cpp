@@ -40,7 +40,7 @@ constexpr const char* kHelp =
     "                     intent (writing | drawing: writing is left as drawn unless\n"
     "                     snap_writing), writing_score,\n"
     "                     vertices | circle | ellipse | arc | arrow {tail, tip, barbs,\n"
-    "                     tail_barbs, head_angle_rad, shaft_bulge, shaft_bends},\n"
+    "                     tail_barbs, head_angle_rad, shaft_bulge, shaft_bends[, shaft_end]},\n"
     "                     hausdorff_bound, tolerance,\n"
     "                     pen_radius, method} in mm; a shape event also has shape_id,\n"
     "                     replaced_stroke_ids (strokes whose ink the shape replaces: several\n"

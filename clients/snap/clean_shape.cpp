@@ -69,11 +69,16 @@ std::vector<std::vector<PointD>> arrow_pieces(const Recognition& r) {
   if (p.shaft_bulge != 0 && !r.clean.empty()) return {r.clean};
   std::vector<PointD> shaft{v[0]};
   shaft.insert(shaft.end(), p.shaft_bends.begin(), p.shaft_bends.end());
-  shaft.push_back(v[1]);
+  shaft.push_back(p.shaft_end.value_or(v[1])); // a shaft may stop short of the tip
   if (p.shaft_bulge != 0 && p.shaft_bends.empty()) shaft = bowed(r, v[0], v[1], p.shaft_bulge);
   std::vector<std::vector<PointD>> out{shaft, {v[2], v[1], v[3]}};
   if (v.size() == 6) out.push_back({v[4], v[0], v[5]});
   return out;
+}
+
+std::vector<std::vector<PointD>> clean_lines(const Recognition& r) {
+  if (r.shape == ShapeClass::kArrow && r.params.shaft_end) return arrow_pieces(r);
+  return {clean_polyline(r)};
 }
 
 std::vector<PointD> clean_polyline(const Recognition& r) {

@@ -11,7 +11,13 @@ namespace penshape::snap {
 // ellipses and arcs are sampled so finely that the chords stay within
 // min(epsilon - bound, epsilon / 20, pen radius / 10) of the true curve: the polyline's ink is then
 // within the tolerance of the stroke's ink, as the certificate says of the curve.
+// An arrow whose shaft stops short of its tip (ShapeParams::shaft_end) cannot be one line: use
+// clean_lines.
 std::vector<PointD> clean_polyline(const Recognition& r);
+
+// The clean shape as lines to draw: clean_polyline's one line, or the two pieces (shaft, head)
+// of an arrow whose shaft stops short of its tip.
+std::vector<std::vector<PointD>> clean_lines(const Recognition& r);
 
 // An arrow's pieces as polylines: the shaft (tail -> shaft bends -> tip), the head (barb 1 ->
 // tip -> barb 2), and a double arrow's tail head (barb 3 -> tail -> barb 4). A curved shaft: the

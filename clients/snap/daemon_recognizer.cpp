@@ -46,6 +46,7 @@ Recognition from_proto(const v1::Shape& shape, double s) {
     p.head_angle = a.head_angle_rad();
     p.shaft_bulge = a.shaft_bulge() * s;
     for (const v1::Point& v : a.shaft_bends()) p.shaft_bends.push_back(scaled(v, s));
+    if (a.has_shaft_end()) p.shaft_end = scaled(a.shaft_end(), s);
   } else {
     for (const v1::Point& v : shape.vertices().vertices()) p.vertices.push_back(scaled(v, s));
   }

@@ -114,8 +114,8 @@ void snap_pages(const std::vector<std::vector<Stroke>>& pages, double mm_per_uni
     }
     // The group's first element becomes the shape; the others go (from the tree too, for a
     // document saved whole).
-    edits[edits.size() - ps.strokes.size()].text = node_text(
-        replace(pages[ps.page][ps.strokes.front()], rep.recognition, ps.pen_radius, ps.backwards));
+    edits[edits.size() - ps.strokes.size()].text =
+        replace(pages[ps.page][ps.strokes.front()], rep.recognition, ps.pen_radius, ps.backwards);
     for (std::size_t k = 1; k < ps.strokes.size(); ++k) {
       pugi::xml_node gone = pages[ps.page][ps.strokes[k]].element;
       gone.parent().remove_child(gone);
@@ -133,7 +133,7 @@ void snap_svg(pugi::xml_document& doc, const std::string& text, const SnapOption
   }
   snap_pages(pages, svg_mm_per_unit(doc.document_element()), options, recognize_page, result,
              splice, [](const SvgStroke& s, const Recognition& r, double pen, bool backwards) {
-               return replace_svg_stroke(s, r, pen, backwards);
+               return node_text(replace_svg_stroke(s, r, pen, backwards));
              });
 }
 
@@ -149,8 +149,7 @@ void snap_xopp(pugi::xml_document& doc, const std::string& text, const SnapOptio
   }
   snap_pages(pages, kXoppMmPerUnit, options, recognize_page, result, splice,
              [](const XoppStroke& s, const Recognition& r, double pen, bool backwards) {
-               replace_xopp_stroke(s, r, pen, backwards);
-               return s.element;
+               return replace_xopp_stroke(s, r, pen, backwards);
              });
 }
 

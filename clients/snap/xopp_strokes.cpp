@@ -10,6 +10,7 @@
 #include "clean_shape.hpp"
 #include "number_scanner.hpp"
 #include "snap_error.hpp"
+#include "splice.hpp"
 
 namespace penshape::snap {
 namespace {
@@ -162,11 +163,11 @@ std::vector<XoppLayer> read_xopp_strokes(const pugi::xml_document& doc, const st
   return out;
 }
 
-void replace_xopp_stroke(const XoppStroke& stroke, const Recognition& r, double pen_radius,
-                         bool backwards) {
-  pugi::xml_node n = stroke.element;
-  std::vector<PointD> clean = clean_polyline(r);
-  if (backwards) std::reverse(clean.begin(), clean.end());
+namespace {
+
+// Writes one line of the clean shape into the stroke element n.
+void write_line(pugi::xml_node n, const XoppStroke& stroke, const std::vector<PointD>& clean,
+                double pen_radius) {
   std::string pts;
   for (const PointD& p : clean) {
     if (!pts.empty()) pts += ' ';
@@ -177,6 +178,27 @@ void replace_xopp_stroke(const XoppStroke& stroke, const Recognition& r, double 
   n.attribute("width").set_value(width.c_str());
   while (n.first_child()) n.remove_child(n.first_child());
   n.append_child(pugi::node_pcdata).set_value(pts.c_str());
+}
+
+} // namespace
+
+std::string replace_xopp_stroke(const XoppStroke& stroke, const Recognition& r, double pen_radius,
+                                bool backwards) {
+  std::vector<std::vector<PointD>> lines = clean_lines(r);
+  if (backwards) {
+    std::reverse(lines.begin(), lines.end());
+    for (std::vector<PointD>& line : lines) std::reverse(line.begin(), line.end());
+  }
+  // A stroke is one line: a shape of two pieces (an arrow whose shaft stops short of its tip)
+  // writes its second piece as a copy of the stroke just after it.
+  pugi::xml_node n = stroke.element;
+  std::string text;
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    if (k > 0) n = n.parent().insert_copy_after(n, n);
+    write_line(n, stroke, lines[k], pen_radius);
+    text += node_text(n);
+  }
+  return text;
 }
 
 } // namespace penshape::snap

@@ -34,12 +34,14 @@ struct XoppLayer {
 std::vector<XoppLayer> read_xopp_strokes(const pugi::xml_document& doc, const std::string& text,
                                          std::vector<std::string>& warnings);
 
-// The stroke becomes the clean shape's polyline (clean_polyline) with the pen width 2
+// The stroke becomes the clean shape's polyline (clean_lines) with the pen width 2
 // pen_radius; a pressure stroke keeps its width profile (each new point takes the width found
 // at the same fraction of the old stroke's length). Tool, colour and every other attribute stay.
 // `backwards`: the polyline is written end to start (an arrow drawn head first,
-// drawn_direction.hpp).
-void replace_xopp_stroke(const XoppStroke& stroke, const Recognition& r, double pen_radius,
-                         bool backwards = false);
+// drawn_direction.hpp). An arrow whose shaft stops short of its tip is two lines: the second is
+// written into a copy of the stroke inserted after it. Returns the XML text written (the
+// stroke, and the copy when there is one).
+std::string replace_xopp_stroke(const XoppStroke& stroke, const Recognition& r, double pen_radius,
+                                bool backwards = false);
 
 } // namespace penshape::snap

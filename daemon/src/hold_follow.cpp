@@ -181,6 +181,7 @@ void map_params(const Affine& m, v1::Shape* s) {
       for (v1::Point& p : *a->mutable_barbs()) map_point(m, &p);
       for (v1::Point& p : *a->mutable_tail_barbs()) map_point(m, &p);
       for (v1::Point& p : *a->mutable_shaft_bends()) map_point(m, &p);
+      if (a->has_shaft_end()) map_point(m, a->mutable_shaft_end());
       a->set_shaft_bulge(a->shaft_bulge() * m.scale);
       break;
     }

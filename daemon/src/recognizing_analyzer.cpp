@@ -402,6 +402,7 @@ v1::Shape to_proto_shape(ShapeClass shape, const ShapeParams& params,
       a->set_head_angle_rad(params.head_angle);
       a->set_shaft_bulge(params.shaft_bulge);
       for (const PointD& b : params.shaft_bends) set_point(b, a->add_shaft_bends());
+      if (params.shaft_end) set_point(*params.shaft_end, a->mutable_shaft_end());
       break;
     }
     default: {
@@ -410,11 +411,14 @@ v1::Shape to_proto_shape(ShapeClass shape, const ShapeParams& params,
       break;
     }
   }
-  // The clean path as straight pieces (circles come densely sampled from the recognizer).
-  for (std::size_t i = 0; i + 1 < clean.size(); ++i) {
-    auto* seg = out.mutable_clean_path()->add_pieces()->mutable_segment();
-    set_point(clean[i], seg->mutable_start());
-    set_point(clean[i + 1], seg->mutable_end());
+  // The clean path as straight pieces (circles come densely sampled from the recognizer); an
+  // arrow whose shaft stops short of its tip is two pieces, the gap between them no segment.
+  for (const std::vector<PointD>& piece : clean_pieces(shape, params, clean)) {
+    for (std::size_t i = 0; i + 1 < piece.size(); ++i) {
+      auto* seg = out.mutable_clean_path()->add_pieces()->mutable_segment();
+      set_point(piece[i], seg->mutable_start());
+      set_point(piece[i + 1], seg->mutable_end());
+    }
   }
   out.set_confidence(confidence);
   auto* cert = out.mutable_certificate();

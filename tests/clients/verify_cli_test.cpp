@@ -18,21 +18,32 @@
 
 namespace {
 
-// One stroke drawn through the corners in order, 30 samples a side, 10 ms apart (a JSON line).
-std::string polyline_stroke_json(const std::vector<std::array<double, 2>>& corners) {
-  std::string text = "{\"points\": [";
+// Strokes along polylines, one JSON line each, 30 samples a side 10 ms apart, the times running
+// on from stroke to stroke.
+std::string strokes_json(const std::vector<std::vector<std::array<double, 2>>>& strokes) {
+  std::string text;
   double t = 0;
-  for (std::size_t i = 0; i + 1 < corners.size(); ++i) {
-    for (int k = i == 0 ? 0 : 1; k <= 30; ++k, t += 0.01) {
-      const double f = k / 30.0;
-      char buf[96];
-      std::snprintf(buf, sizeof buf, "%s[%.6f, %.6f, %.3f]", text.back() == '[' ? "" : ", ",
-                    corners[i][0] + f * (corners[i + 1][0] - corners[i][0]),
-                    corners[i][1] + f * (corners[i + 1][1] - corners[i][1]), t);
-      text += buf;
+  for (const auto& corners : strokes) {
+    text += "{\"points\": [";
+    for (std::size_t i = 0; i + 1 < corners.size(); ++i) {
+      for (int k = i == 0 ? 0 : 1; k <= 30; ++k, t += 0.01) {
+        const double f = k / 30.0;
+        char buf[96];
+        std::snprintf(buf, sizeof buf, "%s[%.6f, %.6f, %.3f]", text.back() == '[' ? "" : ", ",
+                      corners[i][0] + f * (corners[i + 1][0] - corners[i][0]),
+                      corners[i][1] + f * (corners[i + 1][1] - corners[i][1]), t);
+        text += buf;
+      }
     }
+    text += "]}\n";
+    t += 0.3;
   }
-  return text + "]}\n";
+  return text;
+}
+
+// One stroke drawn through the corners in order (a JSON line).
+std::string polyline_stroke_json(const std::vector<std::array<double, 2>>& corners) {
+  return strokes_json({corners});
 }
 
 using Result = penshape::test::CommandResult;
@@ -322,6 +333,28 @@ TEST(VerifyCli, BentArrowAnswerVerifiesAndAMovedBendDoesNot) {
       rec.out.substr(0, y) + std::to_string(by + 20.0) + rec.out.substr(y_end);
   const Result bad = penshape::test::run_command(cli() + " verify " + strokes + " " +
                                                  write("hockey_stick_moved.json", moved));
+  EXPECT_EQ(bad.exit_code, 1) << bad.out;
+}
+
+// An arrow drawn as a shaft stroke that stops 45 short of the head's tip (0.9 barbs, about 3
+// epsilon): `recognize --json` answers one arrow of both strokes whose shaft ends there
+// ("shaft_end"), `verify` accepts it, and the same answer without its shaft_end (the shaft
+// running on to the tip, across the gap) is refuted.
+TEST(VerifyCli, ArrowWhoseShaftStopsShortVerifiesAndTheJoinedOneDoesNot) {
+  const std::string strokes =
+      write("gapped_arrow.jsonl",
+            strokes_json({{{0, 0}, {110, 0}}, {{118, 57.4}, {200, 0}, {118, -57.4}}}));
+  std::string answer;
+  const Result ok = recognize_and_verify(strokes, &answer);
+  ASSERT_NE(answer.find("\"lines\":[1,2]"), std::string::npos) << answer;
+  ASSERT_NE(answer.find("\"class\":\"arrow\""), std::string::npos) << answer;
+  const auto at = answer.find(",\"shaft_end\":[");
+  ASSERT_NE(at, std::string::npos) << answer;
+  EXPECT_EQ(ok.exit_code, 0) << ok.out;
+  EXPECT_EQ(ok.out, "verified\n");
+  const std::string joined = answer.substr(0, at) + answer.substr(answer.find(']', at) + 1);
+  const Result bad = penshape::test::run_command(cli() + " verify " + strokes + " " +
+                                                 write("gapped_arrow_joined.json", joined));
   EXPECT_EQ(bad.exit_code, 1) << bad.out;
 }
 

@@ -267,6 +267,36 @@ TEST(VerifyRecognition, ArrowWithBentShaft) {
   EXPECT_THROW(status(stroke, claim(ShapeClass::kArrow, nan, 1.0)), InvalidInput);
 }
 
+TEST(VerifyRecognition, ArrowWhoseShaftStopsShortOfItsTip) {
+  // Two strokes: the shaft (0, 0) -> (60, 0) and the head (80, 15) -> (100, 0) -> (80, -15);
+  // the gap from 60 to 100 is 40, no stroke there.
+  const std::vector<std::vector<PointD>> strokes{along({{0, 0}, {60, 0}}, 0.5),
+                                                 along({{80, 15}, {100, 0}, {80, -15}}, 0.5)};
+  ShapeParams p;
+  p.vertices = {{0, 0}, {100, 0}, {80, 15}, {80, -15}};
+  p.shaft_end = PointD{60, 0};
+  const double eps = 2.0;
+  auto verdict = [&](const ShapeParams& q) {
+    return verify_recognition(strokes, claim(ShapeClass::kArrow, q, eps, eps / 4)).status;
+  };
+  EXPECT_EQ(verdict(p), VerifyStatus::kVerified);
+  // Tampered: the shaft claimed to run to the tip (its middle of the gap is 11 from the ink),
+  // or to stop 5 before where it was drawn to.
+  ShapeParams joined = p;
+  joined.shaft_end.reset();
+  EXPECT_EQ(verdict(joined), VerifyStatus::kRefuted);
+  ShapeParams shorter = p;
+  shorter.shaft_end = PointD{52, 0};
+  EXPECT_EQ(verdict(shorter), VerifyStatus::kRefuted);
+  // A double arrow or a curved shaft does not stop short; a shaft end not finite is bad input.
+  ShapeParams curved = p;
+  curved.shaft_bulge = 3;
+  EXPECT_THROW((void)verdict(curved), InvalidInput);
+  ShapeParams nan = p;
+  nan.shaft_end->y = std::nan("");
+  EXPECT_THROW((void)verdict(nan), InvalidInput);
+}
+
 TEST(VerifyRecognition, FreeformClaimsNothingAndBadInputThrows) {
   EXPECT_EQ(verify_recognition({{{0, 0}, {1, 1}}}, claim(ShapeClass::kFreeform, {}, 0)).status,
             VerifyStatus::kVerified);

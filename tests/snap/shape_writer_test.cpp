@@ -1,6 +1,7 @@
 // Shapes written back by penshape snap (clients/snap/svg_writer.hpp, xopp_strokes.hpp), read
 // back and compared with the shape's known vertices (in the element's own coordinates): an
-// arrow's bent shaft keeps its bends; a polygon (ShapeClass::kPolygon, 5..8 corners) and a
+// arrow's bent shaft keeps its bends, a shaft that stops short of its tip leaves the gap (SVG:
+// two subpaths; Xournal++: two strokes); a polygon (ShapeClass::kPolygon, 5..8 corners) and a
 // diamond (a rhombus, any orientation) are an SVG <polygon> through their corners and a Xournal++
 // stroke that closes on its first corner.
 #include <gtest/gtest.h>
@@ -118,6 +119,50 @@ TEST(ArrowWriter, XournalStrokeHoldsTheShaftsBend) {
   // One line through every piece: shaft with its bend, then the head (the tip retraced).
   EXPECT_EQ(numbers(pts),
             (std::vector<double>{20, 10, 80, 10, 120, -20, 110, -6, 120, -20, 104, -14}));
+}
+
+// An arrow whose shaft stops short of its tip: shaft (20, 10) -> (80, 10), tip (120, 10).
+Recognition gapped_arrow() {
+  Recognition r = certified(ShapeClass::kArrow, {{20, 10}, {120, 10}, {104, 22}, {104, -2}});
+  r.params.shaft_end = PointD{80, 10};
+  return r;
+}
+
+TEST(ArrowWriter, SvgPathLeavesTheGapBeforeTheTip) {
+  pugi::xml_document doc;
+  const pugi::xml_node out =
+      replaced_svg(doc,
+                   "<svg xmlns='http://www.w3.org/2000/svg'>"
+                   "<path id='s' d='M 20,10 L 80,10' style='fill:none;stroke:#000;stroke-width:2'/>"
+                   "</svg>",
+                   gapped_arrow());
+  const std::vector<Subpath> sub = parse_path_data(out.attribute("d").value(), 0.01);
+  ASSERT_EQ(sub.size(), 2u); // the shaft as far as it goes, the head
+  EXPECT_EQ(sub[0].points, (std::vector<PointD>{{20, 10}, {80, 10}}));
+  EXPECT_EQ(sub[1].points, (std::vector<PointD>{{104, 22}, {120, 10}, {104, -2}}));
+}
+
+TEST(ArrowWriter, XournalWritesTheShaftAndTheHeadAsTwoStrokes) {
+  pugi::xml_document doc;
+  const std::string text = xopp_page("20 10 80 10");
+  ASSERT_TRUE(doc.load_string(text.c_str()));
+  std::vector<std::string> warnings;
+  const std::vector<XoppLayer> layers = read_xopp_strokes(doc, text, warnings);
+  ASSERT_EQ(layers.size(), 1u);
+  ASSERT_EQ(layers[0].strokes.size(), 1u);
+  const std::string written = replace_xopp_stroke(layers[0].strokes[0], gapped_arrow(), 0.75);
+  std::vector<std::vector<double>> lines;
+  for (const pugi::xml_node n : doc.child("xournal").child("page").child("layer").children()) {
+    EXPECT_STREQ(n.name(), "stroke");
+    EXPECT_STREQ(n.attribute("tool").value(), "pen");
+    lines.push_back(numbers(n.child_value()));
+  }
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_EQ(lines[0], (std::vector<double>{20, 10, 80, 10}));
+  EXPECT_EQ(lines[1], (std::vector<double>{104, 22, 120, 10, 104, -2}));
+  // The text written (spliced into the file in place of the stroke) holds both strokes.
+  EXPECT_EQ(written.find("<stroke"), 0u);
+  EXPECT_NE(written.find("<stroke", 1), std::string::npos);
 }
 
 // The SVG path `d` replaced by `r`: an SVG <polygon> of class `name` through `corners`.

@@ -185,4 +185,19 @@ inline constexpr double kMinShaftSpan = 0.5;
 // non-shape drawings, 30 deg 31, no arrow changes; every held-out writer's fold picks 45.
 inline constexpr double kMaxContinuationAngle = 45.0 * kDegree;
 
+// --- arrow/, a shaft that stops short of its tip (a23, #23) ----------------------------------
+
+// A shaft drawn in its own stroke may stop short of the tip by at most this many mean barbs (a
+// longer gap is a dash beside a chevron). group_recognize_bench --loso: 0.7/1/1.3/1.6 get 421/
+// 425/432/432 of 450 gesture shapes, 30/30/31/32 of 3104 non-shapes; every held-out fold picks 1.3.
+inline constexpr double kMaxGapBarb = 1.3;
+// ... and is aimed at the tip: the gap leaves the shaft's end within this angle of the shaft's
+// direction (the MMG misses: within 6 deg but one 16.8; a stroke beside the head is not aimed).
+inline constexpr double kMaxGapAim = 12.0 * kDegree;
+// Free parameters a shaft's end adds to an arrow's rank (a point: two coordinates).
+inline constexpr double kGapParameters = 2;
+// Two strokes up to this many epsilons farther apart than touching are tried as an arrow (a
+// shaft that stops short: its gap is up to a barb; 1, 2 and 3 gain the same, LOSO picks 2).
+inline constexpr double kApartJoin = 2.0;
+
 } // namespace penshape::recognize_detail

@@ -192,8 +192,15 @@ ShapeChains arrow_chains(ShapeClass shape, const ShapeParams& p) {
   if (!std::isfinite(p.shaft_bulge)) throw InvalidInput("clean shape: shaft_bulge not finite");
   ShapeChains out;
   out.chains.emplace_back();
+  // A shaft that stops short of the tip ends at shaft_end: the head is a chain of its own.
+  if (p.shaft_end) {
+    if (need != 4 || p.shaft_bulge != 0.0)
+      throw InvalidInput("clean shape: only a single arrow's straight or bent shaft stops short");
+    check_finite(*p.shaft_end);
+  }
+  const PointD stop = p.shaft_end.value_or(v[1]);
   if (p.shaft_bends.empty()) {
-    out.deviation = shaft(v[0], v[1], p.shaft_bulge, out.chains[0]);
+    out.deviation = shaft(v[0], stop, p.shaft_bulge, out.chains[0]);
   } else {
     // A bent shaft: the exact polyline tail -> bends -> tip.
     if (p.shaft_bulge != 0.0)
@@ -202,7 +209,7 @@ ShapeChains arrow_chains(ShapeClass shape, const ShapeParams& p) {
     for (const PointD& b : p.shaft_bends) check_finite(b);
     out.chains[0] = {v[0]};
     out.chains[0].insert(out.chains[0].end(), p.shaft_bends.begin(), p.shaft_bends.end());
-    out.chains[0].push_back(v[1]);
+    out.chains[0].push_back(stop);
   }
   out.chains.push_back({v[1], v[2]});
   out.chains.push_back({v[1], v[3]});

@@ -5,10 +5,12 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "group_test_support.hpp"
 #include "penshape/core/group_recognize.hpp"
 #include "recognize/arrow/fit_arrow.hpp"
+#include "recognize/group/group_plausibility.hpp"
 
 namespace penshape {
 namespace {
@@ -20,7 +22,10 @@ using test::stroke_along;
 
 class ArrowRulesTest : public ::testing::Test {
  protected:
-  void TearDown() override { arrow_rules() = ArrowRules{}; }
+  void TearDown() override {
+    arrow_rules() = ArrowRules{};
+    recognize_detail::group_rules() = recognize_detail::GroupRules{};
+  }
 };
 
 // A head at `tip` pointing along +x: barbs of the given lengths leaving the shaft's line at 35
@@ -77,6 +82,70 @@ TEST_F(ArrowRulesTest, ABarbOfMoreThanTwoShaftsIsNoArrow) {
   EXPECT_FALSE(one_arrow(s));
   arrow_rules().max_apart_barb = 3.0;
   EXPECT_TRUE(one_arrow(s));
+}
+
+// Grouped as one arrow (recognize_strokes: the grouper's touch test included), certified on the
+// union of both strokes; its shaft's end (absent: the shaft runs to the tip).
+std::optional<PointD> gapped_arrow(const std::vector<StrokeInput>& s) {
+  if (!one_arrow(s)) return std::nullopt;
+  const Recognition r = recognize_strokes(s)[0].recognition;
+  return r.params.shaft_end ? r.params.shaft_end : std::optional<PointD>{PointD{-1e9, -1e9}};
+}
+
+// A head at (100, 0) with barbs 50 long at 35 degrees, and a shaft stroke from `tail` to `end`:
+// with the shaft ending at (55, 0) the gap is 45 (0.9 barbs), above what the arrow whose shaft
+// runs to the tip covers within epsilon (about 14), and the strokes do not touch.
+std::vector<StrokeInput> shaft_short_of(PointD tail, PointD end) {
+  std::vector<StrokeInput> s{stroke_along({tail, end}, 0.0)};
+  s.push_back(stroke_along(head({100, 0}, 50.0, 50.0), next_start(s)));
+  return s;
+}
+
+// A shaft drawn in its own stroke that stops short of its head's tip, aimed at it: an arrow of
+// two pieces (ShapeParams::shaft_end), certified on both strokes.
+TEST_F(ArrowRulesTest, AShaftMayStopShortOfTheTip) {
+  const auto s = shaft_short_of({0, 0}, {55, 0});
+  const auto end = gapped_arrow(s);
+  ASSERT_TRUE(end.has_value());
+  EXPECT_LT(std::hypot(end->x - 55.0, end->y), 8.0);
+  arrow_rules().gapped_shafts = false;
+  EXPECT_FALSE(gapped_arrow(s).has_value());
+}
+
+// The strokes of such an arrow do not touch: the grouper tries them together only within
+// GroupRules::apart_join epsilons more than touching.
+TEST_F(ArrowRulesTest, TwoStrokesApartAreTriedAsAnArrowWithAGap) {
+  const auto s = shaft_short_of({0, 0}, {55, 0});
+  EXPECT_TRUE(gapped_arrow(s).has_value());
+  recognize_detail::group_rules().apart_join = 0.0;
+  EXPECT_FALSE(gapped_arrow(s).has_value());
+}
+
+// The gap is at most kMaxGapBarb mean barbs (0.9 here).
+TEST_F(ArrowRulesTest, TheGapIsAtMostABarb) {
+  const auto s = shaft_short_of({0, 0}, {55, 0});
+  EXPECT_TRUE(gapped_arrow(s).has_value());
+  arrow_rules().max_gap_barb = 0.7;
+  EXPECT_FALSE(gapped_arrow(s).has_value());
+}
+
+// The shaft is aimed at the tip: one 20 degrees off, whose line passes 15 from it, is a stroke
+// beside a head, not its shaft.
+TEST_F(ArrowRulesTest, AShaftThatStopsShortIsAimedAtTheTip) {
+  const auto s = shaft_short_of({0, -25}, {55, -2});
+  EXPECT_FALSE(gapped_arrow(s).has_value());
+  arrow_rules().max_gap_aim = 30.0 * std::numbers::pi / 180.0;
+  EXPECT_TRUE(gapped_arrow(s).has_value());
+}
+
+// A shaft that runs to the tip keeps today's one-piece arrow (no shaft_end): the gapped reading
+// only rescues a drawing the joined arrow does not certify.
+TEST_F(ArrowRulesTest, AShaftToTheTipHasNoShaftEnd) {
+  std::vector<StrokeInput> s{stroke_along({{0, 0}, {100, 0}}, 0.0)};
+  s.push_back(stroke_along(head({100, 0}, 30.0, 30.0), next_start(s)));
+  const auto end = gapped_arrow(s);
+  ASSERT_TRUE(end.has_value());
+  EXPECT_EQ(end->x, -1e9) << "a shaft_end " << end->x << ", " << end->y;
 }
 
 // An arrow pointing along +x with its tip at the origin and its tail at (-150, 0); its head V

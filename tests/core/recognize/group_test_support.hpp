@@ -113,12 +113,14 @@ inline std::vector<Path> clean_paths(const Recognition& r) {
       return {v};
     case ShapeClass::kArrow:
     case ShapeClass::kDoubleArrow: {
-      // A bent shaft is the polyline through its bends; else the arc (or segment).
-      Path shaft = arc_through(v[0], v[1], p.shaft_bulge);
+      // A bent shaft is the polyline through its bends; else the arc (or segment). A shaft that
+      // stops short of the tip ends at shaft_end (the head is its own piece).
+      const PointD stop = p.shaft_end.value_or(v[1]);
+      Path shaft = arc_through(v[0], stop, p.shaft_bulge);
       if (!p.shaft_bends.empty()) {
         shaft = {v[0]};
         shaft.insert(shaft.end(), p.shaft_bends.begin(), p.shaft_bends.end());
-        shaft.push_back(v[1]);
+        shaft.push_back(stop);
       }
       std::vector<Path> out{shaft, {v[1], v[2]}, {v[1], v[3]}};
       if (v.size() == 6) out.push_back({v[0], v[4]}), out.push_back({v[0], v[5]});

@@ -51,6 +51,14 @@
 // 100 degrees at each, its end pieces lie within 25 degrees of their heads' axes (the bisector
 // of the barbs), and each barb's end leaves the end piece's line by epsilon / 2 or more. Arrows
 // rank with 8 (double: 12) free parameters, one more for a curved shaft, two more per bend.
+// A shaft stroke may stop short of its head's tip (two strokes: a shaft, a head): the arrow is
+// then two pieces, the shaft tail -> [bends] -> shaft_end (ShapeParams::shaft_end, seeded at the
+// shaft stroke's end nearest the tip) and the head barb 1 -> tip -> barb 2, certified as that
+// union (the gap is no part of it), with two more free parameters. Plausible only with the head
+// drawn apart, the gap at most 1.3 mean barbs long and aimed at the tip (within 12 degrees of the
+// shaft's direction, or the tip within epsilon / 2 of the shaft's line), and only when no arrow
+// whose shaft runs to its tip is a snap. Two strokes up to 2 epsilon farther apart than touching
+// are tried together for it, and kept together only as an arrow.
 //
 // Tidy-up (TidyConfig). The winner is then made more regular, one constraint at a time, each kept
 // only when the result is still certified on the same strokes (else that constraint is skipped):

@@ -243,6 +243,10 @@ struct ShapeParams {
   // from tail to tip, at most 2; group_recognize.hpp, "Arrows"). Empty for a straight or arc
   // shaft; a bent shaft is straight between its bends (shaft_bulge is then 0).
   std::vector<PointD> shaft_bends;
+  // Arrows (kArrow) whose shaft stops short of the tip (a head drawn in its own stroke): the
+  // shaft is tail -> shaft_bends -> shaft_end and the head (barb, tip, barb) stands apart, the
+  // clean shape is these two pieces (shaft_bulge is then 0). Absent: the shaft runs to the tip.
+  std::optional<PointD> shaft_end;
 };
 
 struct Candidate {
@@ -258,7 +262,8 @@ struct Candidate {
 struct Recognition {
   ShapeClass shape = ShapeClass::kFreeform; // kFreeform when nothing certifies
   ShapeParams params;
-  std::vector<PointD> clean; // empty for freeform
+  std::vector<PointD> clean; // empty for freeform; an arrow with a shaft_end: its shaft, then its
+                             // head (the step between them is no part of it: clean_pieces)
   double rms = 0.0;          // of the winner, see Candidate::rms
   double confidence = 0.0;   // 1 - bound / (2 epsilon) of the winner (0.5..1), 0 freeform
   Certificate certificate;   // of the winner (certified == false for freeform; its method is
@@ -292,6 +297,11 @@ struct StrokeInput {
   // until the call that asked for it returns.
   std::function<const InkPolygon*()> ink_when_needed;
 };
+
+// The clean path as the pieces of the shape: one piece, or for an arrow whose shaft stops short of
+// its tip (ShapeParams::shaft_end) the shaft (tail .. shaft_end) and the head (barb, tip, barb).
+std::vector<std::vector<PointD>> clean_pieces(ShapeClass shape, const ShapeParams& params,
+                                              const std::vector<PointD>& clean);
 
 // Throws InvalidInput as recognize(samples) does, and for an empty ink polygon.
 Recognition recognize(const StrokeInput& stroke, const RecognizerConfig& config = {});

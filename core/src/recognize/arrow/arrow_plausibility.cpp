@@ -50,7 +50,8 @@ PieceRole piece_role(const std::vector<PointD>& piece, const std::vector<PointD>
   }
   auto near = [&](PointD p, std::size_t k) { return distance(p, v[k]) <= epsilon; };
   const PointD a = piece.front(), b = piece.back();
-  if (on_shaft && !on_head && (near(a, 0) || near(b, 0)) && spans_shaft(piece, v[0], v[1])) {
+  if (on_shaft && !on_head && (near(a, 0) || near(b, 0)) &&
+      spans_shaft(piece, v[0], shaft.back())) {
     return PieceRole::kShaft;
   }
   if (on_head && !on_shaft) {
@@ -86,13 +87,39 @@ std::string bend_implausibility(PointD tail, PointD tip, const std::vector<Point
   return {};
 }
 
+// Why a shaft that stops short of the tip is not plausible (empty when it is): its head is drawn
+// apart (a shaft stroke, a head stroke); the gap runs forward from the shaft's end and is aimed at
+// the tip: within max_gap_aim of the shaft's direction, or the tip within epsilon / 2 of the
+// shaft's line (kMinBendOffset: the shaft's end and the tip are each only known within epsilon,
+// so a short gap's angle says nothing); and it is at most max_gap_barb mean barbs long (else a
+// dash beside a chevron).
+std::string gap_implausibility(const ShapeParams& p, double epsilon, bool head_apart) {
+  if (!p.shaft_end) return {};
+  if (!head_apart) return "a shaft stops short of its tip only when the head is drawn apart";
+  const std::vector<PointD>& v = p.vertices;
+  const PointD end = *p.shaft_end;
+  const PointD along = end - (p.shaft_bends.empty() ? v[0] : p.shaft_bends.back());
+  const PointD gap = v[1] - end;
+  const double off_line = std::abs(cross(along, gap)) / norm(along);
+  const bool aimed = angle_between(along, gap) <= arrow_rules().max_gap_aim ||
+                     (dot(along, gap) > 0.0 && off_line <= kMinBendOffset * epsilon);
+  if (norm(gap) > 0.0 && !aimed) {
+    return "a shaft that stops short is not aimed at the tip (more than 12 degrees off)";
+  }
+  const double barb = 0.5 * (distance(v[2], v[1]) + distance(v[3], v[1]));
+  if (norm(gap) > arrow_rules().max_gap_barb * barb) {
+    return "a shaft stops short of its tip by more than 1.3 barbs";
+  }
+  return {};
+}
+
 } // namespace
 
 bool head_drawn_apart(const Fit& f, const UnionStroke& u, double epsilon) {
   if (f.shape != ShapeClass::kArrow || u.pieces.size() < 2) return false;
   const std::vector<PointD>& v = f.params.vertices;
-  const std::vector<PointD> shaft =
-      shaft_path(v[0], v[1], f.params.shaft_bulge, f.params.shaft_bends);
+  const std::vector<PointD> shaft = shaft_path(v[0], f.params.shaft_end.value_or(v[1]),
+                                               f.params.shaft_bulge, f.params.shaft_bends);
   const std::vector<PointD> head{v[2], v[1], v[3]};
   // Each barb ends where a head stroke ends: a barb hidden in the shaft's ink (short, near the
   // shaft within a loose epsilon) is no barb drawn.
@@ -124,13 +151,15 @@ std::string arrow_implausibility(const Fit& f, const Certificate& c, double draw
     return "an arrow is straight pieces: it must fit within 0.6 epsilon";
   }
   const double max_barb = head_apart ? arrow_rules().max_apart_barb : kMaxBarbFraction;
-  if (drawn_length > kMaxTracingArrow * path_length(f.clean.path)) {
+  if (drawn_length > kMaxTracingArrow * f.clean.length()) {
     return "the strokes are much longer than the arrow (traced over, a scribble or writing)";
   }
   const double shaft = distance(v[0], v[1]);
   const double bulge = f.params.shaft_bulge;
   const std::vector<PointD>& bends = f.params.shaft_bends;
-  if (std::string why = bend_implausibility(v[0], v[1], bends, eps); !why.empty()) return why;
+  const PointD shaft_stop = f.params.shaft_end.value_or(v[1]);
+  if (std::string why = bend_implausibility(v[0], shaft_stop, bends, eps); !why.empty()) return why;
+  if (std::string why = gap_implausibility(f.params, eps, head_apart); !why.empty()) return why;
   auto head_ok = [&](PointD head, PointD back, PointD b1, PointD b2) -> std::string {
     for (const PointD& b : {b1, b2}) {
       const double len = distance(b, head);

@@ -61,11 +61,13 @@ std::optional<std::pair<PointD, PointD>> find_barbs(const std::vector<PointD>& c
   return std::pair{*side[0], *side[1]};
 }
 
-// The polished unknowns: the vertices, the shaft's bulge and a bent shaft's bends.
+// The polished unknowns: the vertices, the shaft's bulge, a bent shaft's bends and the end of a
+// shaft that stops short of the tip.
 struct ArrowState {
   std::vector<PointD> v;
   double bulge = 0.0;
   std::vector<PointD> bends;
+  std::optional<PointD> shaft_end;
 };
 
 // Where along the union a vertex was last found near it: the next search starts there, since
@@ -109,7 +111,7 @@ struct Objective {
   const UnionStroke& u;
   ShapeClass shape;
   mutable std::size_t worst_at = 0;
-  mutable PieceHint hints[6 + kMaxShaftBends] = {};
+  mutable PieceHint hints[6 + kMaxShaftBends + 1] = {};
   mutable PieceHint shaft_hints[3 * (kMaxShaftBends + 1)] = {};
   // Per cloud point, the path segment found nearest last time: tried first, since a trial moves
   // one vertex a little.
@@ -118,12 +120,15 @@ struct Objective {
   // The squared distance from cloud point i to the path, or any value <= floor2 when it is not
   // above floor2 (such a point cannot raise the maximum): the scan stops at the first segment
   // within floor2, starting from the point's last nearest segment.
-  double distance2_above(std::size_t i, const std::vector<PointD>& path, double floor2) const {
+  // `jump`: the step of the path that joins two pieces (no segment; none: past the end).
+  double distance2_above(std::size_t i, const std::vector<PointD>& path, double floor2,
+                         std::size_t jump) const {
     const std::size_t segments = path.size() - 1;
     const std::size_t from = nearest[i] < segments ? nearest[i] : 0;
     double d2 = INFINITY;
     for (std::size_t s = 0; s < segments; ++s) {
       const std::size_t j = (from + s) % segments;
+      if (j == jump) continue;
       // The path retraces each barb (tip, barb, tip): the way back is the same segment.
       if (j > 0 && path[j + 1] == path[j - 1]) continue;
       const double dj = segment_distance2(cloud[i], path[j], path[j + 1]);
@@ -138,12 +143,14 @@ struct Objective {
 
   double operator()(const ArrowState& a, double limit = INFINITY) const {
     if (std::abs(a.bulge) > kMaxBulge * distance(a.v[0], a.v[1])) return INFINITY;
-    const std::vector<PointD> path = arrow_path(shape, a.v, a.bulge, a.bends);
+    const std::vector<PointD> path = arrow_path(shape, a.v, a.bulge, a.bends, a.shaft_end);
+    const std::vector<std::size_t> jumps = arrow_jumps(a.bends, a.shaft_end);
+    const std::size_t jump = jumps.empty() ? path.size() : jumps.front();
     const double limit2 = limit * limit;
     double worst2 = 0.0;
     for (std::size_t k = 0; k < cloud.size(); ++k) {
       const std::size_t i = (worst_at + k) % cloud.size();
-      const double d2 = distance2_above(i, path, worst2);
+      const double d2 = distance2_above(i, path, worst2, jump);
       if (d2 > worst2) {
         worst2 = d2;
         if (worst2 >= limit2) {
@@ -161,6 +168,11 @@ struct Objective {
       worst = std::max(worst, union_distance_above(u, a.bends[k], worst, hints[6 + k]));
       if (worst >= limit) return worst;
     }
+    if (a.shaft_end) {
+      worst =
+          std::max(worst, union_distance_above(u, *a.shaft_end, worst, hints[6 + kMaxShaftBends]));
+      if (worst >= limit) return worst;
+    }
     // A curved shaft may bow away from the ink between its ends, which the cloud alone does not
     // see (the certificate does): its quarter points must lie near the union too (a few points:
     // the polish only needs to be steered, the certificate checks the whole shaft).
@@ -175,7 +187,8 @@ struct Objective {
     // So may a bent shaft's pieces (a piece can cut across a curve of the ink): their quarter
     // points too.
     if (!a.bends.empty()) {
-      const std::vector<PointD> shaft = shaft_path(a.v[0], a.v[1], 0.0, a.bends);
+      const std::vector<PointD> shaft =
+          shaft_path(a.v[0], a.shaft_end.value_or(a.v[1]), 0.0, a.bends);
       for (std::size_t j = 0; j + 1 < shaft.size() && j <= kMaxShaftBends; ++j) {
         for (std::size_t k = 1; k <= 3; ++k) {
           const PointD q = shaft[j] + (0.25 * static_cast<double>(k)) * (shaft[j + 1] - shaft[j]);
@@ -188,10 +201,12 @@ struct Objective {
   }
 };
 
-// The point unknown i of a state: a vertex, then a bend; null for the bulge (the last unknown).
+// The point unknown i of a state: a vertex, then a bend, then the shaft's end; null for the
+// bulge (the last unknown).
 PointD* unknown_point(ArrowState& a, std::size_t i) {
   if (i < a.v.size()) return &a.v[i];
   if (i < a.v.size() + a.bends.size()) return &a.bends[i - a.v.size()];
+  if (a.shaft_end && i == a.v.size() + a.bends.size()) return &*a.shaft_end;
   return nullptr;
 }
 
@@ -200,7 +215,7 @@ PointD* unknown_point(ArrowState& a, std::size_t i) {
 double polish(ArrowState& a, const Objective& objective, double step, bool curved) {
   double best = objective(a);
   const double min_step = step / 32.0;
-  const std::size_t points = a.v.size() + a.bends.size();
+  const std::size_t points = a.v.size() + a.bends.size() + (a.shaft_end ? 1 : 0);
   std::size_t budget = 60 * (points + 1);
   const std::size_t unknowns = points + (curved ? 1 : 0);
   while (step >= min_step && budget > 0) {
@@ -301,7 +316,8 @@ Fit make_fit(ShapeClass shape, ArrowState a, double error) {
   Fit f;
   f.shape = shape;
   f.clean.kind = CleanShape::Kind::kPolyline;
-  f.clean.path = arrow_path(shape, a.v, a.bulge, a.bends);
+  f.clean.path = arrow_path(shape, a.v, a.bulge, a.bends, a.shaft_end);
+  f.clean.jumps = arrow_jumps(a.bends, a.shaft_end);
   const std::vector<PointD>& v = a.v;
   const PointD shaft = v[1] - v[0];
   f.params.center = 0.5 * (v[0] + v[1]);
@@ -310,6 +326,7 @@ Fit make_fit(ShapeClass shape, ArrowState a, double error) {
   f.params.head_angle = 0.5 * (angle_between(back, v[2] - v[1]) + angle_between(back, v[3] - v[1]));
   f.params.shaft_bulge = a.bulge;
   f.params.shaft_bends = std::move(a.bends);
+  f.params.shaft_end = a.shaft_end;
   f.params.vertices = std::move(a.v);
   f.fit_error = error;
   return f;
@@ -413,7 +430,7 @@ double fit_single(const std::vector<PointD>& cloud, const UnionStroke& u, PointD
   const auto head = find_barbs(cloud, tip, tail, epsilon);
   if (!head) return INFINITY;
   const double step = epsilon / 2.0;
-  const ArrowState start{{tail, tip, head->first, head->second}, 0.0, {}};
+  const ArrowState start{{tail, tip, head->first, head->second}, 0.0, {}, std::nullopt};
   const Objective objective{cloud, u, ShapeClass::kArrow};
   // Straight: polished from the raw start or the least-squares start, the one fitting better
   // first; the other only when the first does not fit tightly enough to pass surely.
@@ -497,9 +514,17 @@ void fit_from_strokes(const std::vector<PointD>& cloud, const UnionStroke& u, do
     if (!tip) continue;
     const PointD tail =
         distance(shaft.front(), *tip) > distance(shaft.back(), *tip) ? shaft.front() : shaft.back();
-    ArrowState a{{tail, *tip, head.front(), head.back()}, 0.0, {}};
+    const ArrowState start{{tail, *tip, head.front(), head.back()}, 0.0, {}, std::nullopt};
+    ArrowState a = start;
     const double e = polish(a, objective, epsilon / 2.0, false);
     out.push_back(make_fit(ShapeClass::kArrow, std::move(a), e));
+    // The shaft may stop short of the tip: its end seeded from the shaft stroke's end nearest
+    // the tip (arrow_implausibility asks that it be aimed at the tip and the gap be short).
+    if (!arrow_rules().gapped_shafts) continue;
+    ArrowState gapped = start;
+    gapped.shaft_end = tail == shaft.front() ? shaft.back() : shaft.front();
+    const double e_gapped = polish(gapped, objective, epsilon / 2.0, false);
+    out.push_back(make_fit(ShapeClass::kArrow, std::move(gapped), e_gapped));
   }
 }
 
@@ -552,7 +577,10 @@ std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon, double rank_to
   const auto at_b = find_barbs(cloud, cloud[b], cloud[a], epsilon);
   if (at_a && at_b && may_win(kDoubleParameters)) {
     const ArrowState start{
-        {cloud[a], cloud[b], at_b->first, at_b->second, at_a->first, at_a->second}, 0.0, {}};
+        {cloud[a], cloud[b], at_b->first, at_b->second, at_a->first, at_a->second},
+        0.0,
+        {},
+        std::nullopt};
     ArrowState st = start;
     const Objective objective{cloud, u, ShapeClass::kDoubleArrow};
     const double e = polish(st, objective, epsilon / 2.0, false);

@@ -36,6 +36,12 @@ struct ArrowRules {
   double max_apart_barb = kMaxSeparateHeadBarb;
   // A shaft drawn in its own stroke spans at least this share of the shaft (head_drawn_apart).
   double min_shaft_span = kMinShaftSpan;
+  // A shaft stroke may stop short of the tip (fit_from_strokes: a fit with ShapeParams::
+  // shaft_end), when its head is drawn apart, the gap is at most max_gap_barb mean barbs and it
+  // leaves the shaft's end within max_gap_aim of the shaft's direction (arrow_implausibility).
+  bool gapped_shafts = true;
+  double max_gap_barb = kMaxGapBarb;
+  double max_gap_aim = kMaxGapAim;
 };
 ArrowRules& arrow_rules();
 

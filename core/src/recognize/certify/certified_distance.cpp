@@ -15,11 +15,15 @@ using detail::IntervalNT;
 using detail::IPoint;
 using Guard = CGAL::Protect_FPU_rounding<true>;
 
-// The nearest segment of the polyline to p, in doubles (the proposal).
-std::size_t nearest_segment(PointD p, const std::vector<PointD>& path) {
+// The nearest segment of the polyline's pieces to p, in doubles (the proposal): a jump between
+// two pieces is no segment of the shape, so it is never proposed (the bound is then the distance
+// to a segment of the shape, >= the distance to the shape, the union of its pieces).
+std::size_t nearest_segment(PointD p, const CleanShape& shape) {
+  const std::vector<PointD>& path = shape.path;
   std::size_t best = 0;
   double best2 = INFINITY;
   for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    if (!shape.joined(i)) continue;
     const double d2 = segment_distance2(p, path[i], path[i + 1]);
     if (d2 < best2) {
       best2 = d2;
@@ -105,7 +109,7 @@ double CertifiedShape::upper(const IPoint& box, PointD near) const {
     case CleanShape::Kind::kPolyline: {
       const Guard rounding;
       if (s.path.size() == 1) return detail::distance_upper(box, enclose(s.path[0]));
-      const std::size_t i = nearest_segment(near, s.path);
+      const std::size_t i = nearest_segment(near, s);
       return detail::distance_upper(box, s.path[i], s.path[i + 1]);
     }
     case CleanShape::Kind::kCircle: {
@@ -158,8 +162,11 @@ double CertifiedShape::farthest_from(const std::function<Segment(PointD, double)
     worst = std::max(worst, upper_to_segment(box, nearest(q, worst)));
   };
   if (s.kind == CleanShape::Kind::kPolyline) {
+    // Several pieces: the sup over their union is the greatest of the sups over each piece, and
+    // every segment of every piece is visited (a jump is none: its points are not the shape's).
     if (s.path.size() == 1) visit(enclose(s.path[0]));
     for (std::size_t i = 0; i + 1 < s.path.size(); ++i) {
+      if (!s.joined(i)) continue;
       const PointD a = s.path[i], b = s.path[i + 1];
       const auto n = static_cast<std::size_t>(std::max(1.0, std::ceil(distance(a, b) / h)));
       half = std::max(half, half_piece(a, b, n));

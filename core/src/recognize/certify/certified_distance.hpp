@@ -5,6 +5,18 @@
 // that is not the nearest only loosens a bound, so no tolerance decides a certificate. These
 // functions hold their own rounding guards: call them in the default rounding mode (they call
 // sin and cos, whose accuracy the C library states for it).
+//
+// A shape of several pieces (CleanShape::jumps, an arrow whose shaft stops short of its tip) is
+// the set B = B_1 u ... u B_k of its pieces; the step from one piece to the next is no part of
+// it. Both one-sided terms of the Hausdorff bound hold as for one polyline:
+//   - to the shape: d(x, B) = min_i d(x, B_i) <= d(x, s) for every segment s of every piece, so
+//     the interval distance to the one segment a double proposes bounds d(x, B) for every x of a
+//     box (a jump is never proposed: its points are not in B, so its distance bounds nothing);
+//   - from the shape: sup_{b in B} d(b, A) = max_i sup_{b in B_i} d(b, A), and farthest_from
+//     samples every segment of every piece (never a jump), each point within half a step of a
+//     sample, keeping the greatest bound.
+// The ink certificate (ink_certificate.cpp) reads the pieces the same way: its upper bound is
+// the least over the pieces' segments, and its "maybe within rho" test looks at those only.
 #include <cstdint>
 #include <functional>
 #include <span>

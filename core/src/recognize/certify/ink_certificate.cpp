@@ -76,8 +76,9 @@ class ShapeDistance {
     }
     const Guard rounding;
     double best = INFINITY;
+    // The least over the segments of every piece (a jump between pieces is no segment).
     for (std::size_t i = 0; i + 1 < s.path.size(); ++i) {
-      best = std::min(best, box_segment_upper(box, s.path[i], s.path[i + 1]));
+      if (s.joined(i)) best = std::min(best, box_segment_upper(box, s.path[i], s.path[i + 1]));
     }
     return best;
   }
@@ -218,6 +219,7 @@ class ShapeDistance {
     const Guard rounding;
     const double rho2 = CGAL::square(IntervalNT(rho)).sup();
     for (std::size_t i = 0; i + 1 < path.size() || (i == 0 && path.size() == 1); ++i) {
+      if (path.size() > 1 && !shape_.joined(i)) continue; // a jump: near it is near no piece
       const PointD a = path[i], b = path.size() == 1 ? path[0] : path[i + 1];
       // -(x - lo) is lo - x rounded down (the guard rounds up).
       const double gap_x =

@@ -240,10 +240,12 @@ double degrees_of_freedom(const Fit& fit) {
       return 5;
     case ShapeClass::kArrow:
     case ShapeClass::kDoubleArrow: {
-      // A curved shaft: one more; each bend of a bent shaft: two more.
+      // A curved shaft: one more; each bend of a bent shaft: two more; a shaft's end short of
+      // the tip: two more.
       const double base = fit.shape == ShapeClass::kArrow ? 8 : 12;
       return base + (fit.params.shaft_bulge == 0.0 ? 0 : 1) +
-             2.0 * static_cast<double>(fit.params.shaft_bends.size());
+             2.0 * static_cast<double>(fit.params.shaft_bends.size()) +
+             (fit.params.shaft_end ? kGapParameters : 0.0);
     }
     case ShapeClass::kFreeform:
     case ShapeClass::kDot: // never fitted (dot.hpp)

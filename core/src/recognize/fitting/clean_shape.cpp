@@ -24,6 +24,10 @@ std::vector<PointD> CleanShape::sample(double h) const {
     if (path.empty()) return out;
     out.push_back(path.front());
     for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+      if (!joined(i)) { // the next piece starts: its first vertex only
+        out.push_back(path[i + 1]);
+        continue;
+      }
       const double len = distance(path[i], path[i + 1]);
       const auto pieces = static_cast<std::size_t>(std::max(1.0, std::ceil(len / h)));
       for (std::size_t k = 1; k <= pieces; ++k) {
@@ -42,6 +46,14 @@ std::vector<PointD> CleanShape::sample(double h) const {
     out.push_back(at(t0 + sweep * static_cast<double>(k) / static_cast<double>(pieces)));
   }
   return out;
+}
+
+double CleanShape::length() const {
+  double total = 0.0;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    if (joined(i)) total += distance(path[i], path[i + 1]);
+  }
+  return total;
 }
 
 std::vector<PointD> shaft_path(PointD tail, PointD tip, double bulge,
@@ -66,9 +78,16 @@ std::vector<PointD> shaft_path(PointD tail, PointD tip, double bulge,
 }
 
 std::vector<PointD> arrow_path(ShapeClass shape, const std::vector<PointD>& v, double bulge,
-                               const std::vector<PointD>& bends) {
+                               const std::vector<PointD>& bends,
+                               const std::optional<PointD>& shaft_end) {
   const std::size_t need = shape == ShapeClass::kDoubleArrow ? 6 : 4;
   if (v.size() != need) throw InvalidInput("clean shape: an arrow needs its tail, tip and barbs");
+  if (shaft_end) {
+    // Two pieces: the shaft as far as it goes, then the head (the jump between is no part).
+    std::vector<PointD> path = shaft_path(v[0], *shaft_end, 0.0, bends);
+    path.insert(path.end(), {v[2], v[1], v[3]});
+    return path;
+  }
   // One path through every piece; the retraces do not change the set (group_recognize.hpp).
   std::vector<PointD> path;
   if (shape == ShapeClass::kDoubleArrow) path = {v[4], v[0], v[5], v[0]};
@@ -80,6 +99,12 @@ std::vector<PointD> arrow_path(ShapeClass shape, const std::vector<PointD>& v, d
   }
   path.insert(path.end(), {v[2], v[1], v[3]});
   return path;
+}
+
+std::vector<std::size_t> arrow_jumps(const std::vector<PointD>& bends,
+                                     const std::optional<PointD>& shaft_end) {
+  if (!shaft_end) return {};
+  return {bends.size() + 1};
 }
 
 namespace {
@@ -118,7 +143,15 @@ std::vector<PointD> checked_arrow_path(ShapeClass shape, const ShapeParams& para
   if (!params.shaft_bends.empty() && params.shaft_bulge != 0.0) {
     throw InvalidInput("clean shape: a shaft is bent or curved, not both");
   }
-  return arrow_path(shape, params.vertices, params.shaft_bulge, params.shaft_bends);
+  if (params.shaft_end) {
+    if (shape != ShapeClass::kArrow || params.shaft_bulge != 0.0) {
+      throw InvalidInput(
+          "clean shape: only a single arrow's straight or bent shaft may stop short");
+    }
+    if (!finite_point(*params.shaft_end)) throw InvalidInput("clean shape: shaft_end not finite");
+  }
+  return arrow_path(shape, params.vertices, params.shaft_bulge, params.shaft_bends,
+                    params.shaft_end);
 }
 
 } // namespace
@@ -143,6 +176,7 @@ CleanShape clean_shape_of(ShapeClass shape, const ShapeParams& params) {
   }
   if (shape == ShapeClass::kArrow || shape == ShapeClass::kDoubleArrow) {
     c.path = checked_arrow_path(shape, params);
+    c.jumps = arrow_jumps(params.shaft_bends, params.shaft_end);
   } else if (shape != ShapeClass::kSegment && shape != ShapeClass::kPolyline) {
     c.path.push_back(c.path.front()); // polygons are closed
   }
@@ -190,10 +224,23 @@ double ellipse_distance(PointD p, const CleanShape& e) {
   return std::hypot(x - a * std::cos(t), y - b * std::sin(t));
 }
 
+namespace {
+
+// The distance to a polyline of several pieces: the least over the segments of every piece.
+double pieces_distance(PointD p, const CleanShape& c) {
+  double best2 = INFINITY;
+  for (std::size_t i = 0; i + 1 < c.path.size(); ++i) {
+    if (c.joined(i)) best2 = std::min(best2, segment_distance2(p, c.path[i], c.path[i + 1]));
+  }
+  return std::sqrt(best2);
+}
+
+} // namespace
+
 double CleanShape::distance_to(PointD p) const {
   switch (kind) {
     case Kind::kPolyline:
-      return polyline_distance(p, path);
+      return jumps.empty() ? polyline_distance(p, path) : pieces_distance(p, *this);
     case Kind::kCircle:
       return arc_distance(p, *this);
     case Kind::kEllipse:
@@ -250,3 +297,18 @@ double rms_distance(std::span<const PointD> points, const CleanShape& shape) {
 }
 
 } // namespace penshape::recognize_detail
+
+namespace penshape {
+
+std::vector<std::vector<PointD>> clean_pieces(ShapeClass shape, const ShapeParams& params,
+                                              const std::vector<PointD>& clean) {
+  // The layout of arrow_path: the shaft's vertices up to shaft_end, then the head's three.
+  const std::size_t shaft = params.shaft_bends.size() + 2;
+  if (shape != ShapeClass::kArrow || !params.shaft_end || clean.size() != shaft + 3) {
+    return {clean};
+  }
+  const auto cut = clean.begin() + static_cast<std::ptrdiff_t>(shaft);
+  return {std::vector<PointD>(clean.begin(), cut), std::vector<PointD>(cut, clean.end())};
+}
+
+} // namespace penshape

@@ -1,8 +1,11 @@
 #pragma once
 // The clean shape a candidate proposes, in the form the certificate and the fitters measure:
-// a polyline (segments, polylines, polygons), a circular arc or full circle, or an elliptic arc
+// a polyline (segments, polylines, polygons) or several polylines (an arrow whose shaft stops
+// short of its tip: the shaft and the head), a circular arc or full circle, or an elliptic arc
 // or full ellipse.
+#include <algorithm>
 #include <numbers>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -16,9 +19,14 @@ struct CleanShape {
   enum class Kind { kPolyline, kCircle, kEllipse };
   Kind kind = Kind::kPolyline;
   std::vector<PointD> path; // kPolyline: vertices in order; closed shapes repeat the first
-  PointD center;            // kCircle, kEllipse
-  double rx = 0.0;          // circle radius; ellipse semi-axis along `rotation`
-  double ry = 0.0;          // ellipse semi-axis across `rotation`
+  // kPolyline of several pieces: for each i listed (ascending), the step path[i] -> path[i + 1]
+  // joins two pieces and is no part of the shape. Every piece has >= 2 vertices. The shape is
+  // the union of the pieces, so the distance to it is the least over the pieces, and a bound
+  // over its points is the greatest over the pieces: each user below skips the jumps.
+  std::vector<std::size_t> jumps;
+  PointD center;   // kCircle, kEllipse
+  double rx = 0.0; // circle radius; ellipse semi-axis along `rotation`
+  double ry = 0.0; // ellipse semi-axis across `rotation`
   double rotation = 0.0;
   double t0 = 0.0;                       // parameter range [t0, t0 + sweep]; sweep
   double sweep = 2.0 * std::numbers::pi; // may be negative; |sweep| = 2 pi: full curve
@@ -30,7 +38,14 @@ struct CleanShape {
   // ulp(D), about 8.9e-16), so it is taken as the whole curve. Anything shorter is an arc.
   [[nodiscard]] bool full_curve() const { return std::abs(sweep) >= 2.0 * std::numbers::pi; }
   [[nodiscard]] PointD at(double t) const; // curve point at parameter t (not for kPolyline)
-  // The path sampled with arc-length steps <= h (polyline vertices always included).
+  // Whether the step path[i] -> path[i + 1] is a segment of the shape (kPolyline).
+  [[nodiscard]] bool joined(std::size_t i) const {
+    return std::find(jumps.begin(), jumps.end(), i) == jumps.end();
+  }
+  // The length of a polyline's pieces (the jumps left out).
+  [[nodiscard]] double length() const;
+  // The path sampled with arc-length steps <= h (polyline vertices always included; a jump is
+  // not sampled, so consecutive samples across it are two pieces' ends).
   [[nodiscard]] std::vector<PointD> sample(double h) const;
   // Distance from p to the shape: exact for polylines and circular arcs; for (full) ellipses
   // the distance to a point of the ellipse found by Newton's method, an upper bound that is
@@ -51,9 +66,15 @@ CleanShape clean_shape_of(ShapeClass shape, const ShapeParams& params);
 std::vector<PointD> shaft_path(PointD tail, PointD tip, double bulge,
                                const std::vector<PointD>& bends = {});
 // An arrow's clean path from its vertices (group_recognize.hpp, "Arrows"); throws InvalidInput
-// for the wrong vertex count.
+// for the wrong vertex count. With `shaft_end` (a single arrow's straight or bent shaft) the
+// path is the shaft tail -> bends -> shaft_end, then the head barb 1 -> tip -> barb 2, and the
+// step between them is a jump (arrow_jump).
 std::vector<PointD> arrow_path(ShapeClass shape, const std::vector<PointD>& vertices, double bulge,
-                               const std::vector<PointD>& bends = {});
+                               const std::vector<PointD>& bends = {},
+                               const std::optional<PointD>& shaft_end = std::nullopt);
+// The jump of an arrow_path with a shaft_end: after the shaft's last vertex (empty without one).
+std::vector<std::size_t> arrow_jumps(const std::vector<PointD>& bends,
+                                     const std::optional<PointD>& shaft_end);
 
 // Distance from p to a circular arc (exact formula).
 double arc_distance(PointD p, const CleanShape& circle);

@@ -30,8 +30,19 @@ void sort_scored(std::vector<Scored>& scored) {
 // The tidiest shape wins: when an arrow with a straight or curved shaft is a snap within 0.6
 // epsilon (as every arrow must fit unless its head is drawn apart), no arrow of the same class
 // with a bent shaft is one. A looser one leaves the ranks to decide: a head drawn apart excuses
-// a loose head, not a shaft that misses its bend.
+// a loose head, not a shaft that misses its bend. Likewise, when an arrow whose shaft runs to its
+// tip is a snap, no arrow whose shaft stops short is one (the gap only rescues a drawing whose
+// joined arrow does not certify).
 void prefer_unbent_shafts(std::vector<Scored>& arrows, double epsilon) {
+  const bool joined_snaps = std::any_of(arrows.begin(), arrows.end(), [](const Scored& a) {
+    return a.snap && !a.fit.params.shaft_end;
+  });
+  for (Scored& a : arrows) {
+    if (joined_snaps && a.snap && a.fit.params.shaft_end) {
+      a.snap = false;
+      a.candidate.rejected = "an arrow whose shaft runs to its tip certifies (the tidier shape)";
+    }
+  }
   for (const Scored& a : arrows) {
     if (!a.snap || !a.fit.params.shaft_bends.empty()) continue;
     if (a.candidate.certificate.bound > kStraightFraction * epsilon) continue;

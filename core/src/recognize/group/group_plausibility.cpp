@@ -157,6 +157,12 @@ GroupRules& group_rules() {
   return rules;
 }
 
+double apart_join(std::size_t strokes, double epsilon) {
+  return strokes == 2 ? group_rules().apart_join * epsilon : 0.0;
+}
+
+bool kept_apart(const Recognition& r) { return r.shape == ShapeClass::kArrow; }
+
 namespace {
 
 // The largest epsilon of a stroke alone: a gap between pieces is measured against the pieces

@@ -39,8 +39,21 @@ struct GroupRules {
   bool arrow_when_refused = true; // a refused winner gives way to the union's arrow (keep_union)
   bool a_stroke_per_arrow_part = true; // an arrow has at most a stroke per shaft and barb
   bool no_round_arrow_pieces = true;   // no stroke of an arrow is a circle or ellipse alone
+  // Two strokes this many epsilons farther apart than touching are still tried together, and
+  // kept only as an arrow (a shaft stroke that stops short of its head; apart_join; 0: never).
+  double apart_join = kApartJoin;
 };
 GroupRules& group_rules();
+
+// How much farther apart than touching (2 r + epsilon) a union of `strokes` strokes may be and
+// still be tried: only two strokes, by GroupRules::apart_join epsilons (0 otherwise). A shaft
+// drawn in its own stroke may stop short of its head's tip by up to kMaxGapBarb barbs, which the
+// touch test alone would never try.
+double apart_join(std::size_t strokes, double epsilon);
+// Whether two strokes that do not touch may be kept as `r`: an arrow (its shaft stroke stops
+// short of the head: a shaft_end, or a gap the tolerance covers). Every other shape drawn in
+// pieces touches.
+bool kept_apart(const Recognition& r);
 
 struct UnionRecognition;
 // Whether the grouper keeps the union `u` of `strokes` as one group: its winner is drawn as its

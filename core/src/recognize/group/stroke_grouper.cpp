@@ -219,7 +219,11 @@ BestUnion best_union(const UnionContext& c, const std::vector<std::size_t>& rece
     }
     const ToleranceChoice tol = recognize_detail::union_tolerance(boxes, c.config);
     const auto gap = [&](std::size_t i, std::size_t j) { return touches.gap(keys[i], keys[j]); };
-    if (!connected(keys.size(), slack, 2.0 * tol.pen_radius + tol.epsilon, gap)) continue;
+    const double join = 2.0 * tol.pen_radius + tol.epsilon;
+    // Two strokes apart may still be an arrow whose shaft stops short (group_plausibility.hpp).
+    const double apart = recognize_detail::apart_join(keys.size(), tol.epsilon);
+    const bool touching = connected(keys.size(), slack, join, gap);
+    if (!touching && !(apart > 0.0 && connected(keys.size(), slack, join + apart, gap))) continue;
     // Only a connected union is recognized: its strokes are copied then only.
     std::vector<StrokeInput> inputs;
     inputs.reserve(keys.size());
@@ -232,6 +236,7 @@ BestUnion best_union(const UnionContext& c, const std::vector<std::size_t>& rece
       if (!std::binary_search(members.begin(), members.end(), k)) others.push_back(&kept);
     }
     if (!recognize_detail::keep_union(u, inputs, others, c.config)) continue;
+    if (!touching && !recognize_detail::kept_apart(u.recognition)) continue;
     const std::size_t count = members.size() + 1;
     if (!out.best || count > best_count || (count == best_count && u.rank < out.best->rank)) {
       out.best = std::move(u);

@@ -81,6 +81,7 @@ Proposal rotated(ShapeClass c, ShapeParams p, double a) {
   const PointD centre = has_vertices(c) ? mean_of(p.vertices) : p.center;
   for (PointD& v : p.vertices) v = rotate_about(v, centre, a);
   for (PointD& v : p.shaft_bends) v = rotate_about(v, centre, a);
+  if (p.shaft_end) p.shaft_end = rotate_about(*p.shaft_end, centre, a);
   p.center = rotate_about(p.center, centre, a);
   p.rotation += a;
   return {c, std::move(p)};
