@@ -55,10 +55,11 @@ void prefer_unbent_shafts(std::vector<Scored>& arrows, double epsilon) {
   }
 }
 
-// Arrows that might beat a snap of rank `rank_to_beat` (infinite: none).
-std::vector<Scored> score_arrows(const UnionStroke& u, const std::vector<PointD>& cloud,
-                                 double drawn_length, double epsilon, double pen_radius,
-                                 double rank_to_beat) {
+// Arrows that might beat a snap of rank `rank_to_beat` (infinite: none), each certified and
+// checked for plausibility on its own (before prefer_unbent_shafts compares them).
+std::vector<Scored> score_each_arrow(const UnionStroke& u, const std::vector<PointD>& cloud,
+                                     double drawn_length, double epsilon, double pen_radius,
+                                     double rank_to_beat) {
   std::vector<Scored> out;
   for (Fit& f : fit_arrows(u, epsilon, rank_to_beat)) {
     Scored sc;
@@ -83,8 +84,31 @@ std::vector<Scored> score_arrows(const UnionStroke& u, const std::vector<PointD>
     sc.fit = std::move(f);
     out.push_back(std::move(sc));
   }
+  return out;
+}
+
+// Arrows that might beat a snap of rank `rank_to_beat` (infinite: none).
+std::vector<Scored> score_arrows(const UnionStroke& u, const std::vector<PointD>& cloud,
+                                 double drawn_length, double epsilon, double pen_radius,
+                                 double rank_to_beat) {
+  std::vector<Scored> out =
+      score_each_arrow(u, cloud, drawn_length, epsilon, pen_radius, rank_to_beat);
   prefer_unbent_shafts(out, epsilon);
   return out;
+}
+
+// Whether a single arrow certifies on the union and is plausible. Every single arrow
+// recognize_union_detail can end with (its winner, or an alternative keep_union reads the union
+// as) is one: fit_arrows without a rank to beat fits each arrow it fits with one (a rank only
+// stops it early), and an arrow's certificate and plausibility are its own; the other families
+// and prefer_unbent_shafts only take snaps away.
+bool a_single_arrow_certifies(const UnionStroke& u, const std::vector<PointD>& cloud,
+                              double drawn_length, const ToleranceChoice& tol) {
+  const std::vector<Scored> arrows =
+      score_each_arrow(u, cloud, drawn_length, tol.epsilon, tol.pen_radius, INFINITY);
+  return std::any_of(arrows.begin(), arrows.end(), [](const Scored& a) {
+    return a.fit.shape == ShapeClass::kArrow && a.snap;
+  });
 }
 
 // The width of a closed shape (polygons: the least over the sides of the farthest vertex from
@@ -152,21 +176,25 @@ double recognition_rank(const Recognition& r) {
          kPricePerParameter * degrees_of_freedom(f);
 }
 
-// A dot alone is a dot; a dot is never part of a shape of several strokes (freeform).
-UnionRecognition dot_union(std::span<const StrokeInput> strokes, const RecognizerConfig& config,
-                           const ToleranceChoice& tol) {
+// Nothing certifies on the union: freeform at its tolerance.
+UnionRecognition freeform_union(const ToleranceChoice& tol) {
   UnionRecognition out;
   out.rank = INFINITY;
-  if (strokes.size() == 1) {
-    out.recognition = recognize(strokes.front(), config);
-    out.strokes.pieces = {{out.recognition.params.center}};
-    out.rank = 0.0;
-    return out;
-  }
   out.recognition.epsilon = tol.epsilon;
   out.recognition.pen_radius = tol.pen_radius;
   out.recognition.certificate.epsilon = tol.epsilon;
   out.recognition.certificate.pen_radius = tol.pen_radius;
+  return out;
+}
+
+// A dot alone is a dot; a dot is never part of a shape of several strokes (freeform).
+UnionRecognition dot_union(std::span<const StrokeInput> strokes, const RecognizerConfig& config,
+                           const ToleranceChoice& tol) {
+  if (strokes.size() > 1) return freeform_union(tol);
+  UnionRecognition out;
+  out.recognition = recognize(strokes.front(), config);
+  out.strokes.pieces = {{out.recognition.params.center}};
+  out.rank = 0.0;
   return out;
 }
 
@@ -183,7 +211,7 @@ std::vector<PointD> distinct_path(const std::vector<StrokePoint>& samples) {
 }
 
 UnionRecognition recognize_union_detail(std::span<const StrokeInput> strokes,
-                                        const RecognizerConfig& config_in) {
+                                        const RecognizerConfig& config_in, UnionUse use) {
   if (strokes.empty()) throw InvalidInput("recognize: no strokes");
   RecognizerConfig config = config_in;
   if (strokes.front().pen_radius > 0) config.pen_radius = strokes.front().pen_radius;
@@ -205,6 +233,13 @@ UnionRecognition recognize_union_detail(std::span<const StrokeInput> strokes,
   }
   out.strokes = prepare_union(paths, tau);
   const std::vector<PointD> cloud = cloud_of(out.strokes);
+  // The other families are fitted only when the single arrow the caller keeps may come out.
+  if (use == UnionUse::kSingleArrowOnly &&
+      !a_single_arrow_certifies(out.strokes, cloud, drawn_length, tol)) {
+    UnionRecognition none = freeform_union(tol);
+    none.strokes = std::move(out.strokes);
+    return none;
+  }
   if (strokes.size() == 1) {
     out.recognition = recognize(strokes.front(), config);
     out.rank = recognition_rank(out.recognition);

@@ -18,8 +18,14 @@ struct UnionRecognition {
 // The samples' positions without consecutive repeats.
 std::vector<PointD> distinct_path(const std::vector<StrokePoint>& samples);
 
+// What the caller keeps of a union: any shape, or a single arrow only (two strokes apart,
+// kept_apart). For the latter the union is freeform at once when no single arrow certifies on
+// it and is plausible: the same verdict for that caller, without fitting the other families.
+enum class UnionUse { kAnyShape, kSingleArrowOnly };
+
 UnionRecognition recognize_union_detail(std::span<const StrokeInput> strokes,
-                                        const RecognizerConfig& config);
+                                        const RecognizerConfig& config,
+                                        UnionUse use = UnionUse::kAnyShape);
 
 // The recognition `r` of a union read as its best arrow instead of its winner: the first
 // alternative that is an arrow certified on the union and plausible becomes the winner (the

@@ -229,7 +229,9 @@ BestUnion best_union(const UnionContext& c, const std::vector<std::size_t>& rece
     inputs.reserve(keys.size());
     for (const std::size_t s : members) inputs.push_back(c.strokes.at(s));
     inputs.push_back(path_only(c.stroke));
-    UnionRecognition u = recognize_detail::recognize_union_detail(inputs, c.recognizer);
+    const auto use = touching ? recognize_detail::UnionUse::kAnyShape
+                              : recognize_detail::UnionUse::kSingleArrowOnly;
+    UnionRecognition u = recognize_detail::recognize_union_detail(inputs, c.recognizer, use);
     if (!snaps(u.recognition)) continue;
     std::vector<const StrokeInput*> others; // the recent strokes outside the union
     for (const auto& [k, kept] : c.strokes) {
