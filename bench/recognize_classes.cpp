@@ -1,21 +1,17 @@
 // Per-class figures of the shipped recognizer (recognize_classes.hpp).
 //
 // Diamonds: no shared corpus holds one-stroke diamonds, so real one-stroke rectangles ($1, and
-// the gestures' squares) are mapped onto them: the stroke's bounding box to the unit square,
-// turned 45 degrees, then stretched across by 0.6 (a rhombus of 62 and 118 degrees, a flowchart
-// decision) or not at all (a square on its corner, which must stay a square). The hand's wobble,
-// corners and closure are the writer's own; only the affine frame is chosen.
+// the gestures' squares) are mapped onto them (made_shapes.hpp): a rhombus of 62 and 118 degrees,
+// a flowchart decision, or a square on its corner, which must stay a square.
 #include "recognize_classes.hpp"
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <map>
-#include <numbers>
 #include <set>
 #include <string>
 #include <tuple>
 
+#include "made_shapes.hpp"
 #include "recognize_accuracy.hpp"
 
 namespace penshape::bench {
@@ -25,26 +21,6 @@ struct Count {
   int drawings = 0, right = 0;
   [[nodiscard]] double rate() const { return drawings ? 100.0 * right / drawings : 0.0; }
 };
-
-} // namespace
-
-std::vector<StrokePoint> on_corner(const std::vector<StrokePoint>& in, double across) {
-  double xlo = in[0].x, xhi = xlo, ylo = in[0].y, yhi = ylo;
-  for (const StrokePoint& p : in) {
-    xlo = std::min(xlo, p.x), xhi = std::max(xhi, p.x);
-    ylo = std::min(ylo, p.y), yhi = std::max(yhi, p.y);
-  }
-  const double w = std::max(xhi - xlo, 1e-9), h = std::max(yhi - ylo, 1e-9);
-  const double c = std::cos(std::numbers::pi / 4), s = std::sin(std::numbers::pi / 4);
-  std::vector<StrokePoint> out = in;
-  for (StrokePoint& p : out) {
-    const double x = 100.0 * (p.x - xlo) / w, y = 100.0 * (p.y - ylo) / h;
-    p = {c * x - s * y, across * (s * x + c * y), p.t};
-  }
-  return out;
-}
-
-namespace {
 
 struct Row {
   std::string name;
@@ -79,9 +55,9 @@ void print_classes(const std::vector<Drawing>& drawings, const ClassOptions& opt
     if (!right && options.list_wrong) print_miss(d, key, got);
     if (targets == nullptr || (d.label != "rectangle" && d.label != "square")) continue;
     for (const auto& [across, name, want] :
-         {std::tuple{kDiamondAcross, "diamond (rectangle, 45, 0.6)", &diamond},
+         {std::tuple{cases::kDiamondAcross, "diamond (rectangle, 45, 0.6)", &diamond},
           std::tuple{1.0, "square on a corner (45)", &square}}) {
-      const ShapeClass made = recognize(on_corner(d.strokes.front(), across)).shape;
+      const ShapeClass made = recognize(cases::on_corner(d.strokes.front(), across)).shape;
       const bool ok = want->contains(to_string(made));
       tally(rows, d.corpus + " made " + name, ok);
       if (!ok && options.list_wrong) print_miss(d, name, made);

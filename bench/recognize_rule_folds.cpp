@@ -11,11 +11,11 @@
 #include <set>
 #include <string>
 
+#include "made_shapes.hpp"
 #include "recognize/classify/classifier.hpp"
 #include "recognize/fitting/dot.hpp"
 #include "recognize/fitting/prepared_stroke.hpp"
 #include "recognize_accuracy.hpp"
-#include "recognize_classes.hpp"
 
 namespace penshape::bench {
 namespace {
@@ -78,8 +78,9 @@ std::vector<Item> items_of(const std::vector<Drawing>& drawings) {
     const std::vector<StrokePoint>& p = d.strokes.front();
     add_item(out, d, p, targets, d.corpus + (targets ? " shape " : " non-shape ") + d.label);
     if (d.label != "rectangle" && d.label != "square") continue;
-    add_item(out, d, on_corner(p, kDiamondAcross), &kDiamond, d.corpus + " made diamond");
-    add_item(out, d, on_corner(p, 1.0), &kSquare, d.corpus + " made square on a corner");
+    add_item(out, d, cases::on_corner(p, cases::kDiamondAcross), &kDiamond,
+             d.corpus + " made diamond");
+    add_item(out, d, cases::on_corner(p, 1.0), &kSquare, d.corpus + " made square on a corner");
   }
   return out;
 }

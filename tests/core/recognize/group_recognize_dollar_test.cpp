@@ -1,5 +1,6 @@
 // Grouping on real strokes: $1 rectangles and triangles cut at their corners into 2-4 pieces
-// (gaps, overshoots, reversed and reordered pieces, pauses), arrows whole and cut at the tip, two
+// (gaps, overshoots, reversed and reordered pieces, pauses), the rectangles made diamonds and cut
+// the same way, arrows whole and cut at the tip, two
 // separate shapes one after the other, two non-shape gestures touching. Subjects s02 and s03
 // (the benchmark runs every subject), every speed, from the shared corpus when present, else
 // from the generated corpus (the same layout; its rectangles, triangles, arrows and non-shapes),
@@ -11,6 +12,7 @@
 #include <set>
 
 #include "group_test_support.hpp"
+#include "made_shapes.hpp"
 #include "multi_stroke_cases.hpp"
 #include "test_support.hpp"
 
@@ -77,6 +79,32 @@ TEST(GroupRecognizeDollar, PolygonsCutIntoTwoToFourStrokes) {
   std::printf("polygons in 2-4 strokes: %d / %d right (class and grouping)\n", right, total);
   ASSERT_EQ(total, test::dollar_count(300, 150));
   EXPECT_GE(right, test::dollar_rate(0.95, 0.85) * total); // generated: 88% measured
+}
+
+// No corpus holds diamonds drawn in pieces: the real rectangles made diamonds of 62 and 118
+// degrees (made_shapes.hpp), cut at their corners as the rectangles are, are one diamond.
+TEST(GroupRecognizeDollar, DiamondsCutIntoTwoToFourStrokes) {
+  const std::filesystem::path root = test::dollar_dir();
+  int right = 0, total = 0;
+  std::size_t v = 0;
+  for (const Gesture& g : subjects(root)) {
+    ++v;
+    if (g.kind != "rectangle") continue;
+    Gesture diamond = g;
+    diamond.points = cases::on_corner(g.points, cases::kDiamondAcross);
+    for (std::size_t pieces = 2; pieces <= 4; ++pieces) {
+      const std::vector<Points> cut = cases::cut_shape(diamond, pieces, v);
+      if (cut.empty()) continue;
+      const std::vector<StrokeInput> in = inputs_of(cut);
+      const std::vector<GroupedShape> out = recognize_strokes(in);
+      check_snaps(out, in, g.file);
+      right += one_group_of(out, cut.size(), {"diamond"}) ? 1 : 0;
+      ++total;
+    }
+  }
+  std::printf("diamonds in 2-4 strokes: %d / %d right (class and grouping)\n", right, total);
+  ASSERT_EQ(total, test::dollar_count(180, 90));
+  EXPECT_GE(right, test::dollar_rate(0.95, 0.85) * total);
 }
 
 TEST(GroupRecognizeDollar, ArrowsWholeAndCutAtTheTip) {

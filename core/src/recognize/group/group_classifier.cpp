@@ -106,9 +106,8 @@ bool a_single_arrow_certifies(const UnionStroke& u, const std::vector<PointD>& c
                               double drawn_length, const ToleranceChoice& tol) {
   const std::vector<Scored> arrows =
       score_each_arrow(u, cloud, drawn_length, tol.epsilon, tol.pen_radius, INFINITY);
-  return std::any_of(arrows.begin(), arrows.end(), [](const Scored& a) {
-    return a.fit.shape == ShapeClass::kArrow && a.snap;
-  });
+  return std::any_of(arrows.begin(), arrows.end(),
+                     [](const Scored& a) { return a.fit.shape == ShapeClass::kArrow && a.snap; });
 }
 
 // The width of a closed shape (polygons: the least over the sides of the farthest vertex from
