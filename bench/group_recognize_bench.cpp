@@ -292,9 +292,9 @@ int main(int argc, char** argv) {
       all.add(ok);
       if (!ok) {
         const auto shapes = grouper.shapes();
-        std::string key = std::to_string(shapes.size()) + " groups:";
+        std::string key = kind + " -> " + std::to_string(shapes.size()) + " groups:";
         for (const auto& s : shapes) key += std::string(" ") + to_string(s.recognition.shape);
-        ++polygon_misses[kind + " -> " + key];
+        ++polygon_misses[key];
       }
     }
   };
