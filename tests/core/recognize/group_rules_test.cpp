@@ -104,6 +104,23 @@ TEST_F(GroupRulesTest, StrokesCrossingInTheirMiddlesAreNoOutline) {
   EXPECT_EQ(group_implausibility(tri, s, {}), "");
 }
 
+TEST_F(GroupRulesTest, TwoStrokesLeavingOnePointAreLimbsNotALine) {
+  // Arms drawn from the body outward, one each way: no segment in pieces.
+  const std::vector<StrokeInput> arms{stroke_along({{100, 0}, {0, 0}}, 0.0),
+                                      stroke_along({{102, 0}, {200, 0}}, 1.0)};
+  const Recognition line = answer(ShapeClass::kSegment, {{0, 0}, {200, 0}});
+  EXPECT_NE(group_implausibility(line, arms, {}).find("limbs"), std::string::npos);
+  // A line drawn on where the first piece stopped, or towards it, stays one segment.
+  const std::vector<StrokeInput> on{stroke_along({{0, 0}, {100, 0}}, 0.0),
+                                    stroke_along({{102, 0}, {200, 0}}, 1.0)};
+  EXPECT_EQ(group_implausibility(line, on, {}), "");
+  const std::vector<StrokeInput> towards{stroke_along({{0, 0}, {100, 0}}, 0.0),
+                                         stroke_along({{200, 0}, {102, 0}}, 1.0)};
+  EXPECT_EQ(group_implausibility(line, towards, {}), "");
+  group_rules().no_limbs_as_a_line = false;
+  EXPECT_EQ(group_implausibility(line, arms, {}), "");
+}
+
 TEST_F(GroupRulesTest, OvershootingCornersMayCross) {
   // The base overshoots both corners by 6 and crosses the sides near their ends.
   const std::vector<StrokeInput> s{stroke_along({{-3, 106}, {50, 0}, {103, 106}}, 0.0),

@@ -133,6 +133,18 @@ std::string mismatched_piece(ShapeClass shape, std::span<const StrokeInput> stro
 }
 
 // The rules of GroupRules for a union that chains end to end (empty when none refuses it).
+// Two strokes that start at one point and leave it each its own way: limbs from a junction (a
+// stick figure's arms from its body, an X's strokes from a shared start), not one line drawn in
+// two pieces, which goes on where the first piece stopped (or fills in towards it).
+bool limbs_from_one_point(const std::vector<std::vector<PointD>>& paths, double join) {
+  if (paths.size() != 2) return false;
+  const std::vector<PointD>& a = paths[0];
+  const std::vector<PointD>& b = paths[1];
+  const bool chained =
+      distance(a.back(), b.front()) <= join || distance(b.back(), a.front()) <= join;
+  return !chained && distance(a.front(), b.front()) <= join;
+}
+
 std::string piece_rules(const Recognition& r, const std::vector<std::vector<PointD>>& paths,
                         double stroke_epsilon, double join) {
   const GroupRules& rules = group_rules();
@@ -140,6 +152,10 @@ std::string piece_rules(const Recognition& r, const std::vector<std::vector<Poin
   // end as an open polyline's do: nothing but the closing piece or a head tells a shape.
   if (rules.no_open_polylines && r.shape == ShapeClass::kPolyline) {
     return "an open polyline in pieces is no shape (letters meet end to end as well)";
+  }
+  if (rules.no_limbs_as_a_line && r.shape == ShapeClass::kSegment &&
+      limbs_from_one_point(paths, join)) {
+    return "two strokes leave one point each its own way (limbs from a junction, not a line)";
   }
   if (!straight_sided_closed(r.shape)) return {};
   if (rules.no_curved_sides && r.clean.size() >= 4 && curve_for_corner(paths, r.clean, r.epsilon)) {

@@ -16,7 +16,8 @@ namespace penshape::recognize_detail {
 // polyline, polygon or segment even when the union's band covers them. And no stroke alone is
 // of the other kind: no circle or ellipse in a straight-sided shape, no segment or polyline in
 // a round one (circle, ellipse, arc). An arc alone may be a side and a rounded corner.
-// Besides (GroupRules): an open polyline is never a group; no stroke of a straight-sided closed
+// Besides (GroupRules): an open polyline is never a group; two strokes that start at one point
+// and leave it each its own way are limbs, no segment; no stroke of a straight-sided closed
 // shape is a curve (the bowl of a D or a P); no two strokes of a closed shape cross each other
 // away from their ends (a stick figure, a crossed circle); an arrow is drawn in at most as many
 // strokes as it has straight parts (a shaft and two or four barbs), none of them a circle or an
@@ -31,6 +32,7 @@ struct GroupRules {
   bool no_open_polylines = true;  // an open polyline in pieces stays apart
   bool no_curved_sides = true;    // a curve is no pair of straight sides
   bool no_crossing_pieces = true; // the pieces of an outline do not cross in their middles
+  bool no_limbs_as_a_line = true; // two strokes leaving one point are no segment in pieces
   // The least turn at a corner inside one stroke, as a share of the shape's (no_curved_sides).
   double min_corner_turn_share = kMinCornerTurnShare;
   bool no_continued_tips = true; // no recent stroke leaves an arrow's tip forward (arrow_tip.hpp)
