@@ -132,7 +132,6 @@ std::string mismatched_piece(ShapeClass shape, std::span<const StrokeInput> stro
   return {};
 }
 
-// The rules of GroupRules for a union that chains end to end (empty when none refuses it).
 // Two strokes that start at one point and leave it each its own way: limbs from a junction (a
 // stick figure's arms from its body, an X's strokes from a shared start), not one line drawn in
 // two pieces, which goes on where the first piece stopped (or fills in towards it).
@@ -145,6 +144,7 @@ bool limbs_from_one_point(const std::vector<std::vector<PointD>>& paths, double 
   return !chained && distance(a.front(), b.front()) <= join;
 }
 
+// The rules of GroupRules for a union that chains end to end (empty when none refuses it).
 std::string piece_rules(const Recognition& r, const std::vector<std::vector<PointD>>& paths,
                         double stroke_epsilon, double join) {
   const GroupRules& rules = group_rules();
