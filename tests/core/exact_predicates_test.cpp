@@ -245,7 +245,7 @@ TEST(ExactDouble, LimbFastPathAgreesWithGmp) {
 TEST(ExactDouble, QuotientFastPathIsMpqGetD) {
   std::mt19937_64 rng(7);
   std::vector<Rational> values{Rational(1, 3), Rational(-2, 3), Rational(1929, 15625),
-                               Rational(6, 3), Rational(-9, 1)};
+                               Rational(6, 3), Rational(-9, 1), Rational(3, 8)};
   const std::uint64_t top = (std::uint64_t{1} << 53) - 1;
   values.emplace_back(mpz_class(static_cast<unsigned long>(top)), 3);
   values.emplace_back(1, mpz_class(static_cast<unsigned long>(top)));
@@ -270,6 +270,7 @@ TEST(ExactDouble, QuotientFastPathIsMpqGetD) {
       }
       bool exact = false;
       EXPECT_EQ(to_double_checked(v, exact), v.get_d()) << v << " mode " << mode;
+      EXPECT_EQ(exact, is_double_exactly(v)) << v;
     }
     std::fesetround(FE_TONEAREST);
   }

@@ -37,8 +37,9 @@ inline bool small_dyadic_to_double(const mpq_class& v, double& out) {
 }
 
 // mpq_get_d's value (v truncated towards zero) without GMP's division when v = n / d with
-// 0 < |n|, d < 2^53, each in one limb (decimal input such as 0.123456 = 1929/15625): the common
-// case of files read as text. Sets `out` and returns true then; false says nothing.
+// 0 < |n|, d < 2^53, each in one limb, d not a power of two (decimal input such as 0.123456 =
+// 1929/15625): the common case of files read as text. Sets `out` and returns true then; false
+// says nothing. Such a v is never is_double_exactly's case (its denominator test fails).
 //
 // Why it is mpq_get_d's double, bit for bit, whatever the rounding mode (the fast engine runs
 // parts of its work rounding upwards): |n| and d are doubles exactly, so q = |n| / d is one of
@@ -54,7 +55,7 @@ inline bool small_quotient_to_double(const mpq_class& v, double& out) {
   if (mpz_size(den) != 1 || mpz_size(num) != 1 || mpz_sgn(den) < 0) return false;
   const std::uint64_t d = mpz_getlimbn(den, 0);
   const std::uint64_t n = mpz_getlimbn(num, 0);
-  if ((d >> 53) != 0 || (n >> 53) != 0) return false;
+  if ((d >> 53) != 0 || (n >> 53) != 0 || (d & (d - 1)) == 0) return false;
   const auto dd = static_cast<double>(d);
   const auto nd = static_cast<double>(n);
   double q = nd / dd;
@@ -73,11 +74,12 @@ inline double to_double_checked(const mpq_class& v, bool& exact) {
     exact = true;
     return d;
   }
-  exact = is_double_exactly(v);
-  if (!exact) {
-    if (double d = 0; small_quotient_to_double(v, d)) return d;
-    return v.get_d();
+  if (double d = 0; small_quotient_to_double(v, d)) {
+    exact = false; // what is_double_exactly says of a denominator that is not a power of two
+    return d;
   }
+  exact = is_double_exactly(v);
+  if (!exact) return v.get_d();
   const std::size_t shift = mpz_sizeinbase(v.get_den_mpz_t(), 2) - 1;
   return std::ldexp(mpz_get_d(v.get_num_mpz_t()), -static_cast<int>(shift));
 }
