@@ -5,6 +5,7 @@
 // that touch, overlap or miss by one ulp. All three point types must give the exact answer.
 #include <gtest/gtest.h>
 
+#include <cfenv>
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -234,6 +235,49 @@ TEST(ExactDouble, LimbFastPathAgreesWithGmp) {
     }
   }
   EXPECT_GT(fast, 20); // the fast path is exercised
+}
+
+// The quotient fast path against GMP's mpq_get_d, bit for bit, in the two rounding modes the
+// code runs in (nearest, and upwards inside the fast engine's interval scopes): random n / d
+// below 2^53 (most quotients inexact, half of them overshooting when rounded), exact quotients,
+// numerators or denominators at 2^53 - 1 and beyond (the fallback), and quotients too small for
+// the fast path.
+TEST(ExactDouble, QuotientFastPathIsMpqGetD) {
+  std::mt19937_64 rng(7);
+  std::vector<Rational> values{Rational(1, 3), Rational(-2, 3), Rational(1929, 15625),
+                               Rational(6, 3), Rational(-9, 1), Rational(3, 8)};
+  const std::uint64_t top = (std::uint64_t{1} << 53) - 1;
+  values.emplace_back(mpz_class(static_cast<unsigned long>(top)), 3);
+  values.emplace_back(1, mpz_class(static_cast<unsigned long>(top)));
+  values.emplace_back(mpz_class(static_cast<unsigned long>(top + 2)), 7);
+  for (int i = 0; i < 20000; ++i) {
+    const int nbits = 1 + static_cast<int>(rng() % 53);
+    const int dbits = 1 + static_cast<int>(rng() % 53);
+    const auto n = static_cast<unsigned long>((rng() >> (64 - nbits)) | 1U);
+    const auto d = static_cast<unsigned long>((rng() >> (64 - dbits)) | 1U);
+    Rational v{mpz_class(n), mpz_class(d)};
+    v.canonicalize();
+    values.push_back((i % 2 == 0) ? v : Rational(-v));
+  }
+  int fast = 0;
+  for (const int mode : {FE_TONEAREST, FE_UPWARD}) {
+    ASSERT_EQ(std::fesetround(mode), 0);
+    for (const Rational& v : values) {
+      double q = 0;
+      if (small_quotient_to_double(v, q)) {
+        ++fast;
+        EXPECT_EQ(q, v.get_d()) << v << " mode " << mode;
+      }
+      bool exact = false;
+      EXPECT_EQ(to_double_checked(v, exact), v.get_d()) << v << " mode " << mode;
+      EXPECT_EQ(exact, is_double_exactly(v)) << v;
+    }
+    std::fesetround(FE_TONEAREST);
+  }
+  EXPECT_GT(fast, 30000); // the fast path is exercised
+  double unused = 0;
+  EXPECT_FALSE(small_quotient_to_double(Rational(mpz_class(1), mpz_class(1) << 60), unused));
+  EXPECT_FALSE(small_quotient_to_double(Rational(mpz_class(top + 2), 7), unused));
 }
 
 } // namespace

@@ -55,6 +55,39 @@ TEST(FastEngineParts, GridFrameRoundTripsExactly) {
   EXPECT_LT(frame.units(p.precision), 2048.0);
 }
 
+// The frame's origin is floor((min - margin) * 2^k) on each axis, with the exact least
+// coordinate even where two coordinates have the same double (the box is found comparing doubles
+// first): here -1 and -1 - 10^-30 (and -2, -2 - 10^-30) tie as doubles, the smaller comes second,
+// and the margin makes (-1 - margin) * 2^k an integer, so the 10^-30 moves the floor by one unit.
+TEST(FastEngineParts, GridFrameOriginUsesTheExactLeastCoordinate) {
+  const Rational tiny(mpz_class(1), mpz_class("1000000000000000000000000000000"));
+  const Rational min_x = Rational(-1) - tiny, min_y = Rational(-2) - tiny;
+  PolygonSet q;
+  q.polygons.push_back({{{Rational(-1), Rational(-2)},
+                         {Rational(4), min_y},
+                         {Rational(4), Rational(4)},
+                         {min_x, Rational(4)}},
+                        {}});
+  const DeconstructParams p = params_of(1, Rational(1, 2), Rational(1, 16));
+  const fast::GridFrame frame(q, p);
+  const int k = frame.scale_exponent();
+  ASSERT_GE(k, 3); // margin 13/8: (-1 - 13/8) * 2^k is an integer
+  const Rational margin = p.radius + p.tolerance + 2 * p.precision;
+  const auto origin = [&](const Rational& least) {
+    Rational scaled = least - margin;
+    mpq_mul_2exp(scaled.get_mpq_t(), scaled.get_mpq_t(), static_cast<mp_bitcnt_t>(k));
+    mpz_class f;
+    mpz_fdiv_q(f.get_mpz_t(), scaled.get_num_mpz_t(), scaled.get_den_mpz_t());
+    Rational back(f);
+    mpq_div_2exp(back.get_mpq_t(), back.get_mpq_t(), static_cast<mp_bitcnt_t>(k));
+    return back;
+  };
+  const ExactPoint corner = frame.exact({0, 0});
+  EXPECT_EQ(corner.x, origin(min_x));
+  EXPECT_EQ(corner.y, origin(min_y));
+  EXPECT_NE(origin(min_x), origin(Rational(-1))); // the tie matters
+}
+
 // GridFrame::exact builds (v + t) / 2^k in lowest terms directly (no gcd): the same canonical
 // rational as the product it replaced, for points on both sides of the frame's origin, zero
 // and coordinates with many trailing zero bits.
