@@ -24,6 +24,7 @@
 #include <CGAL/FPU.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -45,6 +46,16 @@ struct SegmentTraits {
     return {static_cast<double>(s.b.x), static_cast<double>(s.b.y)};
   }
 };
+
+// A lower bound of max(a - b, 0) in the default rounding mode: a - b rounded to nearest, one ulp
+// down when positive. The same value as max(std::nextafter(a - b, -inf), 0) without libm's call
+// (4% of the fast engine's decision on KAZ): a positive double's predecessor is its bit pattern
+// minus one (+inf's is the largest double, the smallest denormal's is 0).
+inline double gap_below(double a, double b) {
+  const double g = a - b;
+  if (!(g > 0.0)) return 0.0;
+  return std::bit_cast<double>(std::bit_cast<std::uint64_t>(g) - 1U);
+}
 
 // An axis-aligned box of doubles.
 struct GridBox {
@@ -179,10 +190,8 @@ class SegmentGrid {
       const double gx0 = std::min(a.x, b.x), gx1 = std::max(a.x, b.x);
       const double gy0 = std::min(a.y, b.y), gy1 = std::max(a.y, b.y);
       if (gx0 > grown.hi_x || gx1 < grown.lo_x || gy0 > grown.hi_y || gy1 < grown.lo_y) return;
-      const double bx = std::max(
-          {std::nextafter(gx0 - box.hi_x, -inf), std::nextafter(box.lo_x - gx1, -inf), 0.0});
-      const double by = std::max(
-          {std::nextafter(gy0 - box.hi_y, -inf), std::nextafter(box.lo_y - gy1, -inf), 0.0});
+      const double bx = std::max(gap_below(gx0, box.hi_x), gap_below(box.lo_x, gx1));
+      const double by = std::max(gap_below(gy0, box.hi_y), gap_below(box.lo_y, gy1));
       if ((bx * bx + by * by) * (1.0 - 0x1p-50) > need2) return;
       f(k);
     });
