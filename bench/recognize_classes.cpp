@@ -2,7 +2,11 @@
 //
 // Diamonds: no shared corpus holds one-stroke diamonds, so real one-stroke rectangles ($1, and
 // the gestures' squares) are mapped onto them (made_shapes.hpp): a rhombus of 62 and 118 degrees,
-// a flowchart decision, or a square on its corner, which must stay a square.
+// a flowchart decision, or a square on its corner, which must stay a square. Polygons of 5..8
+// corners: no shared corpus holds drawn ones, so real one-stroke circles are made polygons (the
+// writer's wobble and closure kept, corners added) and must be named `polygon` or
+// `regular_polygon`. "simplified": the shapes (and the made hexagons) as sketch collections store
+// drawings (made_shapes.hpp, sketch_simplified: a 255-unit box, Douglas-Peucker at 2 units).
 #include "recognize_classes.hpp"
 
 #include <cstdio>
@@ -43,6 +47,7 @@ void print_classes(const std::vector<Drawing>& drawings, const ClassOptions& opt
   std::map<std::string, Count> rows; // "corpus/label" -> right (shapes) or left as ink
   const std::set<std::string> diamond{"diamond"};
   const std::set<std::string> square{"square", "rectangle", "quadrilateral"};
+  const std::set<std::string> polygon{"polygon", "regular_polygon"};
   for (const Drawing& d : drawings) {
     if (d.strokes.size() != 1) continue;
     const std::set<std::string>* targets = shape_targets(d.label);
@@ -53,6 +58,24 @@ void print_classes(const std::vector<Drawing>& drawings, const ClassOptions& opt
     const std::string key = d.corpus + (targets ? " shape " : " non-shape ") + d.label;
     tally(rows, key, right);
     if (!right && options.list_wrong) print_miss(d, key, got);
+    if (cases::sketch_simplified(d.strokes.front()).size() > 1) {
+      const ShapeClass simple = recognize(cases::sketch_simplified(d.strokes.front())).shape;
+      tally(rows, d.corpus + " simplified " + d.label,
+            targets != nullptr ? targets->contains(to_string(simple))
+                               : simple == ShapeClass::kFreeform || simple == ShapeClass::kDot);
+    }
+    if (targets != nullptr && d.label == "circle") {
+      const std::vector<StrokePoint> hexagon = cases::made_polygon(d.strokes.front(), 6, 0.5);
+      const ShapeClass simple = recognize(cases::sketch_simplified(hexagon)).shape;
+      tally(rows, d.corpus + " simplified made polygon of 6", polygon.contains(to_string(simple)));
+      for (int n = 5; n <= 8; ++n) {
+        const ShapeClass made = recognize(cases::made_polygon(d.strokes.front(), n, 0.5)).shape;
+        const bool ok = polygon.contains(to_string(made));
+        const std::string row = "polygon of " + std::to_string(n) + " (circle)";
+        tally(rows, d.corpus + " made " + row, ok);
+        if (!ok && options.list_wrong) print_miss(d, row, made);
+      }
+    }
     if (targets == nullptr || (d.label != "rectangle" && d.label != "square")) continue;
     for (const auto& [across, name, want] :
          {std::tuple{cases::kDiamondAcross, "diamond (rectangle, 45, 0.6)", &diamond},

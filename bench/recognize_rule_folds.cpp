@@ -58,6 +58,7 @@ struct Sweep {
 
 const std::set<std::string> kDiamond{"diamond"};
 const std::set<std::string> kSquare{"rectangle", "square", "quadrilateral"};
+const std::set<std::string> kPolygon{"polygon", "regular_polygon"};
 
 void add_item(std::vector<Item>& out, const Drawing& d, const std::vector<StrokePoint>& points,
               const std::set<std::string>* targets, const std::string& row) {
@@ -77,6 +78,10 @@ std::vector<Item> items_of(const std::vector<Drawing>& drawings) {
     if (targets == nullptr && !is_non_shape(d.label)) continue;
     const std::vector<StrokePoint>& p = d.strokes.front();
     add_item(out, d, p, targets, d.corpus + (targets ? " shape " : " non-shape ") + d.label);
+    for (int n = 5; targets != nullptr && d.label == "circle" && n <= 8; ++n) {
+      add_item(out, d, cases::made_polygon(p, n, 0.5), &kPolygon,
+               d.corpus + " made polygon of " + std::to_string(n));
+    }
     if (d.label != "rectangle" && d.label != "square") continue;
     add_item(out, d, cases::on_corner(p, cases::kDiamondAcross), &kDiamond,
              d.corpus + " made diamond");
@@ -197,6 +202,11 @@ void print_rule_folds(const std::vector<Drawing>& drawings) {
        rd::kMaxBacktrack,
        1.0,
        [](rd::RuleThresholds& r, double v) { r.max_backtrack = v; }},
+      {"kMinSharpCornerShare: a polygon's corners are drawn sharp when the stroke turns this share",
+       {std::numeric_limits<double>::infinity(), 0.3, 0.4, 0.5, 0.6, 0.7, 0.8},
+       rd::kMinSharpCornerShare,
+       1.0,
+       [](rd::RuleThresholds& r, double v) { r.min_sharp_corner_share = v; }},
   };
   std::printf(
       "== rule thresholds per held-out writer: %zu drawings (shapes right / non-shapes "

@@ -1,7 +1,9 @@
 #pragma once
 // Shapes made from real strokes where no shared corpus holds them: a real one-stroke rectangle
 // (its wobble, corners and closure are the writer's own) mapped onto a diamond or a square on
-// its corner; only the affine frame is chosen. Shared by the recognition tests and benches.
+// its corner; only the affine frame is chosen. A real one-stroke circle made a polygon of n
+// corners: its wobble, closure and squash are the writer's own, only the corners are added.
+// Shared by the recognition tests and benches.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -27,6 +29,85 @@ inline std::vector<StrokePoint> on_corner(const std::vector<StrokePoint>& in, do
   for (StrokePoint& p : out) {
     const double x = 100.0 * (p.x - xlo) / w, y = 100.0 * (p.y - ylo) / h;
     p = {c * x - s * y, across * (s * x + c * y), p.t};
+  }
+  return out;
+}
+
+// The stroke with points at most `step` apart along it (straight between the samples), so that a
+// map that bends it has points where it bends (a hand slows and samples densely at a corner).
+inline std::vector<StrokePoint> densified(const std::vector<StrokePoint>& in, double step) {
+  std::vector<StrokePoint> out{in.front()};
+  for (std::size_t i = 1; i < in.size(); ++i) {
+    const StrokePoint a = in[i - 1], b = in[i];
+    const int m = std::max(1, static_cast<int>(std::ceil(std::hypot(b.x - a.x, b.y - a.y) / step)));
+    for (int j = 1; j <= m; ++j) {
+      const double t = static_cast<double>(j) / m;
+      out.push_back({a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.t + t * (b.t - a.t)});
+    }
+  }
+  return out;
+}
+
+// A real one-stroke circle made a polygon of n corners: each point's distance from the stroke's
+// centroid is multiplied by the regular n-gon's (circumradius 1) in the point's direction, so the
+// writer's own deviations from a circle become deviations from the polygon. `turn`: the polygon's
+// first corner direction (radians).
+inline std::vector<StrokePoint> made_polygon(const std::vector<StrokePoint>& in, int n,
+                                             double turn) {
+  double length = 0, cx = 0, cy = 0;
+  for (std::size_t i = 1; i < in.size(); ++i) {
+    length += std::hypot(in[i].x - in[i - 1].x, in[i].y - in[i - 1].y);
+  }
+  std::vector<StrokePoint> out = densified(in, std::max(length / 400.0, 1e-9));
+  for (const StrokePoint& p : out) cx += p.x, cy += p.y;
+  cx /= static_cast<double>(out.size()), cy /= static_cast<double>(out.size());
+  const double sector = 2.0 * std::numbers::pi / n;
+  for (StrokePoint& p : out) {
+    const double dx = p.x - cx, dy = p.y - cy;
+    const double a = std::remainder(std::atan2(dy, dx) - turn - 0.5 * sector, sector);
+    const double k = std::cos(0.5 * sector) / std::cos(a);
+    p.x = cx + k * dx, p.y = cy + k * dy;
+  }
+  return out;
+}
+
+// Douglas-Peucker: keeps the points of in[a..b] farther than `tolerance` from the chord.
+inline void keep_far_points(const std::vector<StrokePoint>& in, std::size_t a, std::size_t b,
+                            double tolerance, std::vector<bool>& keep) {
+  double farthest = -1.0;
+  std::size_t at = a;
+  const double dx = in[b].x - in[a].x, dy = in[b].y - in[a].y, chord = std::hypot(dx, dy);
+  for (std::size_t i = a + 1; i < b; ++i) {
+    const double ex = in[i].x - in[a].x, ey = in[i].y - in[a].y;
+    const double d = chord > 0 ? std::abs(dy * ex - dx * ey) / chord : std::hypot(ex, ey);
+    if (d > farthest) farthest = d, at = i;
+  }
+  if (farthest <= tolerance) return;
+  keep[at] = true;
+  keep_far_points(in, a, at, tolerance, keep);
+  keep_far_points(in, at, b, tolerance, keep);
+}
+
+// The stroke as public sketch collections store drawings: scaled into a 255-unit box, rounded to
+// whole units, simplified by Douglas-Peucker at 2 units (a few points per side, sharp turns
+// between them).
+inline std::vector<StrokePoint> sketch_simplified(const std::vector<StrokePoint>& in) {
+  double xlo = in[0].x, xhi = xlo, ylo = in[0].y, yhi = ylo;
+  for (const StrokePoint& p : in) {
+    xlo = std::min(xlo, p.x), xhi = std::max(xhi, p.x);
+    ylo = std::min(ylo, p.y), yhi = std::max(yhi, p.y);
+  }
+  const double scale = 255.0 / std::max({xhi - xlo, yhi - ylo, 1e-9});
+  std::vector<StrokePoint> grid = in;
+  for (StrokePoint& p : grid) {
+    p.x = std::round((p.x - xlo) * scale), p.y = std::round((p.y - ylo) * scale);
+  }
+  std::vector<bool> keep(grid.size(), false);
+  keep.front() = keep.back() = true;
+  keep_far_points(grid, 0, grid.size() - 1, 2.0, keep);
+  std::vector<StrokePoint> out;
+  for (std::size_t i = 0; i < grid.size(); ++i) {
+    if (keep[i]) out.push_back(grid[i]);
   }
   return out;
 }

@@ -63,6 +63,16 @@ inline constexpr double kPolygonFraction = 0.85;
 // slack, with room for a box drawn skewed (10 / 15 / 20 deg keep 99.6 / 100 / 100% of real
 // one-stroke rectangles and 98.6 / 98.6 / 97.1% of diamonds made from them).
 inline constexpr double kDiamondSkew = 1.5 * (10.0 * kDegree); // 1.5 x kRightAngleSlack
+// A closed stroke turns at a polygon's corners as a drawn corner does when, between chords a
+// quarter of the shorter side beside the corner either way, it turns by at least this share of the
+// polygon's turn there: a circle through the corners turns 0.24..0.25, a corner drawn sharp about
+// 1. A polygon of 5..8 such corners that fits at least as tightly is no circle or ellipse, even
+// within their tolerance. recognize_bench --rule-folds: every fold picks 0.3, the lowest tried
+// (its pooled score counts made polygons, real circles given corners, which outnumber the real
+// circles); 0.5 keeps a margin over a circle's 0.25: no real class changes at 0.3..0.5, but at
+// 0.4 2 of 45 generated circles become polygons. Made polygons 41..90% (0.4: 45..93%).
+inline constexpr double kCornerWindow = 0.25;
+inline constexpr double kMinSharpCornerShare = 0.5;
 // An arc stands out from its chord by at least this many epsilons (as a polyline's corner must):
 // flatter, the segment says the same within tolerance (a quick line drawn with a slight bow).
 inline constexpr double kArcMinSagitta = 0.5;

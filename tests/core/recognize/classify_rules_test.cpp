@@ -7,6 +7,7 @@
 #include <limits>
 #include <vector>
 
+#include "classify_test_support.hpp"
 #include "penshape/core/point_arithmetic.hpp"
 #include "penshape/core/recognize.hpp"
 #include "recognize/classify/classifier.hpp"
@@ -15,6 +16,9 @@
 
 namespace penshape::recognize_detail {
 namespace {
+
+using test::chosen;
+using test::samples;
 
 // Points every `step` along the polyline through `corners` (the corners included).
 std::vector<PointD> walk(const std::vector<PointD>& corners, double step) {
@@ -27,24 +31,6 @@ std::vector<PointD> walk(const std::vector<PointD>& corners, double step) {
     }
   }
   return out;
-}
-
-std::vector<StrokePoint> samples(const std::vector<PointD>& points) {
-  std::vector<StrokePoint> out;
-  out.reserve(points.size());
-  double t = 0;
-  for (const PointD& p : points) out.push_back({p.x, p.y, t += 0.01});
-  return out;
-}
-
-// The class recognize() would choose with these rule thresholds (no ink, no skeleton).
-ShapeClass chosen(const std::vector<StrokePoint>& stroke, const RuleThresholds& rules) {
-  const RecognizerConfig config;
-  const ToleranceChoice tol = choose_tolerance(stroke, config);
-  const PreparedStroke s = prepare(stroke, thinning_tolerance(config, tol.epsilon));
-  const std::vector<Scored> scored =
-      evaluate(s, fit_all(s, config, tol.epsilon), tol.epsilon, tol.pen_radius, config, rules);
-  return !scored.empty() && scored.front().snap ? scored.front().fit.shape : ShapeClass::kFreeform;
 }
 
 const std::vector<PointD> kSquare{{0, 0}, {100, 0}, {100, 100}, {0, 100}, {0, 0}};

@@ -91,9 +91,18 @@
 //   - every side of a polygon (triangle, quadrilateral, rectangle, square, diamond, polygon) is at
 //     least epsilon long, and every corner is at least epsilon from the chord of its two neighbours
 //     (otherwise the polygon with one corner less says the same within tolerance: a corner drawn
-//     round, or a bump on a side);
+//     round, or a bump on a side); epsilon / 2 for a polygon of 5..8 corners drawn sharp (below);
 //   - a regular polygon's corners must stand out from its circumcircle by at least epsilon / 2
-//     (R (1 - cos(pi / n)) >= epsilon / 2), or the circle says the same thing more simply;
+//     (R (1 - cos(pi / n)) >= epsilon / 2), or the circle says the same thing more simply, unless
+//     the stroke turns sharply at them;
+//   - corners drawn sharp: at a corner of a (regular) polygon of 5..8 corners, the stroke turns,
+//     between chords a quarter of the shorter side beside it either way, by at least 0.5 of the
+//     polygon's turn there (a circle through the corners turns about 0.25; the corner where the
+//     stroke starts and ends is not read). Such a polygon is the snap and no circle or ellipse is,
+//     nor a shape of fewer corners the stroke does not turn sharply at: a hexagon lies within 7%
+//     of its radius of a circle, an octagon within 4%, far inside epsilon, and only the turns tell
+//     them apart. Its corners are also sought where the stroke turns most (besides the corner
+//     search);
 //   - an arc must turn one way only (its net turning is most of its total turning; a brace or
 //     an S turns both ways) and sweep less than a full turn.
 // Among the plausible certified candidates the lowest rank wins,

@@ -7,13 +7,10 @@
 #include <vector>
 
 #include "recognize/fitting/clean_shape.hpp"
+#include "recognize/fitting/path_turn.hpp"
 #include "recognize/thresholds.hpp"
 
 namespace penshape::recognize_detail {
-
-inline double angle_between(PointD a, PointD b) {
-  return std::abs(std::atan2(cross(a, b), dot(a, b)));
-}
 
 // The direction back along the shaft from the tip (the tangent of a curved shaft, nearly; a bent
 // shaft's last piece).

@@ -9,6 +9,7 @@
 #include "recognize/certify/certificate.hpp"
 #include "recognize/certify/ink_certificate.hpp"
 #include "recognize/classify/annulus_polish.hpp"
+#include "recognize/classify/corner_sharpness.hpp"
 #include "recognize/classify/tracing.hpp"
 #include "recognize/fitting/dot.hpp"
 #include "recognize/fitting/skeleton_seeds.hpp"
@@ -143,17 +144,27 @@ std::string diamond_implausibility(const Fit& f, double skew) {
   return {};
 }
 
+// Whether the stroke turns at every corner of a polygon of 5..8 corners as a drawn corner does
+// (corner_sharpness.hpp): the evidence that it is no circle or ellipse.
+bool sharp_polygon(const PreparedStroke& s, const Fit& f, const RuleThresholds& rules) {
+  return (f.shape == ShapeClass::kPolygon || f.shape == ShapeClass::kRegularPolygon) &&
+         least_corner_share(s.points, f.params.vertices, kCornerWindow) >=
+             rules.min_sharp_corner_share;
+}
+
 // A closed polygon's corners must be corners: sides of at least epsilon, corners off their
-// neighbours' chord by at least epsilon.
-std::string corner_implausibility(const Fit& f, const Certificate& c) {
+// neighbours' chord by at least epsilon (epsilon / 2, as a polyline's, where the stroke turns
+// sharply there: an octagon's corners stand out less than epsilon at the default tolerance).
+std::string corner_implausibility(const Fit& f, const Certificate& c, bool sharp) {
+  const double off_chord = sharp ? 0.5 * c.epsilon : c.epsilon;
   const std::vector<PointD>& v = f.params.vertices;
   for (std::size_t i = 0; i < v.size(); ++i) {
     if (distance(v[i], v[(i + 1) % v.size()]) < c.epsilon) {
       return "a side is shorter than epsilon (a corner drawn round, not a side)";
     }
     const PointD prev = v[(i + v.size() - 1) % v.size()];
-    if (segment_distance(v[i], prev, v[(i + 1) % v.size()]) < c.epsilon) {
-      return "a corner is within epsilon of its neighbours' chord (not a corner)";
+    if (segment_distance(v[i], prev, v[(i + 1) % v.size()]) < off_chord) {
+      return "a corner is too near its neighbours' chord (not a corner)";
     }
   }
   return {};
@@ -190,11 +201,13 @@ std::string implausibility(const PreparedStroke& s, const Fit& f, const Certific
   if (f.shape == ShapeClass::kDiamond) {
     if (std::string why = diamond_implausibility(f, rules.diamond_skew); !why.empty()) return why;
   }
-  if (has_corners(f.shape)) return corner_implausibility(f, c);
-  if (f.shape == ShapeClass::kRegularPolygon) {
+  const bool sharp = sharp_polygon(s, f, rules);
+  if (has_corners(f.shape)) return corner_implausibility(f, c, sharp);
+  if (f.shape == ShapeClass::kRegularPolygon && !sharp) {
     const double n = static_cast<double>(f.params.vertices.size());
     if (f.params.radius_x * (1.0 - std::cos(std::numbers::pi / n)) < 0.5 * c.epsilon) {
-      return "the regular polygon's corners stand out from its circle by less than epsilon / 2";
+      return "the regular polygon's corners stand out from its circle by less than epsilon / 2 "
+             "and the stroke rounds them";
     }
   }
   if (f.shape == ShapeClass::kArc && turning_monotonicity(s) < config.arc_monotone_turning) {
@@ -205,6 +218,52 @@ std::string implausibility(const PreparedStroke& s, const Fit& f, const Certific
     return "the arc stands out from its chord by less than epsilon / 2 (a line drawn bowed)";
   }
   return {};
+}
+
+// How tightly a candidate fits the stroke: the fit term of its rank.
+double fit_measure(const Candidate& c) { return c.certificate.bound + kRmsWeight * c.rms; }
+
+// A stroke that turns sharply at every corner of a polygon snap of 5..8 corners, and that the
+// polygon fits at least as tightly (fit_measure), is that polygon: not a circle or ellipse that
+// lies within tolerance of it too (a hexagon is within 7% of its radius of a circle, an octagon
+// within 4%: far inside epsilon), nor a shape of fewer corners the stroke does not turn sharply at
+// (a square's band holds a hexagon too). A jittery circle may turn sharply somewhere by chance; its
+// round fit stays the tighter.
+void yield_to_sharp_polygon(const PreparedStroke& s, std::vector<Scored>& scored,
+                            const RuleThresholds& rules) {
+  double tightest = INFINITY; // the tightest sharp polygon snap
+  for (const Scored& sc : scored) {
+    if (sc.snap && sharp_polygon(s, sc.fit, rules)) {
+      tightest = std::min(tightest, fit_measure(sc.candidate));
+    }
+  }
+  for (Scored& sc : scored) {
+    const ShapeClass shape = sc.fit.shape;
+    if (!sc.snap || shape == ShapeClass::kPolygon || shape == ShapeClass::kRegularPolygon ||
+        fit_measure(sc.candidate) < tightest) {
+      continue;
+    }
+    const bool round = shape == ShapeClass::kCircle || shape == ShapeClass::kEllipse;
+    if (!round && (!has_corners(shape) ||
+                   least_corner_share(s.points, sc.fit.params.vertices, kCornerWindow) >=
+                       rules.min_sharp_corner_share)) {
+      continue;
+    }
+    sc.snap = false;
+    sc.candidate.rejected =
+        "the stroke turns sharply at the corners of a polygon that fits it as tightly, and not "
+        "at this shape's (a polygon)";
+  }
+}
+
+// Polygons of k corners from the corner search, and from where the hand turned most (the search
+// may settle on a lumpy side's wobble).
+void add_polygon_fits(const PreparedStroke& s, std::size_t k, std::vector<Fit>& fits) {
+  const std::vector<PointD> turns = sharp_turn_corners(s, k);
+  for (std::optional<Fit> f :
+       {fit_polygon(s, k), turns.empty() ? std::nullopt : fit_polygon_from_corners(s, turns)}) {
+    if (f && std::isfinite(f->fit_error)) fits.push_back(std::move(*f));
+  }
 }
 
 std::vector<PointD> display_path(const CleanShape& c, double size) {
@@ -326,7 +385,7 @@ std::vector<Fit> fit_all(const PreparedStroke& s, const RecognizerConfig& config
     }
   }
   for (std::size_t k = kMinPolygonCorners; k <= kMaxPolygonCorners; ++k) {
-    if (wanted(ShapeClass::kPolygon, k)) add(fit_polygon(s, k));
+    if (wanted(ShapeClass::kPolygon, k)) add_polygon_fits(s, k, fits);
   }
   std::optional<Fit> circle = fit_circle(s);
   if (circle) {
@@ -360,12 +419,12 @@ std::vector<Scored> evaluate(const PreparedStroke& s, std::vector<Fit> fits, dou
     if (c.certificate.certified) c.rejected = implausibility(s, f, c.certificate, config, rules);
     c.rms = rms_distance(s.fit_points, f.clean);
     c.clean = display_path(f.clean, s.size);
-    sc.rank = (c.certificate.bound + kRmsWeight * c.rms) / epsilon +
-              kPricePerParameter * degrees_of_freedom(f);
+    sc.rank = fit_measure(c) / epsilon + kPricePerParameter * degrees_of_freedom(f);
     sc.snap = c.certificate.certified && c.rejected.empty();
     sc.fit = std::move(f);
     out.push_back(std::move(sc));
   }
+  yield_to_sharp_polygon(s, out, rules);
   std::stable_sort(out.begin(), out.end(), [](const Scored& a, const Scored& b) {
     if (a.snap != b.snap) return a.snap;
     return a.rank < b.rank;

@@ -35,6 +35,7 @@ std::vector<Fit> fit_all(const PreparedStroke& s, const RecognizerConfig& config
 struct RuleThresholds {
   double diamond_skew = kDiamondSkew;
   double max_backtrack = kMaxBacktrack;
+  double min_sharp_corner_share = kMinSharpCornerShare;
 };
 
 // A fit with its certificate, plausibility and rank.

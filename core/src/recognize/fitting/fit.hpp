@@ -79,9 +79,12 @@ std::optional<Fit> fit_segment(const PreparedStroke& s);
 std::optional<Fit> fit_polyline(const PreparedStroke& s, std::size_t segments);
 ShapeClass polygon_class(std::size_t corners);
 std::optional<Fit> fit_polygon(const PreparedStroke& s, std::size_t corners);
-// A triangle or quadrilateral refined from given corners (3 or 4, e.g. skeleton seeds).
+// A closed polygon refined from given corners (at least 3: skeleton seeds, the stroke's sharp
+// turns).
 std::optional<Fit> fit_polygon_from_corners(const PreparedStroke& s,
                                             const std::vector<PointD>& corners);
+// Corners at the closed stroke's k sharpest turns (turn_corners.cpp); empty when it has fewer.
+std::vector<PointD> sharp_turn_corners(const PreparedStroke& s, std::size_t k);
 // From a quadrilateral fit: rectangle, square and diamond proposals.
 std::vector<Fit> fit_rectangles(const PreparedStroke& s, const Fit& quadrilateral);
 std::optional<Fit> fit_regular_polygon(const PreparedStroke& s, std::size_t sides, PointD center,

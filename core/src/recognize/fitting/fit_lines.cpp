@@ -122,9 +122,8 @@ std::optional<Fit> fit_polygon(const PreparedStroke& s, std::size_t corners) {
 
 std::optional<Fit> fit_polygon_from_corners(const PreparedStroke& s,
                                             const std::vector<PointD>& corners) {
-  if (corners.size() != 3 && corners.size() != 4) return std::nullopt;
-  return finish(s, corners.size() == 3 ? ShapeClass::kTriangle : ShapeClass::kQuadrilateral,
-                corners, true);
+  if (corners.size() < 3) return std::nullopt;
+  return finish(s, polygon_class(corners.size()), corners, true);
 }
 
 } // namespace penshape::recognize_detail

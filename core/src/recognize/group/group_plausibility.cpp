@@ -9,6 +9,7 @@
 #include "geometry/exact_predicates.hpp"
 #include "recognize/arrow/arrow_limits.hpp"
 #include "recognize/classify/classifier.hpp"
+#include "recognize/fitting/path_turn.hpp"
 #include "recognize/fitting/thin_path.hpp"
 #include "recognize/group/arrow_tip.hpp"
 #include "recognize/group/group_classifier.hpp"
@@ -39,37 +40,18 @@ std::string kind_mismatch(ShapeClass group, ShapeClass own) {
   return {};
 }
 
-// The point at arc length `at` along a path whose cumulative lengths are `lengths`.
-PointD point_at(const std::vector<PointD>& path, const std::vector<double>& lengths, double at) {
-  const auto it = std::lower_bound(lengths.begin(), lengths.end(), at);
-  if (it == lengths.begin()) return path.front();
-  if (it == lengths.end()) return path.back();
-  const auto k = static_cast<std::size_t>(it - lengths.begin());
-  const double span = lengths[k] - lengths[k - 1];
-  const double w = span > 0.0 ? (at - lengths[k - 1]) / span : 0.0;
-  return path[k - 1] + w * (path[k] - path[k - 1]);
-}
-
 // Whether the piece passes a corner of the shape (v, between `before` and `after`) away from its
 // ends without turning there (kMinCornerTurnShare): it rounds it as a curve does.
 bool rounds_corner(const std::vector<PointD>& piece, PointD before, PointD v, PointD after,
                    double epsilon) {
-  std::vector<double> lengths{0.0};
-  double nearest = INFINITY, at = 0.0;
-  for (std::size_t i = 0; i + 1 < piece.size(); ++i) {
-    const PointD d = piece[i + 1] - piece[i];
-    const double len = norm(d);
-    const double w = len > 0.0 ? std::clamp(dot(v - piece[i], d) / (len * len), 0.0, 1.0) : 0.0;
-    const double dist = distance(v, piece[i] + w * d);
-    if (dist < nearest) nearest = dist, at = lengths.back() + w * len;
-    lengths.push_back(lengths.back() + len);
-  }
+  const ArcLengthPath path(piece);
+  const ArcLengthPath::Nearest near = path.nearest(v);
   // Not on this piece, or where it starts or ends (a corner between two pieces).
-  if (nearest > epsilon || at < epsilon || at > lengths.back() - epsilon) return false;
-  const PointD p = point_at(piece, lengths, at);
-  const double turn = angle_between(p - point_at(piece, lengths, at - epsilon),
-                                    point_at(piece, lengths, at + epsilon) - p);
-  return turn < group_rules().min_corner_turn_share * angle_between(v - before, after - v);
+  if (near.distance > epsilon || near.at < epsilon || near.at > path.length() - epsilon) {
+    return false;
+  }
+  const std::optional<double> turn = path.turn_at(near.at, epsilon);
+  return turn && *turn < group_rules().min_corner_turn_share * angle_between(v - before, after - v);
 }
 
 // Whether some piece rounds a corner of the closed polygon `outline` (first vertex repeated).

@@ -1,0 +1,18 @@
+#pragma once
+// Whether a closed stroke turns at a polygon's corners as a drawn corner does, or passes them as
+// a curve does: the evidence that tells a hexagon from a circle when both lie within tolerance.
+#include <vector>
+
+#include "penshape/core/point_arithmetic.hpp"
+
+namespace penshape::recognize_detail {
+
+// The least share of the polygon's turn that the stroke makes at a corner: at each corner v
+// (turn theta), the stroke's turn between chords `window` times the shorter side beside v either
+// way from its point nearest v, over theta. A sharp corner gives about 1; a circle through the
+// corners gives about `window` (the arc between the chords). Corners nearer than that to the
+// stroke's ends (where a closed stroke starts and stops) are not measured; 0 when none is.
+double least_corner_share(const std::vector<PointD>& stroke, const std::vector<PointD>& corners,
+                          double window);
+
+} // namespace penshape::recognize_detail

@@ -1,0 +1,62 @@
+// Corner seeds where a closed stroke turns sharply (fit.hpp, sharp_turn_corners): the corners a
+// hand drew, where the least-squares corner search (corners.cpp) may settle on a side's lumps.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+#include "recognize/fitting/fit.hpp"
+#include "recognize/fitting/path_turn.hpp"
+
+namespace penshape::recognize_detail {
+namespace {
+
+// Turns are read between chords this share of the stroke's length either way (a quarter of an
+// octagon's side): a corner turns whole within it, a circle by about 22 degrees.
+constexpr double kTurnWindow = 1.0 / 32.0;
+constexpr std::size_t kTurnSamples = 256;
+// Seeds worth a fit: each of the k turns at least half a regular k-gon's turn and twice the
+// stroke's median turn (a circle turns about as much everywhere, a polygon's sides hardly), so
+// round strokes and shapes of fewer corners cost no fit.
+constexpr double kLeastTurnShare = 0.5;
+constexpr double kLeastTurnOverMedian = 2.0;
+
+struct Turn {
+  double at = 0.0;
+  double turn = 0.0;
+};
+
+} // namespace
+
+std::vector<PointD> sharp_turn_corners(const PreparedStroke& s, std::size_t k) {
+  const ArcLengthPath path(s.points);
+  const double w = kTurnWindow * path.length(), step = path.length() / kTurnSamples;
+  if (!(w > 0.0)) return {};
+  std::vector<Turn> turns;
+  for (double at = w; at <= path.length() - w; at += step) {
+    turns.push_back({at, path.turn_at(at, w).value_or(0.0)});
+  }
+  if (turns.empty()) return {};
+  // The sharpest turns first, each at least two windows from those taken (one corner, once).
+  std::stable_sort(turns.begin(), turns.end(),
+                   [](const Turn& a, const Turn& b) { return a.turn > b.turn; });
+  std::vector<Turn> taken;
+  for (const Turn& t : turns) {
+    if (taken.size() == k) break;
+    const bool apart = std::all_of(taken.begin(), taken.end(),
+                                   [&](const Turn& o) { return std::abs(o.at - t.at) >= 2.0 * w; });
+    if (apart) taken.push_back(t);
+  }
+  if (taken.size() != k) return {};
+  const double median = turns[turns.size() / 2].turn;
+  const double least = taken.back().turn; // taken sharpest first
+  const double regular_turn = 2.0 * std::numbers::pi / static_cast<double>(k);
+  if (least < kLeastTurnShare * regular_turn || least < kLeastTurnOverMedian * median) return {};
+  std::sort(taken.begin(), taken.end(), [](const Turn& a, const Turn& b) { return a.at < b.at; });
+  std::vector<PointD> out;
+  out.reserve(k);
+  for (const Turn& t : taken) out.push_back(path.point_at(t.at));
+  return out;
+}
+
+} // namespace penshape::recognize_detail

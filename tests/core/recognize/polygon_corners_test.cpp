@@ -1,0 +1,153 @@
+// Polygons of 5..8 corners against the round shapes whose band holds them too (issue 23 item 2):
+// the stroke's turn at a corner (corner_sharpness.hpp) against its geometry, the corners found
+// where a hand turned (fit.hpp, sharp_turn_corners), and the rule that a stroke turning sharply
+// at a polygon's corners is no circle or ellipse, with its threshold switched off beside it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include "classify_test_support.hpp"
+#include "penshape/core/point_arithmetic.hpp"
+#include "penshape/core/recognize.hpp"
+#include "recognize/classify/classifier.hpp"
+#include "recognize/classify/corner_sharpness.hpp"
+#include "recognize/fitting/fit.hpp"
+#include "recognize/fitting/prepared_stroke.hpp"
+#include "recognize/thresholds.hpp"
+
+namespace penshape::recognize_detail {
+namespace {
+
+using test::chosen;
+using test::prepared;
+using test::samples;
+
+constexpr double kPi = std::numbers::pi;
+
+std::vector<PointD> regular_corners(int n, double radius, double turn) {
+  std::vector<PointD> out;
+  for (int k = 0; k < n; ++k) {
+    const double a = turn + 2 * kPi * k / n;
+    out.push_back({radius * std::cos(a), radius * std::sin(a)});
+  }
+  return out;
+}
+
+// Around the closed polygon from `start` (a point on its first side), every `step`, with
+// Gaussian jitter, ending a little past the start (a closing overlap).
+std::vector<PointD> around_polygon(const std::vector<PointD>& corners, double step, double noise,
+                                   unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> jitter(0.0, noise);
+  std::vector<PointD> ring{0.5 * (corners[0] + corners[1])};
+  for (std::size_t i = 1; i <= corners.size() + 1; ++i) ring.push_back(corners[i % corners.size()]);
+  ring.back() = corners[0] + 0.6 * (corners[1] - corners[0]);
+  std::vector<PointD> out;
+  for (std::size_t i = 0; i + 1 < ring.size(); ++i) {
+    const auto m = static_cast<int>(std::ceil(distance(ring[i], ring[i + 1]) / step));
+    for (int k = 0; k < m; ++k) {
+      const PointD p = ring[i] + (static_cast<double>(k) / m) * (ring[i + 1] - ring[i]);
+      out.push_back({p.x + (noise > 0 ? jitter(rng) : 0), p.y + (noise > 0 ? jitter(rng) : 0)});
+    }
+  }
+  out.push_back(ring.back());
+  return out;
+}
+
+// A circle from angle `from` around once and a little past, every `step` of arc.
+std::vector<PointD> around_circle(double radius, double from, double step) {
+  std::vector<PointD> out;
+  const auto n = static_cast<int>(std::ceil(2.1 * kPi * radius / step));
+  for (int k = 0; k <= n; ++k) {
+    const double a = from + 2.1 * kPi * k / n;
+    out.push_back({radius * std::cos(a), radius * std::sin(a)});
+  }
+  return out;
+}
+
+bool is_polygon(ShapeClass c) {
+  return c == ShapeClass::kPolygon || c == ShapeClass::kRegularPolygon;
+}
+
+TEST(CornerSharpness, ACornerDrawnSharpTurnsWhole) {
+  for (int n = 5; n <= 8; ++n) {
+    const std::vector<PointD> corners = regular_corners(n, 100, 0.3);
+    const std::vector<PointD> stroke = around_polygon(corners, 0.5, 0.0, 1);
+    EXPECT_NEAR(least_corner_share(stroke, corners, kCornerWindow), 1.0, 0.02) << n;
+  }
+}
+
+// A circle through the corners turns, between chords of arc h either way, by h / R (each chord's
+// direction is the tangent at its middle): a share of window * sin(pi/n) / (pi/n).
+TEST(CornerSharpness, ACircleThroughTheCornersTurnsByTheArcBetweenTheChords) {
+  for (int n = 5; n <= 8; ++n) {
+    const std::vector<PointD> corners = regular_corners(n, 100, 0.3);
+    const double expected = kCornerWindow * std::sin(kPi / n) / (kPi / n);
+    EXPECT_NEAR(least_corner_share(around_circle(100, 0.5, 0.2), corners, kCornerWindow), expected,
+                0.01)
+        << n;
+  }
+}
+
+TEST(CornerSharpness, NoCornerMeasuredIsNoEvidence) {
+  // An open stroke along one side only: every corner is at an end or off the stroke's reach.
+  const std::vector<PointD> corners = regular_corners(6, 100, 0.0);
+  const std::vector<PointD> side{corners[0], corners[1]};
+  EXPECT_EQ(least_corner_share(side, corners, kCornerWindow), 0.0);
+}
+
+TEST(SharpTurnCorners, FindsTheCornersAHandTurnedAt) {
+  for (int n = 5; n <= 8; ++n) {
+    const std::vector<PointD> corners = regular_corners(n, 100, 0.2);
+    const PreparedStroke s = prepared(samples(around_polygon(corners, 1.0, 0.8, 3)));
+    const std::vector<PointD> found = sharp_turn_corners(s, static_cast<std::size_t>(n));
+    ASSERT_EQ(found.size(), static_cast<std::size_t>(n)) << n;
+    for (const PointD& c : corners) {
+      double nearest = INFINITY;
+      for (const PointD& f : found) nearest = std::min(nearest, distance(c, f));
+      EXPECT_LT(nearest, 6.0) << n; // within a step of the turn samples and the jitter
+    }
+  }
+}
+
+// Regular and irregular polygons of 5..8 corners drawn with jitter are polygons; with the rule
+// off, the circle or ellipse that holds them wins (so the test fails when the rule is lost).
+TEST(SharpPolygonRule, PolygonsDrawnWithCornersAreNoCircles) {
+  RuleThresholds off;
+  off.min_sharp_corner_share = std::numeric_limits<double>::infinity();
+  int without = 0, total = 0;
+  for (int n = 5; n <= 8; ++n) {
+    for (unsigned seed = 1; seed <= 3; ++seed) {
+      std::vector<PointD> corners = regular_corners(n, 100, 0.4 * seed);
+      if (seed == 3) {
+        for (PointD& c : corners) c = {1.3 * c.x, c.y}; // stretched: no longer regular
+      }
+      const std::vector<StrokePoint> stroke = samples(around_polygon(corners, 1.0, 0.8, seed));
+      const ShapeClass with = chosen(stroke, {});
+      EXPECT_TRUE(is_polygon(with)) << n << " corners, seed " << seed << ": " << to_string(with);
+      without += is_polygon(chosen(stroke, off)) ? 1 : 0;
+      ++total;
+    }
+  }
+  std::printf("polygons of 5..8 corners: %d of %d without the rule\n", without, total);
+  EXPECT_LT(without, total / 2) << "the cases no longer need the rule";
+}
+
+TEST(SharpPolygonRule, CirclesAndEllipsesStayRound) {
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> jitter(0.0, 1.0);
+    std::vector<PointD> pts = around_circle(100, 0.7 * seed, 2.0);
+    for (PointD& p : pts) p = {(1.0 + 0.15 * (seed % 3)) * p.x + jitter(rng), p.y + jitter(rng)};
+    const ShapeClass c = chosen(samples(pts), {});
+    EXPECT_TRUE(c == ShapeClass::kCircle || c == ShapeClass::kEllipse) << seed << to_string(c);
+  }
+}
+
+} // namespace
+} // namespace penshape::recognize_detail
