@@ -72,6 +72,9 @@ inline constexpr double kDiamondSkew = 1.5 * (10.0 * kDegree); // 1.5 x kRightAn
 // circles); 0.5 keeps a margin over a circle's 0.25: no real class changes at 0.3..0.5, but at
 // 0.4 2 of 45 generated circles become polygons. Made polygons 41..90% (0.4: 45..93%).
 inline constexpr double kCornerWindow = 0.25;
+// Corners are also sought where a closed stroke turns most, when each of its k sharpest turns is
+// at least this share of a regular k-gon's turn (a fit costs time; round strokes skip it).
+inline constexpr double kLeastSeedTurnShare = 0.5;
 inline constexpr double kMinSharpCornerShare = 0.5;
 // An arc stands out from its chord by at least this many epsilons (as a polyline's corner must):
 // flatter, the segment says the same within tolerance (a quick line drawn with a slight bow).

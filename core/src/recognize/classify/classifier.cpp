@@ -60,6 +60,9 @@ double stroke_turning(const PreparedStroke& s, double epsilon) {
   return total;
 }
 
+// The turn at each corner of a regular polygon of k corners (radians).
+double regular_turn(std::size_t k) { return 2.0 * std::numbers::pi / static_cast<double>(k); }
+
 // The largest turn at a corner of a closed polygon (radians).
 double sharpest_turn(const std::vector<PointD>& v) {
   double out = 0;
@@ -132,6 +135,16 @@ std::string polygon_implausibility(const PreparedStroke& s, const Fit& f, const 
   return {};
 }
 
+// A star's outline lies within epsilon of a polygon of fewer corners (a fat star's of a pentagon);
+// the hand turned at each of its corners, by more than the polygon's corners turn on average.
+std::string extra_corner_implausibility(const PreparedStroke& s, const Fit& f) {
+  const std::size_t k = f.params.vertices.size();
+  if (!sharp_turn_corners(s, k + 1, regular_turn(k)).empty()) {
+    return "the stroke turns sharply at more corners than the polygon has (a star's outline)";
+  }
+  return {};
+}
+
 // A diamond is a rhombus whose angles are far from 90 degrees: its acute angle, 2 atan(b / a)
 // for half-diagonals b <= a, is below a right angle by more than kDiamondSkew. Closer, it is a
 // square (standing on a corner, or a box drawn skewed).
@@ -198,6 +211,9 @@ std::string implausibility(const PreparedStroke& s, const Fit& f, const Certific
   if (f.shape == ShapeClass::kPolygon) {
     if (std::string why = polygon_implausibility(s, f, c); !why.empty()) return why;
   }
+  if (f.shape == ShapeClass::kPolygon || f.shape == ShapeClass::kRegularPolygon) {
+    if (std::string why = extra_corner_implausibility(s, f); !why.empty()) return why;
+  }
   if (f.shape == ShapeClass::kDiamond) {
     if (std::string why = diamond_implausibility(f, rules.diamond_skew); !why.empty()) return why;
   }
@@ -259,7 +275,7 @@ void yield_to_sharp_polygon(const PreparedStroke& s, std::vector<Scored>& scored
 // Polygons of k corners from the corner search, and from where the hand turned most (the search
 // may settle on a lumpy side's wobble).
 void add_polygon_fits(const PreparedStroke& s, std::size_t k, std::vector<Fit>& fits) {
-  const std::vector<PointD> turns = sharp_turn_corners(s, k);
+  const std::vector<PointD> turns = sharp_turn_corners(s, k, kLeastSeedTurnShare * regular_turn(k));
   for (std::optional<Fit> f :
        {fit_polygon(s, k), turns.empty() ? std::nullopt : fit_polygon_from_corners(s, turns)}) {
     if (f && std::isfinite(f->fit_error)) fits.push_back(std::move(*f));

@@ -83,8 +83,10 @@ std::optional<Fit> fit_polygon(const PreparedStroke& s, std::size_t corners);
 // turns).
 std::optional<Fit> fit_polygon_from_corners(const PreparedStroke& s,
                                             const std::vector<PointD>& corners);
-// Corners at the closed stroke's k sharpest turns (turn_corners.cpp); empty when it has fewer.
-std::vector<PointD> sharp_turn_corners(const PreparedStroke& s, std::size_t k);
+// Corners at the closed stroke's k sharpest turns (turn_corners.cpp), read between chords 1/32 of
+// its length either way, at least two windows apart; empty unless each turns by at least
+// `least_turn` (radians) and twice the stroke's median turn.
+std::vector<PointD> sharp_turn_corners(const PreparedStroke& s, std::size_t k, double least_turn);
 // From a quadrilateral fit: rectangle, square and diamond proposals.
 std::vector<Fit> fit_rectangles(const PreparedStroke& s, const Fit& quadrilateral);
 std::optional<Fit> fit_regular_polygon(const PreparedStroke& s, std::size_t sides, PointD center,

@@ -2,7 +2,6 @@
 // hand drew, where the least-squares corner search (corners.cpp) may settle on a side's lumps.
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <optional>
 
 #include "recognize/fitting/fit.hpp"
@@ -15,10 +14,8 @@ namespace {
 // octagon's side): a corner turns whole within it, a circle by about 22 degrees.
 constexpr double kTurnWindow = 1.0 / 32.0;
 constexpr std::size_t kTurnSamples = 256;
-// Seeds worth a fit: each of the k turns at least half a regular k-gon's turn and twice the
-// stroke's median turn (a circle turns about as much everywhere, a polygon's sides hardly), so
-// round strokes and shapes of fewer corners cost no fit.
-constexpr double kLeastTurnShare = 0.5;
+// Turns that are corners: at least twice the stroke's median turn (a circle turns about as much
+// everywhere, a polygon's sides hardly), so round strokes cost no fit.
 constexpr double kLeastTurnOverMedian = 2.0;
 
 struct Turn {
@@ -28,7 +25,7 @@ struct Turn {
 
 } // namespace
 
-std::vector<PointD> sharp_turn_corners(const PreparedStroke& s, std::size_t k) {
+std::vector<PointD> sharp_turn_corners(const PreparedStroke& s, std::size_t k, double least_turn) {
   const ArcLengthPath path(s.points);
   const double w = kTurnWindow * path.length(), step = path.length() / kTurnSamples;
   if (!(w > 0.0)) return {};
@@ -50,8 +47,7 @@ std::vector<PointD> sharp_turn_corners(const PreparedStroke& s, std::size_t k) {
   if (taken.size() != k) return {};
   const double median = turns[turns.size() / 2].turn;
   const double least = taken.back().turn; // taken sharpest first
-  const double regular_turn = 2.0 * std::numbers::pi / static_cast<double>(k);
-  if (least < kLeastTurnShare * regular_turn || least < kLeastTurnOverMedian * median) return {};
+  if (least < least_turn || least < kLeastTurnOverMedian * median) return {};
   std::sort(taken.begin(), taken.end(), [](const Turn& a, const Turn& b) { return a.at < b.at; });
   std::vector<PointD> out;
   out.reserve(k);
