@@ -376,11 +376,13 @@ class Walker {
   bool check(const Piece& s, Slot slot) {
     // Distance every represented curve point must keep from B's edges: clearance + error.
     const double need = add_up(q_.clearance, s.error);
-    // Deep tried first: most offset segments of a jagged A are, and this asks one edge, not all
-    // of B's near ones.
-    if (deep(s, slot)) return true;
+    // The piece passes when it is deep or when it is far from B and outside it; either order
+    // gives the same answer (and `far` the same value below). Deep first by default: most
+    // offset segments of a jagged A are, and this asks one edge, not all of B's near ones.
+    if (!q_.clear_first && deep(s, slot)) return true;
     const bool far = far_from_b(s, 0.0, 1.0, need);
     if (far && outside_b(s, 0.0, 1.0, need)) return true;
+    if (q_.clear_first && deep(s, slot)) return true;
     // Near or inside B: drop the parts proven closer than `level` to A (all of the piece when
     // it lies inside B), then check the remaining gaps.
     std::vector<Interval> forbidden;

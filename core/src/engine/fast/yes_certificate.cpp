@@ -62,7 +62,7 @@ bool verify(const YesCheckInput& in, const YesCandidate& c, const Window* change
   const Window near_b = changed ? grown(*changed, level_b) : Window{};
   const auto b1 = [&] {
     return level_set_avoids({&pi, level_b, in.q_grid, kInputRounding, in.max_sagitta,
-                             changed ? &near_b : nullptr, nullptr},
+                             changed ? &near_b : nullptr, nullptr, true},
                             cancel);
   };
   // Both must hold, in either order. A whole check walks (B1) first: it is the cheaper walk
