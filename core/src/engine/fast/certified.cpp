@@ -11,6 +11,7 @@
 
 #include "geometry/distance_kernel.hpp"
 #include "geometry/exact_predicates.hpp"
+#include "geometry/segment_grid.hpp"
 #include "segment_index.hpp"
 
 namespace penshape::fast {
@@ -137,13 +138,9 @@ Box enclosing_box(const OnPiece& y0, const OnPiece& y1) {
 
 // A sum rounded to nearest is within half an ulp of the exact value: one ulp outwards bounds
 // it without switching the rounding mode.
-double add_up(double a, double b) {
-  return std::nextafter(a + b, std::numeric_limits<double>::infinity());
-}
+double add_up(double a, double b) { return detail::next_up(a + b); }
 
-double sub_down(double a, double b) {
-  return std::nextafter(a - b, -std::numeric_limits<double>::infinity());
-}
+double sub_down(double a, double b) { return detail::next_down(a - b); }
 
 namespace {
 

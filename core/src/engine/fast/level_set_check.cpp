@@ -12,6 +12,7 @@
 #include "certified.hpp"
 #include "geometry/distance_kernel.hpp"
 #include "geometry/exact_predicates.hpp"
+#include "geometry/segment_grid.hpp"
 #include "geometry/segment_sweep.hpp"
 
 namespace penshape::fast {
@@ -113,8 +114,7 @@ IPt round_point(DPt p) { return {std::llround(p.x), std::llround(p.y)}; }
 // square roots out of the caller's UpwardRounding scope.
 IntervalNT sqrt_upward(const IntervalNT& v) {
   const double lo =
-      v.inf() > 0 ? std::nextafter(CGAL::IA_opacify(std::sqrt(CGAL::IA_opacify(v.inf()))), 0.0)
-                  : 0.0;
+      v.inf() > 0 ? detail::next_down(CGAL::IA_opacify(std::sqrt(CGAL::IA_opacify(v.inf())))) : 0.0;
   return {lo, CGAL::IA_opacify(std::sqrt(CGAL::IA_opacify(v.sup())))};
 }
 
