@@ -397,5 +397,45 @@ TEST(SegmentGrid, GapBelowIsNextafterClampedAtZero) {
   }
 }
 
+// next_up and next_down are std::nextafter towards +inf and -inf bit for bit, on random doubles
+// of every scale and sign, zeros, denormals, the largest doubles, infinities and NaN.
+TEST(SegmentGrid, NextUpAndDownAreNextafter) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  constexpr double big = std::numeric_limits<double>::max();
+  constexpr double tiny = std::numeric_limits<double>::denorm_min();
+  std::vector<double> cases{0.0,
+                            -0.0,
+                            tiny,
+                            -tiny,
+                            2 * tiny,
+                            -2 * tiny,
+                            1e-310,
+                            -1e-310,
+                            1.0,
+                            -1.0,
+                            big,
+                            -big,
+                            inf,
+                            -inf,
+                            std::nextafter(big, 0.0),
+                            2.0,
+                            0.5,
+                            std::numeric_limits<double>::min(),
+                            -std::numeric_limits<double>::min()};
+  std::mt19937_64 rng(27);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_int_distribution<int> scale(-1074, 1023);
+  for (int i = 0; i < 200000; ++i) cases.push_back(std::ldexp(unit(rng), scale(rng)));
+  const auto same = [](double got, double want) {
+    return std::bit_cast<std::uint64_t>(got) == std::bit_cast<std::uint64_t>(want);
+  };
+  for (const double x : cases) {
+    ASSERT_TRUE(same(detail::next_up(x), std::nextafter(x, inf))) << x;
+    ASSERT_TRUE(same(detail::next_down(x), std::nextafter(x, -inf))) << x;
+  }
+  EXPECT_TRUE(std::isnan(detail::next_up(std::nan(""))));
+  EXPECT_TRUE(std::isnan(detail::next_down(std::nan(""))));
+}
+
 } // namespace
 } // namespace penshape

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory_resource>
 #include <random>
 #include <set>
 #include <span>
@@ -16,6 +17,7 @@
 #include <tuple>
 #include <vector>
 
+#include "geometry/node_recycler.hpp"
 #include "geometry/segment_sweep.hpp"
 
 namespace penshape {
@@ -291,6 +293,60 @@ TEST(SegmentSweep, RingFormAgreesWithBruteForceOnLargeStars) {
                                  {Rational(70), Rational(2)}};
     expect_ring_form_agrees({square, ring}, "star " + std::to_string(t));
   }
+}
+
+// The sweep's node recycler (geometry/node_recycler.hpp): a freed block comes back for the next
+// node, live blocks never overlap and keep their contents while others come and go, and a
+// std::pmr::set on it holds what std::set holds after random inserts and erases.
+TEST(NodeRecycler, RecyclesFreedNodesAndKeepsLiveOnesApart) {
+  detail::NodeRecycler pool;
+  constexpr std::size_t kSize = 40;
+  void* first = pool.allocate(kSize, 8);
+  pool.deallocate(first, kSize, 8);
+  EXPECT_EQ(pool.allocate(kSize, 8), first);
+
+  std::mt19937 rng(27);
+  std::vector<unsigned char*> live{static_cast<unsigned char*>(first)};
+  std::vector<unsigned char> tag{0};
+  std::fill_n(live[0], kSize, tag[0]);
+  for (int step = 0; step < 20000; ++step) {
+    if (live.size() > 1 && rng() % 3 == 0) {
+      const std::size_t k = rng() % live.size();
+      pool.deallocate(live[k], kSize, 8);
+      live.erase(live.begin() + static_cast<std::ptrdiff_t>(k));
+      tag.erase(tag.begin() + static_cast<std::ptrdiff_t>(k));
+    } else {
+      auto* p = static_cast<unsigned char*>(pool.allocate(kSize, 8));
+      const auto t = static_cast<unsigned char>(rng());
+      std::fill_n(p, kSize, t);
+      live.push_back(p);
+      tag.push_back(t);
+    }
+  }
+  for (std::size_t k = 0; k < live.size(); ++k) {
+    ASSERT_TRUE(std::all_of(live[k], live[k] + kSize, [&](unsigned char c) { return c == tag[k]; }))
+        << "block " << k << " overwritten";
+  }
+  std::vector<unsigned char*> sorted = live;
+  std::sort(sorted.begin(), sorted.end());
+  for (std::size_t k = 1; k < sorted.size(); ++k) {
+    ASSERT_GE(sorted[k] - sorted[k - 1], static_cast<std::ptrdiff_t>(kSize)) << "blocks overlap";
+  }
+
+  detail::NodeRecycler set_pool;
+  std::pmr::set<int> recycled(&set_pool);
+  std::set<int> plain;
+  for (int step = 0; step < 50000; ++step) {
+    const int v = static_cast<int>(rng() % 500);
+    if (rng() % 2 == 0) {
+      recycled.insert(v);
+      plain.insert(v);
+    } else {
+      recycled.erase(v);
+      plain.erase(v);
+    }
+  }
+  EXPECT_TRUE(std::equal(recycled.begin(), recycled.end(), plain.begin(), plain.end()));
 }
 
 } // namespace

@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "geometry/exact_predicates.hpp"
+#include "geometry/node_recycler.hpp"
 #include "penshape/core/base.hpp"
 
 namespace penshape::detail {
@@ -291,9 +292,9 @@ class Sweep {
   const Layout& layout_;
   std::vector<std::uint8_t> state_; // kForward, kActive
   std::vector<Ends> ends_;
-  // The status' nodes are recycled through a pool: the status is small, so its nodes stay in
-  // cache (a growing buffer took a fresh node for each of the n insertions).
-  std::pmr::unsynchronized_pool_resource pool_;
+  // The status' nodes are recycled (node_recycler.hpp): the status is small, so its nodes stay
+  // in cache (a growing buffer took a fresh node for each of the n insertions).
+  NodeRecycler pool_;
   Status status_;
   std::vector<typename Status::iterator> where_;
   std::optional<typename Status::const_iterator> hint_;

@@ -100,5 +100,36 @@ TEST(FastCertified, ArcChordsAreBoundedByTheirDerivedSagitta) {
   }
 }
 
+#if defined(__x86_64__) && defined(__SSE2__)
+// UpwardRounding rounds SSE arithmetic upwards inside its scope and restores both units after
+// it: the SSE mode always, the x87 control word when something in the scope changed it (CGAL's
+// fesetround-based code sets both), and only then (its reload is slow).
+TEST(FastCertified, UpwardRoundingRestoresBothUnits) {
+  const auto x87 = [] {
+    unsigned short cw = 0;
+    __asm__ volatile("fnstcw %0" : "=m"(cw));
+    return cw;
+  };
+  const unsigned csr = _mm_getcsr();
+  const unsigned short cw = x87();
+  volatile double one = 1.0, three = 3.0;
+  const double nearest = one / three;
+  {
+    const UpwardRounding rounding;
+    EXPECT_GT(one / three, nearest); // upward inside
+    EXPECT_EQ(x87(), cw);            // the x87 unit untouched
+    // Something in the scope sets the x87 unit to round towards zero.
+    const unsigned short changed = static_cast<unsigned short>(cw | 0x0C00U);
+    __asm__ volatile("fldcw %0" : : "m"(changed));
+    EXPECT_EQ(x87(), changed);
+  }
+  // The mode bits (the low six are sticky exception flags, which inexact operations set).
+  constexpr unsigned kFlags = 0x3FU;
+  EXPECT_EQ(_mm_getcsr() & ~kFlags, csr & ~kFlags);
+  EXPECT_EQ(x87(), cw);
+  EXPECT_EQ(one / three, nearest);
+}
+#endif
+
 } // namespace
 } // namespace penshape::fast

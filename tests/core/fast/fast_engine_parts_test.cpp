@@ -90,38 +90,41 @@ TEST(FastEngineParts, GridFrameOriginUsesTheExactLeastCoordinate) {
 
 // GridFrame::exact builds (v + t) / 2^k in lowest terms directly (no gcd): the same canonical
 // rational as the product it replaced, for points on both sides of the frame's origin, zero
-// and coordinates with many trailing zero bits.
+// and coordinates with many trailing zero bits; near the origin (v + t in 64 bits: the
+// integer path) and 10^15 away from it (the translation t needs more: GMP's path).
 TEST(FastEngineParts, GridPointsConvertBackToCanonicalRationals) {
-  PolygonSet q;
-  q.polygons.push_back(
-      {{{Rational(-3), Rational(-2)}, {Rational(5), Rational(-2)}, {Rational(1), Rational(4)}},
-       {}});
-  for (const int d : {80, 3}) {
-    const fast::GridFrame frame(q, params_of(1, Rational(1, 10), Rational(1, d)));
-    const int k = frame.scale_exponent();
-    const fast::IPt origin = frame.round({Rational(0), Rational(0)});
-    for (const std::int64_t v : {std::int64_t{0}, std::int64_t{1}, std::int64_t{-1},
-                                 std::int64_t{4096}, std::int64_t{-12288}, std::int64_t{777777}}) {
-      const fast::IPt g{origin.x + v, origin.y - v};
-      const ExactPoint e = frame.exact(g);
-      // The grid point's offset from the origin's grid point, as a product of rationals.
-      Rational unit = 1;
-      if (k >= 0) {
-        mpq_div_2exp(unit.get_mpq_t(), unit.get_mpq_t(), static_cast<mp_bitcnt_t>(k));
-      } else {
-        mpq_mul_2exp(unit.get_mpq_t(), unit.get_mpq_t(), static_cast<mp_bitcnt_t>(-k));
+  for (const long far : {0L, 1000000000000000L}) {
+    PolygonSet q;
+    const Rational fx(far), fy(-far);
+    q.polygons.push_back({{{fx - 3, fy - 2}, {fx + 5, fy - 2}, {fx + 1, fy + 4}}, {}});
+    for (const int d : {80, 3}) {
+      const fast::GridFrame frame(q, params_of(1, Rational(1, 10), Rational(1, d)));
+      const int k = frame.scale_exponent();
+      const fast::IPt origin = frame.round({fx, fy});
+      for (const std::int64_t v :
+           {std::int64_t{0}, std::int64_t{1}, std::int64_t{-1}, std::int64_t{4096},
+            std::int64_t{-12288}, std::int64_t{777777}}) {
+        const fast::IPt g{origin.x + v, origin.y - v};
+        const ExactPoint e = frame.exact(g);
+        // The grid point's offset from the origin's grid point, as a product of rationals.
+        Rational unit = 1;
+        if (k >= 0) {
+          mpq_div_2exp(unit.get_mpq_t(), unit.get_mpq_t(), static_cast<mp_bitcnt_t>(k));
+        } else {
+          mpq_mul_2exp(unit.get_mpq_t(), unit.get_mpq_t(), static_cast<mp_bitcnt_t>(-k));
+        }
+        const ExactPoint o = frame.exact(origin);
+        const Rational dx = e.x - o.x, dy = e.y - o.y;
+        EXPECT_EQ(dx, Rational(static_cast<long>(v)) * unit);
+        EXPECT_EQ(dy, Rational(-static_cast<long>(v)) * unit);
+        for (const Rational& c : {e.x, e.y}) {
+          Rational canonical = c;
+          canonical.canonicalize();
+          EXPECT_EQ(mpz_cmp(c.get_num_mpz_t(), canonical.get_num_mpz_t()), 0);
+          EXPECT_EQ(mpz_cmp(c.get_den_mpz_t(), canonical.get_den_mpz_t()), 0);
+        }
+        EXPECT_EQ(frame.round(e), g);
       }
-      const ExactPoint o = frame.exact(origin);
-      const Rational dx = e.x - o.x, dy = e.y - o.y;
-      EXPECT_EQ(dx, Rational(static_cast<long>(v)) * unit);
-      EXPECT_EQ(dy, Rational(-static_cast<long>(v)) * unit);
-      for (const Rational& c : {e.x, e.y}) {
-        Rational canonical = c;
-        canonical.canonicalize();
-        EXPECT_EQ(mpz_cmp(c.get_num_mpz_t(), canonical.get_num_mpz_t()), 0);
-        EXPECT_EQ(mpz_cmp(c.get_den_mpz_t(), canonical.get_den_mpz_t()), 0);
-      }
-      EXPECT_EQ(frame.round(e), g);
     }
   }
 }

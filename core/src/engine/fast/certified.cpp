@@ -11,6 +11,7 @@
 
 #include "geometry/distance_kernel.hpp"
 #include "geometry/exact_predicates.hpp"
+#include "geometry/segment_grid.hpp"
 #include "segment_index.hpp"
 
 namespace penshape::fast {
@@ -128,31 +129,34 @@ bool segments_farther_than(const OnPiece& y0, const OnPiece& y1, IPt a, IPt b, d
                            eval<Rational>(b), threshold, &exact_sign) > 0;
 }
 
-Box enclosing_box(const OnPiece& y0, const OnPiece& y1) {
-  const UpwardRounding rounding;
-  const IntervalPt a = eval<IntervalNT>(y0), b = eval<IntervalNT>(y1);
+namespace {
+
+// The box of two enclosures: it contains every point they enclose.
+Box box_of(const IntervalPt& a, const IntervalPt& b) {
   return {std::min(a.x.inf(), b.x.inf()), std::min(a.y.inf(), b.y.inf()),
           std::max(a.x.sup(), b.x.sup()), std::max(a.y.sup(), b.y.sup())};
 }
 
-// A sum rounded to nearest is within half an ulp of the exact value: one ulp outwards bounds
-// it without switching the rounding mode.
-double add_up(double a, double b) {
-  return std::nextafter(a + b, std::numeric_limits<double>::infinity());
+} // namespace
+
+Box enclosing_box(const OnPiece& y0, const OnPiece& y1) {
+  const UpwardRounding rounding;
+  return box_of(eval<IntervalNT>(y0), eval<IntervalNT>(y1));
 }
 
-double sub_down(double a, double b) {
-  return std::nextafter(a - b, -std::numeric_limits<double>::infinity());
-}
+// A sum rounded to nearest is within half an ulp of the exact value: one ulp outwards bounds
+// it without switching the rounding mode.
+double add_up(double a, double b) { return detail::next_up(a + b); }
+
+double sub_down(double a, double b) { return detail::next_down(a - b); }
 
 namespace {
 
 // The edges of the index whose boxes are not proven farther than T from the box of y0, y1 (the
 // grid's certified prefilter, segment_grid.hpp), in a buffer reused by the thread (callers
 // consume it before the next call).
-const std::vector<std::size_t>& edges_near(const SegmentIndex& index, const OnPiece& y0,
-                                           const OnPiece& y1, double threshold) {
-  const Box box = enclosing_box(y0, y1);
+const std::vector<std::size_t>& edges_near(const SegmentIndex& index, const Box& box,
+                                           double threshold) {
   thread_local std::vector<std::size_t> out;
   out.clear();
   index.grid().for_each_not_farther({box.lo_x, box.lo_y, box.hi_x, box.hi_y}, threshold,
@@ -164,12 +168,19 @@ const std::vector<std::size_t>& edges_near(const SegmentIndex& index, const OnPi
 
 bool piece_farther_than(const SegmentIndex& index, const OnPiece& y0, const OnPiece& y1,
                         double threshold) {
-  const std::vector<std::size_t>& near = edges_near(index, y0, y1, threshold);
-  // One rounding-mode switch for all the intervals; the exact fallback after it.
+  // The ends' enclosures once: their box for the grid's prefilter (which runs in the default
+  // rounding mode), then the intervals of every near edge under one more switch; the exact
+  // fallback after it.
+  IntervalPt i0{}, i1{};
+  {
+    const UpwardRounding rounding;
+    i0 = eval<IntervalNT>(y0);
+    i1 = eval<IntervalNT>(y1);
+  }
+  const std::vector<std::size_t>& near = edges_near(index, box_of(i0, i1), threshold);
   std::vector<std::size_t> undecided;
   {
     const UpwardRounding rounding;
-    const IntervalPt i0 = eval<IntervalNT>(y0), i1 = eval<IntervalNT>(y1);
     for (const std::size_t k : near) {
       const Segment& g = index.segments()[k];
       const int s = separated_and_far(i0, i1, eval<IntervalNT>(g.a), eval<IntervalNT>(g.b),
@@ -190,11 +201,15 @@ bool piece_farther_than(const SegmentIndex& index, const OnPiece& y0, const OnPi
 }
 
 bool all_edges_farther(const SegmentIndex& index, const OnPiece& y, double threshold) {
-  const std::vector<std::size_t>& near = edges_near(index, y, y, threshold);
+  IntervalPt iy{};
+  {
+    const UpwardRounding rounding;
+    iy = eval<IntervalNT>(y);
+  }
+  const std::vector<std::size_t>& near = edges_near(index, box_of(iy, iy), threshold);
   std::vector<std::size_t> undecided;
   {
     const UpwardRounding rounding;
-    const IntervalPt iy = eval<IntervalNT>(y);
     for (const std::size_t k : near) {
       const Segment& g = index.segments()[k];
       const int s = interval_sign(iy, eval<IntervalNT>(g.a), eval<IntervalNT>(g.b), threshold);

@@ -30,7 +30,10 @@ class UpwardRounding {
   }
   ~UpwardRounding() {
     _mm_setcsr(saved_);
-    __asm__ volatile("fldcw %0" : : "m"(saved_x87_));
+    // Reloading the x87 word is slow (fldcw): only when something in the scope changed it.
+    unsigned short now = 0;
+    __asm__ volatile("fnstcw %0" : "=m"(now));
+    if (now != saved_x87_) __asm__ volatile("fldcw %0" : : "m"(saved_x87_));
   }
   UpwardRounding(const UpwardRounding&) = delete;
   UpwardRounding& operator=(const UpwardRounding&) = delete;

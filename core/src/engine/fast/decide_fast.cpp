@@ -245,13 +245,13 @@ class FastDecision {
     check_cancel(cancel_);
     if (pi_hat.empty()) return false;
     // Ring-wise simplification is usually still a valid region; otherwise let Clipper union it.
-    IRegion p = simplify_rings_only(pi_hat, b_.simplify);
-    if (p.empty() || !is_certifiable_region(SegmentIndex(flatten(p), r_ / 2.0))) {
-      p = simplify(pi_hat, b_.simplify);
-    }
-    if (!verify_yes(in, p, cancel_)) return false;
+    // The candidate's index serves both the test and the check (built once).
+    std::optional<YesCandidate> c;
+    c.emplace(in, simplify_rings_only(pi_hat, b_.simplify));
+    if (!c->certifiable) c.emplace(in, simplify(pi_hat, b_.simplify));
+    if (!verify_yes(in, *c, cancel_)) return false;
     result_.answer = Answer::kYes;
-    result_.solution = to_polygon_set(frame_, p);
+    result_.solution = to_polygon_set(frame_, c->p);
     result_.hausdorff_bound = params_.tolerance;
     return true;
   }

@@ -25,11 +25,17 @@ std::vector<std::size_t> kept_indices(const IRing& ring, double tol) {
   });
   // A negative tolerance keeps every vertex, as the distance itself would.
   const double tol2 = tol < 0.0 ? -1.0 : tol * tol;
+  // The vertices as doubles once (exact: |coordinates| <= 2^31), index n being vertex 0 again:
+  // the kernel measures O(n log n) times, each without a conversion or a division.
+  thread_local std::vector<DPt> pts;
+  pts.clear();
+  pts.reserve(n + 1);
+  for (const IPt& p : ring) pts.push_back(to_d(p));
+  pts.push_back(pts.front());
   const std::vector<char> keep = detail::douglas_peucker_ring(
       n, far,
       [&](std::size_t k, std::size_t i, std::size_t j) {
-        return detail::proposed_squared_distance(to_d(ring[k % n]), to_d(ring[i % n]),
-                                                 to_d(ring[j % n]));
+        return detail::proposed_squared_distance(pts[k], pts[i], pts[j]);
       },
       [&](std::size_t, std::size_t, double worst) { return !(worst > tol2); });
   for (std::size_t k = 0; k < n; ++k) {

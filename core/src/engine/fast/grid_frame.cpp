@@ -1,6 +1,7 @@
 #include "grid_frame.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -206,6 +207,18 @@ namespace {
 // (v + t) / 2^k in lowest terms without a gcd: the denominator is a power of two, so only the
 // trailing zero bits of the numerator cancel (mpz_scan1 counts them, for negative numbers too).
 Rational scaled_back(std::int64_t v, const mpz_class& t, int k) {
+  // Fast path when v + t fits in 64 bits and the denominator in an unsigned long: the same
+  // canonical value without GMP temporaries (the YES answer's P, 2% of KAZ's decision).
+  long sum = 0;
+  if (k > 0 && k < 64 && t.fits_slong_p() &&
+      !__builtin_add_overflow(static_cast<long>(v), t.get_si(), &sum)) {
+    if (sum == 0) return Rational(0);
+    const int shift = std::min(std::countr_zero(static_cast<unsigned long>(sum)), k);
+    Rational out;
+    // sum >> shift is exact (those bits are zero) and odd unless shift = k (then den = 1).
+    mpq_set_si(out.get_mpq_t(), sum >> shift, 1UL << (k - shift));
+    return out;
+  }
   mpz_class num = mpz_class(static_cast<long>(v)) + t;
   if (k <= 0) {
     mpz_mul_2exp(num.get_mpz_t(), num.get_mpz_t(), static_cast<mp_bitcnt_t>(-k));

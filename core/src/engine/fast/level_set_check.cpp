@@ -1,6 +1,7 @@
 #include "level_set_check.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <span>
@@ -12,6 +13,7 @@
 #include "certified.hpp"
 #include "geometry/distance_kernel.hpp"
 #include "geometry/exact_predicates.hpp"
+#include "geometry/segment_grid.hpp"
 #include "geometry/segment_sweep.hpp"
 
 namespace penshape::fast {
@@ -113,8 +115,7 @@ IPt round_point(DPt p) { return {std::llround(p.x), std::llround(p.y)}; }
 // square roots out of the caller's UpwardRounding scope.
 IntervalNT sqrt_upward(const IntervalNT& v) {
   const double lo =
-      v.inf() > 0 ? std::nextafter(CGAL::IA_opacify(std::sqrt(CGAL::IA_opacify(v.inf()))), 0.0)
-                  : 0.0;
+      v.inf() > 0 ? detail::next_down(CGAL::IA_opacify(std::sqrt(CGAL::IA_opacify(v.inf())))) : 0.0;
   return {lo, CGAL::IA_opacify(std::sqrt(CGAL::IA_opacify(v.sup())))};
 }
 
@@ -165,16 +166,24 @@ double sagitta_bound(DPt u, DPt w, double level) {
   return (IntervalNT(level) * c2 / (8 - c2)).sup();
 }
 
-// Sign of the cross product u x w, exactly (intervals, then rationals).
-int cross_sign(DPt u, DPt w) {
-  {
-    const UpwardRounding rounding;
-    const IntervalNT c = IntervalNT(u.x) * IntervalNT(w.y) - IntervalNT(u.y) * IntervalNT(w.x);
-    if (c.inf() > 0) return 1;
-    if (c.sup() < 0) return -1;
-  }
-  // Products of doubles are exact as rationals.
-  const int c = cmp(Rational(u.x) * Rational(w.y), Rational(u.y) * Rational(w.x));
+// Two directions whose turn (the sign of the cross product u x w) a chord needs.
+struct Turn {
+  DPt u;
+  DPt w;
+};
+
+// The turn's sign by intervals (requires upward rounding): 1, -1, or 0 when they cannot tell.
+int interval_turn(const Turn& t) {
+  const IntervalNT c =
+      IntervalNT(t.u.x) * IntervalNT(t.w.y) - IntervalNT(t.u.y) * IntervalNT(t.w.x);
+  if (c.inf() > 0) return 1;
+  if (c.sup() < 0) return -1;
+  return 0;
+}
+
+// The turn's sign exactly: products of doubles are exact as rationals.
+int exact_turn(const Turn& t) {
+  const int c = cmp(Rational(t.u.x) * Rational(t.w.y), Rational(t.u.y) * Rational(t.w.x));
   return (c > 0) - (c < 0);
 }
 
@@ -313,16 +322,29 @@ class Walker {
   // Error = sagitta bound + the endpoints' deviations, rounded up.
   bool arc_piece(IPt c, const Dir& from, const Dir& to, double a_from, double a_to, DPt u0, DPt u1,
                  Slot slot) {
-    if (!to.exact_end && (cross_sign(u0, to.u) < 0 || cross_sign(to.u, u1) < 0)) return false;
-    if (!(from.exact_end && to.exact_end) && cross_sign(from.u, to.u) < 0) return false;
+    // The turns to check: `to` inside the cone, and from -> to counterclockwise.
+    std::array<Turn, 3> turns{};
+    std::size_t n = 0;
+    if (!to.exact_end) {
+      turns[n++] = {u0, to.u};
+      turns[n++] = {to.u, u1};
+    }
+    if (!(from.exact_end && to.exact_end)) turns[n++] = {from.u, to.u};
+    // Their interval signs and the chord's error under one rounding switch; the exact sign of
+    // a turn the intervals cannot tell after it. A turn that is negative fails the piece.
+    std::array<int, 3> sign{};
     Piece piece{};
     double sagitta = 0.0;
     {
       const UpwardRounding rounding;
+      for (std::size_t k = 0; k < n; ++k) sign[k] = interval_turn(turns[k]);
       piece.p = from.rep.p;
       piece.q = to.rep.p;
       sagitta = sagitta_bound(from.u, to.u, q_.level);
       piece.error = (IntervalNT(sagitta) + IntervalNT(std::max(from.rep.dev, to.rep.dev))).sup();
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+      if ((sign[k] != 0 ? sign[k] : exact_turn(turns[k])) < 0) return false;
     }
     if (check(piece, slot)) return true;
     if (sagitta < kMinSagitta) return false;
@@ -376,11 +398,13 @@ class Walker {
   bool check(const Piece& s, Slot slot) {
     // Distance every represented curve point must keep from B's edges: clearance + error.
     const double need = add_up(q_.clearance, s.error);
-    // Deep tried first: most offset segments of a jagged A are, and this asks one edge, not all
-    // of B's near ones.
-    if (deep(s, slot)) return true;
+    // The piece passes when it is deep or when it is far from B and outside it; either order
+    // gives the same answer (and `far` the same value below). Deep first by default: most
+    // offset segments of a jagged A are, and this asks one edge, not all of B's near ones.
+    if (!q_.clear_first && deep(s, slot)) return true;
     const bool far = far_from_b(s, 0.0, 1.0, need);
     if (far && outside_b(s, 0.0, 1.0, need)) return true;
+    if (q_.clear_first && deep(s, slot)) return true;
     // Near or inside B: drop the parts proven closer than `level` to A (all of the piece when
     // it lies inside B), then check the remaining gaps.
     std::vector<Interval> forbidden;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <utility>
 
 namespace penshape::fast {
 namespace {
@@ -44,17 +45,23 @@ double cell_size(const IRings& rings, double cell) {
 
 SegmentIndex::SegmentIndex(const IRings& rings, double cell)
     : rings_(rings), grid_(ring_edges(rings), cell_size(rings, cell)) {
-  // Each edge in every row its y-range meets (two passes: count, fill), rows as the grid's.
+  // Each edge in every row its y-range meets (two passes: count, fill), rows as the grid's;
+  // each edge's rows are computed once, in the first pass.
   const std::vector<Segment>& segs = grid_.segments();
   if (segs.empty()) return;
   const auto rows = static_cast<std::size_t>(grid_.row_count());
   row_start_.assign(rows + 1, 0);
+  std::vector<std::pair<int, int>> spans(segs.size());
+  for (std::size_t s = 0; s < segs.size(); ++s) {
+    const Segment& g = segs[s];
+    spans[s] = {grid_.clamped_row(static_cast<double>(std::min(g.a.y, g.b.y))),
+                grid_.clamped_row(static_cast<double>(std::max(g.a.y, g.b.y)))};
+  }
   auto visit = [&](auto&& on_row) {
     for (std::size_t s = 0; s < segs.size(); ++s) {
-      const Segment& g = segs[s];
-      const int y0 = grid_.clamped_row(static_cast<double>(std::min(g.a.y, g.b.y)));
-      const int y1 = grid_.clamped_row(static_cast<double>(std::max(g.a.y, g.b.y)));
-      for (int gy = y0; gy <= y1; ++gy) on_row(static_cast<std::size_t>(gy), s);
+      for (int gy = spans[s].first; gy <= spans[s].second; ++gy) {
+        on_row(static_cast<std::size_t>(gy), s);
+      }
     }
   };
   visit([&](std::size_t r, std::size_t) { ++row_start_[r + 1]; });

@@ -29,11 +29,11 @@ Window grown(const Window& t, double by) {
 
 // verify_yes, with the level-set walks limited to the neighbourhood of `changed` when given
 // (verify_yes_after_drop says why that suffices).
-bool verify(const YesCheckInput& in, const IRegion& p, const Window* changed,
+bool verify(const YesCheckInput& in, const YesCandidate& c, const Window* changed,
             const CancelHook& cancel) {
-  if (p.empty()) return false;
-  const SegmentIndex pi(flatten(p), in.radius.lo / 2.0);
-  if (!is_certifiable_region(pi)) return false;
+  const IRegion& p = c.p;
+  if (p.empty() || !c.certifiable) return false;
+  const SegmentIndex& pi = c.index;
 
   // The levels are doubles rounded down from the exact bounds, and are then taken as exact.
   const double level_a = fast::level_a(in);                        // <= eps - η
@@ -62,7 +62,7 @@ bool verify(const YesCheckInput& in, const IRegion& p, const Window* changed,
   const Window near_b = changed ? grown(*changed, level_b) : Window{};
   const auto b1 = [&] {
     return level_set_avoids({&pi, level_b, in.q_grid, kInputRounding, in.max_sagitta,
-                             changed ? &near_b : nullptr, nullptr},
+                             changed ? &near_b : nullptr, nullptr, true},
                             cancel);
   };
   // Both must hold, in either order. A whole check walks (B1) first: it is the cheaper walk
@@ -74,8 +74,17 @@ bool verify(const YesCheckInput& in, const IRegion& p, const Window* changed,
 
 } // namespace
 
+YesCandidate::YesCandidate(const YesCheckInput& in, IRegion region)
+    : p(std::move(region)),
+      index(flatten(p), in.radius.lo / 2.0),
+      certifiable(!p.empty() && is_certifiable_region(index)) {}
+
 bool verify_yes(const YesCheckInput& in, const IRegion& p, const CancelHook& cancel) {
-  return verify(in, p, nullptr, cancel);
+  return verify(in, YesCandidate(in, p), nullptr, cancel);
+}
+
+bool verify_yes(const YesCheckInput& in, const YesCandidate& c, const CancelHook& cancel) {
+  return verify(in, c, nullptr, cancel);
 }
 
 bool verify_yes_after_drop(const YesCheckInput& in, const IRegion& p, IPt a, IPt v, IPt b,
@@ -84,7 +93,7 @@ bool verify_yes_after_drop(const YesCheckInput& in, const IRegion& p, IPt a, IPt
                         static_cast<double>(std::min({a.y, v.y, b.y})),
                         static_cast<double>(std::max({a.x, v.x, b.x})),
                         static_cast<double>(std::max({a.y, v.y, b.y}))};
-  return verify(in, p, &triangle, cancel);
+  return verify(in, YesCandidate(in, p), &triangle, cancel);
 }
 
 CertifiedInput certified_input(const IRings& q_grid, double tolerance, double cell) {

@@ -34,6 +34,20 @@ inline double level_a(const YesCheckInput& in) { return sub_down(in.tolerance.lo
 
 bool verify_yes(const YesCheckInput& in, const IRegion& p, const CancelHook& cancel);
 
+// A candidate P with the index the check queries (cell r / 2) and whether P is certifiable
+// (is_certifiable_region): built once, so that a caller who must know whether P is certifiable
+// before checking it (the decision, which unions P with Clipper when it is not) does not build
+// and test the same index twice. The certifiable test is exact and does not depend on the cell.
+struct YesCandidate {
+  YesCandidate(const YesCheckInput& in, IRegion region);
+  IRegion p;
+  SegmentIndex index;
+  bool certifiable;
+};
+
+// verify_yes(in, c.p): the same check on the candidate's index.
+bool verify_yes(const YesCheckInput& in, const YesCandidate& c, const CancelHook& cancel);
+
 // verify_yes for P' = a region P that verify_yes (or this) accepted with the same `in`, with
 // one vertex v dropped from a ring (a and b its neighbours there, T the triangle a v b). P' is
 // checked certifiable and (A2), (B2) in full; the walks of (A1) and (B1) only near T, since
