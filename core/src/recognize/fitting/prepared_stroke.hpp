@@ -2,6 +2,7 @@
 // A validated stroke ready for fitting: duplicates removed, thinned within a certified tolerance
 // (recognize.hpp, "Dense strokes"), its size, and an arc-length resampling that every fitter
 // works on (so a long or dense stroke costs no more to fit than a short one).
+#include <optional>
 #include <vector>
 
 #include "penshape/core/recognize.hpp"
@@ -20,6 +21,13 @@ struct PreparedStroke {
   double length = 0.0;            // length of A
   double size = 0.0;              // bounding-box diagonal of A
   double gap = 0.0;               // distance from the last point to the first
+  // The turns along `points`, sharpest first (turn_corners.cpp, which reads several corner counts
+  // of one stroke from them), made on first use: most strokes never need them.
+  struct PathTurn {
+    double at = 0.0;   // arc length along `points`
+    double turn = 0.0; // radians
+  };
+  mutable std::optional<std::vector<PathTurn>> turns_by_sharpness;
 };
 
 // Throws InvalidInput for no samples, non-finite or too large coordinates, too many samples. One

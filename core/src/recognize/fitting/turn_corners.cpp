@@ -18,25 +18,29 @@ constexpr std::size_t kTurnSamples = 256;
 // everywhere, a polygon's sides hardly), so round strokes cost no fit.
 constexpr double kLeastTurnOverMedian = 2.0;
 
-struct Turn {
-  double at = 0.0;
-  double turn = 0.0;
-};
+using Turn = PreparedStroke::PathTurn;
+
+// The stroke's turns every 1/256 of its length, sharpest first (stable: ties in arc order).
+const std::vector<Turn>& turns_by_sharpness(const PreparedStroke& s, const ArcLengthPath& path) {
+  if (s.turns_by_sharpness) return *s.turns_by_sharpness;
+  const double w = kTurnWindow * path.length(), step = path.length() / kTurnSamples;
+  std::vector<Turn> turns;
+  for (double at = w; w > 0.0 && at <= path.length() - w; at += step) {
+    turns.push_back({at, path.turn_at(at, w).value_or(0.0)});
+  }
+  std::stable_sort(turns.begin(), turns.end(),
+                   [](const Turn& a, const Turn& b) { return a.turn > b.turn; });
+  return s.turns_by_sharpness.emplace(std::move(turns));
+}
 
 } // namespace
 
 std::vector<PointD> sharp_turn_corners(const PreparedStroke& s, std::size_t k, double least_turn) {
   const ArcLengthPath path(s.points);
-  const double w = kTurnWindow * path.length(), step = path.length() / kTurnSamples;
-  if (!(w > 0.0)) return {};
-  std::vector<Turn> turns;
-  for (double at = w; at <= path.length() - w; at += step) {
-    turns.push_back({at, path.turn_at(at, w).value_or(0.0)});
-  }
+  const double w = kTurnWindow * path.length();
+  const std::vector<Turn>& turns = turns_by_sharpness(s, path);
   if (turns.empty()) return {};
   // The sharpest turns first, each at least two windows from those taken (one corner, once).
-  std::stable_sort(turns.begin(), turns.end(),
-                   [](const Turn& a, const Turn& b) { return a.turn > b.turn; });
   std::vector<Turn> taken;
   for (const Turn& t : turns) {
     if (taken.size() == k) break;
