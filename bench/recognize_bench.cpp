@@ -34,9 +34,11 @@
 //
 // Per class (recognize_classes.hpp), after the accuracy tables or alone with --classes (one
 // recognition per drawing, quick): the shipped defaults on every labelled class, the diamonds and
-// squares on a corner made from real rectangles; --wrong lists every drawing named wrong.
-// --rule-folds (recognize_rule_folds.hpp): each plausibility threshold (kDiamondSkew,
-// kMaxBacktrack) chosen per held-out writer, the held-out figure beside the rule off and shipped.
+// squares on a corner made from real rectangles, polygons of 5-8 corners made from real circles,
+// one-stroke stars, and the classes simplified as sketch collections store drawings; --wrong lists
+// every drawing named wrong. --rule-folds (recognize_rule_folds.hpp): each plausibility threshold
+// (kDiamondSkew, kMaxBacktrack, kMinSharpCornerShare) chosen per held-out writer, the held-out
+// figure beside the rule off and shipped.
 //
 // Usage: recognize_bench [--json] [--repeat N] [--khz-stride K] [--accuracy-only |
 //                         --timing-only | --derive-tolerance | --classes | --rule-folds]
