@@ -361,6 +361,10 @@ double minimum_rank(const Family& family) {
   return kPricePerParameter * degrees_of_freedom(f);
 }
 
+bool wins_on_corners(const Family& family) {
+  return family.shape == ShapeClass::kPolygon || family.shape == ShapeClass::kRegularPolygon;
+}
+
 Family family_of(const Fit& f) {
   if (f.shape == ShapeClass::kPolyline || f.shape == ShapeClass::kRegularPolygon ||
       f.shape == ShapeClass::kPolygon) {
@@ -440,12 +444,16 @@ std::vector<Scored> evaluate(const PreparedStroke& s, std::vector<Fit> fits, dou
     sc.fit = std::move(f);
     out.push_back(std::move(sc));
   }
-  yield_to_sharp_polygon(s, out, rules);
-  std::stable_sort(out.begin(), out.end(), [](const Scored& a, const Scored& b) {
+  settle(s, out, rules);
+  return out;
+}
+
+void settle(const PreparedStroke& s, std::vector<Scored>& scored, const RuleThresholds& rules) {
+  yield_to_sharp_polygon(s, scored, rules);
+  std::stable_sort(scored.begin(), scored.end(), [](const Scored& a, const Scored& b) {
     if (a.snap != b.snap) return a.snap;
     return a.rank < b.rank;
   });
-  return out;
 }
 
 void confirm_on_ink(const InkRegion& q, std::vector<Scored>& scored) {

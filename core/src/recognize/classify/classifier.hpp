@@ -51,6 +51,10 @@ struct Scored {
 std::vector<Scored> evaluate(const PreparedStroke& s, std::vector<Fit> fits, double epsilon,
                              double pen_radius, const RecognizerConfig& config,
                              const RuleThresholds& rules = {});
+// Ranks candidates evaluated apart (the live recognizer's survivors and fresh fits) as one
+// evaluate() call would: a sharp polygon among them overrules the round and blunt shapes it fits
+// as tightly as; sorted as evaluate() sorts.
+void settle(const PreparedStroke& s, std::vector<Scored>& scored, const RuleThresholds& rules = {});
 // Certifies the snaps (the first, path-certified plausible candidates) again on the inks, best
 // rank first, until one passes: it is the winner; those that failed are no longer snaps, those
 // after the winner keep their path certificates. Re-sorted as evaluate() sorts.
@@ -64,6 +68,9 @@ double degrees_of_freedom(const Fit& fit);
 // Every family fit_all can produce, and the lowest rank a candidate of a family can have.
 std::vector<Family> all_families(const RecognizerConfig& config);
 double minimum_rank(const Family& family);
+// Whether a snap of the family can win over a better-ranked snap (a polygon drawn with sharp
+// corners wins over the circle whose band holds it): no rank bound may skip its fit.
+bool wins_on_corners(const Family& family);
 
 // choose_tolerance()'s rule from the samples' bounding box alone (lo, hi: its corners), for
 // callers that already hold the box, e.g. the grouper's candidate unions.

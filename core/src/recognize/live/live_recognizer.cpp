@@ -312,21 +312,20 @@ Recognition LiveRecognizer::finish() {
   }
   const std::size_t reused_count = kept.size();
   // Families that cannot beat the best survivor are not fitted again: a rank is at least the
-  // family's price for its parameters.
+  // family's price for its parameters (polygons drawn sharp win on their corners, not rank).
   if (!kept.empty()) {
     const double best = kept.front().rank;
     for (const Family& fam : recognize_detail::all_families(st.config)) {
-      if (recognize_detail::minimum_rank(fam) >= best) have.push_back(fam);
+      if (recognize_detail::minimum_rank(fam) >= best && !recognize_detail::wins_on_corners(fam)) {
+        have.push_back(fam);
+      }
     }
   }
   std::vector<Scored> fresh =
       recognize_detail::evaluate(s, recognize_detail::fit_all(s, st.config, tol.epsilon, have),
                                  tol.epsilon, tol.pen_radius, st.config);
   for (Scored& sc : fresh) kept.push_back(std::move(sc));
-  std::stable_sort(kept.begin(), kept.end(), [](const Scored& a, const Scored& b) {
-    if (a.snap != b.snap) return a.snap;
-    return a.rank < b.rank;
-  });
+  recognize_detail::settle(s, kept);
   if (!kept.empty() && kept.front().snap) {
     recognize_detail::polish_with_annulus(s, kept.front(), st.config);
   }
