@@ -15,7 +15,10 @@
 //     kBounded open shapes grow with the pen: a point beyond the end of a segment, of a
 //     polyline's last segment or of an arc, within epsilon of its line or circle and going on
 //     in the same direction, extends the shape to it.
-// The preview is the best-ranked candidate still alive. It is a candidate, not a certificate.
+// The preview is the best-ranked candidate still alive, chosen as finish() chooses: once the
+// stroke has closed, a closed shape only; a circle, ellipse or blunt-cornered shape gives way to
+// a polygon of 5..8 corners alive that the stroke turns sharply at and that fits as tightly
+// (recognize.hpp, "Classes"). It is a candidate, not a certificate.
 //
 // Refit policy (LiveOptions::policy):
 //   - kBounded (default; the daemon calls add() on every sample of a 1 kHz stream): the work of

@@ -9,7 +9,7 @@
 #include "recognize/certify/certificate.hpp"
 #include "recognize/certify/ink_certificate.hpp"
 #include "recognize/classify/annulus_polish.hpp"
-#include "recognize/classify/corner_sharpness.hpp"
+#include "recognize/classify/sharp_polygon.hpp"
 #include "recognize/classify/tracing.hpp"
 #include "recognize/fitting/dot.hpp"
 #include "recognize/fitting/skeleton_seeds.hpp"
@@ -59,9 +59,6 @@ double stroke_turning(const PreparedStroke& s, double epsilon) {
   }
   return total;
 }
-
-// The turn at each corner of a regular polygon of k corners (radians).
-double regular_turn(std::size_t k) { return 2.0 * std::numbers::pi / static_cast<double>(k); }
 
 // The largest turn at a corner of a closed polygon (radians).
 double sharpest_turn(const std::vector<PointD>& v) {
@@ -135,16 +132,6 @@ std::string polygon_implausibility(const PreparedStroke& s, const Fit& f, const 
   return {};
 }
 
-// A star's outline lies within epsilon of a polygon of fewer corners (a fat star's of a pentagon);
-// the hand turned at each of its corners, by more than the polygon's corners turn on average.
-std::string extra_corner_implausibility(const PreparedStroke& s, const Fit& f) {
-  const std::size_t k = f.params.vertices.size();
-  if (!sharp_turn_corners(s, k + 1, regular_turn(k)).empty()) {
-    return "the stroke turns sharply at more corners than the polygon has (a star's outline)";
-  }
-  return {};
-}
-
 // A diamond is a rhombus whose angles are far from 90 degrees: its acute angle, 2 atan(b / a)
 // for half-diagonals b <= a, is below a right angle by more than kDiamondSkew. Closer, it is a
 // square (standing on a corner, or a box drawn skewed).
@@ -155,14 +142,6 @@ std::string diamond_implausibility(const Fit& f, double skew) {
     return "the rhombus's angles are within 15 degrees of right angles (a square or a skewed box)";
   }
   return {};
-}
-
-// Whether the stroke turns at every corner of a polygon of 5..8 corners as a drawn corner does
-// (corner_sharpness.hpp): the evidence that it is no circle or ellipse.
-bool sharp_polygon(const PreparedStroke& s, const Fit& f, const RuleThresholds& rules) {
-  return (f.shape == ShapeClass::kPolygon || f.shape == ShapeClass::kRegularPolygon) &&
-         least_corner_share(s.points, f.params.vertices, kCornerWindow) >=
-             rules.min_sharp_corner_share;
 }
 
 // A closed polygon's corners must be corners: sides of at least epsilon, corners off their
@@ -181,12 +160,6 @@ std::string corner_implausibility(const Fit& f, const Certificate& c, bool sharp
     }
   }
   return {};
-}
-
-bool has_corners(ShapeClass shape) {
-  return shape == ShapeClass::kTriangle || shape == ShapeClass::kQuadrilateral ||
-         shape == ShapeClass::kRectangle || shape == ShapeClass::kSquare ||
-         shape == ShapeClass::kDiamond || shape == ShapeClass::kPolygon;
 }
 
 // A shape is traced once, one way round: a stroke that runs back over a share of the shape's path
@@ -236,58 +209,21 @@ std::string implausibility(const PreparedStroke& s, const Fit& f, const Certific
   return {};
 }
 
-// How tightly a candidate fits the stroke: the fit term of its rank.
-double fit_measure(const Candidate& c) { return c.certificate.bound + kRmsWeight * c.rms; }
-
-// A stroke that turns sharply at every corner of a polygon snap of 5..8 corners, and that the
-// polygon fits at least as tightly (fit_measure), is that polygon: not a circle or ellipse that
-// lies within tolerance of it too (a hexagon is within 7% of its radius of a circle, an octagon
-// within 4%: far inside epsilon), nor a shape of fewer corners the stroke does not turn sharply at
-// (a square's band holds a hexagon too). A jittery circle may turn sharply somewhere by chance; its
-// round fit stays the tighter.
-void yield_to_sharp_polygon(const PreparedStroke& s, std::vector<Scored>& scored,
-                            const RuleThresholds& rules) {
-  double tightest = INFINITY; // the tightest sharp polygon snap
-  for (const Scored& sc : scored) {
-    if (sc.snap && sharp_polygon(s, sc.fit, rules)) {
-      tightest = std::min(tightest, fit_measure(sc.candidate));
-    }
-  }
-  for (Scored& sc : scored) {
-    const ShapeClass shape = sc.fit.shape;
-    if (!sc.snap || shape == ShapeClass::kPolygon || shape == ShapeClass::kRegularPolygon ||
-        fit_measure(sc.candidate) < tightest) {
-      continue;
-    }
-    const bool round = shape == ShapeClass::kCircle || shape == ShapeClass::kEllipse;
-    if (!round && (!has_corners(shape) ||
-                   least_corner_share(s.points, sc.fit.params.vertices, kCornerWindow) >=
-                       rules.min_sharp_corner_share)) {
-      continue;
-    }
-    sc.snap = false;
-    sc.candidate.rejected =
-        "the stroke turns sharply at the corners of a polygon that fits it as tightly, and not "
-        "at this shape's (a polygon)";
-  }
-}
-
-// Polygons of k corners from the corner search, and from where the hand turned most (the search
-// may settle on a lumpy side's wobble).
-void add_polygon_fits(const PreparedStroke& s, std::size_t k, std::vector<Fit>& fits) {
-  const std::vector<PointD> turns = sharp_turn_corners(s, k, kLeastSeedTurnShare * regular_turn(k));
-  for (std::optional<Fit> f :
-       {fit_polygon(s, k), turns.empty() ? std::nullopt : fit_polygon_from_corners(s, turns)}) {
-    if (f && std::isfinite(f->fit_error)) fits.push_back(std::move(*f));
-  }
-}
-
 std::vector<PointD> display_path(const CleanShape& c, double size) {
   if (c.kind == CleanShape::Kind::kPolyline) return c.path;
   return c.sample(size / 40.0);
 }
 
 } // namespace
+
+bool has_corners(ShapeClass shape) {
+  return shape == ShapeClass::kTriangle || shape == ShapeClass::kQuadrilateral ||
+         shape == ShapeClass::kRectangle || shape == ShapeClass::kSquare ||
+         shape == ShapeClass::kDiamond || shape == ShapeClass::kPolygon;
+}
+
+// How tightly a candidate fits the stroke: the fit term of its rank.
+double fit_measure(const Candidate& c) { return c.certificate.bound + kRmsWeight * c.rms; }
 
 double degrees_of_freedom(const Fit& fit) {
   switch (fit.shape) {
@@ -405,7 +341,9 @@ std::vector<Fit> fit_all(const PreparedStroke& s, const RecognizerConfig& config
     }
   }
   for (std::size_t k = kMinPolygonCorners; k <= kMaxPolygonCorners; ++k) {
-    if (wanted(ShapeClass::kPolygon, k)) add_polygon_fits(s, k, fits);
+    if (wanted(ShapeClass::kPolygon, k)) {
+      for (Fit& f : polygon_fits(s, k)) fits.push_back(std::move(f));
+    }
   }
   std::optional<Fit> circle = fit_circle(s);
   if (circle) {

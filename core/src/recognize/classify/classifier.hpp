@@ -24,6 +24,9 @@ Family family_of(const Fit& f);
 // Whether the class is a convex polygon (triangle, quadrilaterals, regular polygon): those snaps
 // are placed by the minimum-width annulus and followed live by the on-line annulus decision.
 bool convex_polygon(ShapeClass c);
+// Whether the class has corners a polygon fit placed (triangle, quadrilaterals, polygon): they
+// must be corners (classifier.cpp, corner rules).
+bool has_corners(ShapeClass c);
 
 // All family fits for a prepared stroke (families that do not apply are left out), except the
 // families in `skip`.
@@ -45,6 +48,10 @@ struct Scored {
   double rank = 0.0;
   bool snap = false; // certified and plausible
 };
+
+// How tightly a candidate fits the stroke: its certified bound plus its rms weighted as in the
+// rank's fit term.
+double fit_measure(const Candidate& c);
 
 // Certifies the fits (skipping those whose fit error already exceeds the tolerance by far) and
 // checks their plausibility; sorted snaps first, then by rank.

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "recognize/classify/sharp_polygon.hpp"
+
 namespace penshape::recognize_detail {
 namespace {
 
@@ -44,6 +46,9 @@ LiveCandidate LiveCandidate::make(Scored&& scored, const PreparedStroke& s, doub
   c.rank = scored.rank;
   c.epsilon = epsilon;
   c.family = family_of(scored.fit);
+  c.sharp_polygon = recognize_detail::sharp_polygon(s, scored.fit);
+  c.yields_to_sharp_polygon = recognize_detail::yields_to_sharp_polygon(s, scored.fit);
+  c.fit_measure = recognize_detail::fit_measure(scored.candidate);
   if (convex_polygon(scored.fit.shape)) {
     try {
       const annulus::TemplatePolygon t = annulus::make_convex_template(scored.fit.params.vertices);

@@ -25,6 +25,11 @@ struct LiveCandidate {
   bool alive = true;
   bool grow_open = true;
   bool prospect = false; // a closed shape fitted on an open stroke (live_round.hpp)
+  // The sharp-polygon rule's evidence at the fit (sharp_polygon.hpp), for the preview to weigh
+  // candidates of different steps as evaluate() weighs them together; certified fits only.
+  bool sharp_polygon = false;
+  bool yields_to_sharp_polygon = false;
+  double fit_measure = 0.0;
   // Fitted on the stroke as it is at pen-up's closure, and not grown since: finish() may reuse
   // it (prospects and grown shapes fit a partial stroke; a fresh fit ranks them better).
   [[nodiscard]] bool reusable() const { return !prospect && version == 0; }

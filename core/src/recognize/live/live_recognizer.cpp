@@ -215,11 +215,19 @@ struct LiveRecognizer::State {
     return update_preview();
   }
 
-  // The preview is the best-ranked candidate still alive. Returns whether it changed.
+  // The preview is the best-ranked candidate still alive, as finish() chooses: a closed stroke
+  // shows a closed shape (an open one fitted earlier may still be alive), and a candidate yields
+  // to a sharp polygon alive that fits as tightly. Returns whether it changed.
   bool update_preview() {
+    double tightest = INFINITY;
+    for (const LiveCandidate& c : candidates) {
+      if (c.alive && c.sharp_polygon) tightest = std::min(tightest, c.fit_measure);
+    }
     const LiveCandidate* best = nullptr;
     for (const LiveCandidate& c : candidates) {
-      if (c.alive && (best == nullptr || c.rank < best->rank)) best = &c;
+      if (!c.alive || (c.yields_to_sharp_polygon && c.fit_measure >= tightest)) continue;
+      if (last_fit_closed && !closed_family(c.fit.shape)) continue;
+      if (best == nullptr || c.rank < best->rank) best = &c;
     }
     stats.alive = alive();
     preview.samples = samples.size();

@@ -3,6 +3,8 @@
 #include "recognize/live/live_round.hpp"
 
 #include <cmath>
+
+#include "recognize/classify/sharp_polygon.hpp"
 #include "recognize/thresholds.hpp"
 
 namespace penshape::recognize_detail {
@@ -43,6 +45,9 @@ RefitRound::RefitRound(PreparedStroke stroke, const ToleranceChoice& tolerance,
   steps_.push_back({Kind::kEllipse});
   for (const std::size_t n : {std::size_t{5}, std::size_t{6}, std::size_t{8}}) {
     steps_.push_back({Kind::kRegularPolygon, n});
+  }
+  for (std::size_t n = kMinPolygonCorners; n <= kMaxPolygonCorners; ++n) {
+    steps_.push_back({Kind::kPolygon, n});
   }
 }
 
@@ -91,11 +96,10 @@ std::vector<Scored> RefitRound::step() {
     case Kind::kRectangles:
       if (quadrilateral_) {
         for (Fit& f : fit_rectangles(stroke_, *quadrilateral_)) add(std::move(f));
-        while (fits.size() > 1) {
-          pending_.push_back(std::move(fits.back()));
-          fits.pop_back();
-        }
       }
+      break;
+    case Kind::kPolygon:
+      fits = polygon_fits(stroke_, s.n);
       break;
     case Kind::kRegularPolygon:
       if (circle_) {
@@ -105,6 +109,10 @@ std::vector<Scored> RefitRound::step() {
     case Kind::kEllipse:
       add(fit_ellipse(stroke_));
       break;
+  }
+  while (fits.size() > 1) { // one certification per step
+    pending_.push_back(std::move(fits.back()));
+    fits.pop_back();
   }
   return finish_step(std::move(fits), s.prospective);
 }
@@ -131,8 +139,10 @@ std::vector<Scored> RefitRound::prospects(std::vector<Fit> fits) const {
     if (!(worst <= eps)) continue;
     if (stroke_length > kMaxTracing * path_length(f.clean.sample(stroke_.size / 64.0))) continue;
     Scored sc;
-    sc.rank = (worst + kRmsWeight * rms_distance(stroke_.fit_points, f.clean)) / eps +
-              kPricePerParameter * degrees_of_freedom(f);
+    // The one-sided distance stands in for the certified bound (in the rank and fit_measure).
+    sc.candidate.certificate.bound = worst;
+    sc.candidate.rms = rms_distance(stroke_.fit_points, f.clean);
+    sc.rank = fit_measure(sc.candidate) / eps + kPricePerParameter * degrees_of_freedom(f);
     sc.snap = true;
     sc.fit = std::move(f);
     out.push_back(std::move(sc));

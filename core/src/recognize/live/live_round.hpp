@@ -53,11 +53,12 @@ class RefitRound {
     kQuadrilateral,
     kRectangles, // rectangle, square and diamond from the quadrilateral
     kRegularPolygon,
+    kPolygon, // polygons of n corners: the corner search's and the sharp turns' (sharp_polygon.hpp)
     kEllipse,
   };
   struct Step {
     Kind kind = Kind::kSegment;
-    std::size_t n = 0;        // polyline vertices / regular polygon sides
+    std::size_t n = 0;        // polyline vertices / (regular) polygon corners
     bool prospective = false; // a closed family tried on an open stroke
   };
   std::vector<Scored> prospects(std::vector<Fit> fits) const;
@@ -75,7 +76,8 @@ class RefitRound {
   std::size_t next_ = 0;
   std::optional<Fit> quadrilateral_; // shared by the quadrilateral and rectangle steps
   std::optional<Fit> circle_;        // shared by the circle and regular polygon steps
-  std::vector<Fit> pending_; // fits made together (rectangle, square, diamond), one per step
+  // Fits made together (rectangle, square and diamond; a polygon's two), one per step.
+  std::vector<Fit> pending_;
 };
 
 } // namespace penshape::recognize_detail

@@ -1,0 +1,71 @@
+// The sharp-polygon rule (see sharp_polygon.hpp).
+#include "recognize/classify/sharp_polygon.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+#include "recognize/classify/corner_sharpness.hpp"
+#include "recognize/thresholds.hpp"
+
+namespace penshape::recognize_detail {
+
+double regular_turn(std::size_t k) { return 2.0 * std::numbers::pi / static_cast<double>(k); }
+
+bool sharp_polygon(const PreparedStroke& s, const Fit& f, const RuleThresholds& rules) {
+  return (f.shape == ShapeClass::kPolygon || f.shape == ShapeClass::kRegularPolygon) &&
+         least_corner_share(s.points, f.params.vertices, kCornerWindow) >=
+             rules.min_sharp_corner_share;
+}
+
+bool yields_to_sharp_polygon(const PreparedStroke& s, const Fit& f, const RuleThresholds& rules) {
+  if (f.shape == ShapeClass::kCircle || f.shape == ShapeClass::kEllipse) return true;
+  return has_corners(f.shape) && f.shape != ShapeClass::kPolygon &&
+         least_corner_share(s.points, f.params.vertices, kCornerWindow) <
+             rules.min_sharp_corner_share;
+}
+
+// A hexagon is within 7% of its radius of a circle, an octagon within 4%: far inside epsilon. A
+// jittery circle may turn sharply somewhere by chance; its round fit stays the tighter.
+void yield_to_sharp_polygon(const PreparedStroke& s, std::vector<Scored>& scored,
+                            const RuleThresholds& rules) {
+  double tightest = INFINITY; // the tightest sharp polygon snap
+  for (const Scored& sc : scored) {
+    if (sc.snap && sharp_polygon(s, sc.fit, rules)) {
+      tightest = std::min(tightest, fit_measure(sc.candidate));
+    }
+  }
+  for (Scored& sc : scored) {
+    // The corner test last: it reads the stroke.
+    if (!sc.snap || fit_measure(sc.candidate) < tightest ||
+        !yields_to_sharp_polygon(s, sc.fit, rules)) {
+      continue;
+    }
+    sc.snap = false;
+    sc.candidate.rejected =
+        "the stroke turns sharply at the corners of a polygon that fits it as tightly, and not "
+        "at this shape's (a polygon)";
+  }
+}
+
+// A fat star's outline lies within epsilon of a pentagon; the hand turned at each of its corners,
+// by more than the polygon's corners turn on average.
+std::string extra_corner_implausibility(const PreparedStroke& s, const Fit& f) {
+  const std::size_t k = f.params.vertices.size();
+  if (!sharp_turn_corners(s, k + 1, regular_turn(k)).empty()) {
+    return "the stroke turns sharply at more corners than the polygon has (a star's outline)";
+  }
+  return {};
+}
+
+std::vector<Fit> polygon_fits(const PreparedStroke& s, std::size_t k) {
+  const std::vector<PointD> turns = sharp_turn_corners(s, k, kLeastSeedTurnShare * regular_turn(k));
+  std::vector<Fit> out;
+  for (std::optional<Fit> f :
+       {fit_polygon(s, k), turns.empty() ? std::nullopt : fit_polygon_from_corners(s, turns)}) {
+    if (f && std::isfinite(f->fit_error)) out.push_back(std::move(*f));
+  }
+  return out;
+}
+
+} // namespace penshape::recognize_detail
