@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -114,6 +115,33 @@ TEST(SharpTurnCorners, FindsTheCornersAHandTurnedAt) {
       for (const PointD& f : found) nearest = std::min(nearest, distance(c, f));
       EXPECT_LT(nearest, 6.0) << n; // within a step of the turn samples and the jitter
     }
+  }
+}
+
+// The polygon through the turns has its corners where the hand turned (sides drawn with jitter):
+// each drawn corner within a few units of a vertex, and the stroke turns sharply at every vertex.
+// Corners given out of the stroke's order give none.
+TEST(SharpTurnCorners, ThePolygonThroughTheTurnsKeepsItsCornersThere) {
+  for (int n = 5; n <= 8; ++n) {
+    const std::vector<PointD> corners = regular_corners(n, 100, 0.3);
+    const std::vector<PointD> pts = around_polygon(corners, 1.0, 0.8, 5);
+    const PreparedStroke s = prepared(samples(pts));
+    const std::vector<PointD> turns =
+        sharp_turn_corners(s, static_cast<std::size_t>(n), 0.5 * kPi / n);
+    ASSERT_EQ(turns.size(), static_cast<std::size_t>(n)) << n;
+    const std::optional<Fit> f = fit_polygon_through_turns(s, turns);
+    ASSERT_TRUE(f.has_value()) << n;
+    ASSERT_EQ(f->params.vertices.size(), static_cast<std::size_t>(n));
+    for (const PointD& c : corners) {
+      double nearest = INFINITY;
+      for (const PointD& v : f->params.vertices) nearest = std::min(nearest, distance(c, v));
+      EXPECT_LT(nearest, 6.0) << n; // as the turns themselves (FindsTheCornersAHandTurnedAt)
+    }
+    EXPECT_GE(least_corner_share(pts, f->params.vertices, kCornerWindow), kMinSharpCornerShare)
+        << n;
+    EXPECT_GT(f->fit_error, 0.0);
+    const std::vector<PointD> reversed(turns.rbegin(), turns.rend());
+    EXPECT_FALSE(fit_polygon_through_turns(s, reversed).has_value()) << n;
   }
 }
 

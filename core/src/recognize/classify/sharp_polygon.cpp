@@ -62,7 +62,8 @@ std::vector<Fit> polygon_fits(const PreparedStroke& s, std::size_t k) {
   const std::vector<PointD> turns = sharp_turn_corners(s, k, kLeastSeedTurnShare * regular_turn(k));
   std::vector<Fit> out;
   for (std::optional<Fit> f :
-       {fit_polygon(s, k), turns.empty() ? std::nullopt : fit_polygon_from_corners(s, turns)}) {
+       {fit_polygon(s, k), turns.empty() ? std::nullopt : fit_polygon_from_corners(s, turns),
+        turns.empty() ? std::nullopt : fit_polygon_through_turns(s, turns)}) {
     if (f && std::isfinite(f->fit_error)) out.push_back(std::move(*f));
   }
   return out;

@@ -83,6 +83,12 @@ std::optional<Fit> fit_polygon(const PreparedStroke& s, std::size_t corners);
 // turns).
 std::optional<Fit> fit_polygon_from_corners(const PreparedStroke& s,
                                             const std::vector<PointD>& corners);
+// A closed polygon whose sides are the lines fitted to the stroke between the given corners (in
+// the stroke's order), meeting where the hand turned: not refined, so its corners stay at the
+// turns (a minimax refinement trades them for a lump's distance). Nothing when the corners are
+// not in the stroke's order.
+std::optional<Fit> fit_polygon_through_turns(const PreparedStroke& s,
+                                             const std::vector<PointD>& corners);
 // Corners at the closed stroke's k sharpest turns (turn_corners.cpp), read between chords 1/32 of
 // its length either way, at least two windows apart; empty unless each turns by at least
 // `least_turn` (radians) and twice the stroke's median turn.

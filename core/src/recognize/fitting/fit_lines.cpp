@@ -126,4 +126,37 @@ std::optional<Fit> fit_polygon_from_corners(const PreparedStroke& s,
   return finish(s, polygon_class(corners.size()), corners, true);
 }
 
+std::optional<Fit> fit_polygon_through_turns(const PreparedStroke& s,
+                                             const std::vector<PointD>& corners) {
+  const std::size_t k = corners.size();
+  if (k < 3 || s.fit_points.size() < 2 * k) return std::nullopt;
+  std::vector<std::size_t> idx;
+  for (const PointD& c : corners) {
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < s.fit_points.size(); ++i) {
+      if (distance(s.fit_points[i], c) < distance(s.fit_points[best], c)) best = i;
+    }
+    idx.push_back(best);
+  }
+  for (std::size_t i = 1; i < k; ++i) {
+    if (idx[i] <= idx[i - 1]) return std::nullopt; // not in the stroke's order
+  }
+  std::vector<Line> lines;
+  for (std::size_t i = 0; i < k; ++i) {
+    lines.push_back(side_line(s.fit_points, idx[i], idx[(i + 1) % k], true, true));
+  }
+  Fit fit;
+  fit.shape = polygon_class(k);
+  for (std::size_t i = 0; i < k; ++i) {
+    fit.params.vertices.push_back(meet(lines[(i + k - 1) % k], lines[i], corners[i], s.size));
+  }
+  fit.clean.path = fit.params.vertices;
+  fit.clean.path.push_back(fit.clean.path.front());
+  fit.fit_error = fit_objective(s, fit.clean, true);
+  PointD c;
+  for (const PointD& v : fit.params.vertices) c = c + v;
+  fit.params.center = (1.0 / static_cast<double>(k)) * c;
+  return fit;
+}
+
 } // namespace penshape::recognize_detail
