@@ -118,10 +118,11 @@ TEST(SharpTurnCorners, FindsTheCornersAHandTurnedAt) {
   }
 }
 
-// The polygon through the turns has its corners where the hand turned (sides drawn with jitter):
-// each drawn corner within a few units of a vertex, and the stroke turns sharply at every vertex.
-// Corners given out of the stroke's order give none.
-TEST(SharpTurnCorners, ThePolygonThroughTheTurnsKeepsItsCornersThere) {
+// The polygons through and at the turns have their corners where the hand turned (sides drawn
+// with jitter): each drawn corner within a few units of a vertex, and the stroke turns sharply at
+// every vertex. Corners given out of the stroke's order give no polygon through them, corners
+// that turn both ways none at them (a star's outline: its inner corners are no polygon's).
+TEST(SharpTurnCorners, ThePolygonsThroughAndAtTheTurnsKeepTheirCornersThere) {
   for (int n = 5; n <= 8; ++n) {
     const std::vector<PointD> corners = regular_corners(n, 100, 0.3);
     const std::vector<PointD> pts = around_polygon(corners, 1.0, 0.8, 5);
@@ -129,19 +130,29 @@ TEST(SharpTurnCorners, ThePolygonThroughTheTurnsKeepsItsCornersThere) {
     const std::vector<PointD> turns =
         sharp_turn_corners(s, static_cast<std::size_t>(n), 0.5 * kPi / n);
     ASSERT_EQ(turns.size(), static_cast<std::size_t>(n)) << n;
-    const std::optional<Fit> f = fit_polygon_through_turns(s, turns);
-    ASSERT_TRUE(f.has_value()) << n;
-    ASSERT_EQ(f->params.vertices.size(), static_cast<std::size_t>(n));
-    for (const PointD& c : corners) {
-      double nearest = INFINITY;
-      for (const PointD& v : f->params.vertices) nearest = std::min(nearest, distance(c, v));
-      EXPECT_LT(nearest, 6.0) << n; // as the turns themselves (FindsTheCornersAHandTurnedAt)
+    const std::optional<Fit> at = fit_polygon_at_turns(s, turns);
+    ASSERT_TRUE(at.has_value()) << n;
+    EXPECT_EQ(at->params.vertices, turns);
+    for (const std::optional<Fit>& f : {fit_polygon_through_turns(s, turns), at}) {
+      ASSERT_TRUE(f.has_value()) << n;
+      ASSERT_EQ(f->params.vertices.size(), static_cast<std::size_t>(n));
+      for (const PointD& c : corners) {
+        double nearest = INFINITY;
+        for (const PointD& v : f->params.vertices) nearest = std::min(nearest, distance(c, v));
+        EXPECT_LT(nearest, 6.0) << n; // as the turns themselves (FindsTheCornersAHandTurnedAt)
+      }
+      EXPECT_GE(least_corner_share(pts, f->params.vertices, kCornerWindow), kMinSharpCornerShare)
+          << n;
+      // The error is the stroke's distance to the polygon: at least the jitter's, below a side's.
+      EXPECT_GT(f->fit_error, 0.5) << n;
+      EXPECT_LT(f->fit_error, 10.0) << n;
     }
-    EXPECT_GE(least_corner_share(pts, f->params.vertices, kCornerWindow), kMinSharpCornerShare)
-        << n;
-    EXPECT_GT(f->fit_error, 0.0);
     const std::vector<PointD> reversed(turns.rbegin(), turns.rend());
     EXPECT_FALSE(fit_polygon_through_turns(s, reversed).has_value()) << n;
+    // A corner turned inwards (a star's inner corner): no polygon at the turns.
+    std::vector<PointD> dented = turns;
+    dented[1] = 0.3 * dented[1];
+    EXPECT_FALSE(fit_polygon_at_turns(s, dented).has_value()) << n;
   }
 }
 

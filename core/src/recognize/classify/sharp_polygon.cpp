@@ -52,20 +52,23 @@ void yield_to_sharp_polygon(const PreparedStroke& s, std::vector<Scored>& scored
 // by more than the polygon's corners turn on average.
 std::string extra_corner_implausibility(const PreparedStroke& s, const Fit& f) {
   const std::size_t k = f.params.vertices.size();
-  if (!sharp_turn_corners(s, k + 1, regular_turn(k)).empty()) {
+  if (sharp_turn_count(s, k + 1, regular_turn(k)) > k) {
     return "the stroke turns sharply at more corners than the polygon has (a star's outline)";
   }
   return {};
 }
 
 std::vector<Fit> polygon_fits(const PreparedStroke& s, std::size_t k) {
-  const std::vector<PointD> turns = sharp_turn_corners(s, k, kLeastSeedTurnShare * regular_turn(k));
   std::vector<Fit> out;
-  for (std::optional<Fit> f :
-       {fit_polygon(s, k), turns.empty() ? std::nullopt : fit_polygon_from_corners(s, turns),
-        turns.empty() ? std::nullopt : fit_polygon_through_turns(s, turns)}) {
+  auto add = [&out](std::optional<Fit> f) {
     if (f && std::isfinite(f->fit_error)) out.push_back(std::move(*f));
-  }
+  };
+  add(fit_polygon(s, k));
+  const std::vector<PointD> turns = sharp_turn_corners(s, k, kLeastSeedTurnShare * regular_turn(k));
+  if (turns.empty()) return out; // a round stroke: no fit from its turns
+  add(fit_polygon_from_corners(s, turns));
+  add(fit_polygon_through_turns(s, turns));
+  add(fit_polygon_at_turns(s, turns));
   return out;
 }
 

@@ -30,7 +30,8 @@ void yield_to_sharp_polygon(const PreparedStroke& s, std::vector<Scored>& scored
 std::string extra_corner_implausibility(const PreparedStroke& s, const Fit& f);
 
 // Polygons of k corners from the corner search, and from where the hand turned most (the search
-// may settle on a lumpy side's wobble); fits with a finite error only.
+// may settle on a lumpy side's wobble): refined from the turns, through them, at them (fit.hpp);
+// fits with a finite error only.
 std::vector<Fit> polygon_fits(const PreparedStroke& s, std::size_t k);
 
 } // namespace penshape::recognize_detail

@@ -83,16 +83,22 @@ std::optional<Fit> fit_polygon(const PreparedStroke& s, std::size_t corners);
 // turns).
 std::optional<Fit> fit_polygon_from_corners(const PreparedStroke& s,
                                             const std::vector<PointD>& corners);
-// A closed polygon whose sides are the lines fitted to the stroke between the given corners (in
-// the stroke's order), meeting where the hand turned: not refined, so its corners stay at the
-// turns (a minimax refinement trades them for a lump's distance). Nothing when the corners are
-// not in the stroke's order.
+// Closed polygons from corners where the hand turned (in the stroke's order), not refined, so
+// their corners stay at the turns (a minimax refinement trades a turn for a lump's distance):
+// at_turns has its vertices at the corners themselves; through_turns has as sides the lines
+// fitted to the stroke between them, met where the hand turned (nothing when the corners are not
+// in the stroke's order).
+std::optional<Fit> fit_polygon_at_turns(const PreparedStroke& s,
+                                        const std::vector<PointD>& corners);
 std::optional<Fit> fit_polygon_through_turns(const PreparedStroke& s,
                                              const std::vector<PointD>& corners);
 // Corners at the closed stroke's k sharpest turns (turn_corners.cpp), read between chords 1/32 of
 // its length either way, at least two windows apart; empty unless each turns by at least
 // `least_turn` (radians) and twice the stroke's median turn.
 std::vector<PointD> sharp_turn_corners(const PreparedStroke& s, std::size_t k, double least_turn);
+// How many places (at most `at_most`) the stroke turns by at least `least_turn` (radians), read as
+// sharp_turn_corners reads them, with no median test (a star's median turn is a corner's).
+std::size_t sharp_turn_count(const PreparedStroke& s, std::size_t at_most, double least_turn);
 // From a quadrilateral fit: rectangle, square and diamond proposals.
 std::vector<Fit> fit_rectangles(const PreparedStroke& s, const Fit& quadrilateral);
 std::optional<Fit> fit_regular_polygon(const PreparedStroke& s, std::size_t sides, PointD center,

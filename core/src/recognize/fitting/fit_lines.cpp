@@ -71,6 +71,32 @@ Fit finish(const PreparedStroke& s, ShapeClass shape, const std::vector<PointD>&
   return fit;
 }
 
+// Whether the closed polygon turns the same way at every vertex.
+bool convex_turns(const std::vector<PointD>& v) {
+  bool left = false, right = false;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const PointD a = v[(i + v.size() - 1) % v.size()];
+    const double c = cross(v[i] - a, v[(i + 1) % v.size()] - v[i]);
+    left = left || c > 0.0;
+    right = right || c < 0.0;
+  }
+  return !(left && right);
+}
+
+// The closed polygon on these vertices as it is, with the refinement's objective as its error.
+Fit unrefined_polygon(const PreparedStroke& s, const std::vector<PointD>& vertices) {
+  Fit fit;
+  fit.shape = polygon_class(vertices.size());
+  fit.params.vertices = vertices;
+  fit.clean.path = vertices;
+  fit.clean.path.push_back(vertices.front());
+  fit.fit_error = fit_objective(s, fit.clean, true);
+  PointD c;
+  for (const PointD& v : vertices) c = c + v;
+  fit.params.center = (1.0 / static_cast<double>(vertices.size())) * c;
+  return fit;
+}
+
 } // namespace
 
 ShapeClass polygon_class(std::size_t corners) {
@@ -126,6 +152,12 @@ std::optional<Fit> fit_polygon_from_corners(const PreparedStroke& s,
   return finish(s, polygon_class(corners.size()), corners, true);
 }
 
+std::optional<Fit> fit_polygon_at_turns(const PreparedStroke& s,
+                                        const std::vector<PointD>& corners) {
+  if (corners.size() < 3 || !convex_turns(corners)) return std::nullopt;
+  return unrefined_polygon(s, corners);
+}
+
 std::optional<Fit> fit_polygon_through_turns(const PreparedStroke& s,
                                              const std::vector<PointD>& corners) {
   const std::size_t k = corners.size();
@@ -145,18 +177,11 @@ std::optional<Fit> fit_polygon_through_turns(const PreparedStroke& s,
   for (std::size_t i = 0; i < k; ++i) {
     lines.push_back(side_line(s.fit_points, idx[i], idx[(i + 1) % k], true, true));
   }
-  Fit fit;
-  fit.shape = polygon_class(k);
+  std::vector<PointD> v;
   for (std::size_t i = 0; i < k; ++i) {
-    fit.params.vertices.push_back(meet(lines[(i + k - 1) % k], lines[i], corners[i], s.size));
+    v.push_back(meet(lines[(i + k - 1) % k], lines[i], corners[i], s.size));
   }
-  fit.clean.path = fit.params.vertices;
-  fit.clean.path.push_back(fit.clean.path.front());
-  fit.fit_error = fit_objective(s, fit.clean, true);
-  PointD c;
-  for (const PointD& v : fit.params.vertices) c = c + v;
-  fit.params.center = (1.0 / static_cast<double>(k)) * c;
-  return fit;
+  return unrefined_polygon(s, v);
 }
 
 } // namespace penshape::recognize_detail

@@ -33,29 +33,46 @@ const std::vector<Turn>& turns_by_sharpness(const PreparedStroke& s, const ArcLe
   return s.turns_by_sharpness.emplace(std::move(turns));
 }
 
+// The sharpest turns first, each at least two windows from those taken (one corner, once), until
+// k are taken or the next turns less than `least_turn`.
+std::vector<Turn> sharpest_apart(const std::vector<Turn>& turns, std::size_t k, double window,
+                                 double least_turn) {
+  std::vector<Turn> taken;
+  for (const Turn& t : turns) {
+    if (taken.size() == k || t.turn < least_turn) break;
+    const bool apart = std::all_of(taken.begin(), taken.end(), [&](const Turn& o) {
+      return std::abs(o.at - t.at) >= 2.0 * window;
+    });
+    if (apart) taken.push_back(t);
+  }
+  return taken;
+}
+
 } // namespace
+
+std::size_t sharp_turn_count(const PreparedStroke& s, std::size_t at_most, double least_turn) {
+  const ArcLengthPath path(s.points);
+  return sharpest_apart(turns_by_sharpness(s, path), at_most, kTurnWindow * path.length(),
+                        least_turn)
+      .size();
+}
 
 std::vector<PointD> sharp_turn_corners(const PreparedStroke& s, std::size_t k, double least_turn) {
   const ArcLengthPath path(s.points);
   const double w = kTurnWindow * path.length();
   const std::vector<Turn>& turns = turns_by_sharpness(s, path);
   if (turns.empty()) return {};
-  // The sharpest turns first, each at least two windows from those taken (one corner, once).
-  std::vector<Turn> taken;
-  for (const Turn& t : turns) {
-    if (taken.size() == k) break;
-    const bool apart = std::all_of(taken.begin(), taken.end(),
-                                   [&](const Turn& o) { return std::abs(o.at - t.at) >= 2.0 * w; });
-    if (apart) taken.push_back(t);
-  }
+  const std::vector<Turn> taken = sharpest_apart(turns, k, w, 0.0);
   if (taken.size() != k) return {};
   const double median = turns[turns.size() / 2].turn;
   const double least = taken.back().turn; // taken sharpest first
   if (least < least_turn || least < kLeastTurnOverMedian * median) return {};
-  std::sort(taken.begin(), taken.end(), [](const Turn& a, const Turn& b) { return a.at < b.at; });
+  std::vector<Turn> in_order = taken;
+  std::sort(in_order.begin(), in_order.end(),
+            [](const Turn& a, const Turn& b) { return a.at < b.at; });
   std::vector<PointD> out;
   out.reserve(k);
-  for (const Turn& t : taken) out.push_back(path.point_at(t.at));
+  for (const Turn& t : in_order) out.push_back(path.point_at(t.at));
   return out;
 }
 
