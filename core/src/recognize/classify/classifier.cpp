@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <numbers>
 
 #include "geometry/exact_predicates.hpp"
@@ -342,7 +343,9 @@ std::vector<Fit> fit_all(const PreparedStroke& s, const RecognizerConfig& config
   }
   for (std::size_t k = kMinPolygonCorners; k <= kMaxPolygonCorners; ++k) {
     if (wanted(ShapeClass::kPolygon, k)) {
-      for (Fit& f : polygon_fits(s, k)) fits.push_back(std::move(f));
+      std::vector<Fit> more = polygon_fits(s, k);
+      fits.insert(fits.end(), std::make_move_iterator(more.begin()),
+                  std::make_move_iterator(more.end()));
     }
   }
   std::optional<Fit> circle = fit_circle(s);
