@@ -10,6 +10,7 @@
 #include <CGAL/FPU.h>
 #include <CGAL/Interval_nt.h>
 
+#include "arc_turns.hpp"
 #include "certified.hpp"
 #include "geometry/distance_kernel.hpp"
 #include "geometry/exact_predicates.hpp"
@@ -166,27 +167,6 @@ double sagitta_bound(DPt u, DPt w, double level) {
   return (IntervalNT(level) * c2 / (8 - c2)).sup();
 }
 
-// Two directions whose turn (the sign of the cross product u x w) a chord needs.
-struct Turn {
-  DPt u;
-  DPt w;
-};
-
-// The turn's sign by intervals (requires upward rounding): 1, -1, or 0 when they cannot tell.
-int interval_turn(const Turn& t) {
-  const IntervalNT c =
-      IntervalNT(t.u.x) * IntervalNT(t.w.y) - IntervalNT(t.u.y) * IntervalNT(t.w.x);
-  if (c.inf() > 0) return 1;
-  if (c.sup() < 0) return -1;
-  return 0;
-}
-
-// The turn's sign exactly: products of doubles are exact as rationals.
-int exact_turn(const Turn& t) {
-  const int c = cmp(Rational(t.u.x) * Rational(t.w.y), Rational(t.u.y) * Rational(t.w.x));
-  return (c > 0) - (c < 0);
-}
-
 class Walker {
  public:
   Walker(const LevelSetQuery& q, const CancelHook& cancel)
@@ -322,30 +302,21 @@ class Walker {
   // Error = sagitta bound + the endpoints' deviations, rounded up.
   bool arc_piece(IPt c, const Dir& from, const Dir& to, double a_from, double a_to, DPt u0, DPt u1,
                  Slot slot) {
-    // The turns to check: `to` inside the cone, and from -> to counterclockwise.
-    std::array<Turn, 3> turns{};
-    std::size_t n = 0;
-    if (!to.exact_end) {
-      turns[n++] = {u0, to.u};
-      turns[n++] = {to.u, u1};
-    }
-    if (!(from.exact_end && to.exact_end)) turns[n++] = {from.u, to.u};
-    // Their interval signs and the chord's error under one rounding switch; the exact sign of
-    // a turn the intervals cannot tell after it. A turn that is negative fails the piece.
-    std::array<int, 3> sign{};
+    // The turns that make the chords cover the arc (arc_turns.hpp), their interval signs and
+    // the chord's error under one rounding switch; a turn the intervals cannot tell is decided
+    // exactly after it. A clockwise turn fails the piece.
+    ArcTurns turns(u0, u1, from.u, from.exact_end, to.u, to.exact_end);
     Piece piece{};
     double sagitta = 0.0;
     {
       const UpwardRounding rounding;
-      for (std::size_t k = 0; k < n; ++k) sign[k] = interval_turn(turns[k]);
+      turns.sign_by_intervals();
       piece.p = from.rep.p;
       piece.q = to.rep.p;
       sagitta = sagitta_bound(from.u, to.u, q_.level);
       piece.error = (IntervalNT(sagitta) + IntervalNT(std::max(from.rep.dev, to.rep.dev))).sup();
     }
-    for (std::size_t k = 0; k < n; ++k) {
-      if ((sign[k] != 0 ? sign[k] : exact_turn(turns[k])) < 0) return false;
-    }
+    if (!turns.counterclockwise()) return false;
     if (check(piece, slot)) return true;
     if (sagitta < kMinSagitta) return false;
     const double mid = 0.5 * (a_from + a_to);
