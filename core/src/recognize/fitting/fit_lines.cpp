@@ -51,6 +51,13 @@ std::vector<PointD> unflatten(const std::vector<double>& v) {
   return out;
 }
 
+// The mean of a polygon's vertices (its parameters' centre).
+PointD vertex_centroid(const std::vector<PointD>& vertices) {
+  PointD c;
+  for (const PointD& v : vertices) c = c + v;
+  return (1.0 / static_cast<double>(vertices.size())) * c;
+}
+
 Fit finish(const PreparedStroke& s, ShapeClass shape, const std::vector<PointD>& vertices,
            bool closed) {
   const ShapeBuilder build = [closed](const std::vector<double>& p) -> std::optional<CleanShape> {
@@ -65,9 +72,7 @@ Fit finish(const PreparedStroke& s, ShapeClass shape, const std::vector<PointD>&
   fit.clean = *build(r.params);
   fit.fit_error = r.objective;
   fit.params.vertices = unflatten(r.params);
-  PointD c;
-  for (const PointD& v : fit.params.vertices) c = c + v;
-  fit.params.center = (1.0 / static_cast<double>(fit.params.vertices.size())) * c;
+  fit.params.center = vertex_centroid(fit.params.vertices);
   return fit;
 }
 
@@ -91,9 +96,7 @@ Fit unrefined_polygon(const PreparedStroke& s, const std::vector<PointD>& vertic
   fit.clean.path = vertices;
   fit.clean.path.push_back(vertices.front());
   fit.fit_error = fit_objective(s, fit.clean, true);
-  PointD c;
-  for (const PointD& v : vertices) c = c + v;
-  fit.params.center = (1.0 / static_cast<double>(vertices.size())) * c;
+  fit.params.center = vertex_centroid(vertices);
   return fit;
 }
 

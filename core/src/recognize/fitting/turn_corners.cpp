@@ -62,17 +62,15 @@ std::vector<PointD> sharp_turn_corners(const PreparedStroke& s, std::size_t k, d
   const double w = kTurnWindow * path.length();
   const std::vector<Turn>& turns = turns_by_sharpness(s, path);
   if (turns.empty()) return {};
-  const std::vector<Turn> taken = sharpest_apart(turns, k, w, 0.0);
+  std::vector<Turn> taken = sharpest_apart(turns, k, w, 0.0);
   if (taken.size() != k) return {};
   const double median = turns[turns.size() / 2].turn;
   const double least = taken.back().turn; // taken sharpest first
   if (least < least_turn || least < kLeastTurnOverMedian * median) return {};
-  std::vector<Turn> in_order = taken;
-  std::sort(in_order.begin(), in_order.end(),
-            [](const Turn& a, const Turn& b) { return a.at < b.at; });
+  std::sort(taken.begin(), taken.end(), [](const Turn& a, const Turn& b) { return a.at < b.at; });
   std::vector<PointD> out;
   out.reserve(k);
-  for (const Turn& t : in_order) out.push_back(path.point_at(t.at));
+  for (const Turn& t : taken) out.push_back(path.point_at(t.at));
   return out;
 }
 

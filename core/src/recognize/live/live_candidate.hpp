@@ -26,7 +26,8 @@ struct LiveCandidate {
   bool grow_open = true;
   bool prospect = false; // a closed shape fitted on an open stroke (live_round.hpp)
   // The sharp-polygon rule's evidence at the fit (sharp_polygon.hpp), for the preview to weigh
-  // candidates of different steps as evaluate() weighs them together; certified fits only.
+  // candidates of different steps as evaluate() weighs them together (a prospect's fit measure
+  // reads its one-sided distance as the bound).
   bool sharp_polygon = false;
   bool yields_to_sharp_polygon = false;
   double fit_measure = 0.0;

@@ -76,7 +76,7 @@ class RefitRound {
   std::size_t next_ = 0;
   std::optional<Fit> quadrilateral_; // shared by the quadrilateral and rectangle steps
   std::optional<Fit> circle_;        // shared by the circle and regular polygon steps
-  // Fits made together (rectangle, square and diamond; a polygon's two), one per step.
+  // Fits made together (rectangle, square and diamond; polygon_fits' few), one per step.
   std::vector<Fit> pending_;
 };
 
