@@ -5,6 +5,8 @@
 //                             reversed/reordered pieces, pauses): one group, right class;
 //   diamonds in 2-4 strokes   the $1 rectangles made diamonds (made_shapes.hpp), cut the same
 //                             way: one group, a diamond (no corpus holds drawn ones);
+//   polygons of 5-6 in pieces the $1 circles made polygons (made_shapes.hpp) cut at 1-2 corners:
+//                             one group, a polygon; beside the same polygons whole;
 //   arrows                    $1 arrows whole (1 stroke) and cut at the tip (2 strokes);
 //   separate never merged     two shape strokes one after the other, 2 px apart;
 //   non-shape pairs snapped   two non-shape gestures touching: snapped to a shape together;
@@ -66,6 +68,8 @@ const std::map<std::string, std::set<std::string>> kTargets{
     {"circle", {"circle", "ellipse"}},
     {"arrow", {"arrow"}}};
 const std::set<std::string> kDiamond{"diamond"};
+const std::set<std::string> kPolygon{"polygon", "regular_polygon"};
+constexpr double kMadeTurn = 0.5; // the made polygons' first corner direction (radians)
 const std::set<std::string> kNonShapes{"pigtail", "question_mark", "left_curly_brace",
                                        "right_curly_brace", "delete_mark"};
 
@@ -273,6 +277,8 @@ int main(int argc, char** argv) {
   std::map<std::string, Rate> arrows_by_subject; // whole and cut, per subject
 
   Rate diamonds_all; // kept apart from polygons_all: made shapes, not drawn ones
+  Rate made_polygons_cut;
+  std::map<std::string, Rate> made_polygons; // whole ("in 1") and cut, by corners and pieces
   std::size_t v = 0;
   // `g` cut at 1-3 corners, the pieces fed to a grouper: one group of `targets` is right.
   auto group_cuts = [&](const Gesture& g, const std::string& kind,
@@ -358,6 +364,25 @@ int main(int argc, char** argv) {
     if (g.kind == "rectangle" || g.kind == "triangle") {
       group_cuts(g, g.kind, kTargets.at(g.kind));
     }
+    // A circle made a polygon of 5 or 6 corners (made_shapes.hpp), whole and cut at its corners.
+    if (g.kind == "circle") {
+      for (const int n : {5, 6}) {
+        const Points made = penshape::cases::made_polygon(g.points, n, kMadeTurn);
+        const std::string kind = "made polygon of " + std::to_string(n);
+        made_polygons[kind + " in 1"].add(
+            kPolygon.count(penshape::to_string(penshape::recognize(made).shape)) > 0);
+        const std::vector<std::size_t> c =
+            penshape::cases::made_polygon_corners(made, n, kMadeTurn);
+        for (std::size_t pieces = 2; pieces <= 3; ++pieces) {
+          const std::vector<Points> cut = penshape::cases::cut_at_corners(made, c, pieces, v);
+          if (cut.empty()) continue;
+          const bool ok =
+              one_group_of(penshape::recognize_strokes(inputs_of(cut)), cut.size(), kPolygon);
+          made_polygons[kind + " in " + std::to_string(pieces)].add(ok);
+          made_polygons_cut.add(ok);
+        }
+      }
+    }
     // A rectangle made a diamond (made_shapes.hpp), cut at its corners as the rectangle is.
     if (g.kind == "rectangle") {
       Gesture diamond = g;
@@ -414,6 +439,10 @@ int main(int argc, char** argv) {
   for (const auto& [k, r] : polygons) {
     if (k.rfind("diamond", 0) == 0) row(("  " + k).c_str(), r, "");
   }
+  // No target: made polygons keep a circle's lumps (recognize_bench --classes); the pieces are
+  // measured against the same polygons whole ("in 1").
+  row("polygons of 5-6 in 2-3 strokes (made from circles)", made_polygons_cut, "(context)");
+  for (const auto& [k, r] : made_polygons) row(("  " + k).c_str(), r, "");
   row("arrows, whole (1 stroke)", arrows_whole, ">= 95%");
   row("arrows, cut at the tip (2 strokes)", arrows_cut, ">= 95%");
   for (const auto& [subject, r] : arrows_by_subject) {

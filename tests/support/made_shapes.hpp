@@ -71,6 +71,29 @@ inline std::vector<StrokePoint> made_polygon(const std::vector<StrokePoint>& in,
   return out;
 }
 
+// The sample indices of a made_polygon(in, n, turn)'s corners, in path order: for each corner
+// direction, the sample whose direction from the centroid is nearest it.
+inline std::vector<std::size_t> made_polygon_corners(const std::vector<StrokePoint>& made, int n,
+                                                     double turn) {
+  double cx = 0, cy = 0;
+  for (const StrokePoint& p : made) cx += p.x, cy += p.y;
+  cx /= static_cast<double>(made.size()), cy /= static_cast<double>(made.size());
+  std::vector<std::size_t> out;
+  for (int k = 0; k < n; ++k) {
+    const double corner = turn + 2.0 * std::numbers::pi * k / n;
+    std::size_t best = 0;
+    double off = INFINITY;
+    for (std::size_t i = 0; i < made.size(); ++i) {
+      const double a = std::abs(std::remainder(std::atan2(made[i].y - cy, made[i].x - cx) - corner,
+                                               2.0 * std::numbers::pi));
+      if (a < off) off = a, best = i;
+    }
+    out.push_back(best);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 // Douglas-Peucker: keeps the points of in[a..b] farther than `tolerance` from the chord.
 inline void keep_far_points(const std::vector<StrokePoint>& in, std::size_t a, std::size_t b,
                             double tolerance, std::vector<bool>& keep) {

@@ -169,18 +169,17 @@ inline std::vector<Points> cut(const Points& p, std::vector<std::size_t> cuts, c
   return pieces;
 }
 
-// A closed shape stroke cut at `pieces - 1` of its corners (those away from the stroke's ends,
-// where it starts and closes); empty when it has too few such corners.
-inline std::vector<Points> cut_shape(const Gesture& g, std::size_t pieces, std::size_t v) {
-  const std::size_t k = g.kind == "triangle" ? 3 : 4;
-  const std::vector<std::size_t> c = corners(g.points, k);
+// A closed stroke cut at `pieces - 1` of its corners `c` (sample indices in path order) away
+// from the stroke's ends, where it starts and closes: a window of them starting at v. Empty when
+// it has too few such corners.
+inline std::vector<Points> cut_at_corners(const Points& p, const std::vector<std::size_t>& c,
+                                          std::size_t pieces, std::size_t v) {
   std::vector<std::size_t> interior;
-  const std::size_t margin = g.points.size() / 10 + 2;
+  const std::size_t margin = p.size() / 10 + 2;
   for (const std::size_t i : c) {
-    if (i > margin && i + margin < g.points.size()) interior.push_back(i);
+    if (i > margin && i + margin < p.size()) interior.push_back(i);
   }
   if (interior.size() + 1 < pieces) return {};
-  // Which interior corners to cut at: a window starting at v.
   std::vector<std::size_t> chosen;
   for (std::size_t j = 0; j + 1 < pieces; ++j) {
     chosen.push_back(interior[(v + j) % interior.size()]);
@@ -188,7 +187,12 @@ inline std::vector<Points> cut_shape(const Gesture& g, std::size_t pieces, std::
   std::sort(chosen.begin(), chosen.end());
   chosen.erase(std::unique(chosen.begin(), chosen.end()), chosen.end());
   if (chosen.size() + 1 != pieces) return {};
-  return cut(g.points, chosen, variation(v), v);
+  return cut(p, chosen, variation(v), v);
+}
+
+// A closed shape stroke (a triangle or a rectangle) cut at `pieces - 1` of its corners.
+inline std::vector<Points> cut_shape(const Gesture& g, std::size_t pieces, std::size_t v) {
+  return cut_at_corners(g.points, corners(g.points, g.kind == "triangle" ? 3 : 4), pieces, v);
 }
 
 // An arrow stroke cut at its tip (the sample farthest from its start) into shaft and head.

@@ -1,7 +1,8 @@
 // Grouping on real strokes: $1 rectangles and triangles cut at their corners into 2-4 pieces
 // (gaps, overshoots, reversed and reordered pieces, pauses), the rectangles made diamonds and cut
-// the same way, arrows whole and cut at the tip, two
-// separate shapes one after the other, two non-shape gestures touching. Subjects s02 and s03
+// the same way, the circles made polygons of 5-6 corners and cut the same way, arrows whole and
+// cut at the tip, two separate shapes one after the other, two non-shape gestures touching.
+// Subjects s02 and s03
 // (the benchmark runs every subject), every speed, from the shared corpus when present, else
 // from the generated corpus (the same layout; its rectangles, triangles, arrows and non-shapes),
 // with counts that follow the corpus at hand (test_support.hpp). Every snap is checked with an
@@ -103,6 +104,39 @@ TEST(GroupRecognizeDollar, DiamondsCutIntoTwoToFourStrokes) {
   std::printf("diamonds in 2-4 strokes: %d / %d right (class and grouping)\n", t.right, t.total);
   ASSERT_EQ(t.total, test::dollar_count(180, 90));
   EXPECT_GE(t.right, test::dollar_rate(0.95, 0.85) * t.total); // generated: 94% measured
+}
+
+// No corpus holds polygons of 5-6 corners drawn in pieces: the real circles made polygons
+// (made_shapes.hpp; their lumps are the writer's own, so not every one reads as a polygon even
+// whole) cut at 1-2 of their corners are one polygon about as often as the same polygons whole.
+TEST(GroupRecognizeDollar, PolygonsOfFiveAndSixCornersInPiecesAsWhole) {
+  constexpr double kTurn = 0.5;
+  const std::set<std::string> polygon{"polygon", "regular_polygon"};
+  Tally whole, pieces;
+  std::size_t v = 0;
+  for (const Gesture& g : subjects(test::dollar_dir())) {
+    ++v;
+    if (g.kind != "circle") continue;
+    for (const int n : {5, 6}) {
+      const Points made = cases::made_polygon(g.points, n, kTurn);
+      whole.right += polygon.count(to_string(recognize(made).shape)) > 0 ? 2 : 0;
+      whole.total += 2; // counted once per cut below
+      const std::vector<std::size_t> corners = cases::made_polygon_corners(made, n, kTurn);
+      for (std::size_t k = 2; k <= 3; ++k) {
+        const std::vector<Points> cut = cases::cut_at_corners(made, corners, k, v);
+        ASSERT_EQ(cut.size(), k) << g.file;
+        const std::vector<StrokeInput> in = inputs_of(cut);
+        const std::vector<GroupedShape> out = recognize_strokes(in);
+        check_snaps(out, in, g.file);
+        pieces.right += one_group_of(out, k, polygon) ? 1 : 0;
+        ++pieces.total;
+      }
+    }
+  }
+  std::printf("polygons of 5-6 corners: whole %d / %d, in 2-3 pieces %d / %d\n", whole.right / 2,
+              whole.total / 2, pieces.right, pieces.total);
+  ASSERT_EQ(pieces.total, test::dollar_count(240, 120));
+  EXPECT_GE(pieces.right, 0.85 * whole.right);
 }
 
 TEST(GroupRecognizeDollar, ArrowsWholeAndCutAtTheTip) {

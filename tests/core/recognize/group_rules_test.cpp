@@ -81,6 +81,38 @@ TEST_F(GroupRulesTest, TheBowlOfADIsNoPairOfSides) {
   EXPECT_EQ(group_implausibility(quad, s, {}), "");
 }
 
+// A regular hexagon of circumradius 100, its corners turned by `degrees` about its centre.
+test::Path hexagon(double degrees) {
+  test::Path p;
+  for (int k = 0; k <= 6; ++k) {
+    const double a = (60.0 * k + degrees) * std::numbers::pi / 180.0;
+    p.push_back({100.0 * std::cos(a), 100.0 * std::sin(a)});
+  }
+  return p;
+}
+
+TEST_F(GroupRulesTest, AModelsCornersNeedNotSitOnTheDrawnTurns) {
+  // A hexagon in two strokes of three sides; the answer's corners lie 10 units along the sides
+  // from the drawn ones (epsilon 15), as a tidied regular polygon's may: the strokes turn within
+  // epsilon of them, which is all a model corner (equal sides, right angles) claims.
+  const test::Path drawn = hexagon(0.0);
+  const std::vector<StrokeInput> s{stroke_along({drawn[0], drawn[1], drawn[2], drawn[3]}, 0.0),
+                                   stroke_along({drawn[3], drawn[4], drawn[5], drawn[6]}, 1.0)};
+  const test::Path moved = hexagon(6.0);
+  EXPECT_EQ(group_implausibility(answer(ShapeClass::kRegularPolygon, moved), s, {}), "");
+  // A fitted polygon's corners are placed where the strokes turn: so far off, one is a curve.
+  EXPECT_NE(group_implausibility(answer(ShapeClass::kPolygon, moved), s, {}).find("curve"),
+            std::string::npos);
+  EXPECT_EQ(group_implausibility(answer(ShapeClass::kPolygon, drawn), s, {}), "");
+  // A D's bowl turns as little near a model corner as anywhere: the outline of
+  // TheBowlOfADIsNoPairOfSides, taken for a model's, is still no pair of sides.
+  const std::vector<StrokeInput> d{stroke_along({{0, 0}, {0, 120}}, 0.0),
+                                   stroke_along(bowl(), 1.0)};
+  const Recognition model =
+      answer(ShapeClass::kRectangle, {{0, 0}, {55, 15}, {55, 105}, {0, 120}, {0, 0}});
+  EXPECT_NE(group_implausibility(model, d, {}).find("curve"), std::string::npos);
+}
+
 TEST_F(GroupRulesTest, ARectangleAsTwoLsWithRoundedCornersKeepsItsCorners) {
   // Corners rounded with a radius of 6 (epsilon 15): the strokes still turn there.
   const std::vector<StrokeInput> s{

@@ -29,6 +29,14 @@ bool straight(ShapeClass c) { return c == ShapeClass::kSegment || c == ShapeClas
 
 bool straight_sided_closed(ShapeClass c) { return convex_polygon(c) || c == ShapeClass::kPolygon; }
 
+// Shapes whose corners follow a model (right angles, equal sides) rather than the drawn turns: each
+// corner lies within epsilon of the drawn one, not on it. A triangle's, a quadrilateral's or a
+// polygon's corners are fitted where the strokes turn.
+bool model_corners(ShapeClass c) {
+  return c == ShapeClass::kRectangle || c == ShapeClass::kSquare || c == ShapeClass::kDiamond ||
+         c == ShapeClass::kRegularPolygon;
+}
+
 // Why a piece recognized alone as `own` is no piece of a `group` (empty when it may be one).
 std::string kind_mismatch(ShapeClass group, ShapeClass own) {
   if (is_round(group) && straight(own))
@@ -41,27 +49,39 @@ std::string kind_mismatch(ShapeClass group, ShapeClass own) {
 }
 
 // Whether the piece passes a corner of the shape (v, between `before` and `after`) away from its
-// ends without turning there (kMinCornerTurnShare): it rounds it as a curve does.
+// ends without turning there (kMinCornerTurnShare): it rounds it as a curve does. For a
+// `model_corner` (model_corners) the piece's sharpest turn within epsilon of arc length of its
+// nearest point counts: a curve turns as little there as anywhere on its bowl.
 bool rounds_corner(const std::vector<PointD>& piece, PointD before, PointD v, PointD after,
-                   double epsilon) {
+                   double epsilon, bool model_corner) {
   const ArcLengthPath path(piece);
   const ArcLengthPath::Nearest near = path.nearest(v);
   // Not on this piece, or where it starts or ends (a corner between two pieces).
   if (near.distance > epsilon || near.at < epsilon || near.at > path.length() - epsilon) {
     return false;
   }
-  const std::optional<double> turn = path.turn_at(near.at, epsilon);
-  return turn && *turn < group_rules().min_corner_turn_share * angle_between(v - before, after - v);
+  constexpr int kReachSteps =
+      8; // a model corner: turns looked at on each side of the nearest point
+  const int steps = model_corner ? kReachSteps : 0;
+  std::optional<double> sharpest;
+  for (int k = -steps; k <= steps; ++k) {
+    const double at = near.at + (steps > 0 ? epsilon * static_cast<double>(k) / steps : 0.0);
+    const std::optional<double> turn = path.turn_at(at, epsilon);
+    if (turn && (!sharpest || *turn > *sharpest)) sharpest = turn;
+  }
+  return sharpest &&
+         *sharpest < group_rules().min_corner_turn_share * angle_between(v - before, after - v);
 }
 
-// Whether some piece rounds a corner of the closed polygon `outline` (first vertex repeated).
+// Whether some piece rounds a corner of the closed polygon `outline` (first vertex repeated;
+// `model_corner` as for rounds_corner).
 bool curve_for_corner(const std::vector<std::vector<PointD>>& paths,
-                      const std::vector<PointD>& outline, double epsilon) {
+                      const std::vector<PointD>& outline, double epsilon, bool model_corner) {
   const std::size_t n = outline.size() - 1;
   for (std::size_t k = 0; k < n; ++k) {
     const PointD before = outline[(k + n - 1) % n], v = outline[k], after = outline[(k + 1) % n];
     for (const std::vector<PointD>& p : paths) {
-      if (rounds_corner(p, before, v, after, epsilon)) return true;
+      if (rounds_corner(p, before, v, after, epsilon, model_corner)) return true;
     }
   }
   return false;
@@ -140,7 +160,8 @@ std::string piece_rules(const Recognition& r, const std::vector<std::vector<Poin
     return "two strokes leave one point each its own way (limbs from a junction, not a line)";
   }
   if (!straight_sided_closed(r.shape)) return {};
-  if (rules.no_curved_sides && r.clean.size() >= 4 && curve_for_corner(paths, r.clean, r.epsilon)) {
+  if (rules.no_curved_sides && r.clean.size() >= 4 &&
+      curve_for_corner(paths, r.clean, r.epsilon, model_corners(r.shape))) {
     return "a stroke passes a corner of the shape as a curve, without turning there (a D)";
   }
   if (rules.no_crossing_pieces && pieces_cross(paths, stroke_epsilon, join, false))
