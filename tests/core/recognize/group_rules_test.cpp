@@ -92,13 +92,14 @@ test::Path hexagon(double degrees) {
 }
 
 TEST_F(GroupRulesTest, AModelsCornersNeedNotSitOnTheDrawnTurns) {
-  // A hexagon in two strokes of three sides; the answer's corners lie 10 units along the sides
-  // from the drawn ones (epsilon 15), as a tidied regular polygon's may: the strokes turn within
-  // epsilon of them, which is all a model corner (equal sides, right angles) claims.
+  // A hexagon in two strokes of three sides; the answer's corners lie 18 units along the sides
+  // from the drawn ones (epsilon 15; the outline stays within 11 of the strokes), as a tidied
+  // regular polygon's may: a model corner (equal sides, right angles) reaches
+  // epsilon / sin(turn / 2) = 30 along the strokes for their turn.
   const test::Path drawn = hexagon(0.0);
   const std::vector<StrokeInput> s{stroke_along({drawn[0], drawn[1], drawn[2], drawn[3]}, 0.0),
                                    stroke_along({drawn[3], drawn[4], drawn[5], drawn[6]}, 1.0)};
-  const test::Path moved = hexagon(6.0);
+  const test::Path moved = hexagon(12.0);
   EXPECT_EQ(group_implausibility(answer(ShapeClass::kRegularPolygon, moved), s, {}), "");
   // A fitted polygon's corners are placed where the strokes turn: so far off, one is a curve.
   EXPECT_NE(group_implausibility(answer(ShapeClass::kPolygon, moved), s, {}).find("curve"),

@@ -37,6 +37,9 @@ bool model_corners(ShapeClass c) {
          c == ShapeClass::kRegularPolygon;
 }
 
+constexpr double kMinReachSine = 0.25; // a model corner's reach: at most 4 epsilon
+constexpr int kReachSteps = 8;         // turns looked at on each side of the nearest point
+
 // Why a piece recognized alone as `own` is no piece of a `group` (empty when it may be one).
 std::string kind_mismatch(ShapeClass group, ShapeClass own) {
   if (is_round(group) && straight(own))
@@ -49,28 +52,29 @@ std::string kind_mismatch(ShapeClass group, ShapeClass own) {
 }
 
 // Whether the piece passes a corner of the shape (v, between `before` and `after`) away from its
-// ends without turning there (kMinCornerTurnShare): it rounds it as a curve does. For a
-// `model_corner` (model_corners) the piece's sharpest turn within epsilon of arc length of its
-// nearest point counts: a curve turns as little there as anywhere on its bowl.
+// ends without turning there (kMinCornerTurnShare): it rounds it as a curve does. A fitted corner
+// lies where the stroke turns. A `model_corner` (model_corners) may lie as far as
+// epsilon / sin(turn / 2) along its sides from the drawn one with the shape still within epsilon
+// of it: the piece's sharpest turn within that reach of its nearest point counts (a curve turns as
+// little there as anywhere on its bowl).
 bool rounds_corner(const std::vector<PointD>& piece, PointD before, PointD v, PointD after,
                    double epsilon, bool model_corner) {
+  const double shape_turn = angle_between(v - before, after - v);
+  const double reach =
+      model_corner ? epsilon / std::max(std::sin(0.5 * shape_turn), kMinReachSine) : 0.0;
   const ArcLengthPath path(piece);
   const ArcLengthPath::Nearest near = path.nearest(v);
   // Not on this piece, or where it starts or ends (a corner between two pieces).
-  if (near.distance > epsilon || near.at < epsilon || near.at > path.length() - epsilon) {
-    return false;
-  }
-  constexpr int kReachSteps =
-      8; // a model corner: turns looked at on each side of the nearest point
+  const double end = std::max(epsilon, reach);
+  if (near.distance > epsilon || near.at < end || near.at > path.length() - end) return false;
   const int steps = model_corner ? kReachSteps : 0;
   std::optional<double> sharpest;
   for (int k = -steps; k <= steps; ++k) {
-    const double at = near.at + (steps > 0 ? epsilon * static_cast<double>(k) / steps : 0.0);
+    const double at = near.at + (steps > 0 ? reach * static_cast<double>(k) / steps : 0.0);
     const std::optional<double> turn = path.turn_at(at, epsilon);
     if (turn && (!sharpest || *turn > *sharpest)) sharpest = turn;
   }
-  return sharpest &&
-         *sharpest < group_rules().min_corner_turn_share * angle_between(v - before, after - v);
+  return sharpest && *sharpest < group_rules().min_corner_turn_share * shape_turn;
 }
 
 // Whether some piece rounds a corner of the closed polygon `outline` (first vertex repeated;
