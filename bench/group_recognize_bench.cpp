@@ -25,10 +25,10 @@
 //   --loso-only KNOB: the same for the thresholds whose name starts with KNOB.
 //   --without RULE, --apart-barb X, --shaft-span X, --continuation-angle DEG, --gap-barb X,
 //   --gap-aim DEG: a rule off (open_polylines, curved_sides, crossing_pieces, limbs_as_a_line,
-//   continued_tips, arrow_when_refused, a_stroke_per_arrow_part, round_arrow_pieces,
-//   seed_from_strokes, gapped_shafts), a head drawn apart's barb limit, a shaft stroke's least
-//   span, the cone of a stroke continuing an arrow's tip, a shaft's gap to its tip in barbs and its
-//   aim (to measure).
+//   continued_tips, arrow_when_refused, outline_when_round_refused, a_stroke_per_arrow_part,
+//   round_arrow_pieces, seed_from_strokes, gapped_shafts), a head drawn apart's barb limit, a
+//   shaft stroke's least span, the cone of a stroke continuing an arrow's tip, a shaft's gap to its
+//   tip in barbs and its aim (to measure).
 //   --gestures-only: only the figures on other people's drawings.
 //   --only CLASS: with --gestures-only, only the gestures of that class ("D", "arrowhead", ...).
 //   --svg-dir: every arrow missed is drawn to DIR (strokes, and the best arrow candidate with why
@@ -187,7 +187,8 @@ bool switch_off(const std::string& rule) {
       {"continued_tips", &GroupRules::no_continued_tips},
       {"round_arrow_pieces", &GroupRules::no_round_arrow_pieces},
       {"a_stroke_per_arrow_part", &GroupRules::a_stroke_per_arrow_part},
-      {"arrow_when_refused", &GroupRules::arrow_when_refused}};
+      {"arrow_when_refused", &GroupRules::arrow_when_refused},
+      {"outline_when_round_refused", &GroupRules::outline_when_round_refused}};
   if (rule == "seed_from_strokes") {
     penshape::recognize_detail::arrow_rules().seed_from_strokes = false;
   } else if (rule == "gapped_shafts") {

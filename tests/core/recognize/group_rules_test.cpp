@@ -8,6 +8,7 @@
 
 #include "group_test_support.hpp"
 #include "penshape/core/group_recognize.hpp"
+#include "recognize/group/group_classifier.hpp"
 #include "recognize/group/group_plausibility.hpp"
 
 namespace penshape {
@@ -112,6 +113,47 @@ TEST_F(GroupRulesTest, AModelsCornersNeedNotSitOnTheDrawnTurns) {
   const Recognition model =
       answer(ShapeClass::kRectangle, {{0, 0}, {55, 15}, {55, 105}, {0, 120}, {0, 0}});
   EXPECT_NE(group_implausibility(model, d, {}).find("curve"), std::string::npos);
+}
+
+// A union read as a `winner` with `outline` among its alternatives, certified (epsilon 15).
+recognize_detail::UnionRecognition union_of(ShapeClass winner, const test::Path& clean,
+                                            ShapeClass alternative, const test::Path& outline) {
+  recognize_detail::UnionRecognition u;
+  u.recognition = answer(winner, clean);
+  u.recognition.certificate = {true, 10.0, 15.0, 0.0, 1.0, "path"};
+  u.recognition.alternatives.push_back(
+      {alternative, {}, outline, {true, 12.0, 15.0, 0.0, 1.0, "path"}, {}, 5.0});
+  return u;
+}
+
+TEST_F(GroupRulesTest, ARoundWinnerOfStraightPiecesGivesWayToTheOutline) {
+  // A hexagon in two strokes of three sides, its union read as a circle (a hand's lumps can make
+  // a circle's band the tighter): a round shape with straight pieces is refused, and the union's
+  // certified hexagon is kept instead, the circle first among its alternatives.
+  const test::Path drawn = hexagon(0.0);
+  const std::vector<StrokeInput> s{stroke_along({drawn[0], drawn[1], drawn[2], drawn[3]}, 0.0),
+                                   stroke_along({drawn[3], drawn[4], drawn[5], drawn[6]}, 1.0)};
+  test::Path circle;
+  for (int k = 0; k <= 72; ++k) {
+    const double a = k * std::numbers::pi / 36.0;
+    circle.push_back({93.0 * std::cos(a), 93.0 * std::sin(a)});
+  }
+  auto u = union_of(ShapeClass::kCircle, circle, ShapeClass::kPolygon, drawn);
+  EXPECT_NE(group_implausibility(u.recognition, s, {}).find("straight stroke"), std::string::npos);
+  ASSERT_TRUE(recognize_detail::keep_union(u, s, {}, {}));
+  EXPECT_EQ(u.recognition.shape, ShapeClass::kPolygon);
+  ASSERT_FALSE(u.recognition.alternatives.empty());
+  EXPECT_EQ(u.recognition.alternatives.front().shape, ShapeClass::kCircle);
+  // The outline must pass the rules too: a D's bar and bowl read as an ellipse give way to no
+  // quadrilateral with corners on the bowl.
+  const std::vector<StrokeInput> d{stroke_along({{0, 0}, {0, 120}}, 0.0),
+                                   stroke_along(bowl(), 1.0)};
+  auto du = union_of(ShapeClass::kEllipse, bowl(), ShapeClass::kQuadrilateral,
+                     {{0, 0}, {55, 15}, {55, 105}, {0, 120}, {0, 0}});
+  EXPECT_FALSE(recognize_detail::keep_union(du, d, {}, {}));
+  group_rules().outline_when_round_refused = false;
+  auto off = union_of(ShapeClass::kCircle, circle, ShapeClass::kPolygon, drawn);
+  EXPECT_FALSE(recognize_detail::keep_union(off, s, {}, {}));
 }
 
 TEST_F(GroupRulesTest, ARectangleAsTwoLsWithRoundedCornersKeepsItsCorners) {

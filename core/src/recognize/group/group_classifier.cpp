@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "recognize/arrow/arrow_limits.hpp"
 #include "recognize/arrow/fit_arrow.hpp"
@@ -288,26 +289,31 @@ UnionRecognition recognize_union_detail(std::span<const StrokeInput> strokes,
   return out;
 }
 
-std::optional<ArrowReading> read_as_arrow(const Recognition& r) {
+std::optional<AlternativeReading> read_as_arrow(const Recognition& r) {
+  return read_as(
+      r, [](ShapeClass c) { return c == ShapeClass::kArrow || c == ShapeClass::kDoubleArrow; });
+}
+
+std::optional<AlternativeReading> read_as(const Recognition& r,
+                                          const std::function<bool(ShapeClass)>& kind) {
   const auto& alt = r.alternatives;
-  const auto arrow = std::find_if(alt.begin(), alt.end(), [](const Candidate& c) {
-    const bool arrow_class = c.shape == ShapeClass::kArrow || c.shape == ShapeClass::kDoubleArrow;
-    return arrow_class && c.certificate.certified && c.rejected.empty();
+  const auto found = std::find_if(alt.begin(), alt.end(), [&kind](const Candidate& c) {
+    return kind(c.shape) && c.certificate.certified && c.rejected.empty();
   });
-  if (arrow == alt.end()) return std::nullopt;
-  ArrowReading out;
+  if (found == alt.end()) return std::nullopt;
+  AlternativeReading out;
   Recognition& a = out.recognition;
   a = r;
-  a.alternatives.erase(a.alternatives.begin() + (arrow - alt.begin()));
+  a.alternatives.erase(a.alternatives.begin() + (found - alt.begin()));
   if (r.shape != ShapeClass::kFreeform) {
     a.alternatives.insert(a.alternatives.begin(),
                           Candidate{r.shape, r.params, r.clean, r.certificate, {}, r.rms});
   }
-  a.shape = arrow->shape;
-  a.params = arrow->params;
-  a.clean = arrow->clean;
-  a.certificate = arrow->certificate;
-  a.rms = arrow->rms;
+  a.shape = found->shape;
+  a.params = found->params;
+  a.clean = found->clean;
+  a.certificate = found->certificate;
+  a.rms = found->rms;
   a.confidence = std::clamp(1.0 - a.certificate.bound / (2.0 * a.epsilon), 0.0, 1.0);
   out.rank = recognition_rank(a);
   return out;

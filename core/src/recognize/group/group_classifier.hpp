@@ -1,5 +1,6 @@
 #pragma once
 // recognize_union() with what tidy-up needs afterwards: the strokes as a certified union.
+#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
@@ -27,14 +28,17 @@ UnionRecognition recognize_union_detail(std::span<const StrokeInput> strokes,
                                         const RecognizerConfig& config,
                                         UnionUse use = UnionUse::kAnyShape);
 
-// The recognition `r` of a union read as its best arrow instead of its winner: the first
-// alternative that is an arrow certified on the union and plausible becomes the winner (the
-// winner goes first among the alternatives), with its rank; none when there is no such arrow. For
-// a winner the grouping rules refuse (an open polyline in pieces) while an arrow also snaps.
-struct ArrowReading {
+// The recognition `r` of a union read as its best alternative of a `kind` instead of its winner:
+// the first alternative of that kind certified on the union and plausible becomes the winner (the
+// winner goes first among the alternatives), with its rank; none when there is no such
+// alternative. For a winner the grouping rules refuse while a shape of another kind also snaps.
+struct AlternativeReading {
   Recognition recognition;
   double rank = 0.0;
 };
-std::optional<ArrowReading> read_as_arrow(const Recognition& r);
+std::optional<AlternativeReading> read_as(const Recognition& r,
+                                          const std::function<bool(ShapeClass)>& kind);
+// read_as an arrow (single or double): an open polyline in pieces that is an arrow's.
+std::optional<AlternativeReading> read_as_arrow(const Recognition& r);
 
 } // namespace penshape::recognize_detail

@@ -215,15 +215,22 @@ std::string why_not_kept(const Recognition& r, std::span<const StrokeInput> stro
 bool keep_union(UnionRecognition& u, std::span<const StrokeInput> strokes,
                 std::span<const StrokeInput* const> others, const RecognizerConfig& config) {
   if (why_not_kept(u.recognition, strokes, others, config).empty()) return true;
-  if (!group_rules().arrow_when_refused || u.recognition.shape == ShapeClass::kArrow ||
-      u.recognition.shape == ShapeClass::kDoubleArrow) {
-    return false;
+  const ShapeClass winner = u.recognition.shape;
+  const bool arrow_winner = winner == ShapeClass::kArrow || winner == ShapeClass::kDoubleArrow;
+  auto kept = [&](std::optional<AlternativeReading> reading) {
+    if (!reading || !why_not_kept(reading->recognition, strokes, others, config).empty()) {
+      return false;
+    }
+    u.recognition = std::move(reading->recognition);
+    u.rank = reading->rank;
+    return true;
+  };
+  if (group_rules().arrow_when_refused && !arrow_winner && kept(read_as_arrow(u.recognition))) {
+    return true;
   }
-  std::optional<ArrowReading> arrow = read_as_arrow(u.recognition);
-  if (!arrow || !why_not_kept(arrow->recognition, strokes, others, config).empty()) return false;
-  u.recognition = std::move(arrow->recognition);
-  u.rank = arrow->rank;
-  return true;
+  // Straight pieces tell a straight-sided outline whose lumps a round band covers better.
+  return group_rules().outline_when_round_refused && is_round(winner) &&
+         kept(read_as(u.recognition, straight_sided_closed));
 }
 
 std::string group_implausibility(const Recognition& r, std::span<const StrokeInput> strokes,

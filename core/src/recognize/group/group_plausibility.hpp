@@ -39,6 +39,9 @@ struct GroupRules {
   // The half-angle of the cone around the shaft's direction a continuation stays in.
   double max_continuation_angle = kMaxContinuationAngle;
   bool arrow_when_refused = true; // a refused winner gives way to the union's arrow (keep_union)
+  // A refused round winner (a circle, an ellipse, an arc) gives way to the union's best
+  // straight-sided closed shape (keep_union).
+  bool outline_when_round_refused = true;
   bool a_stroke_per_arrow_part = true; // an arrow has at most a stroke per shaft and barb
   bool no_round_arrow_pieces = true;   // no stroke of an arrow is a circle or ellipse alone
   // Two strokes this many epsilons farther apart than touching are still tried together, and
@@ -61,8 +64,9 @@ struct UnionRecognition;
 // Whether the grouper keeps the union `u` of `strokes` as one group: its winner is drawn as its
 // shape is in pieces (group_implausibility) and, for an arrow, no stroke of `others` (the recent
 // strokes outside the union) leaves its tip forward (tip_continued). A winner refused gives way
-// to the union's best certified, plausible arrow (read_as_arrow) when that one passes: `u` then
-// holds the arrow.
+// to the union's best certified, plausible arrow (read_as_arrow) when that one passes, and a
+// refused round winner (a round shape with a straight stroke among its pieces) to the union's best
+// straight-sided closed shape (a polygon whose lumps a circle's band covers): `u` then holds it.
 bool keep_union(UnionRecognition& u, std::span<const StrokeInput> strokes,
                 std::span<const StrokeInput* const> others, const RecognizerConfig& config);
 
