@@ -5,7 +5,7 @@
 //                             reversed/reordered pieces, pauses): one group, right class;
 //   diamonds in 2-4 strokes   the $1 rectangles made diamonds (made_shapes.hpp), cut the same
 //                             way: one group, a diamond (no corpus holds drawn ones);
-//   polygons of 5-6 in pieces the $1 circles made polygons (made_shapes.hpp) cut at 1-2 corners:
+//   polygons of 5-8 in pieces the $1 circles made polygons (made_shapes.hpp) cut at 1-2 corners:
 //                             one group, a polygon; beside the same polygons whole;
 //   arrows                    $1 arrows whole (1 stroke) and cut at the tip (2 strokes);
 //   separate never merged     two shape strokes one after the other, 2 px apart;
@@ -365,9 +365,9 @@ int main(int argc, char** argv) {
     if (g.kind == "rectangle" || g.kind == "triangle") {
       group_cuts(g, g.kind, kTargets.at(g.kind));
     }
-    // A circle made a polygon of 5 or 6 corners (made_shapes.hpp), whole and cut at its corners.
+    // A circle made a polygon of 5-8 corners (made_shapes.hpp), whole and cut at its corners.
     if (g.kind == "circle") {
-      for (const int n : {5, 6}) {
+      for (const int n : {5, 6, 7, 8}) {
         const Points made = penshape::cases::made_polygon(g.points, n, kMadeTurn);
         const std::string kind = "made polygon of " + std::to_string(n);
         made_polygons[kind + " in 1"].add(
@@ -442,7 +442,7 @@ int main(int argc, char** argv) {
   }
   // No target: made polygons keep a circle's lumps (recognize_bench --classes); the pieces are
   // measured against the same polygons whole ("in 1").
-  row("polygons of 5-6 in 2-3 strokes (made from circles)", made_polygons_cut, "(context)");
+  row("polygons of 5-8 in 2-3 strokes (made from circles)", made_polygons_cut, "(context)");
   for (const auto& [k, r] : made_polygons) row(("  " + k).c_str(), r, "");
   row("arrows, whole (1 stroke)", arrows_whole, ">= 95%");
   row("arrows, cut at the tip (2 strokes)", arrows_cut, ">= 95%");
