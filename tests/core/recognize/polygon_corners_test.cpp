@@ -214,9 +214,10 @@ TEST(SharpPolygonRule, AStarsOutlineIsNoPolygon) {
 // before the pen lifts (a snap once the stroke closes), not as the circle
 // whose band holds it, and a circle never shows as a polygon. Fitted in separate steps, the
 // preview weighs the candidates as evaluate() weighs them together. The preview lags the pen by a
-// refit round, so it is read at every sample; a round that closes finds no snap now and then
-// (the stroke's last corner still open). Measured: 9 of 12 previewed (0 of 12 before). The
-// previous policy (kEager, refits far apart) must only never show a circle as a polygon.
+// refit round, so it is read at every sample; the round started as the stroke closes may come
+// before its last corner, so one more round follows it. Measured: 12 of 12 previewed (9 of 12
+// without that round, 0 of 12 before polygons were fitted in rounds). The previous policy
+// (kEager, refits far apart) must only never show a circle as a polygon.
 TEST(SharpPolygonRule, LivePreviewShowsThePolygonBeforePenUp) {
   for (const RefitPolicy policy : {RefitPolicy::kBounded, RefitPolicy::kEager}) {
     const bool bounded = policy == RefitPolicy::kBounded;
@@ -240,7 +241,7 @@ TEST(SharpPolygonRule, LivePreviewShowsThePolygonBeforePenUp) {
     std::printf("%s: %d of %d polygons previewed as polygons\n", bounded ? "bounded" : "eager",
                 previewed, total);
     if (bounded) {
-      EXPECT_GE(previewed, total - 3);
+      EXPECT_GE(previewed, total - 1);
     }
     for (unsigned seed = 1; seed <= 3; ++seed) {
       bool polygon = false, circle = false;

@@ -47,7 +47,9 @@
 //         stroke closed, opened or came most of the way round, or when the drawing grew by
 //         half since the last round. `interval` starts at refit_interval and doubles after
 //         each round that found nothing (a scribble or writing), up to max_refit_interval; a
-//         round that found a candidate resets it.
+//         round that found a candidate resets it. The first round after the stroke closed may
+//         come before its last corner is drawn: one more round follows it, refit_interval kept
+//         points later, without back-off (so a polygon previews as one before pen-up).
 //   - kEager (the previous behaviour, kept as the benchmark baseline): every sample is fed to
 //     the candidates, and a full refit of every family on the whole stroke runs inside one
 //     add() call when nothing is alive (at most every refit_interval samples), when the stroke

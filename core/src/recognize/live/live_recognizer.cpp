@@ -73,8 +73,10 @@ struct LiveRecognizer::State {
   std::size_t next_check = 0;      // kBounded: kept points at which triggers are checked next
   double last_fit_size = 0.0;
   bool last_fit_closed = false;
-  int last_stage = 0;       // kBounded: RefitRound::stage of the last round
-  std::size_t failures = 0; // consecutive rounds without a snap (back-off)
+  int last_stage = 0;          // kBounded: RefitRound::stage of the last round
+  std::size_t failures = 0;    // consecutive rounds without a snap (back-off)
+  bool retry_closed = false;   // kBounded: the first closed round is done: one more round
+  bool retried_closed = false; // ... which is granted once per stroke
   std::size_t preview_id = std::numeric_limits<std::size_t>::max();
   PointD preview_shift;
   std::size_t preview_version = 0;
@@ -183,7 +185,15 @@ struct LiveRecognizer::State {
     // alive is what "can still fit" means (a prospect of a closed shape keeps its place while
     // the stroke closes, even if the closed fit does not certify yet); finish() filters by
     // closure and certifies.
-    failures = round->found_snap() ? 0 : failures + 1;
+    // A round started as the stroke closes may come before its last corner: one more round
+    // then, as soon as refit_interval more points are kept (no back-off, no growth needed).
+    retry_closed = round->closed() && !retried_closed;
+    retried_closed = retried_closed || retry_closed;
+    if (round->found_snap()) {
+      failures = 0;
+    } else if (!retry_closed) {
+      ++failures;
+    }
     round.reset();
   }
 
@@ -206,7 +216,8 @@ struct LiveRecognizer::State {
         // Closing or opening the stroke, or coming most of the way round, changes which
         // families apply.
         const bool stage_changed = RefitRound::stage(s, tol.epsilon) != last_stage;
-        if (none_alive || grown || stage_changed) {
+        if (none_alive || grown || stage_changed || retry_closed) {
+          retry_closed = false;
           start_round(s, tol);
           round_step();
         }
