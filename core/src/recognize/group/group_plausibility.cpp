@@ -29,8 +29,8 @@ bool straight(ShapeClass c) { return c == ShapeClass::kSegment || c == ShapeClas
 
 bool straight_sided_closed(ShapeClass c) { return convex_polygon(c) || c == ShapeClass::kPolygon; }
 
-// Shapes whose corners follow a model (right angles, equal sides) rather than the drawn turns: each
-// corner lies within epsilon of the drawn one, not on it. A triangle's, a quadrilateral's or a
+// Shapes whose corners follow a model (right angles, equal sides) rather than the drawn turns: a
+// corner lies near the drawn one, not on it (rounds_corner). A triangle's, a quadrilateral's or a
 // polygon's corners are fitted where the strokes turn.
 bool model_corners(ShapeClass c) {
   return c == ShapeClass::kRectangle || c == ShapeClass::kSquare || c == ShapeClass::kDiamond ||
