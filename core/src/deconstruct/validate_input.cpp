@@ -108,7 +108,8 @@ bool adjacent_edges_overlap(const RingRef& r, std::size_t first, std::size_t sec
          detail::on_collinear_segment(*b.exact, *c.exact, *a.exact);
 }
 
-// O(n): every pair of consecutive edges, so the sweep below only meets contacts of other kinds.
+// O(n): every pair of consecutive edges, to name a fold-back as such (the sweep below would
+// report it, or another contact, as a touch).
 void check_no_fold_backs(const std::vector<RingRef>& rings) {
   for (const RingRef& r : rings) {
     const std::size_t n = r.ring->size();
@@ -122,12 +123,19 @@ void check_no_fold_backs(const std::vector<RingRef>& rings) {
 }
 
 // Shamos–Hoey over every edge of every ring: O(n log n) exact predicates, one event per vertex.
+// The fold-back check runs only once the sweep found a contact, with the same messages as when
+// it ran first: the sweep returns nothing only when no two edges share a forbidden point
+// (segment_sweep.hpp), and two consecutive edges that fold back share more than their common
+// vertex, so without a contact there is no fold-back to name; with one, the fold-back check
+// names a fold-back before the contact is reported, as it did when it ran first. Valid input,
+// the common case, skips its n orientations (the sweep tests each vertex's two edges anyway).
 void check_no_crossings(const std::vector<RingRef>& rings, const CancelHook& cancel) {
   std::vector<std::span<const FilteredPoint>> points;
   points.reserve(rings.size());
   for (const RingRef& r : rings) points.emplace_back(r.points);
   const auto contact = detail::find_ring_contact(points, cancel);
   if (!contact) return;
+  check_no_fold_backs(rings);
   const auto& [a, e] = *contact;
   const RingRef& ra = rings[a.ring];
   const RingRef& re = rings[e.ring];
@@ -256,8 +264,7 @@ void validate_region(const PolygonSet& q, std::size_t max_vertices, const Cancel
       r.ymax = std::max(r.ymax, widen_up(v.y));
     }
   }
-  check_no_fold_backs(rings);
-  check_no_crossings(rings, cancel);
+  check_no_crossings(rings, cancel); // and the fold-backs, when it finds a contact
   check_nesting(rings, q);
 }
 
