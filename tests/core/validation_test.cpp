@@ -61,6 +61,18 @@ TEST(Validation, SelfIntersectionNamesTheEdges) {
   EXPECT_TRUE(has(message(touching), "self-intersecting")) << message(touching);
 }
 
+// Fold-backs are checked only once the crossing sweep found a contact (validate_input.cpp); the
+// message still names the fold-back, also when the sweep meets another contact first.
+TEST(Validation, FoldBackIsNamedAsSuch) {
+  PolygonSet spike{{{{{0, 0}, {4, 0}, {2, 0}, {2, 3}}, {}}}};
+  EXPECT_TRUE(has(message(spike), "edge 0-1 from (0, 0) to (4, 0) and 1 fold back on each other"))
+      << message(spike);
+  // A spike at x = 10 and, left of it, a crossing that the sweep reaches first.
+  PolygonSet both{{{{{0, 0}, {10, 0}, {6, 0}, {6, 5}, {-10, 5}, {-4, -4}, {-10, -4}}, {}}}};
+  EXPECT_TRUE(has(message(both), "edge 0-1 from (0, 0) to (10, 0) and 1 fold back on each other"))
+      << message(both);
+}
+
 TEST(Validation, HolesAndPolygons) {
   PolygonSet outside = square(0, 0, 4);
   outside.polygons[0].holes.push_back({{10, 10}, {10, 11}, {11, 11}, {11, 10}});
