@@ -1,7 +1,10 @@
 #pragma once
 // Generated test data (tests/support/gen) written as the files the CLI reads, in the build folder:
 // what the CLI tests of a bare clone run on. Real files come from the shared corpus instead.
+#include <unistd.h>
+
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <string>
@@ -12,11 +15,20 @@
 
 namespace penshape::testing {
 
+// Written whole under a name of this process's own, then renamed into place: ctest runs each
+// test in a process of its own, in parallel, and every process of a test program writes the same
+// files as it starts; a file truncated in place could be read half-written by another test's CLI.
 inline std::string write_generated(const std::string& name, const std::string& text) {
   std::string path = std::string(PENSHAPE_BINARY_DIR) + "/generated_" + name;
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write " + path);
+  const std::string own = path + ".part" + std::to_string(::getpid());
+  {
+    std::ofstream out(own, std::ios::binary);
+    out << text;
+    if (!out.flush()) throw std::runtime_error("cannot write " + own);
+  }
+  std::error_code error;
+  std::filesystem::rename(own, path, error);
+  if (error) throw std::runtime_error("cannot write " + path + ": " + error.message());
   return path;
 }
 
