@@ -145,6 +145,56 @@ TEST(StripeUnion, StripesKeepHolesAsHoles) {
   }
 }
 
+// Paths wider than tall are turned a quarter turn for Clipper's sweep and the result turned
+// back: the same positive-winding region (with stripes and without, turning on and off), and a
+// wide square ring with a hole keeps its structure and its place.
+TEST(StripeUnion, WidePathsTurnedForTheSweepGiveTheSameRegion) {
+  std::mt19937 rng(26);
+  std::uniform_real_distribution<double> coord(0.0, 1.0);
+  for (int trial = 0; trial < 12; ++trial) {
+    cl::Paths paths = random_paths(rng);
+    for (cl::Path& path : paths) {
+      for (cl::IntPoint& q : path) q.X *= 5; // five times wider than tall
+    }
+    for (const bool turn : {true, false}) {
+      for (const std::size_t stripe_vertices : {std::size_t{64}, std::size_t{1} << 20}) {
+        penshape::fast::set_turn_wide_paths(turn);
+        cl::PolyTree tree;
+        penshape::fast::union_positive(paths, tree, stripe_vertices);
+        penshape::fast::set_turn_wide_paths(true);
+        const IRegion region = region_of(tree);
+        int checked = 0;
+        for (int i = 0; i < 1500; ++i) {
+          const P p{5000.0 * coord(rng) + 0.25, 1000.0 * coord(rng) + 0.25};
+          double near = INFINITY;
+          int w = 0;
+          for (const cl::Path& path : paths) {
+            near = std::fmin(near, ring_distance(p, path, of_cl));
+            w += winding(p, path, of_cl);
+          }
+          if (near < 2.0) continue;
+          ++checked;
+          ASSERT_EQ(in_region(p, region), w > 0)
+              << "trial " << trial << " turn " << turn << " at " << p.x << ", " << p.y;
+        }
+        EXPECT_GT(checked, 1000);
+      }
+    }
+  }
+  const cl::Paths framed{{{0, 0}, {4000, 0}, {4000, 1000}, {0, 1000}},
+                         {{300, 300}, {300, 700}, {3700, 700}, {3700, 300}}};
+  cl::PolyTree tree;
+  penshape::fast::union_positive(framed, tree);
+  ASSERT_EQ(tree.ChildCount(), 1);
+  const cl::PolyNode& outer = *tree.Childs[0];
+  EXPECT_DOUBLE_EQ(cl::Area(outer.Contour), 4e6);
+  for (const cl::IntPoint& q : outer.Contour) {
+    EXPECT_TRUE((q.X == 0 || q.X == 4000) && (q.Y == 0 || q.Y == 1000)) << q.X << ", " << q.Y;
+  }
+  ASSERT_EQ(outer.ChildCount(), 1);
+  EXPECT_DOUBLE_EQ(cl::Area(outer.Childs[0]->Contour), -3400.0 * 400.0);
+}
+
 TEST(StripeUnion, ClampKeepsWindingStrictlyInsideTheStripe) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> coord(0.0, 1000.0);

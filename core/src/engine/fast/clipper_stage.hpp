@@ -44,6 +44,11 @@ enum class OffsetMode { kStriped, kFormer };
 void set_offset_mode(OffsetMode mode);
 [[nodiscard]] OffsetMode offset_mode();
 
+// Whether the union of raw offset paths turns paths wider than tall a quarter turn for Clipper's
+// sweep (stripe_union.hpp; the default); false keeps them as given, for the bench's
+// side-by-side figure. The regions are the same up to Clipper's rounding.
+void set_turn_wide_paths(bool turn);
+
 // Vertices on a full circle of radius |delta| at this tolerance (at most; joins use fewer).
 double round_join_steps(double delta, double arc_tolerance);
 

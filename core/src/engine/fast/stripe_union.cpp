@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "clipper_stage.hpp"
 #include "int_geometry.hpp"
 
 namespace penshape::fast {
@@ -70,7 +71,28 @@ cl::Paths clamp_to_stripe(const cl::Paths& paths, cl::cInt x0, cl::cInt x1) {
   return out;
 }
 
-void union_positive(const cl::Paths& paths, cl::PolyTree& tree, std::size_t stripe_vertices) {
+namespace {
+
+bool g_turn_wide = true;
+
+// Whether the paths' bounding box is wider than it is tall.
+bool wider_than_tall(const cl::Paths& paths) {
+  bool any = false;
+  cl::cInt x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+  for (const cl::Path& path : paths) {
+    for (const cl::IntPoint& p : path) {
+      x0 = any ? std::min(x0, p.X) : p.X;
+      x1 = any ? std::max(x1, p.X) : p.X;
+      y0 = any ? std::min(y0, p.Y) : p.Y;
+      y1 = any ? std::max(y1, p.Y) : p.Y;
+      any = true;
+    }
+  }
+  return any && x1 - x0 > y1 - y0;
+}
+
+// union_positive in the paths' own frame: stripe by stripe when they are large.
+void union_upright(const cl::Paths& paths, cl::PolyTree& tree, std::size_t stripe_vertices) {
   std::vector<cl::cInt> xs;
   for (const cl::Path& path : paths) {
     for (const cl::IntPoint& p : path) xs.push_back(p.X);
@@ -114,6 +136,27 @@ void union_positive(const cl::Paths& paths, cl::PolyTree& tree, std::size_t stri
     all.AddPaths(piece, cl::ptSubject, true);
   }
   all.Execute(cl::ctUnion, tree, cl::pftPositive, cl::pftPositive);
+}
+
+} // namespace
+
+void set_turn_wide_paths(bool turn) { g_turn_wide = turn; }
+
+void union_positive(const cl::Paths& paths, cl::PolyTree& tree, std::size_t stripe_vertices) {
+  if (!g_turn_wide || !wider_than_tall(paths)) {
+    union_upright(paths, tree, stripe_vertices);
+    return;
+  }
+  // A quarter turn clockwise, (x, y) -> (y, -x), keeps every path's orientation and winding
+  // numbers; |coordinates| <= 2^31, so the negation is exact. The result turns back.
+  cl::Paths turned = paths;
+  for (cl::Path& path : turned) {
+    for (cl::IntPoint& p : path) p = {p.Y, -p.X};
+  }
+  union_upright(turned, tree, stripe_vertices);
+  for (cl::PolyNode* node = tree.GetFirst(); node != nullptr; node = node->GetNext()) {
+    for (cl::IntPoint& p : node->Contour) p = {-p.Y, p.X};
+  }
 }
 
 } // namespace penshape::fast
