@@ -5,8 +5,10 @@
 // derived sagitta bound, which a walk that ignored it would get wrong.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include "engine/fast/certified.hpp"
 #include "engine/fast/level_set_check.hpp"
@@ -98,6 +100,123 @@ TEST(FastCertified, ArcChordsAreBoundedByTheirDerivedSagitta) {
     // 1.6 from the arc: chords refined below a sagitta of 1/2 prove it.
     EXPECT_TRUE(level_set_avoids({&a, dist - 1.6, &b, 1.0, max_sagitta}, {})) << max_sagitta;
   }
+}
+
+// piece_farther_than first asks each near edge against the piece's midpoint with T plus half the
+// piece's length: a long piece whose end alone comes near an edge must still be decided by the
+// end, on both sides of T.
+TEST(FastCertified, LongPieceIsDecidedAtItsEndNotItsMiddle) {
+  const SegmentIndex edge({{{1000, -50}, {1000, 50}, {1010, 0}}}, 64);
+  const double h = 10.0 + std::ldexp(1.0, -30); // the piece ends h left of the edge x = 1000
+  const OnPiece y0 = at_point(DPt{-5000.0, 0.0}), y1 = at_point(DPt{1000.0 - h, 0.0});
+  EXPECT_FALSE(piece_farther_than(edge, y0, y1, h)) << "distance equals T";
+  EXPECT_FALSE(piece_farther_than(edge, y0, y1, std::nextafter(h, kInf)));
+  EXPECT_TRUE(piece_farther_than(edge, y0, y1, std::nextafter(h, 0.0)));
+  // The same piece turned away from the edge: its nearest point is still its end.
+  EXPECT_TRUE(piece_farther_than(edge, y1, at_point(DPt{1000.0 - h, -6000.0}), 9.0));
+  EXPECT_FALSE(piece_farther_than(edge, y1, at_point(DPt{1000.0 - h, -6000.0}), 11.0));
+}
+
+// some_edge_closer with a hint: the hinted edge is tried first, a wrong or stale hint never
+// makes the answer wrong, and the hint comes back naming the edge that proved it.
+TEST(FastCertified, SomeEdgeCloserHintIsOnlyAHint) {
+  // Two squares far apart: edges 0-3 belong to the one at the origin, 4-7 to the far one.
+  const SegmentIndex index(
+      {{{0, 0}, {100, 0}, {100, 100}, {0, 100}}, {{5000, 0}, {5100, 0}, {5100, 100}, {5000, 100}}},
+      64);
+  const OnPiece near_far_square = at_point(DPt{5050.0, -7.0}); // 7 below edge 4
+  std::size_t hint = 0;                                        // an edge of the other square
+  EXPECT_TRUE(some_edge_closer(index, near_far_square, 8.0, &hint));
+  EXPECT_EQ(hint, 4U);
+  hint = 4;
+  EXPECT_FALSE(some_edge_closer(index, near_far_square, 7.0, &hint)) << "exactly 7 is not < 7";
+  EXPECT_EQ(hint, 4U) << "kept when nothing proved it";
+  hint = 99; // out of range: ignored
+  EXPECT_TRUE(some_edge_closer(index, at_point(DPt{-3.0, 50.0}), 4.0, &hint));
+  EXPECT_EQ(hint, 3U);
+  // A hint to an edge that is not closer does not stop the search for one that is.
+  hint = 1;
+  EXPECT_TRUE(some_edge_closer(index, at_point(DPt{50.0, 103.0}), 4.0, &hint));
+  EXPECT_EQ(hint, 2U);
+}
+
+// A star-shaped ring around c with radii in [r0, r0 + jag] at n angles (counterclockwise,
+// simple by construction).
+IRing jagged_star(std::mt19937& rng, IPt c, double r0, double jag, int n) {
+  std::uniform_real_distribution<double> radius(r0, r0 + jag);
+  IRing ring;
+  for (int i = 0; i < n; ++i) {
+    const double t = 2.0 * M_PI * i / n, rr = radius(rng);
+    ring.push_back({c.x + std::llround(rr * std::cos(t)), c.y + std::llround(rr * std::sin(t))});
+  }
+  return ring;
+}
+
+// Plain doubles, for the sampling check below (no engine code).
+double ring_distance(DPt p, const IRing& ring) {
+  double best = kInf;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const DPt a = to_d(ring[i]), b = to_d(ring[(i + 1) % ring.size()]);
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    const double t =
+        std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+    best = std::min(best, std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy));
+  }
+  return best;
+}
+bool inside_ring(DPt p, const IRing& ring) {
+  bool in = false;
+  for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+    const DPt a = to_d(ring[i]), b = to_d(ring[j]);
+    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)) in = !in;
+  }
+  return in;
+}
+
+// The walk against an independent check on random jagged regions: the level set {d(·, A) = L}
+// avoids the clearance c around B exactly when d(·, A) - L keeps one sign on the connected set
+// offset(B, c). That set is sampled on a fine grid (d(·, A) is 1-Lipschitz, so the samples'
+// range is within the spacing of the true one); cases within twice the spacing of L are
+// skipped. Pieces that are neither deep nor far as a whole are decided in parts
+// (level_set_check.cpp): both answers must come out right.
+TEST(FastCertified, LevelSetWalkAgreesWithSampledDistances) {
+  std::mt19937 rng(26);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  constexpr double kStep = 1.0;
+  int accepted = 0, rejected = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const IRing a_ring = jagged_star(rng, {0, 0}, 300, 150, 40);
+    const double level = 40.0 + 80.0 * unit(rng), clearance = 1.0 + 15.0 * unit(rng);
+    // B: a small jagged star centred somewhere around A's level set.
+    const double angle = 2.0 * M_PI * unit(rng), dist = 300.0 + level + 200.0 * unit(rng);
+    const IPt bc{std::llround(dist * std::cos(angle)), std::llround(dist * std::sin(angle))};
+    const IRing b_ring = jagged_star(rng, bc, 15.0 + 20.0 * unit(rng), 10.0, 9);
+    double lo = kInf, hi = -kInf;
+    const double reach = 60.0 + clearance;
+    for (double x = static_cast<double>(bc.x) - reach; x <= static_cast<double>(bc.x) + reach;
+         x += kStep) {
+      for (double y = static_cast<double>(bc.y) - reach; y <= static_cast<double>(bc.y) + reach;
+           y += kStep) {
+        const DPt z{x, y};
+        if (!inside_ring(z, b_ring) && ring_distance(z, b_ring) > clearance) continue;
+        const double d = inside_ring(z, a_ring) ? 0.0 : ring_distance(z, a_ring);
+        lo = std::min(lo, d);
+        hi = std::max(hi, d);
+      }
+    }
+    const bool clear = hi < level - 2 * kStep || lo > level + 2 * kStep;
+    const bool meets = lo < level - 2 * kStep && hi > level + 2 * kStep;
+    if (!clear && !meets) continue;
+    const SegmentIndex a({a_ring}, 64), b({b_ring}, 64);
+    ASSERT_TRUE(is_certifiable_region(a));
+    ASSERT_TRUE(is_certifiable_region(b));
+    const bool avoids = level_set_avoids({&a, level, &b, clearance, 2.0}, {});
+    ASSERT_EQ(avoids, clear) << "trial " << trial << ": d(., A) on offset(B, c) in [" << lo << ", "
+                             << hi << "], L " << level;
+    (avoids ? accepted : rejected) += 1;
+  }
+  EXPECT_GT(accepted, 30);
+  EXPECT_GT(rejected, 30);
 }
 
 #if defined(__x86_64__) && defined(__SSE2__)

@@ -166,16 +166,30 @@ const std::vector<std::size_t>& edges_near(const SegmentIndex& index, const Box&
 
 } // namespace
 
+namespace {
+
+// An upper bound on the distance between any two points of the enclosures a and b (requires
+// upward rounding; the root passes CGAL's opaque barrier, so it stays inside the scope).
+double distance_up(const IntervalPt& a, const IntervalPt& b) {
+  const IntervalNT dx = b.x - a.x, dy = b.y - a.y;
+  return CGAL::IA_opacify(std::sqrt(CGAL::IA_opacify((dx * dx + dy * dy).sup())));
+}
+
+} // namespace
+
 bool piece_farther_than(const SegmentIndex& index, const OnPiece& y0, const OnPiece& y1,
                         double threshold) {
   // The ends' enclosures once: their box for the grid's prefilter (which runs in the default
   // rounding mode), then the intervals of every near edge under one more switch; the exact
   // fallback after it.
-  IntervalPt i0{}, i1{};
+  IntervalPt i0{}, i1{}, mid{};
+  double reach = 0.0; // T + half the piece's length, rounded up
   {
     const UpwardRounding rounding;
     i0 = eval<IntervalNT>(y0);
     i1 = eval<IntervalNT>(y1);
+    mid = {(i0.x + i1.x) / 2, (i0.y + i1.y) / 2};
+    reach = (IntervalNT(threshold) + IntervalNT(distance_up(i0, i1)) / 2).sup();
   }
   const std::vector<std::size_t>& near = edges_near(index, box_of(i0, i1), threshold);
   std::vector<std::size_t> undecided;
@@ -183,8 +197,12 @@ bool piece_farther_than(const SegmentIndex& index, const OnPiece& y0, const OnPi
     const UpwardRounding rounding;
     for (const std::size_t k : near) {
       const Segment& g = index.segments()[k];
-      const int s = separated_and_far(i0, i1, eval<IntervalNT>(g.a), eval<IntervalNT>(g.b),
-                                      threshold, &interval_sign);
+      const IntervalPt a = eval<IntervalNT>(g.a), b = eval<IntervalNT>(g.b);
+      // Every point of the piece is within half its length of the midpoint: an edge farther
+      // than T + that from the midpoint is farther than T from the piece (one distance
+      // instead of four and four orientations; most near edges are that far).
+      if (interval_sign(mid, a, b, reach) > 0) continue;
+      const int s = separated_and_far(i0, i1, a, b, threshold, &interval_sign);
       if (s < 0) return false;
       if (s == 0) undecided.push_back(k);
     }
@@ -226,27 +244,40 @@ bool all_edges_farther(const SegmentIndex& index, const OnPiece& y, double thres
   return true;
 }
 
-bool some_edge_closer(const SegmentIndex& index, const OnPiece& y, double threshold) {
+bool some_edge_closer(const SegmentIndex& index, const OnPiece& y, double threshold,
+                      std::size_t* hint) {
   if (threshold <= 0.0) return false;
+  // The caller's hint first: the edge that proved its last question often proves this one.
+  if (hint != nullptr && *hint < index.segments().size()) {
+    const Segment& g = index.segments()[*hint];
+    if (closer_than(y, g.a, g.b, threshold)) return true;
+  }
   const DPt approx = eval_double(y);
   // Doubles propose: an edge clearly closer (by a sixteenth) is certified at once; otherwise
   // the nearest edge found is.
   const double clear = threshold * (15.0 / 16.0);
-  const Segment* best = nullptr;
+  std::size_t best = index.segments().size(); // none
   double best_d = threshold + 1.0;
   const double reach = best_d;
+  const auto closer = [&](std::size_t k) {
+    const Segment& g = index.segments()[k];
+    return closer_than(y, g.a, g.b, threshold);
+  };
   const bool early = index.find_near(
       approx.x - reach, approx.y - reach, approx.x + reach, approx.y + reach, [&](std::size_t k) {
         const Segment& g = index.segments()[k];
         const double d = point_segment_distance(approx, g.da(), g.db());
         if (d < best_d) {
           best_d = d;
-          best = &g;
+          best = k;
         }
-        return d < clear && closer_than(y, g.a, g.b, threshold);
+        return d < clear && closer(k);
       });
-  return early ||
-         (best != nullptr && best_d >= clear && closer_than(y, best->a, best->b, threshold));
+  // When `early`, the edge that proved it is the nearest so far (a nearer one below `clear`
+  // would have proved it first).
+  const bool found = early || (best < index.segments().size() && best_d >= clear && closer(best));
+  if (found && hint != nullptr) *hint = best;
+  return found;
 }
 
 } // namespace penshape::fast

@@ -102,7 +102,10 @@ class SegmentIndex;
 // Every edge of the index is proven farther than T from y (an edge whose box is proven farther
 // along an axis is skipped by that argument alone).
 [[nodiscard]] bool all_edges_farther(const SegmentIndex& index, const OnPiece& y, double threshold);
-// Some edge of the index is proven closer than T to y (doubles propose the nearest edge).
-[[nodiscard]] bool some_edge_closer(const SegmentIndex& index, const OnPiece& y, double threshold);
+// Some edge of the index is proven closer than T to y (doubles propose the nearest edge). With
+// a hint, the edge *hint is tried first, and *hint is set to the edge that proved it (kept when
+// none did).
+[[nodiscard]] bool some_edge_closer(const SegmentIndex& index, const OnPiece& y, double threshold,
+                                    std::size_t* hint = nullptr);
 
 } // namespace penshape::fast

@@ -25,6 +25,12 @@ using detail::IntervalNT;
 // Arc chords are refined down to this sagitta (grid units) before a piece counts as not
 // verified. It only limits the work spent on a piece; soundness rests on the derived errors.
 constexpr double kMinSagitta = 0.5;
+// A piece that is neither deep nor far from B as a whole is tried in halves, each of them in
+// halves again down to eighths, before the cover test (which asks every near edge of A and B):
+// on KAZ's decision 149 of 1,508 pieces need more than the whole-piece tests, and the parts
+// settle most of them (the level-set walk 1.05 -> 0.91 ms; deeper splits gain nothing more). A
+// work limit only: each part is decided by the same certified tests.
+constexpr int kSplitDepth = 2;
 // Arcs are first walked with chords of this many times max_sagitta, then each chord that fails
 // is halved (coarse to fine): most chords of a level set are deep or far from B and pass at
 // once (KAZ's decision: 7% less time; the 200,000-vertex star: the same). Completeness rests on
@@ -344,13 +350,25 @@ class Walker {
     return piece_farther_than(*q_.b, on(s, t0), on(s, t1), need);
   }
 
-  // Lower bound on L - half - error for the deep test, rounded down.
-  double deep_threshold(const Piece& s) const {
+  // Lower bound on L - half - error for the deep test of the part [t0, t1] of the piece
+  // (half: half the part's length, t1 - t0 exact), rounded down.
+  double deep_threshold(const Piece& s, double t0 = 0.0, double t1 = 1.0) const {
     const UpwardRounding rounding;
     const IntervalNT dx = IntervalNT(s.q.x) - IntervalNT(s.p.x);
     const IntervalNT dy = IntervalNT(s.q.y) - IntervalNT(s.p.y);
-    const IntervalNT half = sqrt_upward(dx * dx + dy * dy) / 2;
+    const IntervalNT half = sqrt_upward(dx * dx + dy * dy) * IntervalNT(t1 - t0) / 2;
     return (IntervalNT(q_.level) - half - IntervalNT(s.error)).inf();
+  }
+
+  // The part [t0, t1] of the piece passes the cheap tests of check(): deep, or far from B and
+  // outside it; else its halves do, down to `depth` halvings. Parameters are dyadic, so every
+  // midpoint and difference is exact.
+  bool part_passes(const Piece& s, double t0, double t1, double need, int depth) {
+    const double tm = 0.5 * (t0 + t1);
+    if (some_edge_closer(*q_.a, on(s, tm), deep_threshold(s, t0, t1), &last_deep_)) return true;
+    if (far_from_b(s, t0, t1, need) && outside_b(s, t0, t1, need)) return true;
+    return depth > 0 && part_passes(s, t0, tm, need, depth - 1) &&
+           part_passes(s, tm, t1, need, depth - 1);
   }
 
   // Deep inside {d(·, A) < level}: every piece point is within half its length of the
@@ -361,7 +379,7 @@ class Walker {
     if (memo != nullptr && memo->known(slot.vertex, slot.bit)) {
       return memo->deep(slot.vertex, slot.bit);
     }
-    const bool is_deep = some_edge_closer(*q_.a, on(s, 0.5), deep_threshold(s));
+    const bool is_deep = some_edge_closer(*q_.a, on(s, 0.5), deep_threshold(s), &last_deep_);
     if (memo != nullptr) memo->record(slot.vertex, slot.bit, is_deep);
     return is_deep;
   }
@@ -376,6 +394,12 @@ class Walker {
     const bool far = far_from_b(s, 0.0, 1.0, need);
     if (far && outside_b(s, 0.0, 1.0, need)) return true;
     if (q_.clear_first && deep(s, slot)) return true;
+    // A piece that is neither as a whole is often one or the other in parts: cheaper than the
+    // cover below.
+    if (part_passes(s, 0.0, 0.5, need, kSplitDepth) &&
+        part_passes(s, 0.5, 1.0, need, kSplitDepth)) {
+      return true;
+    }
     // Near or inside B: drop the parts proven closer than `level` to A (all of the piece when
     // it lies inside B), then check the remaining gaps.
     std::vector<Interval> forbidden;
@@ -466,6 +490,9 @@ class Walker {
   LevelSetMemo* memo_;
   unsigned pieces_ = 0;
   std::vector<Rep> in_, out_;
+  // The edge of A that proved the last deep test: neighbouring pieces often lie deep behind
+  // the same edge (some_edge_closer tries it first).
+  std::size_t last_deep_ = static_cast<std::size_t>(-1);
 };
 
 } // namespace
