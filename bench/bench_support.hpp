@@ -1,7 +1,9 @@
 #pragma once
-// What the daemon benchmarks share: latency percentiles, the process's CPU time and memory, a
-// scratch directory for sockets, and the `[--seconds N] [--json]` command line.
+// What the benchmarks share: latency percentiles and medians, the process's and the thread's CPU
+// time and memory, a scratch directory for sockets, and the `[--seconds N] [--json]` command line.
 #include <unistd.h>
+
+#include <ctime>
 
 #include <algorithm>
 #include <cstdio>
@@ -34,6 +36,20 @@ inline Percentiles percentiles(std::vector<double> v) {
   p.p99 = at(0.99);
   p.max = v.back();
   return p;
+}
+
+// The median (the upper one of an even count); 0 when empty.
+inline double median_of(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+// This thread's CPU time: what a shared machine's other load inflates least.
+inline double thread_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + static_cast<double>(ts.tv_nsec) * 1e-9;
 }
 
 struct ProcessUsage {

@@ -22,7 +22,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <fstream>
 #include <functional>
 #include <numbers>
@@ -32,6 +31,7 @@
 #include <vector>
 
 #include "bench_data.hpp"
+#include "bench_support.hpp"
 #include "penshape/core/deconstruct.hpp"
 #include "penshape/core/ink.hpp"
 #include "penshape/core/polygon_io.hpp"
@@ -58,17 +58,7 @@ double seconds_of(const std::function<void()>& f) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-// Thread CPU seconds: what the shared machine's other load inflates least.
-double cpu_seconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + static_cast<double>(ts.tv_nsec) * 1e-9;
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
+using penshape::bench::median_of;
 
 struct EngineRun {
   penshape::DeconstructResult result;
@@ -82,9 +72,9 @@ void run_once(const penshape::PolygonSet& q, penshape::DeconstructParams p,
               penshape::EngineKind engine, EngineRun& into, bool uncopied = false) {
   p.engine = engine;
   const penshape::PolygonSet copy = uncopied ? penshape::PolygonSet{} : q;
-  const double c0 = cpu_seconds();
+  const double c0 = penshape::bench::thread_cpu_seconds();
   into.result = penshape::deconstruct(uncopied ? q : copy, p);
-  into.cpu_s.push_back(cpu_seconds() - c0);
+  into.cpu_s.push_back(penshape::bench::thread_cpu_seconds() - c0);
 }
 
 // Issue 26: at r = w/30 the default engine is at least this many times faster than the
@@ -166,7 +156,7 @@ int main(int argc, char** argv) {
       run_once(q, {r, r / 2, r / 16}, penshape::EngineKind::kFast, run);
     }
     std::printf("default engine, r = w/30: %s, median thread CPU %.2f ms of %d runs\n",
-                penshape::to_string(run.result.answer), median(run.cpu_s) * 1e3, only_default);
+                penshape::to_string(run.result.answer), median_of(run.cpu_s) * 1e3, only_default);
     return 0;
   }
   if (!json) {
@@ -194,7 +184,7 @@ int main(int argc, char** argv) {
       run_once(q, p, penshape::EngineKind::kReference, ref);
       run_once(q, p, penshape::EngineKind::kFast, fast);
     }
-    const double ref_s = median(ref.cpu_s), fast_s = median(fast.cpu_s);
+    const double ref_s = median_of(ref.cpu_s), fast_s = median_of(fast.cpu_s);
     const double ratio = ref_s / fast_s;
     if (divisor == 30 && c.eps_divisor == 2) ratio_w30 = ratio;
     if (json) {
@@ -225,17 +215,17 @@ int main(int argc, char** argv) {
     run_once(q, p30, penshape::EngineKind::kReference, uncopied_ref, true);
     run_once(q, p30, penshape::EngineKind::kFast, uncopied_fast, true);
   }
-  const double uncopied_ratio = median(uncopied_ref.cpu_s) / median(uncopied_fast.cpu_s);
+  const double uncopied_ratio = median_of(uncopied_ref.cpu_s) / median_of(uncopied_fast.cpu_s);
   if (json) {
     std::printf(
         "{\"case\":\"kazakhstan_paper1881_uncopied\",\"r\":\"w/30\",\"reference_"
         "cpu_seconds\":%.6g,\"default_cpu_seconds\":%.6g,\"ratio\":%.4g}\n",
-        median(uncopied_ref.cpu_s), median(uncopied_fast.cpu_s), uncopied_ratio);
+        median_of(uncopied_ref.cpu_s), median_of(uncopied_fast.cpu_s), uncopied_ratio);
   } else {
     std::printf(
         "w/30 without the copy (the previous run's garbage charged to the next): "
         "reference %.2f ms, default %.2f ms, %.2fx\n",
-        median(uncopied_ref.cpu_s) * 1e3, median(uncopied_fast.cpu_s) * 1e3, uncopied_ratio);
+        median_of(uncopied_ref.cpu_s) * 1e3, median_of(uncopied_fast.cpu_s) * 1e3, uncopied_ratio);
   }
   const bool ratio_ok = ratio_w30 >= kRatioTarget;
   if (json) {

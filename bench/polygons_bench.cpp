@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -17,6 +16,7 @@
 #include <vector>
 
 #include "bench_data.hpp"
+#include "bench_support.hpp"
 #include "engine/fast/clipper_stage.hpp"
 #include "penshape/core/deconstruct.hpp"
 #include "penshape/core/polygon_io.hpp"
@@ -24,17 +24,6 @@
 namespace {
 
 using penshape::Rational;
-
-double cpu_seconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + static_cast<double>(ts.tv_nsec) * 1e-9;
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
 
 std::vector<std::string> polygon_files(const std::string& dir) {
   std::vector<std::string> files;
@@ -61,9 +50,9 @@ Rational width(const penshape::PolygonSet& q) {
 double timed(const penshape::PolygonSet& q, const penshape::DeconstructParams& p, bool turn,
              penshape::Answer& answer) {
   penshape::fast::set_turn_wide_paths(turn);
-  const double c0 = cpu_seconds();
+  const double c0 = penshape::bench::thread_cpu_seconds();
   answer = penshape::deconstruct(q, p).answer;
-  return cpu_seconds() - c0;
+  return penshape::bench::thread_cpu_seconds() - c0;
 }
 
 struct Row {
@@ -85,8 +74,8 @@ Row measure(const penshape::PolygonSet& q, int runs) {
         upright.push_back(timed(q, p, false, b));
         turned.push_back(timed(q, p, true, a));
       }
-      row.turned += median(turned);
-      row.upright += median(upright);
+      row.turned += penshape::bench::median_of(turned);
+      row.upright += penshape::bench::median_of(upright);
       row.answers += penshape::to_string(a)[0];
       row.same = row.same && a == b;
     }
