@@ -140,6 +140,23 @@ TEST(FastCertified, SomeEdgeCloserHintIsOnlyAHint) {
   EXPECT_EQ(hint, 2U);
 }
 
+// A level set with two components: the first far from B and outside it, the second far from
+// ∂B but inside B. A run of pieces proven clear of B carries over only to a piece that starts
+// where the run ended; the second component's pieces start elsewhere and must be found inside.
+TEST(FastCertified, ClearRunsDoNotCarryOverToAnotherComponent) {
+  const SegmentIndex a(
+      {{{0, 0}, {100, 0}, {100, 100}, {0, 100}}, {{5000, 0}, {5100, 0}, {5100, 100}, {5000, 100}}},
+      64);
+  // B: a square holding the second square's level set (L = 50) with 500 units to spare.
+  const SegmentIndex b({{{4400, -600}, {5700, -600}, {5700, 700}, {4400, 700}}}, 64);
+  ASSERT_TRUE(is_certifiable_region(a));
+  ASSERT_TRUE(is_certifiable_region(b));
+  EXPECT_FALSE(level_set_avoids({&a, 50.0, &b, 1.0, 2.0}, {}));
+  // B moved off the second square: both components clear.
+  const SegmentIndex off({{{4400, 1000}, {5700, 1000}, {5700, 2300}, {4400, 2300}}}, 64);
+  EXPECT_TRUE(level_set_avoids({&a, 50.0, &off, 1.0, 2.0}, {}));
+}
+
 // A star-shaped ring around c with radii in [r0, r0 + jag] at n angles (counterclockwise,
 // simple by construction).
 IRing jagged_star(std::mt19937& rng, IPt c, double r0, double jag, int n) {

@@ -77,7 +77,8 @@ struct LevelSetQuery {
   // level_set_check.cpp). Worth it when the clearance is small, so the clear test meets few
   // edges of B, and A has few edges near its own level set (the deep test then mostly fails):
   // (B1), whose A is P and B is Q̃ at clearance 3/4 (KAZ at r = w/30: 1.9% fewer
-  // instructions per decision; (A1) in this order costs 6% more).
+  // instructions per decision; (A1) in this order costs 6% more). Either way, a piece that
+  // starts where a piece proven clear of B ended is tested clear-first.
   bool clear_first = false;
 };
 
