@@ -2,6 +2,7 @@
 #include "stripe_union.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <vector>
 
 #include "clipper_stage.hpp"
@@ -73,7 +74,8 @@ cl::Paths clamp_to_stripe(const cl::Paths& paths, cl::cInt x0, cl::cInt x1) {
 
 namespace {
 
-bool g_turn_wide = true;
+// Set by benches and tests before any decision runs; read by every union (relaxed: a flag).
+std::atomic<bool> g_turn_wide{true};
 
 // Whether the paths' bounding box is wider than it is tall.
 bool wider_than_tall(const cl::Paths& paths) {
@@ -140,10 +142,10 @@ void union_upright(const cl::Paths& paths, cl::PolyTree& tree, std::size_t strip
 
 } // namespace
 
-void set_turn_wide_paths(bool turn) { g_turn_wide = turn; }
+void set_turn_wide_paths(bool turn) { g_turn_wide.store(turn, std::memory_order_relaxed); }
 
 void union_positive(const cl::Paths& paths, cl::PolyTree& tree, std::size_t stripe_vertices) {
-  if (!g_turn_wide || !wider_than_tall(paths)) {
+  if (!g_turn_wide.load(std::memory_order_relaxed) || !wider_than_tall(paths)) {
     union_upright(paths, tree, stripe_vertices);
     return;
   }
