@@ -207,6 +207,11 @@ void print_rule_folds(const std::vector<Drawing>& drawings) {
        rd::kMinSharpCornerShare,
        1.0,
        [](rd::RuleThresholds& r, double v) { r.min_sharp_corner_share = v; }},
+      {"kMinFittedCornerShare: a fitted corner is drawn when the stroke turns this share there",
+       {0.0, 0.2, 0.3, 0.4, 0.5, 0.6},
+       rd::kMinFittedCornerShare,
+       1.0,
+       [](rd::RuleThresholds& r, double v) { r.min_fitted_corner_share = v; }},
   };
   std::printf(
       "== rule thresholds per held-out writer: %zu drawings (shapes right / non-shapes "

@@ -76,6 +76,14 @@ inline constexpr double kCornerWindow = 0.25;
 // at least this share of a regular k-gon's turn (a fit costs time; round strokes skip it).
 inline constexpr double kLeastSeedTurnShare = 0.5;
 inline constexpr double kMinSharpCornerShare = 0.5;
+// A triangle's, quadrilateral's or polygon's fitted corners must be turned at: the stroke turns,
+// in the same window, by at least this share of each measured corner's turn. Real one-stroke
+// triangles turn 0.62 or more at every corner ($1, 160), generated hearts, loops on sticks and
+// figure eights 0.25..0.5 at their least. recognize_bench --rule-folds: 100 of 102 folds pick
+// 0.5 (two tie with the rule off); no value from 0.2 to 0.5 changes a real shape; non-shapes
+// snapped 0.7 -> 0.6% (P, half notes, a treble clef; LowVision star outlines 92.4 -> 97.8% left
+// as ink in --classes).
+inline constexpr double kMinFittedCornerShare = 0.5;
 // An arc stands out from its chord by at least this many epsilons (as a polyline's corner must):
 // flatter, the segment says the same within tolerance (a quick line drawn with a slight bow).
 inline constexpr double kArcMinSagitta = 0.5;

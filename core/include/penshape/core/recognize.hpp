@@ -103,6 +103,11 @@
 //     of its radius of a circle, an octagon within 4%, far inside epsilon, and only the turns tell
 //     them apart. Its corners are also sought where the stroke turns most (besides the corner
 //     search);
+//   - a triangle's, quadrilateral's or polygon's corners are fitted where the hand turned: at
+//     each corner the stroke passes away from its ends it turns, between the same chords, by at
+//     least 0.5 of the corner's turn, or it only lies in the shape's band (a heart's lobes, a
+//     loop on a stick, a figure eight, a star whose points a pentagon cuts off). Model shapes'
+//     corners (rectangle, square, diamond, regular polygon) may be drawn round;
 //   - an arc must turn one way only (its net turning is most of its total turning; a brace or
 //     an S turns both ways) and sweep less than a full turn.
 // Among the plausible certified candidates the lowest rank wins,

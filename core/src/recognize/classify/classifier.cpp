@@ -5,11 +5,13 @@
 #include <cmath>
 #include <iterator>
 #include <numbers>
+#include <optional>
 
 #include "geometry/exact_predicates.hpp"
 #include "recognize/certify/certificate.hpp"
 #include "recognize/certify/ink_certificate.hpp"
 #include "recognize/classify/annulus_polish.hpp"
+#include "recognize/classify/corner_sharpness.hpp"
 #include "recognize/classify/sharp_polygon.hpp"
 #include "recognize/classify/tracing.hpp"
 #include "recognize/fitting/dot.hpp"
@@ -163,6 +165,25 @@ std::string corner_implausibility(const Fit& f, const Certificate& c, bool sharp
   return {};
 }
 
+// A triangle's, a quadrilateral's or a polygon's corners are fitted where the hand turned: a
+// stroke that passes them as a curve does (a heart's lobes, a loop on a stick, a star whose
+// points a pentagon cuts off) only lies in their band (kMinFittedCornerShare). The corners of
+// model shapes (rectangle, square, diamond, regular polygon) may be drawn round, and are not
+// asked.
+std::string fitted_corner_implausibility(const PreparedStroke& s, const Fit& f,
+                                         const RuleThresholds& rules) {
+  const bool fitted = f.shape == ShapeClass::kTriangle || f.shape == ShapeClass::kQuadrilateral ||
+                      f.shape == ShapeClass::kPolygon;
+  if (!fitted) return {};
+  const std::optional<double> share =
+      measured_corner_share(s.points, f.params.vertices, kCornerWindow);
+  if (share && *share < rules.min_fitted_corner_share) {
+    return "the stroke passes a corner as a curve does (it turns there by less than half the "
+           "corner's turn: a heart's lobe, a loop)";
+  }
+  return {};
+}
+
 // A shape is traced once, one way round: a stroke that runs back over a share of the shape's path
 // (a stem drawn down and up, a question mark's hook) only stays in the shape's band.
 std::string tracing_implausibility(const PreparedStroke& s, const Fit& f, double max_backtrack) {
@@ -191,6 +212,7 @@ std::string implausibility(const PreparedStroke& s, const Fit& f, const Certific
   if (f.shape == ShapeClass::kDiamond) {
     if (std::string why = diamond_implausibility(f, rules.diamond_skew); !why.empty()) return why;
   }
+  if (std::string why = fitted_corner_implausibility(s, f, rules); !why.empty()) return why;
   const bool sharp = sharp_polygon(s, f, rules);
   if (has_corners(f.shape)) return corner_implausibility(f, c, sharp);
   if (f.shape == ShapeClass::kRegularPolygon && !sharp) {

@@ -39,6 +39,7 @@ struct RuleThresholds {
   double diamond_skew = kDiamondSkew;
   double max_backtrack = kMaxBacktrack;
   double min_sharp_corner_share = kMinSharpCornerShare;
+  double min_fitted_corner_share = kMinFittedCornerShare;
 };
 
 // A fit with its certificate, plausibility and rank.

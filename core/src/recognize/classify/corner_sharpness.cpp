@@ -11,6 +11,11 @@ namespace penshape::recognize_detail {
 
 double least_corner_share(const std::vector<PointD>& stroke, const std::vector<PointD>& corners,
                           double window) {
+  return measured_corner_share(stroke, corners, window).value_or(0.0);
+}
+
+std::optional<double> measured_corner_share(const std::vector<PointD>& stroke,
+                                            const std::vector<PointD>& corners, double window) {
   const ArcLengthPath path(stroke);
   const std::size_t n = corners.size();
   double least = INFINITY;
@@ -22,7 +27,8 @@ double least_corner_share(const std::vector<PointD>& stroke, const std::vector<P
     const std::optional<double> turn = path.turn_at(path.nearest(v).at, half_width);
     if (turn) least = std::min(least, *turn / theta);
   }
-  return std::isfinite(least) ? least : 0.0;
+  if (!std::isfinite(least)) return std::nullopt;
+  return least;
 }
 
 } // namespace penshape::recognize_detail

@@ -1,6 +1,7 @@
 #pragma once
 // Whether a closed stroke turns at a polygon's corners as a drawn corner does, or passes them as
 // a curve does: the evidence that tells a hexagon from a circle when both lie within tolerance.
+#include <optional>
 #include <vector>
 
 #include "penshape/core/point_arithmetic.hpp"
@@ -14,5 +15,8 @@ namespace penshape::recognize_detail {
 // stroke's ends (where a closed stroke starts and stops) are not measured; 0 when none is.
 double least_corner_share(const std::vector<PointD>& stroke, const std::vector<PointD>& corners,
                           double window);
+// The same share, or nothing when no corner could be measured (no evidence either way).
+std::optional<double> measured_corner_share(const std::vector<PointD>& stroke,
+                                            const std::vector<PointD>& corners, double window);
 
 } // namespace penshape::recognize_detail
