@@ -193,18 +193,21 @@ class Walker {
         const IPt prev = ring[(i + n - 1) % n];
         const IPt v = ring[i];
         const IPt next = ring[(i + 1) % n];
-        // The offset segment of edge v -> next: from out_[i] to in_[i + 1]; every point of the
-        // true segment is within the larger deviation of the piece (convexity).
-        const Rep& p = out_[i];
-        const Rep& q = in_[(i + 1) % n];
-        const double dev = std::max(p.dev, q.dev);
         const std::size_t vertex = base - n + i;
-        if (!outside_window(p.p, q.p, dev) && !check({p.p, q.p, dev}, {vertex, 0})) return false;
-        // Every point of the arc around v is within `level` of v (and its chords too).
+        // The arc around v first, from in_[i] to out_[i], then the offset segment of edge
+        // v -> next from out_[i] to in_[i + 1]: in the level set's order, so that each piece
+        // starts where the one before ended (continues_clear). Every point of the arc is within
+        // `level` of v (and its chords too).
         if (orientation(prev, v, next) > 0 && !outside_window(to_d(v), to_d(v), q_.level) &&
             !arc(prev, v, next, in_[i], out_[i], vertex)) {
           return false;
         }
+        // Every point of the true segment is within the larger deviation of the piece
+        // (convexity).
+        const Rep& p = out_[i];
+        const Rep& q = in_[(i + 1) % n];
+        const double dev = std::max(p.dev, q.dev);
+        if (!outside_window(p.p, q.p, dev) && !check({p.p, q.p, dev}, {vertex, 0})) return false;
         if ((++pieces_ & 255U) == 0 && cancel_ && cancel_()) throw Cancelled();
       }
     }
