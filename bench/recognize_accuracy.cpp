@@ -9,10 +9,10 @@
 // (left, right, up, down: flicks, not drawn lines).
 //
 // The tolerance derivation: every stroke is recognized at epsilon = g * size for g on a grid;
-// on the writers used for tuning, f_max is the largest g whose non-shape snaps stay <= 1.5% in
-// every corpus, and f the smallest g that names shapes within 1 point of f_max's rate (the room
-// between them is the pen's). Leave-one-subject-out: each writer is scored with the (f, f_max)
-// derived without them.
+// on the writers used for tuning, f_max is the largest g whose non-shape snaps, plus one standard
+// error over the writers, stay <= 1.5% in every corpus, and f the smallest g that names shapes
+// within 1 point of f_max's rate (the room between them is the pen's). Leave-one-subject-out:
+// each writer is scored with the (f, f_max) derived without them.
 #include "recognize_accuracy.hpp"
 
 #include <algorithm>
@@ -142,6 +142,32 @@ SubjectSweep sweep(const std::vector<Sample>& samples) {
   return out;
 }
 
+// The corpus's non-shape snap rate at grid step k plus one standard error over its writers
+// (`left_out` excepted). The limit is meant for writers the rule never saw: a tolerance that keeps
+// the sample's rate just under it fails on the next writer who snaps a little more (each fold of
+// the leave-one-subject-out run picked the largest such g and its held-out writer paid for it).
+// The writer, not the drawing, is the unit that varies, so the error is the ratio estimate's over
+// writers, sum_w (s_w - p n_w)^2 / N^2 * W / (W - 1): the one-standard-error rule.
+double false_snap_bound(const SubjectSweep& sw, const std::string& corpus,
+                        const std::string& left_out, int k) {
+  std::vector<const Tally*> writers;
+  Tally pooled;
+  for (const auto& [subject, row] : sw) {
+    if (subject == left_out || subject.substr(0, subject.find('/')) != corpus) continue;
+    const Tally& t = row[static_cast<std::size_t>(k)];
+    if (t.non_shapes == 0) continue;
+    writers.push_back(&t);
+    pooled.add(t);
+  }
+  if (writers.size() < 2) return pooled.false_snaps();
+  const double p = pooled.false_snaps();
+  double sum = 0.0;
+  for (const Tally* t : writers) sum += std::pow(t->snapped - p * t->non_shapes, 2);
+  const double w = static_cast<double>(writers.size());
+  const double n = pooled.non_shapes;
+  return p + std::sqrt(sum * w / (w - 1)) / n;
+}
+
 // The rule derived from every subject's sweep except `left_out` (empty: all subjects). f_max
 // holds the false-snap limit in every corpus (subjects are "corpus/writer"), not only pooled:
 // the limit is each default run's, and one corpus must not pay for another's clean non-shapes.
@@ -158,7 +184,7 @@ Rule derive(const SubjectSweep& sw, const std::string& left_out) {
   for (int k = 0; k < kGridSteps; ++k) {
     bool within = true;
     for (const auto& [corpus, row] : by_corpus) {
-      within = within && row[static_cast<std::size_t>(k)].false_snaps() <= kFalseSnapLimit;
+      within = within && false_snap_bound(sw, corpus, left_out, k) <= kFalseSnapLimit;
     }
     if (within) top = k;
   }
