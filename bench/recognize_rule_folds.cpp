@@ -212,6 +212,11 @@ void print_rule_folds(const std::vector<Drawing>& drawings) {
        rd::kMinFittedCornerShare,
        1.0,
        [](rd::RuleThresholds& r, double v) { r.min_fitted_corner_share = v; }},
+      {"kMinModelCornerShare: a model shape's corners are turned at, on the mean, by this share",
+       {0.0, 0.3, 0.35, 0.4, 0.45, 0.5, 0.55},
+       rd::kMinModelCornerShare,
+       1.0,
+       [](rd::RuleThresholds& r, double v) { r.min_model_corner_share = v; }},
   };
   std::printf(
       "== rule thresholds per held-out writer: %zu drawings (shapes right / non-shapes "

@@ -295,6 +295,80 @@ TEST(FittedCornerRule, ShapesDrawnWithTheirCornersKeepThem) {
   }
 }
 
+// A round stroke drawn quickly: its radius drifts round the turn (it ends well outside its start,
+// as a spiral does), squashed and lumpy: 16 of 40 lie within a square's, rectangle's or
+// diamond's band at the default tolerance and not within a circle's or ellipse's.
+std::vector<PointD> drifting_round(double radius, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> phase(0.0, 2 * kPi), drift(0.55, 0.7), lump(0.03, 0.09);
+  const double start = phase(rng), d = drift(rng), a3 = lump(rng), p3 = phase(rng);
+  const double a5 = lump(rng), p5 = phase(rng), squash = 0.75 + 2 * lump(rng);
+  std::vector<PointD> out;
+  for (int i = 0; i <= 170; ++i) { // 1.06 turns
+    const double t = 2 * kPi * i / 160;
+    const double r = radius * (1 - d / 2 + d * t / (2 * kPi) + a3 * std::cos(3 * t + p3) +
+                               a5 * std::cos(5 * t + p5));
+    out.push_back({r * std::cos(t + start), squash * r * std::sin(t + start)});
+  }
+  return out;
+}
+
+bool is_model_box(ShapeClass c) {
+  return c == ShapeClass::kSquare || c == ShapeClass::kRectangle || c == ShapeClass::kDiamond;
+}
+
+TEST(ModelCornerRule, ARoundStrokeIsNoSquare) {
+  RuleThresholds off;
+  off.min_model_corner_share = 0.0;
+  int boxes = 0, boxes_without = 0;
+  constexpr int kTotal = 40;
+  for (unsigned seed = 1; seed <= kTotal; ++seed) {
+    const std::vector<StrokePoint> stroke = samples(wobbled(drifting_round(100, seed), 1.0, seed));
+    const ShapeClass with = chosen(stroke, {});
+    boxes += is_model_box(with) ? 1 : 0;
+    EXPECT_FALSE(is_model_box(with)) << "seed " << seed << ": " << to_string(with);
+    boxes_without += is_model_box(chosen(stroke, off)) ? 1 : 0;
+  }
+  std::printf(
+      "round strokes drawn quickly: %d of %d squares, rectangles or diamonds, %d without "
+      "the rule\n",
+      boxes, kTotal, boxes_without);
+  EXPECT_GE(boxes_without, kTotal / 4) << "the cases no longer need the rule";
+}
+
+// A w x h rectangle whose first `round` corners are drawn as quarter circles of radius `fillet`.
+std::vector<PointD> rounded_box(double w, double h, int round, double fillet) {
+  const std::vector<PointD> box{{0, 0}, {w, 0}, {w, h}, {0, h}};
+  std::vector<PointD> out;
+  for (int k = 0; k < 4; ++k) {
+    const PointD before = box[(k + 3) % 4], v = box[k], after = box[(k + 1) % 4];
+    if (k >= round) {
+      out.push_back(v);
+      continue;
+    }
+    const PointD in = v + (fillet / distance(before, v)) * (before - v);
+    const PointD out_point = v + (fillet / distance(after, v)) * (after - v);
+    const PointD centre = in + (out_point - v);
+    for (int i = 0; i <= 8; ++i) { // the quarter circle from `in` to `out_point` about `centre`
+      const double a = kPi / 2 * i / 8;
+      out.push_back(centre + std::cos(a) * (in - centre) + std::sin(a) * (out_point - centre));
+    }
+  }
+  return out;
+}
+
+TEST(ModelCornerRule, BoxesWithRoundCornersStayBoxes) {
+  for (unsigned seed = 1; seed <= 4; ++seed) {
+    for (const int round : {1, 2, 4}) {
+      const double fillet = round == 4 ? 12.0 : 30.0;
+      const ShapeClass c =
+          chosen(samples(around_polygon(rounded_box(140, 100, round, fillet), 1.0, 0.6, seed)), {});
+      EXPECT_TRUE(c == ShapeClass::kRectangle || c == ShapeClass::kSquare)
+          << round << " round corners, seed " << seed << ": " << to_string(c);
+    }
+  }
+}
+
 // The live recognizer previews what pen-up will give: a polygon drawn sharp shows as a polygon
 // before the pen lifts (a snap once the stroke closes), not as the circle
 // whose band holds it, and a circle never shows as a polygon. Fitted in separate steps, the

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <iterator>
 #include <numbers>
+#include <numeric>
 #include <optional>
 
 #include "geometry/exact_predicates.hpp"
@@ -168,18 +169,26 @@ std::string corner_implausibility(const Fit& f, const Certificate& c, bool sharp
 // A triangle's, a quadrilateral's or a polygon's corners are fitted where the hand turned: a
 // stroke that passes them as a curve does (a heart's lobes, a loop on a stick, a star whose
 // points a pentagon cuts off) only lies in their band (kMinFittedCornerShare). The corners of
-// model shapes (rectangle, square, diamond, regular polygon) may be drawn round, and are not
-// asked.
+// model shapes (rectangle, square, diamond) may be drawn round, one by one, but a stroke that
+// passes all of them as a circle does is a round shape in their band (kMinModelCornerShare).
 std::string fitted_corner_implausibility(const PreparedStroke& s, const Fit& f,
                                          const RuleThresholds& rules) {
   const bool fitted = f.shape == ShapeClass::kTriangle || f.shape == ShapeClass::kQuadrilateral ||
                       f.shape == ShapeClass::kPolygon;
-  if (!fitted) return {};
-  const std::optional<double> share =
-      measured_corner_share(s.points, f.params.vertices, kCornerWindow);
-  if (share && *share < rules.min_fitted_corner_share) {
+  const bool model = f.shape == ShapeClass::kRectangle || f.shape == ShapeClass::kSquare ||
+                     f.shape == ShapeClass::kDiamond;
+  if (!fitted && !model) return {};
+  const std::vector<double> shares = corner_shares(s.points, f.params.vertices, kCornerWindow);
+  if (shares.empty()) return {}; // no measured corner: no evidence either way
+  if (fitted && *std::min_element(shares.begin(), shares.end()) < rules.min_fitted_corner_share) {
     return "the stroke passes a corner as a curve does (it turns there by less than half the "
            "corner's turn: a heart's lobe, a loop)";
+  }
+  const double mean =
+      std::accumulate(shares.begin(), shares.end(), 0.0) / static_cast<double>(shares.size());
+  if (model && mean < rules.min_model_corner_share) {
+    return "the stroke passes the corners as a circle does (on the whole it turns there by less "
+           "than the model corners' share: a round shape drawn squarish)";
   }
   return {};
 }

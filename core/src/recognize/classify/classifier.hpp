@@ -40,6 +40,7 @@ struct RuleThresholds {
   double max_backtrack = kMaxBacktrack;
   double min_sharp_corner_share = kMinSharpCornerShare;
   double min_fitted_corner_share = kMinFittedCornerShare;
+  double min_model_corner_share = kMinModelCornerShare;
 };
 
 // A fit with its certificate, plausibility and rank.

@@ -14,21 +14,27 @@ double least_corner_share(const std::vector<PointD>& stroke, const std::vector<P
   return measured_corner_share(stroke, corners, window).value_or(0.0);
 }
 
-std::optional<double> measured_corner_share(const std::vector<PointD>& stroke,
-                                            const std::vector<PointD>& corners, double window) {
+std::vector<double> corner_shares(const std::vector<PointD>& stroke,
+                                  const std::vector<PointD>& corners, double window) {
   const ArcLengthPath path(stroke);
   const std::size_t n = corners.size();
-  double least = INFINITY;
+  std::vector<double> shares;
   for (std::size_t k = 0; k < n; ++k) {
     const PointD before = corners[(k + n - 1) % n], v = corners[k], after = corners[(k + 1) % n];
     const double theta = angle_between(v - before, after - v);
     if (theta <= 0.0) continue;
     const double half_width = window * std::min(distance(before, v), distance(v, after));
     const std::optional<double> turn = path.turn_at(path.nearest(v).at, half_width);
-    if (turn) least = std::min(least, *turn / theta);
+    if (turn) shares.push_back(*turn / theta);
   }
-  if (!std::isfinite(least)) return std::nullopt;
-  return least;
+  return shares;
+}
+
+std::optional<double> measured_corner_share(const std::vector<PointD>& stroke,
+                                            const std::vector<PointD>& corners, double window) {
+  const std::vector<double> shares = corner_shares(stroke, corners, window);
+  if (shares.empty()) return std::nullopt;
+  return *std::min_element(shares.begin(), shares.end());
 }
 
 } // namespace penshape::recognize_detail

@@ -15,6 +15,9 @@ namespace penshape::recognize_detail {
 // stroke's ends (where a closed stroke starts and stops) are not measured; 0 when none is.
 double least_corner_share(const std::vector<PointD>& stroke, const std::vector<PointD>& corners,
                           double window);
+// Each measured corner's share, in the corners' order (corners not measured are left out).
+std::vector<double> corner_shares(const std::vector<PointD>& stroke,
+                                  const std::vector<PointD>& corners, double window);
 // The same share, or nothing when no corner could be measured (no evidence either way).
 std::optional<double> measured_corner_share(const std::vector<PointD>& stroke,
                                             const std::vector<PointD>& corners, double window);
