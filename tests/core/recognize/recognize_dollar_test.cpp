@@ -92,10 +92,11 @@ TEST(RecognizeDollar, CirclesMadePolygonsArePolygonsAndCirclesStayRound) {
   // were squares until squares had to be turned at (kMinModelCornerShare); asking the same of
   // regular polygons costs made polygons more (in 2-3 strokes 78.8 -> 71.6%).
   EXPECT_LE(circles_polygon, test::dollar_count(4, 0));
-  // Measured: 62% (444 / 720) on the real circles, 68% generated, 0-3% before the rule. The made
+  // Measured: 75% (538 / 720) on the real circles, 81% generated; 68% / 76% when the polygon must
+  // fit at least as tightly as the circle (kSharpPolygonSlack 1), 0-3% before the rule. The made
   // shapes keep a circle's lumps, as large as a corner's standout: a pessimistic stand-in for a
   // polygon drawn as one.
-  EXPECT_GE(made_right, test::dollar_rate(0.55, 0.55) * made);
+  EXPECT_GE(made_right, test::dollar_rate(0.72, 0.79) * made);
 }
 
 // The ink-level claim on a sample of snaps: points of one ink are within the bound of the other

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <iterator>
 #include <numbers>
-#include <numeric>
 #include <optional>
 
 #include "geometry/exact_predicates.hpp"
@@ -177,18 +176,22 @@ std::string fitted_corner_implausibility(const PreparedStroke& s, const Fit& f,
                       f.shape == ShapeClass::kPolygon;
   const bool model = f.shape == ShapeClass::kRectangle || f.shape == ShapeClass::kSquare ||
                      f.shape == ShapeClass::kDiamond;
-  if (!fitted && !model) return {};
-  const std::vector<double> shares = corner_shares(s.points, f.params.vertices, kCornerWindow);
-  if (shares.empty()) return {}; // no measured corner: no evidence either way
-  if (fitted && *std::min_element(shares.begin(), shares.end()) < rules.min_fitted_corner_share) {
-    return "the stroke passes a corner as a curve does (it turns there by less than half the "
-           "corner's turn: a heart's lobe, a loop)";
+  // No measured corner is no evidence either way.
+  if (fitted) {
+    const std::optional<double> least =
+        measured_corner_share(s.points, f.params.vertices, kCornerWindow);
+    if (least && *least < rules.min_fitted_corner_share) {
+      return "the stroke passes a corner as a curve does (it turns there by less than half the "
+             "corner's turn: a heart's lobe, a loop)";
+    }
   }
-  const double mean =
-      std::accumulate(shares.begin(), shares.end(), 0.0) / static_cast<double>(shares.size());
-  if (model && mean < rules.min_model_corner_share) {
-    return "the stroke passes the corners as a circle does (on the whole it turns there by less "
-           "than the model corners' share: a round shape drawn squarish)";
+  if (model) {
+    const std::optional<double> mean =
+        mean_corner_share(s.points, f.params.vertices, kCornerWindow);
+    if (mean && *mean < rules.min_model_corner_share) {
+      return "the stroke passes the corners as a circle does (on the whole it turns there by less "
+             "than the model corners' share: a round shape drawn squarish)";
+    }
   }
   return {};
 }

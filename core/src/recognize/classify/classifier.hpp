@@ -41,6 +41,7 @@ struct RuleThresholds {
   double min_sharp_corner_share = kMinSharpCornerShare;
   double min_fitted_corner_share = kMinFittedCornerShare;
   double min_model_corner_share = kMinModelCornerShare;
+  double sharp_polygon_slack = kSharpPolygonSlack;
 };
 
 // A fit with its certificate, plausibility and rank.

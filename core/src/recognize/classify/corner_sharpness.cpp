@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <optional>
 
 #include "recognize/fitting/path_turn.hpp"
@@ -28,6 +29,13 @@ std::vector<double> corner_shares(const std::vector<PointD>& stroke,
     if (turn) shares.push_back(*turn / theta);
   }
   return shares;
+}
+
+std::optional<double> mean_corner_share(const std::vector<PointD>& stroke,
+                                        const std::vector<PointD>& corners, double window) {
+  const std::vector<double> shares = corner_shares(stroke, corners, window);
+  if (shares.empty()) return std::nullopt;
+  return std::accumulate(shares.begin(), shares.end(), 0.0) / static_cast<double>(shares.size());
 }
 
 std::optional<double> measured_corner_share(const std::vector<PointD>& stroke,

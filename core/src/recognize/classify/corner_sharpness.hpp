@@ -18,7 +18,10 @@ double least_corner_share(const std::vector<PointD>& stroke, const std::vector<P
 // Each measured corner's share, in the corners' order (corners not measured are left out).
 std::vector<double> corner_shares(const std::vector<PointD>& stroke,
                                   const std::vector<PointD>& corners, double window);
-// The same share, or nothing when no corner could be measured (no evidence either way).
+// The mean share over the measured corners, or nothing when none is measured.
+std::optional<double> mean_corner_share(const std::vector<PointD>& stroke,
+                                        const std::vector<PointD>& corners, double window);
+// The least share, or nothing when no corner could be measured (no evidence either way).
 std::optional<double> measured_corner_share(const std::vector<PointD>& stroke,
                                             const std::vector<PointD>& corners, double window);
 

@@ -25,8 +25,11 @@ bool yields_to_sharp_polygon(const PreparedStroke& s, const Fit& f, const RuleTh
              rules.min_sharp_corner_share;
 }
 
-// A hexagon is within 7% of its radius of a circle, an octagon within 4%: far inside epsilon. A
-// jittery circle may turn sharply somewhere by chance; its round fit stays the tighter.
+// A hexagon is within 7% of its radius of a circle, an octagon within 4%: far inside epsilon, and
+// within a hand's wobble, so the circle may fit a drawn octagon a little more tightly than the
+// octagon does; the turns tell them apart. A jittery circle may turn sharply somewhere by chance,
+// and a polygon with its corners there fits it far more loosely than its circle
+// (kSharpPolygonSlack).
 void yield_to_sharp_polygon(const PreparedStroke& s, std::vector<Scored>& scored,
                             const RuleThresholds& rules) {
   double tightest = INFINITY; // the tightest sharp polygon snap
@@ -37,7 +40,7 @@ void yield_to_sharp_polygon(const PreparedStroke& s, std::vector<Scored>& scored
   }
   for (Scored& sc : scored) {
     // The corner test last: it reads the stroke.
-    if (!sc.snap || fit_measure(sc.candidate) < tightest ||
+    if (!sc.snap || rules.sharp_polygon_slack * fit_measure(sc.candidate) < tightest ||
         !yields_to_sharp_polygon(s, sc.fit, rules)) {
       continue;
     }

@@ -228,7 +228,8 @@ struct LiveRecognizer::State {
 
   // The preview is the best-ranked candidate still alive, as finish() chooses: a closed stroke
   // shows a closed shape (an open one fitted earlier may still be alive), and a candidate yields
-  // to a sharp polygon alive that fits as tightly. Returns whether it changed.
+  // to a sharp polygon alive that fits nearly as tightly (kSharpPolygonSlack). Returns whether it
+  // changed.
   bool update_preview() {
     double tightest = INFINITY;
     for (const LiveCandidate& c : candidates) {
@@ -236,7 +237,10 @@ struct LiveRecognizer::State {
     }
     const LiveCandidate* best = nullptr;
     for (const LiveCandidate& c : candidates) {
-      if (!c.alive || (c.yields_to_sharp_polygon && c.fit_measure >= tightest)) continue;
+      if (!c.alive || (c.yields_to_sharp_polygon &&
+                       recognize_detail::kSharpPolygonSlack * c.fit_measure >= tightest)) {
+        continue;
+      }
       if (last_fit_closed && !closed_family(c.fit.shape)) continue;
       if (best == nullptr || c.rank < best->rank) best = &c;
     }
