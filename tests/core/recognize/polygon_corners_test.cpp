@@ -337,10 +337,10 @@ TEST(ModelCornerRule, ARoundStrokeIsNoSquare) {
 }
 
 // A w x h rectangle whose first `round` corners are drawn as quarter circles of radius `fillet`.
-std::vector<PointD> rounded_box(double w, double h, int round, double fillet) {
+std::vector<PointD> rounded_box(double w, double h, std::size_t round, double fillet) {
   const std::vector<PointD> box{{0, 0}, {w, 0}, {w, h}, {0, h}};
   std::vector<PointD> out;
-  for (int k = 0; k < 4; ++k) {
+  for (std::size_t k = 0; k < 4; ++k) {
     const PointD before = box[(k + 3) % 4], v = box[k], after = box[(k + 1) % 4];
     if (k >= round) {
       out.push_back(v);
@@ -359,7 +359,7 @@ std::vector<PointD> rounded_box(double w, double h, int round, double fillet) {
 
 TEST(ModelCornerRule, BoxesWithRoundCornersStayBoxes) {
   for (unsigned seed = 1; seed <= 4; ++seed) {
-    for (const int round : {1, 2, 4}) {
+    for (const std::size_t round : {1U, 2U, 4U}) {
       const double fillet = round == 4 ? 12.0 : 30.0;
       const ShapeClass c =
           chosen(samples(around_polygon(rounded_box(140, 100, round, fillet), 1.0, 0.6, seed)), {});
