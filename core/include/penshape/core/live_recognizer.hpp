@@ -17,8 +17,8 @@
 //     in the same direction, extends the shape to it.
 // The preview is the best-ranked candidate still alive, chosen as finish() chooses: once the
 // stroke has closed, a closed shape only; a circle, ellipse or blunt-cornered shape gives way to
-// a polygon of 5..8 corners alive that the stroke turns sharply at and that fits as tightly
-// (recognize.hpp, "Classes"). It is a candidate, not a certificate.
+// a polygon of 5..8 corners alive that the stroke turns sharply at and that fits nearly as
+// tightly (recognize.hpp, "Classes"). It is a candidate, not a certificate.
 //
 // Refit policy (LiveOptions::policy):
 //   - kBounded (default; the daemon calls add() on every sample of a 1 kHz stream): the work of

@@ -63,7 +63,7 @@ std::vector<Scored> evaluate(const PreparedStroke& s, std::vector<Fit> fits, dou
                              const RuleThresholds& rules = {});
 // Ranks candidates evaluated apart (the live recognizer's survivors and fresh fits) as one
 // evaluate() call would: a sharp polygon among them overrules the round and blunt shapes it fits
-// as tightly as; sorted as evaluate() sorts.
+// nearly as tightly as (kSharpPolygonSlack); sorted as evaluate() sorts.
 void settle(const PreparedStroke& s, std::vector<Scored>& scored, const RuleThresholds& rules = {});
 // Certifies the snaps (the first, path-certified plausible candidates) again on the inks, best
 // rank first, until one passes: it is the winner; those that failed are no longer snaps, those

@@ -46,8 +46,8 @@ void yield_to_sharp_polygon(const PreparedStroke& s, std::vector<Scored>& scored
     }
     sc.snap = false;
     sc.candidate.rejected =
-        "the stroke turns sharply at the corners of a polygon that fits it as tightly, and not "
-        "at this shape's (a polygon)";
+        "the stroke turns sharply at the corners of a polygon that fits it nearly as tightly, and "
+        "not at this shape's (a polygon)";
   }
 }
 

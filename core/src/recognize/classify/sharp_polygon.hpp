@@ -16,7 +16,7 @@ double regular_turn(std::size_t k);
 // Whether the stroke turns at every corner of a (regular) polygon of 5..8 corners as a drawn
 // corner does (corner_sharpness.hpp): the evidence that it is no circle or ellipse.
 bool sharp_polygon(const PreparedStroke& s, const Fit& f, const RuleThresholds& rules = {});
-// Whether a snap gives way to a sharp polygon that fits at least as tightly (fit_measure): a
+// Whether a snap gives way to a sharp polygon that fits nearly as tightly (fit_measure): a
 // circle or ellipse, or a shape with corners the stroke does not turn sharply at (a square's band
 // holds a hexagon too).
 bool yields_to_sharp_polygon(const PreparedStroke& s, const Fit& f,
