@@ -371,14 +371,15 @@ int main(int argc, char** argv) {
         const Points made = penshape::cases::made_polygon(g.points, n, kMadeTurn);
         const std::string kind = "made polygon of " + std::to_string(n);
         made_polygons[kind + " in 1"].add(
-            kPolygon.count(penshape::to_string(penshape::recognize(made).shape)) > 0);
+            penshape::cases::is_polygon_of(penshape::recognize(made), n));
         const std::vector<std::size_t> c =
             penshape::cases::made_polygon_corners(made, n, kMadeTurn);
         for (std::size_t pieces = 2; pieces <= 3; ++pieces) {
           const std::vector<Points> cut = penshape::cases::cut_at_corners(made, c, pieces, v);
           if (cut.empty()) continue;
-          const bool ok =
-              one_group_of(penshape::recognize_strokes(inputs_of(cut)), cut.size(), kPolygon);
+          const auto out = penshape::recognize_strokes(inputs_of(cut));
+          const bool ok = one_group_of(out, cut.size(), kPolygon) &&
+                          penshape::cases::is_polygon_of(out[0].recognition, n);
           made_polygons[kind + " in " + std::to_string(pieces)].add(ok);
           made_polygons_cut.add(ok);
         }

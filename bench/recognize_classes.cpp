@@ -5,8 +5,9 @@
 // a flowchart decision, or a square on its corner, which must stay a square. Polygons of 5..8
 // corners: no shared corpus holds drawn ones, so real one-stroke circles are made polygons (the
 // writer's wobble and closure kept, corners added) and must be named `polygon` or
-// `regular_polygon`. "simplified": the shapes (and the made hexagons) as sketch collections store
-// drawings (made_shapes.hpp, sketch_simplified: a 255-unit box, Douglas-Peucker at 2 units).
+// `regular_polygon` with as many corners. "simplified": the shapes (and the made hexagons) as
+// sketch collections store drawings (made_shapes.hpp, sketch_simplified: a 255-unit box,
+// Douglas-Peucker at 2 units).
 #include "recognize_classes.hpp"
 
 #include <cstdio>
@@ -41,8 +42,16 @@ void tally(std::map<std::string, Count>& rows, const std::string& key, bool righ
   c.right += right ? 1 : 0;
 }
 
-void print_miss(const Drawing& d, const std::string& row, ShapeClass got) {
-  std::printf("    wrong: %-28s %-14s %s\n", row.c_str(), to_string(got), d.file.c_str());
+// The answer's class, and its corner count where it has corners (a made octagon read as a
+// pentagon).
+void print_miss(const Drawing& d, const std::string& row, const Recognition& got) {
+  char answer[48];
+  std::snprintf(answer, sizeof answer, "%s", to_string(got.shape));
+  if (!got.params.vertices.empty()) {
+    std::snprintf(answer, sizeof answer, "%s %zu", to_string(got.shape),
+                  got.params.vertices.size());
+  }
+  std::printf("    wrong: %-28s %-17s %s\n", row.c_str(), answer, d.file.c_str());
 }
 
 } // namespace
@@ -51,14 +60,14 @@ void print_classes(const std::vector<Drawing>& drawings, const ClassOptions& opt
   std::map<std::string, Count> rows; // "corpus/label" -> right (shapes) or left as ink
   const std::set<std::string> diamond{"diamond"};
   const std::set<std::string> square{"square", "rectangle", "quadrilateral"};
-  const std::set<std::string> polygon{"polygon", "regular_polygon"};
   for (const Drawing& d : drawings) {
     if (d.strokes.size() != 1) continue;
     const std::set<std::string>* targets = shape_targets(d.label);
     if (targets == nullptr && !is_non_shape(d.label) && !kStars.contains(d.label)) continue;
-    const ShapeClass got = recognize(d.strokes.front()).shape;
-    const bool right = targets != nullptr ? targets->contains(to_string(got))
-                                          : got == ShapeClass::kFreeform || got == ShapeClass::kDot;
+    const Recognition got = recognize(d.strokes.front());
+    const bool right = targets != nullptr
+                           ? targets->contains(to_string(got.shape))
+                           : got.shape == ShapeClass::kFreeform || got.shape == ShapeClass::kDot;
     const std::string key = d.corpus + (targets ? " shape " : " non-shape ") + d.label;
     tally(rows, key, right);
     if (!right && options.list_wrong) print_miss(d, key, got);
@@ -70,11 +79,11 @@ void print_classes(const std::vector<Drawing>& drawings, const ClassOptions& opt
     }
     if (targets != nullptr && d.label == "circle") {
       const std::vector<StrokePoint> hexagon = cases::made_polygon(d.strokes.front(), 6, 0.5);
-      const ShapeClass simple = recognize(cases::sketch_simplified(hexagon)).shape;
-      tally(rows, d.corpus + " simplified made polygon of 6", polygon.contains(to_string(simple)));
+      tally(rows, d.corpus + " simplified made polygon of 6",
+            cases::is_polygon_of(recognize(cases::sketch_simplified(hexagon)), 6));
       for (int n = 5; n <= 8; ++n) {
-        const ShapeClass made = recognize(cases::made_polygon(d.strokes.front(), n, 0.5)).shape;
-        const bool ok = polygon.contains(to_string(made));
+        const Recognition made = recognize(cases::made_polygon(d.strokes.front(), n, 0.5));
+        const bool ok = cases::is_polygon_of(made, n);
         const std::string row = "polygon of " + std::to_string(n) + " (circle)";
         tally(rows, d.corpus + " made " + row, ok);
         if (!ok && options.list_wrong) print_miss(d, row, made);
@@ -84,8 +93,8 @@ void print_classes(const std::vector<Drawing>& drawings, const ClassOptions& opt
     for (const auto& [across, name, want] :
          {std::tuple{cases::kDiamondAcross, "diamond (rectangle, 45, 0.6)", &diamond},
           std::tuple{1.0, "square on a corner (45)", &square}}) {
-      const ShapeClass made = recognize(cases::on_corner(d.strokes.front(), across)).shape;
-      const bool ok = want->contains(to_string(made));
+      const Recognition made = recognize(cases::on_corner(d.strokes.front(), across));
+      const bool ok = want->contains(to_string(made.shape));
       tally(rows, d.corpus + " made " + name, ok);
       if (!ok && options.list_wrong) print_miss(d, name, made);
     }

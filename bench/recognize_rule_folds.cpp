@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -22,10 +23,12 @@ namespace {
 
 namespace rd = recognize_detail;
 
-// A drawing ready for the rules: its fits made once. targets null: a non-shape.
+// A drawing ready for the rules: its fits made once. targets null: a non-shape. corners: a made
+// polygon's, which the answer must have too (0: any).
 struct Item {
   std::string subject, row;
   const std::set<std::string>* targets = nullptr;
+  int corners = 0;
   rd::PreparedStroke stroke;
   std::vector<rd::Fit> fits;
   ToleranceChoice tolerance;
@@ -61,9 +64,9 @@ const std::set<std::string> kSquare{"rectangle", "square", "quadrilateral"};
 const std::set<std::string> kPolygon{"polygon", "regular_polygon"};
 
 void add_item(std::vector<Item>& out, const Drawing& d, const std::vector<StrokePoint>& points,
-              const std::set<std::string>* targets, const std::string& row) {
+              const std::set<std::string>* targets, const std::string& row, int corners = 0) {
   if (rd::is_dot(points)) return; // a dot is never a shape nor a snap: no rule decides it
-  Item it{d.subject, row, targets, {}, {}, choose_tolerance(points, {})};
+  Item it{d.subject, row, targets, corners, {}, {}, choose_tolerance(points, {})};
   const RecognizerConfig config;
   it.stroke = rd::prepare(points, rd::thinning_tolerance(config, it.tolerance.epsilon));
   it.fits = rd::fit_all(it.stroke, config, it.tolerance.epsilon);
@@ -80,7 +83,7 @@ std::vector<Item> items_of(const std::vector<Drawing>& drawings) {
     add_item(out, d, p, targets, d.corpus + (targets ? " shape " : " non-shape ") + d.label);
     for (int n = 5; targets != nullptr && d.label == "circle" && n <= 8; ++n) {
       add_item(out, d, cases::made_polygon(p, n, 0.5), &kPolygon,
-               d.corpus + " made polygon of " + std::to_string(n));
+               d.corpus + " made polygon of " + std::to_string(n), n);
     }
     if (d.label != "rectangle" && d.label != "square") continue;
     add_item(out, d, cases::on_corner(p, cases::kDiamondAcross), &kDiamond,
@@ -90,18 +93,25 @@ std::vector<Item> items_of(const std::vector<Drawing>& drawings) {
   return out;
 }
 
-ShapeClass winner(const Item& it, const rd::RuleThresholds& rules) {
-  const std::vector<rd::Scored> scored = rd::evaluate(
-      it.stroke, it.fits, it.tolerance.epsilon, it.tolerance.pen_radius, RecognizerConfig{}, rules);
-  return !scored.empty() && scored.front().snap ? scored.front().fit.shape : ShapeClass::kFreeform;
+// The winning fit, or nothing (freeform).
+std::optional<rd::Fit> winner(const Item& it, const rd::RuleThresholds& rules) {
+  std::vector<rd::Scored> scored = rd::evaluate(it.stroke, it.fits, it.tolerance.epsilon,
+                                                it.tolerance.pen_radius, RecognizerConfig{}, rules);
+  if (scored.empty() || !scored.front().snap) return std::nullopt;
+  return std::move(scored.front().fit);
 }
 
-Count count_of(const Item& it, ShapeClass got) {
+bool right_answer(const Item& it, const rd::Fit& got) {
+  if (it.corners > 0) return cases::is_polygon_of(got.shape, got.params, it.corners);
+  return it.targets->contains(to_string(got.shape));
+}
+
+Count count_of(const Item& it, const std::optional<rd::Fit>& got) {
   Count c;
   if (it.targets != nullptr) {
-    c.shapes = 1, c.right = it.targets->contains(to_string(got)) ? 1 : 0;
+    c.shapes = 1, c.right = got && right_answer(it, *got) ? 1 : 0;
   } else {
-    c.non_shapes = 1, c.snapped = got != ShapeClass::kFreeform ? 1 : 0;
+    c.non_shapes = 1, c.snapped = got ? 1 : 0;
   }
   return c;
 }
@@ -222,6 +232,11 @@ void print_rule_folds(const std::vector<Drawing>& drawings) {
        rd::kMinModelCornerShare,
        1.0,
        [](rd::RuleThresholds& r, double v) { r.min_model_corner_share = v; }},
+      {"kMinMissedCornerTurn: a polygon misses a corner where the stroke turns this share",
+       {std::numeric_limits<double>::infinity(), 0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0},
+       rd::kMinMissedCornerTurn,
+       1.0,
+       [](rd::RuleThresholds& r, double v) { r.min_missed_corner_turn = v; }},
   };
   std::printf(
       "== rule thresholds per held-out writer: %zu drawings (shapes right / non-shapes "

@@ -163,6 +163,8 @@ void write_json_row(const RecognizeRow& row, const std::string* label) {
     json.key("certified").boolean(c.certificate.certified);
     json.key("bound").number(c.certificate.bound);
     json.key("rms").number(c.rms);
+    if (!c.params.vertices.empty())
+      json.key("corners").number(static_cast<double>(c.params.vertices.size()));
     if (!c.rejected.empty()) json.key("rejected").string(c.rejected);
     json.end_object();
   }

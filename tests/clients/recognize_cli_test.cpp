@@ -56,7 +56,7 @@ TEST(RecognizeCli, DollarLogToJson) {
   ASSERT_EQ(r.exit_code, 0) << r.out;
   for (const char* key : {"\"file\":", "\"class\":\"triangle\"",
                           "\"confidence\":", "\"params\":{\"vertices\":", "\"alternatives\":[",
-                          "\"certified\":true", "\"seconds\":"}) {
+                          "\"corners\":4", "\"certified\":true", "\"seconds\":"}) {
     EXPECT_NE(r.out.find(key), std::string::npos) << key << " in " << r.out;
   }
 }

@@ -71,6 +71,16 @@ inline std::vector<StrokePoint> made_polygon(const std::vector<StrokePoint>& in,
   return out;
 }
 
+// Whether an answer is the polygon of n corners a made_polygon(.., n, ..) was made as: a polygon
+// or regular polygon with n vertices (a made octagon read as a regular pentagon is wrong).
+inline bool is_polygon_of(ShapeClass shape, const ShapeParams& params, int n) {
+  return (shape == ShapeClass::kPolygon || shape == ShapeClass::kRegularPolygon) &&
+         params.vertices.size() == static_cast<std::size_t>(n);
+}
+inline bool is_polygon_of(const Recognition& r, int n) {
+  return is_polygon_of(r.shape, r.params, n);
+}
+
 // The sample indices of a made_polygon(in, n, turn)'s corners, in path order: for each corner
 // direction, the sample whose direction from the centroid is nearest it.
 inline std::vector<std::size_t> made_polygon_corners(const std::vector<StrokePoint>& made, int n,

@@ -1,6 +1,7 @@
 #pragma once
 // What the classifier's rule tests share: strokes from points, and the class recognize() would
 // choose with given rule thresholds (no ink, no skeleton).
+#include <optional>
 #include <vector>
 
 #include "penshape/core/recognize.hpp"
@@ -25,14 +26,23 @@ inline PreparedStroke prepared(const std::vector<StrokePoint>& stroke) {
   return prepare(stroke, thinning_tolerance(config, tol.epsilon));
 }
 
-// The class recognize() would choose with these rule thresholds (no ink, no skeleton).
-inline ShapeClass chosen(const std::vector<StrokePoint>& stroke, const RuleThresholds& rules) {
+// The fit recognize() would choose with these rule thresholds (no ink, no skeleton), or nothing
+// (freeform).
+inline std::optional<Fit> chosen_fit(const std::vector<StrokePoint>& stroke,
+                                     const RuleThresholds& rules) {
   const RecognizerConfig config;
   const ToleranceChoice tol = choose_tolerance(stroke, config);
   const PreparedStroke s = prepare(stroke, thinning_tolerance(config, tol.epsilon));
-  const std::vector<Scored> scored =
+  std::vector<Scored> scored =
       evaluate(s, fit_all(s, config, tol.epsilon), tol.epsilon, tol.pen_radius, config, rules);
-  return !scored.empty() && scored.front().snap ? scored.front().fit.shape : ShapeClass::kFreeform;
+  if (scored.empty() || !scored.front().snap) return std::nullopt;
+  return std::move(scored.front().fit);
+}
+
+// The class recognize() would choose with these rule thresholds.
+inline ShapeClass chosen(const std::vector<StrokePoint>& stroke, const RuleThresholds& rules) {
+  const std::optional<Fit> f = chosen_fit(stroke, rules);
+  return f ? f->shape : ShapeClass::kFreeform;
 }
 
 } // namespace penshape::recognize_detail::test

@@ -26,6 +26,7 @@ namespace penshape::recognize_detail {
 namespace {
 
 using test::chosen;
+using test::chosen_fit;
 using test::prepared;
 using test::samples;
 
@@ -177,6 +178,39 @@ TEST(SharpPolygonRule, PolygonsDrawnWithCornersAreNoCircles) {
   }
   std::printf("polygons of 5..8 corners: %d of %d without the rule\n", without, total);
   EXPECT_LT(without, total / 2) << "the cases no longer need the rule";
+}
+
+// A polygon is named with the corners it was drawn with: a regular pentagon's or hexagon's band
+// holds a heptagon or a stretched octagon too, but the stroke does not turn at their corners
+// (regular polygons are turned at, kMinFittedCornerShare), and a polygon of fewer corners that
+// cuts one off leaves a sharp turn out (kMinMissedCornerTurn). With both rules off, beside it.
+TEST(CornerCountRule, PolygonsKeepTheCornersTheyWereDrawnWith) {
+  RuleThresholds off;
+  off.min_fitted_corner_share = 0.0;
+  off.min_missed_corner_turn = std::numeric_limits<double>::infinity();
+  int right = 0, without = 0, total = 0;
+  for (int n = 5; n <= 8; ++n) {
+    for (unsigned seed = 1; seed <= 6; ++seed) {
+      std::vector<PointD> corners = regular_corners(n, 100, 0.3 * seed);
+      const double stretch = 1.0 + 0.1 * static_cast<double>(seed % 3); // 1, 1.1, 1.2
+      for (PointD& c : corners) c = {stretch * c.x, c.y};
+      const std::vector<StrokePoint> stroke = samples(around_polygon(corners, 1.0, 0.8, seed));
+      auto corners_right = [n](const std::optional<Fit>& f) {
+        return f && is_polygon(f->shape) &&
+               f->params.vertices.size() == static_cast<std::size_t>(n);
+      };
+      const std::optional<Fit> with = chosen_fit(stroke, {});
+      right += corners_right(with) ? 1 : 0;
+      EXPECT_TRUE(corners_right(with))
+          << n << " corners, seed " << seed << ": " << (with ? to_string(with->shape) : "freeform")
+          << " of " << (with ? with->params.vertices.size() : 0);
+      without += corners_right(chosen_fit(stroke, off)) ? 1 : 0;
+      ++total;
+    }
+  }
+  std::printf("polygons of 5..8 corners with their corner count: %d of %d, %d without the rules\n",
+              right, total, without);
+  EXPECT_LT(without, right) << "the cases no longer need the rules";
 }
 
 TEST(SharpPolygonRule, CirclesAndEllipsesStayRound) {

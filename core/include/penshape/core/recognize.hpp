@@ -106,11 +106,20 @@
 //     of its radius of a circle, an octagon within 4%, far inside epsilon, and only the turns tell
 //     them apart. Its corners are also sought where the stroke turns most (besides the corner
 //     search);
-//   - a triangle's, quadrilateral's or polygon's corners are fitted where the hand turned: at
-//     each corner the stroke passes away from its ends it turns, between the same chords, by at
-//     least 0.5 of the corner's turn, or it only lies in the shape's band (a heart's lobes, a
-//     loop on a stick, a figure eight, a star whose points a pentagon cuts off). Model shapes'
-//     corners (rectangle, square, diamond, regular polygon) may be drawn round;
+//   - a triangle's, quadrilateral's, polygon's or regular polygon's corners are fitted where the
+//     hand turned: at each corner the stroke passes away from its ends it turns, between the same
+//     chords, by at least 0.5 of the corner's turn, or it only lies in the shape's band (a
+//     heart's lobes, a loop on a stick, a figure eight, a star whose points a pentagon cuts off,
+//     an octagon in a regular pentagon's band). Model shapes' corners (rectangle, square,
+//     diamond) may be drawn round one by one, but on the whole the stroke turns at them: the mean
+//     share over their corners is at least 0.45 (a circle through them makes 0.25);
+//   - a shape of k = 3..7 corners has every corner the hand drew: when the stroke turns sharply
+//     at k + 1 places in the plane, each by at least 0.3 of a regular (k + 1)-gon's turn and
+//     twice the stroke's median turn, it gives way to a polygon snap of more corners (a heptagon
+//     lies within epsilon of a hexagon, a hexagon of a quadrilateral; one stroke only: a group's
+//     path steps across its pen-up jumps, turns the hand did not make); a (regular) polygon is no
+//     snap when the stroke turns at k + 1 places by a regular k-gon's whole turn (a star's
+//     outline);
 //   - an arc must turn one way only (its net turning is most of its total turning; a brace or
 //     an S turns both ways) and sweep less than a full turn.
 // Among the plausible certified candidates the lowest rank wins,

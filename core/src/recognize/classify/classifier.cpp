@@ -173,7 +173,7 @@ std::string corner_implausibility(const Fit& f, const Certificate& c, bool sharp
 std::string fitted_corner_implausibility(const PreparedStroke& s, const Fit& f,
                                          const RuleThresholds& rules) {
   const bool fitted = f.shape == ShapeClass::kTriangle || f.shape == ShapeClass::kQuadrilateral ||
-                      f.shape == ShapeClass::kPolygon;
+                      f.shape == ShapeClass::kPolygon || f.shape == ShapeClass::kRegularPolygon;
   const bool model = f.shape == ShapeClass::kRectangle || f.shape == ShapeClass::kSquare ||
                      f.shape == ShapeClass::kDiamond;
   // No measured corner is no evidence either way.
@@ -425,6 +425,7 @@ std::vector<Scored> evaluate(const PreparedStroke& s, std::vector<Fit> fits, dou
 
 void settle(const PreparedStroke& s, std::vector<Scored>& scored, const RuleThresholds& rules) {
   yield_to_sharp_polygon(s, scored, rules);
+  yield_to_more_corners(s, scored, rules);
   std::stable_sort(scored.begin(), scored.end(), [](const Scored& a, const Scored& b) {
     if (a.snap != b.snap) return a.snap;
     return a.rank < b.rank;

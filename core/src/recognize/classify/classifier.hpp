@@ -42,6 +42,7 @@ struct RuleThresholds {
   double min_fitted_corner_share = kMinFittedCornerShare;
   double min_model_corner_share = kMinModelCornerShare;
   double sharp_polygon_slack = kSharpPolygonSlack;
+  double min_missed_corner_turn = kMinMissedCornerTurn;
 };
 
 // A fit with its certificate, plausibility and rank.

@@ -1,6 +1,7 @@
 // The sharp-polygon rule (see sharp_polygon.hpp).
 #include "recognize/classify/sharp_polygon.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -59,6 +60,36 @@ std::string extra_corner_implausibility(const PreparedStroke& s, const Fit& f) {
     return "the stroke turns sharply at more corners than the polygon has (a star's outline)";
   }
   return {};
+}
+
+// A hexagon lies within epsilon of a quadrilateral through four of its corners, a heptagon of a
+// hexagon: the corners left out are turns the hand made.
+bool misses_a_corner(const PreparedStroke& s, const Fit& f, const RuleThresholds& rules) {
+  const std::size_t k = f.params.vertices.size();
+  if (k < 3 || k >= kMaxPolygonCorners) return false;
+  if (!has_corners(f.shape) && f.shape != ShapeClass::kRegularPolygon) return false;
+  return !sharp_turn_corners(s, k + 1, rules.min_missed_corner_turn * regular_turn(k + 1)).empty();
+}
+
+void yield_to_more_corners(const PreparedStroke& s, std::vector<Scored>& scored,
+                           const RuleThresholds& rules) {
+  if (s.pieces > 1) return; // a group's joins step across pen-up jumps: no turn of the hand
+  std::size_t most = 0;     // the most corners of a polygon snap
+  for (const Scored& sc : scored) {
+    if (sc.snap &&
+        (sc.fit.shape == ShapeClass::kPolygon || sc.fit.shape == ShapeClass::kRegularPolygon)) {
+      most = std::max(most, sc.fit.params.vertices.size());
+    }
+  }
+  for (Scored& sc : scored) {
+    if (!sc.snap || sc.fit.params.vertices.size() >= most || !misses_a_corner(s, sc.fit, rules)) {
+      continue;
+    }
+    sc.snap = false;
+    sc.candidate.rejected =
+        "the stroke turns sharply at more corners than the shape has, and a polygon with more "
+        "corners is a snap (a corner cut off)";
+  }
 }
 
 std::vector<Fit> polygon_fits(const PreparedStroke& s, std::size_t k) {

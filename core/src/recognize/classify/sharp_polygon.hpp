@@ -28,6 +28,12 @@ void yield_to_sharp_polygon(const PreparedStroke& s, std::vector<Scored>& scored
 // Why a polygon of k corners is a star's outline (empty when it is not): the stroke turns sharply
 // at k + 1 places, each by at least a regular k-gon's turn.
 std::string extra_corner_implausibility(const PreparedStroke& s, const Fit& f);
+// A snap of k = 3..7 corners gives way to a polygon snap of more corners when the stroke turns
+// sharply at k + 1 places in the plane, each by at least rules.min_missed_corner_turn of a
+// regular (k + 1)-gon's turn (sharp_turn_corners): the hand drew a corner it leaves out. One
+// stroke only: a group's chain steps at its joins where pieces meet off each other.
+void yield_to_more_corners(const PreparedStroke& s, std::vector<Scored>& scored,
+                           const RuleThresholds& rules);
 
 // Polygons of k corners from the corner search, and from where the hand turned most (the search
 // may settle on a lumpy side's wobble): refined from the turns, through them, at them (fit.hpp);

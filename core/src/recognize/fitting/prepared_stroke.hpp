@@ -21,6 +21,9 @@ struct PreparedStroke {
   double length = 0.0;            // length of A
   double size = 0.0;              // bounding-box diagonal of A
   double gap = 0.0;               // distance from the last point to the first
+  // How many strokes were joined into `points` (a group's chain, stroke_chain.hpp): at a join the
+  // path steps across a pen-up jump, a turn the hand did not make.
+  std::size_t pieces = 1;
   // The turns along `points`, sharpest first (turn_corners.cpp, which reads several corner counts
   // of one stroke from them), made on first use: most strokes never need them.
   struct PathTurn {

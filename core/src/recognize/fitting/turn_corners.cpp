@@ -33,15 +33,18 @@ const std::vector<Turn>& turns_by_sharpness(const PreparedStroke& s, const ArcLe
   return s.turns_by_sharpness.emplace(std::move(turns));
 }
 
-// The sharpest turns first, each at least two windows from those taken (one corner, once), until
-// k are taken or the next turns less than `least_turn`.
-std::vector<Turn> sharpest_apart(const std::vector<Turn>& turns, std::size_t k, double window,
-                                 double least_turn) {
+// The sharpest turns first, each at least two windows from those taken along the stroke and in
+// the plane (one corner, once: a closed stroke that runs on past its start turns at that corner
+// twice), until k are taken or the next turns less than `least_turn`.
+std::vector<Turn> sharpest_apart(const ArcLengthPath& path, const std::vector<Turn>& turns,
+                                 std::size_t k, double window, double least_turn) {
   std::vector<Turn> taken;
   for (const Turn& t : turns) {
     if (taken.size() == k || t.turn < least_turn) break;
+    const PointD p = path.point_at(t.at);
     const bool apart = std::all_of(taken.begin(), taken.end(), [&](const Turn& o) {
-      return std::abs(o.at - t.at) >= 2.0 * window;
+      return std::abs(o.at - t.at) >= 2.0 * window &&
+             distance(path.point_at(o.at), p) >= 2.0 * window;
     });
     if (apart) taken.push_back(t);
   }
@@ -52,7 +55,7 @@ std::vector<Turn> sharpest_apart(const std::vector<Turn>& turns, std::size_t k, 
 
 std::size_t sharp_turn_count(const PreparedStroke& s, std::size_t at_most, double least_turn) {
   const ArcLengthPath path(s.points);
-  return sharpest_apart(turns_by_sharpness(s, path), at_most, kTurnWindow * path.length(),
+  return sharpest_apart(path, turns_by_sharpness(s, path), at_most, kTurnWindow * path.length(),
                         least_turn)
       .size();
 }
@@ -62,7 +65,7 @@ std::vector<PointD> sharp_turn_corners(const PreparedStroke& s, std::size_t k, d
   const double w = kTurnWindow * path.length();
   const std::vector<Turn>& turns = turns_by_sharpness(s, path);
   if (turns.empty()) return {};
-  std::vector<Turn> taken = sharpest_apart(turns, k, w, 0.0);
+  std::vector<Turn> taken = sharpest_apart(path, turns, k, w, 0.0);
   if (taken.size() != k) return {};
   const double median = turns[turns.size() / 2].turn;
   const double least = taken.back().turn; // taken sharpest first

@@ -270,7 +270,8 @@ UnionRecognition recognize_union_detail(std::span<const StrokeInput> strokes,
     return out;
   }
   // The strokes read as one path (the single-stroke fitters see the union through it).
-  const PreparedStroke chain = prepare_points(chain_pieces(paths), tau);
+  PreparedStroke chain = prepare_points(chain_pieces(paths), tau);
+  chain.pieces = paths.size();
   std::vector<Scored> scored = score_chain(out.strokes, chain, config, tol.epsilon, tol.pen_radius);
   // The best snap (score_chain may leave refused candidates before it).
   const auto best =
