@@ -26,9 +26,9 @@
 //   --without RULE, --apart-barb X, --shaft-span X, --continuation-angle DEG, --gap-barb X,
 //   --gap-aim DEG: a rule off (open_polylines, curved_sides, crossing_pieces, limbs_as_a_line,
 //   continued_tips, arrow_when_refused, outline_when_round_refused, a_stroke_per_arrow_part,
-//   round_arrow_pieces, seed_from_strokes, gapped_shafts), a head drawn apart's barb limit, a
-//   shaft stroke's least span, the cone of a stroke continuing an arrow's tip, a shaft's gap to its
-//   tip in barbs and its aim (to measure).
+//   round_arrow_pieces, seed_from_strokes, gapped_shafts, heads_at_shaft_end), a head drawn apart's
+//   barb limit, a shaft stroke's least span, the cone of a stroke continuing an arrow's tip, a
+//   shaft's gap to its tip in barbs and its aim (to measure).
 //   --gestures-only: only the figures on other people's drawings.
 //   --only CLASS: with --gestures-only, only the gestures of that class ("D", "arrowhead", ...).
 //   --svg-dir: every arrow missed is drawn to DIR (strokes, and the best arrow candidate with why
@@ -41,8 +41,10 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bench_data.hpp"
@@ -70,6 +72,12 @@ const std::map<std::string, std::set<std::string>> kTargets{
 const std::set<std::string> kDiamond{"diamond"};
 const std::set<std::string> kPolygon{"polygon", "regular_polygon"};
 constexpr double kMadeTurn = 0.5; // the made polygons' first corner direction (radians)
+// Arrows made curved (their shaft an arc turning by 60 or 100 degrees) or bent (an elbow of 90
+// degrees at 60% of the shaft), turning left and right by turns.
+const std::vector<std::pair<const char*, penshape::cases::ShaftTurn>> kBentArrows{
+    {"arrow curved by 60 deg", {std::numbers::pi / 3, 0.5, 1.0}},
+    {"arrow curved by 100 deg", {5 * std::numbers::pi / 9, 0.5, 1.0}},
+    {"arrow bent by 90 deg", {std::numbers::pi / 2, 0.6, 0.08}}};
 const std::set<std::string> kNonShapes{"pigtail", "question_mark", "left_curly_brace",
                                        "right_curly_brace", "delete_mark"};
 
@@ -193,6 +201,8 @@ bool switch_off(const std::string& rule) {
     penshape::recognize_detail::arrow_rules().seed_from_strokes = false;
   } else if (rule == "gapped_shafts") {
     penshape::recognize_detail::arrow_rules().gapped_shafts = false;
+  } else if (rule == "heads_at_shaft_end") {
+    penshape::recognize_detail::arrow_rules().heads_at_shaft_end = false;
   } else if (const auto it = switches.find(rule); it != switches.end()) {
     penshape::recognize_detail::group_rules().*(it->second) = false;
   } else {
@@ -279,6 +289,8 @@ int main(int argc, char** argv) {
 
   Rate diamonds_all; // kept apart from polygons_all: made shapes, not drawn ones
   Rate made_polygons_cut;
+  Rate bent_arrows_all;
+  std::map<std::string, Rate> bent_arrows;   // by kind, whole and cut
   std::map<std::string, Rate> made_polygons; // whole ("in 1") and cut, by corners and pieces
   std::size_t v = 0;
   // `g` cut at 1-3 corners, the pieces fed to a grouper: one group of `targets` is right.
@@ -357,6 +369,32 @@ int main(int argc, char** argv) {
         const bool cut_ok = one_group_of(out, cut.size(), kTargets.at("arrow"));
         arrows_cut.add(cut_ok);
         arrows_by_subject[subject_of(g.file)].add(cut_ok);
+        if (!cut_ok && !svg_dir.empty()) {
+          draw_miss(svg_dir / (stem + "_cut.svg"), cut, penshape::recognize_union(inputs_of(cut)));
+        }
+      }
+    }
+    // An arrow made curved or bent (made_shapes.hpp), whole and cut at its tip.
+    if (g.kind == "arrow") {
+      for (const auto& [name, bend] : kBentArrows) {
+        const double side = v % 2 == 0 ? 1.0 : -1.0;
+        std::size_t tip = 0;
+        const Points made =
+            penshape::cases::bent_arrow(g.points, {side * bend.turn, bend.at, bend.width}, &tip);
+        const auto whole = penshape::recognize_strokes(inputs_of({made}));
+        const bool whole_ok = one_group_of(whole, 1, kTargets.at("arrow"));
+        bent_arrows[std::string(name) + ", whole"].add(whole_ok);
+        bent_arrows_all.add(whole_ok);
+        const std::vector<Points> cut = penshape::cases::cut_arrow_at(made, tip, v);
+        if (cut.empty()) continue;
+        const bool cut_ok =
+            one_group_of(penshape::recognize_strokes(inputs_of(cut)), 2, kTargets.at("arrow"));
+        bent_arrows[std::string(name) + ", cut at the tip"].add(cut_ok);
+        bent_arrows_all.add(cut_ok);
+        const std::string stem = subject_of(g.file) + "_" + std::to_string(v) + "_" + name;
+        if (!whole_ok && !svg_dir.empty()) {
+          draw_miss(svg_dir / (stem + "_whole.svg"), {made}, whole.front().recognition);
+        }
         if (!cut_ok && !svg_dir.empty()) {
           draw_miss(svg_dir / (stem + "_cut.svg"), cut, penshape::recognize_union(inputs_of(cut)));
         }
@@ -450,6 +488,10 @@ int main(int argc, char** argv) {
   for (const auto& [subject, r] : arrows_by_subject) {
     row(("  arrows (whole and cut), subject " + subject).c_str(), r, "");
   }
+  // No target: the bend moves each writer's own head rigidly, but where a head is drawn before
+  // the shaft reaches the tip, made ones can come out loops (s01's fast arrows).
+  row("curved and bent arrows (made from arrows)", bent_arrows_all, "(context)");
+  for (const auto& [k, r] : bent_arrows) row(("  " + k).c_str(), r, "");
   row("separate shapes never merged", separate, ">= 99%");
   row("non-shape pairs snapped together", pairs_merged, "<= 2%");
   row("non-shape pairs with any snap", pairs_any, "(context)");

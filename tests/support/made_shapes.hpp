@@ -71,6 +71,93 @@ inline std::vector<StrokePoint> made_polygon(const std::vector<StrokePoint>& in,
   return out;
 }
 
+// The index of an arrow stroke's tip: its sample farthest from its start.
+inline std::size_t arrow_tip(const std::vector<StrokePoint>& in) {
+  std::size_t tip = 0;
+  double far = -1.0;
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    const double d = std::hypot(in[i].x - in[0].x, in[i].y - in[0].y);
+    if (d > far) far = d, tip = i;
+  }
+  return tip;
+}
+
+// How a made arrow's shaft turns: by `turn` radians (positive: to the left), spread over the
+// share `width` of the shaft centred at the share `at` (width 1, at 0.5: evenly, a circular arc;
+// a narrow width: an elbow).
+struct ShaftTurn {
+  double turn = 0.0;
+  double at = 0.5;
+  double width = 1.0;
+};
+
+// A real one-stroke arrow (tail first, the tip its sample farthest from the start) made a curved
+// or bent one: each shaft sample (up to where the stroke first comes within 5% of the shaft of the
+// tip) keeps its distance along and across the shaft about a centre line whose heading turns as
+// `bend` says; the head (every later sample: a barb drawn out and back before the farthest
+// sample is the head's too) moves rigidly with the tip and the shaft's end direction. The writer's
+// wobble, head and speed are their own. `tip_at`, when given, is set to the made arrow's tip (its
+// index in the result).
+inline std::vector<StrokePoint> bent_arrow(const std::vector<StrokePoint>& stroke, ShaftTurn bend,
+                                           std::size_t* tip_at = nullptr) {
+  double length = 0;
+  for (std::size_t i = 1; i < stroke.size(); ++i) {
+    length += std::hypot(stroke[i].x - stroke[i - 1].x, stroke[i].y - stroke[i - 1].y);
+  }
+  std::vector<StrokePoint> in = densified(stroke, std::max(length / 400.0, 1e-9));
+  const std::size_t tip = arrow_tip(in);
+  if (tip_at != nullptr) *tip_at = tip;
+  const double ox = in[0].x, oy = in[0].y;
+  const double shaft = std::hypot(in[tip].x - ox, in[tip].y - oy);
+  if (shaft <= 0) return in;
+  const double ux = (in[tip].x - ox) / shaft, uy = (in[tip].y - oy) / shaft;
+  std::size_t arrival = tip;
+  for (std::size_t i = 0; i < tip; ++i) {
+    if (std::hypot(in[i].x - in[tip].x, in[i].y - in[tip].y) <= 0.05 * shaft) {
+      arrival = i;
+      break;
+    }
+  }
+  auto heading = [&](double s) {
+    const double lo = bend.at - 0.5 * bend.width;
+    return bend.turn * std::clamp((s / shaft - lo) / bend.width, 0.0, 1.0);
+  };
+  // The centre line at `steps` + 1 evenly spaced distances along the shaft.
+  constexpr int steps = 800;
+  std::vector<double> cx{0.0}, cy{0.0};
+  for (int k = 0; k < steps; ++k) {
+    const double h = heading(shaft * (k + 0.5) / steps);
+    cx.push_back(cx.back() + shaft / steps * std::cos(h));
+    cy.push_back(cy.back() + shaft / steps * std::sin(h));
+  }
+  auto centre = [&](double s, double& x, double& y) {
+    const double f = std::clamp(s / shaft, 0.0, 1.0) * steps;
+    const auto k = std::min(static_cast<std::size_t>(f), static_cast<std::size_t>(steps - 1));
+    const double t = f - static_cast<double>(k);
+    x = cx[k] + t * (cx[k + 1] - cx[k]) + std::min(s, 0.0);
+    y = cy[k] + t * (cy[k + 1] - cy[k]);
+  };
+  const double end = heading(shaft);
+  std::vector<StrokePoint> out = in;
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    const double dx = in[i].x - ox, dy = in[i].y - oy;
+    const double s = dx * ux + dy * uy, across = ux * dy - uy * dx;
+    // In the shaft's frame (x along it from the tail, y to its left), then back.
+    double x = 0, y = 0;
+    if (i <= arrival) {
+      centre(s, x, y);
+      const double h = heading(s);
+      x -= across * std::sin(h), y += across * std::cos(h);
+    } else {
+      centre(shaft, x, y);
+      x += (s - shaft) * std::cos(end) - across * std::sin(end);
+      y += (s - shaft) * std::sin(end) + across * std::cos(end);
+    }
+    out[i].x = ox + x * ux - y * uy, out[i].y = oy + x * uy + y * ux;
+  }
+  return out;
+}
+
 // Whether an answer is the polygon of n corners a made_polygon(.., n, ..) was made as: a polygon
 // or regular polygon with n vertices (a made octagon read as a regular pentagon is wrong).
 inline bool is_polygon_of(ShapeClass shape, const ShapeParams& params, int n) {

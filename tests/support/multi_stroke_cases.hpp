@@ -195,6 +195,14 @@ inline std::vector<Points> cut_shape(const Gesture& g, std::size_t pieces, std::
   return cut_at_corners(g.points, corners(g.points, g.kind == "triangle" ? 3 : 4), pieces, v);
 }
 
+// An arrow stroke cut at its tip into shaft and head.
+inline std::vector<Points> cut_arrow_at(const Points& points, std::size_t tip, std::size_t v) {
+  if (tip < 3 || tip + 3 >= points.size()) return {};
+  Variation var = variation(v);
+  var.overshoot = 0.0; // past the tip would lengthen the shaft, not the drawing
+  return cut(points, {tip}, var, v);
+}
+
 // An arrow stroke cut at its tip (the sample farthest from its start) into shaft and head.
 inline std::vector<Points> cut_arrow(const Gesture& g, std::size_t v) {
   std::size_t tip = 0;
@@ -203,10 +211,7 @@ inline std::vector<Points> cut_arrow(const Gesture& g, std::size_t v) {
     const double d = std::hypot(g.points[i].x - g.points[0].x, g.points[i].y - g.points[0].y);
     if (d > far) far = d, tip = i;
   }
-  if (tip < 3 || tip + 3 >= g.points.size()) return {};
-  Variation var = variation(v);
-  var.overshoot = 0.0; // past the tip would lengthen the shaft, not the drawing
-  return cut(g.points, {tip}, var, v);
+  return cut_arrow_at(g.points, tip, v);
 }
 
 // Two strokes one after the other: the second moved so that its bounding box starts `gap`

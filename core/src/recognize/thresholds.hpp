@@ -139,6 +139,14 @@ inline constexpr std::size_t kCloudPoints = 64;
 // The second shaft start is polished when the first ends above this many epsilons: well below
 // the straight fraction, since the certificate adds its sampling and thinning margins.
 inline constexpr double kSecondStartAbove = 0.4;
+// A head sought against the shaft's end: the direction back along the shaft is taken to the
+// shaft's first point this share of its length from the tip (at least epsilon, at most half).
+inline constexpr double kShaftEndReach = 0.15;
+// ... only for a shaft whose end leaves its chord by at least this (a curve, a bend).
+inline constexpr double kMinShaftEndTurn = 15.0 * kDegree;
+// A stroke may have an arrow's tip where it turns back by more than this (a head's V, a shaft
+// leaving along a barb).
+inline constexpr double kTipTurn = 100.0 * kDegree;
 // A curved shaft bows by at most this fraction of its chord (more is an arc, not a shaft).
 inline constexpr double kMaxBulge = 0.25;
 // Free parameters (as degrees_of_freedom() counts them) of straight, curved and double arrows,

@@ -170,3 +170,89 @@ TEST_F(ArrowRulesTest, AStrokeAcrossTheShaftIsNoShaft) {
 
 } // namespace
 } // namespace penshape
+
+namespace penshape {
+namespace {
+
+// Whether the strokes come out as one arrow of all of them, certified on their union (checked
+// independently); `got` receives it.
+bool one_arrow_of_all(const std::vector<StrokeInput>& s, Recognition* got = nullptr) {
+  const auto out = recognize_strokes(s);
+  if (out.size() != 1 || out[0].recognition.shape != ShapeClass::kArrow) return false;
+  const Recognition& r = out[0].recognition;
+  std::vector<std::size_t> all;
+  for (std::size_t i = 0; i < s.size(); ++i) all.push_back(i);
+  const double h =
+      test::union_hausdorff(test::paths_of(s, all), test::clean_paths(r), r.epsilon / 20.0);
+  EXPECT_LE(h, r.certificate.bound + 1e-6);
+  if (got != nullptr) *got = r;
+  return r.certificate.certified;
+}
+
+// A head at `tip` whose shaft arrives along the unit vector `along`: barbs 30 long leaving the
+// shaft's end at 30 degrees, drawn from one barb's end through the tip to the other's.
+test::Path head_along(PointD tip, PointD along) {
+  const double c = std::cos(std::numbers::pi / 6), s = std::sin(std::numbers::pi / 6);
+  const PointD back{-along.x, -along.y};
+  const PointD left{c * back.x - s * back.y, s * back.x + c * back.y};
+  const PointD right{c * back.x + s * back.y, -s * back.x + c * back.y};
+  return {{tip.x + 30 * left.x, tip.y + 30 * left.y},
+          tip,
+          {tip.x + 30 * right.x, tip.y + 30 * right.y}};
+}
+
+// The path followed by a head drawn on from the shaft's end: tip, one barb, back, the other.
+test::Path shaft_then_head(test::Path shaft, const test::Path& head) {
+  shaft.insert(shaft.end(), {head[0], head[1], head[2]});
+  return shaft;
+}
+
+// An elbow arrow: 120 along +x, a right-angle turn, 90 up to the tip. Both barbs lie on one side
+// of the chord tail -> tip, so the head is found only against the shaft's end piece: one stroke,
+// and a shaft stroke then a V, are arrows with one bend at the corner; with heads sought against
+// the chord only, neither is an arrow.
+TEST_F(ArrowRulesTest, AnElbowArrowsHeadIsFoundAgainstItsShaftsEnd) {
+  const PointD tail{0, 0}, corner{120, 0}, tip{120, 90};
+  const test::Path head = head_along(tip, {0, 1});
+  const std::vector<StrokeInput> one{stroke_along(shaft_then_head({tail, corner, tip}, head), 0)};
+  std::vector<StrokeInput> two{stroke_along({tail, corner, tip}, 0.0)};
+  two.push_back(stroke_along(head, next_start(two)));
+  for (const auto& s : {one, two}) {
+    Recognition r;
+    ASSERT_TRUE(one_arrow_of_all(s, &r)) << s.size() << " strokes";
+    ASSERT_EQ(r.params.shaft_bends.size(), 1u);
+    EXPECT_LT(
+        std::hypot(r.params.shaft_bends[0].x - corner.x, r.params.shaft_bends[0].y - corner.y),
+        0.6 * r.epsilon);
+    EXPECT_LT(std::hypot(r.params.vertices[1].x - tip.x, r.params.vertices[1].y - tip.y),
+              0.6 * r.epsilon);
+  }
+  arrow_rules().heads_at_shaft_end = false;
+  EXPECT_FALSE(one_arrow_of_all(one));
+  EXPECT_FALSE(one_arrow_of_all(two));
+}
+
+// A shaft drawn as an arc of about 93 degrees reaches its tip 46 degrees off its chord: a curved
+// arrow (its bulge to the arc's side) in one stroke and as a shaft then a V, found only against
+// the shaft's end.
+TEST_F(ArrowRulesTest, ACurvedArrowsHeadIsFoundAgainstItsShaftsEnd) {
+  const test::Path shaft = test::arc_through({0, 0}, {140, 0}, 30.0);
+  const PointD tip = shaft.back(), before = shaft[shaft.size() - 2];
+  const double step = std::hypot(tip.x - before.x, tip.y - before.y);
+  const test::Path head = head_along(tip, {(tip.x - before.x) / step, (tip.y - before.y) / step});
+  const std::vector<StrokeInput> one{stroke_along(shaft_then_head(shaft, head), 0)};
+  std::vector<StrokeInput> two{stroke_along(shaft, 0.0)};
+  two.push_back(stroke_along(head, next_start(two)));
+  for (const auto& s : {one, two}) {
+    Recognition r;
+    ASSERT_TRUE(one_arrow_of_all(s, &r)) << s.size() << " strokes";
+    EXPECT_TRUE(r.params.shaft_bends.empty());
+    EXPECT_NEAR(r.params.shaft_bulge, 30.0, 0.6 * r.epsilon);
+  }
+  arrow_rules().heads_at_shaft_end = false;
+  EXPECT_FALSE(one_arrow_of_all(one));
+  EXPECT_FALSE(one_arrow_of_all(two));
+}
+
+} // namespace
+} // namespace penshape

@@ -38,13 +38,19 @@
 // a shaft and a "V", or a shaft and two barbs. A double arrow has a head at both ends. The shaft
 // is a segment; else, where that does not fit within 0.6 epsilon, a circular arc (shaft_bulge)
 // or a polyline with 1 or 2 bends (shaft_bends), whichever certifies: a straight or curved
-// shaft that is a snap wins over any bent one (the tidier shape).
+// shaft that is a snap wins over any bent one (the tidier shape). The head is sought against
+// the chord tail -> tip and against the shaft's own end: at each place a stroke ends or turns
+// back (by more than 100 degrees), the stroke followed from there is taken as the shaft (the
+// direction back along it to its first point 15% of it away), the barbs are the points off it,
+// each ending where a stroke ends or turns back, and its middle's offset and Douglas-Peucker
+// corners seed the curved and bent shafts (only for a shaft that reaches its tip 15 degrees or
+// more off its chord: an arc or an elbow arrow, whose barbs can both lie on one side of it).
 // ShapeParams: vertices = {tail, tip, barb 1, barb 2} (+ {tail barb 1, tail barb 2} for a double
 // arrow), rotation = direction of tail -> tip, head_angle = mean angle between a barb and the
 // shaft at the tip (its last piece when bent), shaft_bulge, shaft_bends. The clean path is
 // tail -> [shaft] -> tip -> barb 1 -> tip -> barb 2 (a set: the retrace is harmless for the
 // Hausdorff distance). Plausible only when the certificate's bound is at most 0.6 epsilon, each
-// barb is at least epsilon and at most 0.8 shaft lengths (tail to tip) long, the barbs lie on
+// barb is at least epsilon and at most 0.8 shaft lengths (along the shaft) long, the barbs lie on
 // opposite sides of the shaft, each barb makes an angle of 10..80 degrees with the shaft's end
 // piece, and the strokes are at most 1.6 times as long as the clean arrow; a bent shaft's bends
 // each stand out from their neighbours' chord by epsilon / 2 or more, the shaft turns by at most

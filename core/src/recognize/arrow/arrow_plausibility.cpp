@@ -154,10 +154,12 @@ std::string arrow_implausibility(const Fit& f, const Certificate& c, double draw
   if (drawn_length > kMaxTracingArrow * f.clean.length()) {
     return "the strokes are much longer than the arrow (traced over, a scribble or writing)";
   }
-  const double shaft = distance(v[0], v[1]);
   const double bulge = f.params.shaft_bulge;
   const std::vector<PointD>& bends = f.params.shaft_bends;
   const PointD shaft_stop = f.params.shaft_end.value_or(v[1]);
+  // Barbs are measured against the shaft as drawn: a bent or curved shaft's path, not its chord.
+  const double shaft =
+      std::max(distance(v[0], v[1]), path_length(shaft_path(v[0], shaft_stop, bulge, bends)));
   if (std::string why = bend_implausibility(v[0], shaft_stop, bends, eps); !why.empty()) return why;
   if (std::string why = gap_implausibility(f.params, eps, head_apart); !why.empty()) return why;
   auto head_ok = [&](PointD head, PointD back, PointD b1, PointD b2) -> std::string {

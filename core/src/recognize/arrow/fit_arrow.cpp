@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "recognize/arrow/arrow_limits.hpp"
+#include "recognize/arrow/shaft_runs.hpp"
 #include "recognize/classify/classifier.hpp"
 #include "recognize/thresholds.hpp"
 
@@ -421,16 +422,12 @@ void fit_bent(const std::vector<PointD>& cloud, const Objective& objective, Arro
   }
 }
 
-// The single arrows from `tail` to `tip` with the barbs found at the tip (none when no barb
-// stands out on both sides): straight, curved when the straight one fits too loosely, and bent
-// when neither fits tightly. Returns the straight arrow's fit error (infinite when none).
-double fit_single(const std::vector<PointD>& cloud, const UnionStroke& u, PointD tail, PointD tip,
-                  double epsilon, double rank_to_beat, std::vector<Fit>& out) {
+// The arrows from one start (tail, tip, barb ends): straight, curved when the straight one fits
+// too loosely, and bent when neither fits tightly.
+void fit_from_start(const std::vector<PointD>& cloud, const UnionStroke& u, const ArrowState& start,
+                    double epsilon, double rank_to_beat, std::vector<Fit>& out) {
   const bool try_curved = kPricePerParameter * kCurvedParameters < rank_to_beat;
-  const auto head = find_barbs(cloud, tip, tail, epsilon);
-  if (!head) return INFINITY;
   const double step = epsilon / 2.0;
-  const ArrowState start{{tail, tip, head->first, head->second}, 0.0, {}, std::nullopt};
   const Objective objective{cloud, u, ShapeClass::kArrow};
   // Straight: polished from the raw start or the least-squares start, the one fitting better
   // first; the other only when the first does not fit tightly enough to pass surely.
@@ -468,7 +465,94 @@ double fit_single(const std::vector<PointD>& cloud, const UnionStroke& u, PointD
   // to pass surely.
   if (e_best > kSecondStartAbove * epsilon)
     fit_bent(cloud, objective, start, epsilon, rank_to_beat, out);
-  return e_straight;
+}
+
+// The start of an arrow whose shaft is drawn along `s.run`, its head found against the shaft's
+// end among the points off the run; none when no head stands out or a barb does not end within
+// epsilon of one of `ends` (a barb is drawn to its end: a stroke ends or turns back there; the
+// farthest point of a curve drawn near the shaft's end is no barb).
+std::optional<ArrowState> head_at_shaft_end(const std::vector<PointD>& cloud, const ShaftRun& s,
+                                            double epsilon, const std::vector<PointD>& ends) {
+  std::vector<PointD> off_run;
+  for (const PointD& p : cloud) {
+    if (polyline_distance(p, s.run) > epsilon / 2.0) off_run.push_back(p);
+  }
+  const PointD tip = s.tip;
+  const auto head =
+      find_barbs(off_run, tip, s.back_point, epsilon, kMaxBarbFraction * path_length(s.run));
+  auto drawn_to = [&](PointD b) {
+    return std::any_of(ends.begin(), ends.end(),
+                       [&](PointD e) { return distance(b, e) <= epsilon; });
+  };
+  if (!head || !drawn_to(head->first) || !drawn_to(head->second)) return std::nullopt;
+  return ArrowState{{s.run.front(), tip, head->first, head->second}, 0.0, {}, std::nullopt};
+}
+
+// The curved and bent arrows from a start found against its shaft's end, the shaft seeded from
+// the run drawn along it (its middle's offset, its Douglas-Peucker bends), each polished.
+void fit_shaft_end_start(const std::vector<PointD>& cloud, const UnionStroke& u,
+                         const ArrowState& start, const std::vector<PointD>& run, double epsilon,
+                         double rank_to_beat, std::vector<Fit>& out) {
+  const Objective objective{cloud, u, ShapeClass::kArrow};
+  // Polished, and again from where it stopped while it is loose but may still certify (as
+  // fit_bent does: a compass search stalls where two errors tie).
+  auto polished = [&](ArrowState a, bool curved) {
+    double e = polish(a, objective, epsilon / 2.0, curved);
+    for (int again = 0;
+         again < 2 && e > kSecondStartAbove * epsilon && e <= kRepolishBelow * epsilon; ++again) {
+      e = polish(a, objective, epsilon / 2.0, curved);
+    }
+    out.push_back(make_fit(ShapeClass::kArrow, std::move(a), e));
+  };
+  // A bulge beyond the limit is started at the limit (the polish keeps within it).
+  const double limit = kMaxBulge * distance(start.v[0], start.v[1]);
+  const double bulge = std::clamp(run_bulge(run), -0.99 * limit, 0.99 * limit);
+  if (kPricePerParameter * kCurvedParameters < rank_to_beat && std::abs(bulge) >= epsilon / 4.0) {
+    ArrowState curved = start;
+    curved.bulge = bulge;
+    polished(std::move(curved), true);
+  }
+  std::vector<PointD> bends = run_bends(run, epsilon);
+  const double parameters =
+      kStraightParameters + kBendParameters * static_cast<double>(bends.size());
+  if (bends.empty() || kPricePerParameter * parameters >= rank_to_beat) return;
+  ArrowState bent = start;
+  bent.bends = std::move(bends);
+  polished(std::move(bent), false);
+}
+
+// The single arrows from `tail` to `tip` with the barbs found at the tip against the chord (none
+// when no barb stands out on both sides). Returns the best fit error among them (infinite when
+// no head is found).
+double fit_single(const std::vector<PointD>& cloud, const UnionStroke& u, PointD tail, PointD tip,
+                  double epsilon, double rank_to_beat, std::vector<Fit>& out) {
+  const auto head = find_barbs(cloud, tip, tail, epsilon);
+  if (!head) return INFINITY;
+  const std::size_t before = out.size();
+  const ArrowState start{{tail, tip, head->first, head->second}, 0.0, {}, std::nullopt};
+  fit_from_start(cloud, u, start, epsilon, rank_to_beat, out);
+  double best = INFINITY;
+  for (std::size_t i = before; i < out.size(); ++i) best = std::min(best, out[i].fit_error);
+  return best;
+}
+
+// Arrows whose head is found against a curved or bent shaft's own end (shaft_runs.hpp), at every
+// place the drawing may have its tip.
+void fit_heads_at_shaft_end(const std::vector<PointD>& cloud, const UnionStroke& u, double epsilon,
+                            double rank_to_beat, std::vector<Fit>& out) {
+  const std::vector<std::pair<double, PointD>> turns = turn_places(u, epsilon);
+  std::vector<PointD> ends;
+  ends.reserve(turns.size());
+  for (const auto& place : turns) ends.push_back(place.second);
+  for (const PointD& tip : tip_candidates(turns, epsilon)) {
+    for (const ShaftRun& s : shaft_runs(u, tip, epsilon)) {
+      if (const auto start = head_at_shaft_end(cloud, s, epsilon, ends)) {
+        std::vector<PointD> shaft = s.run; // tail to tip
+        shaft.back() = s.tip;
+        fit_shaft_end_start(cloud, u, *start, shaft, epsilon, rank_to_beat, out);
+      }
+    }
+  }
 }
 
 // Another tip for a shaft from `tail`: the point farthest from the tail that lies more than
@@ -573,6 +657,9 @@ std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon, double rank_to
     }
   }
   fit_from_strokes(cloud, u, epsilon, out);
+  if (arrow_rules().heads_at_shaft_end) {
+    fit_heads_at_shaft_end(cloud, u, epsilon, rank_to_beat, out);
+  }
   const auto at_a = find_barbs(cloud, cloud[a], cloud[b], epsilon);
   const auto at_b = find_barbs(cloud, cloud[b], cloud[a], epsilon);
   if (at_a && at_b && may_win(kDoubleParameters)) {

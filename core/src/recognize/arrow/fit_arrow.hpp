@@ -32,6 +32,9 @@ bool head_drawn_apart(const Fit& f, const UnionStroke& u, double epsilon);
 struct ArrowRules {
   // Two strokes are also fitted as a head stroke and a shaft stroke (fit_arrows).
   bool seed_from_strokes = true;
+  // A head is also sought against the shaft's end, not only the chord tail -> tip (a curved or
+  // bent shaft reaches its tip along a direction far from the chord).
+  bool heads_at_shaft_end = true;
   // A head drawn apart may have barbs up to this many shafts (arrow_implausibility).
   double max_apart_barb = kMaxSeparateHeadBarb;
   // A shaft drawn in its own stroke spans at least this share of the shaft (head_drawn_apart).
