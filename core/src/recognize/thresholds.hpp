@@ -147,6 +147,9 @@ inline constexpr double kMinShaftEndTurn = 15.0 * kDegree;
 // A stroke may have an arrow's tip where it turns back by more than this (a head's V, a shaft
 // leaving along a barb).
 inline constexpr double kTipTurn = 100.0 * kDegree;
+// ... and is sought only in a drawing that ends or turns back in at most this many places (an
+// arrow's tail, tip and barbs' ends, a double arrow's too).
+inline constexpr std::size_t kMaxArrowPlaces = 8;
 // A curved shaft bows by at most this fraction of its chord (more is an arc, not a shaft).
 inline constexpr double kMaxBulge = 0.25;
 // Free parameters (as degrees_of_freedom() counts them) of straight, curved and double arrows,

@@ -496,7 +496,10 @@ void fit_shaft_end_start(const std::vector<PointD>& cloud, const UnionStroke& u,
   const Objective objective{cloud, u, ShapeClass::kArrow};
   // Polished, and again from where it stopped while it is loose but may still certify (as
   // fit_bent does: a compass search stalls where two errors tie).
+  // Each seed lies on the ink: a drawing that is such an arrow fits it within a few epsilons
+  // already, anything else is not worth polishing (as fit_bent).
   auto polished = [&](ArrowState a, bool curved) {
+    if (objective(a) > kSeedWithin * epsilon) return;
     double e = polish(a, objective, epsilon / 2.0, curved);
     for (int again = 0;
          again < 2 && e > kSecondStartAbove * epsilon && e <= kRepolishBelow * epsilon; ++again) {
@@ -544,7 +547,12 @@ void fit_heads_at_shaft_end(const std::vector<PointD>& cloud, const UnionStroke&
   std::vector<PointD> ends;
   ends.reserve(turns.size());
   for (const auto& place : turns) ends.push_back(place.second);
-  for (const PointD& tip : tip_candidates(turns, epsilon)) {
+  const std::vector<PointD> tips = tip_candidates(turns, epsilon);
+  // An arrow ends or turns back at its tail, its tip and its barbs' ends (twice that for a double
+  // arrow, a few more where a stroke goes back over its tip): a drawing that does so in more
+  // places is writing or a scribble, not worth the search.
+  if (tips.size() > kMaxArrowPlaces) return;
+  for (const PointD& tip : tips) {
     for (const ShaftRun& s : shaft_runs(u, tip, epsilon)) {
       if (const auto start = head_at_shaft_end(cloud, s, epsilon, ends)) {
         std::vector<PointD> shaft = s.run; // tail to tip
