@@ -511,9 +511,14 @@ TEST_F(DaemonE2E, ShutdownDuringALiveStreamLosesNoFinishedStroke) {
   auto reader = live->Subscribe(&ctx, {});
   wait_for_subscribers(1);
 
-  // 20 samples of 200 µs per stroke; shutdown arrives in the middle of one.
+  // 20 samples of 200 µs per stroke; shutdown arrives in the middle of one, once some stroke has
+  // finished (a fixed wait could end before the first on a loaded machine).
   source->run("pen0", 20, 200us);
-  std::this_thread::sleep_for(100ms);
+  const auto patience = std::chrono::steady_clock::now() + 30s;
+  while (source->finished() == 0 && std::chrono::steady_clock::now() < patience) {
+    std::this_thread::sleep_for(5ms);
+  }
+  std::this_thread::sleep_for(20ms);
   std::thread stopper([&] { server_->shutdown(); });
 
   std::vector<std::uint64_t> finished;
