@@ -8,6 +8,8 @@
 //   polygons of 5-8 in pieces the $1 circles made polygons (made_shapes.hpp) cut at 1-2 corners:
 //                             one group, a polygon; beside the same polygons whole;
 //   arrows                    $1 arrows whole (1 stroke) and cut at the tip (2 strokes);
+//   curved and bent arrows    the $1 arrows made curved (60, 100 degrees) and bent (a 90-degree
+//                             elbow; made_shapes.hpp), whole and cut at the tip: one arrow;
 //   separate never merged     two shape strokes one after the other, 2 px apart;
 //   non-shape pairs snapped   two non-shape gestures touching: snapped to a shape together;
 //   single strokes            recognize() (today) beside StrokeGrouper on one stroke;
