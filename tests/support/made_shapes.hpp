@@ -48,17 +48,23 @@ inline std::vector<StrokePoint> densified(const std::vector<StrokePoint>& in, do
   return out;
 }
 
+// The stroke with points at most 1/400 of its length apart.
+inline std::vector<StrokePoint> finely_densified(const std::vector<StrokePoint>& in) {
+  double length = 0;
+  for (std::size_t i = 1; i < in.size(); ++i) {
+    length += std::hypot(in[i].x - in[i - 1].x, in[i].y - in[i - 1].y);
+  }
+  return densified(in, std::max(length / 400.0, 1e-9));
+}
+
 // A real one-stroke circle made a polygon of n corners: each point's distance from the stroke's
 // centroid is multiplied by the regular n-gon's (circumradius 1) in the point's direction, so the
 // writer's own deviations from a circle become deviations from the polygon. `turn`: the polygon's
 // first corner direction (radians).
 inline std::vector<StrokePoint> made_polygon(const std::vector<StrokePoint>& in, int n,
                                              double turn) {
-  double length = 0, cx = 0, cy = 0;
-  for (std::size_t i = 1; i < in.size(); ++i) {
-    length += std::hypot(in[i].x - in[i - 1].x, in[i].y - in[i - 1].y);
-  }
-  std::vector<StrokePoint> out = densified(in, std::max(length / 400.0, 1e-9));
+  double cx = 0, cy = 0;
+  std::vector<StrokePoint> out = finely_densified(in);
   for (const StrokePoint& p : out) cx += p.x, cy += p.y;
   cx /= static_cast<double>(out.size()), cy /= static_cast<double>(out.size());
   const double sector = 2.0 * std::numbers::pi / n;
@@ -100,11 +106,7 @@ struct ShaftTurn {
 // index in the result).
 inline std::vector<StrokePoint> bent_arrow(const std::vector<StrokePoint>& stroke, ShaftTurn bend,
                                            std::size_t* tip_at = nullptr) {
-  double length = 0;
-  for (std::size_t i = 1; i < stroke.size(); ++i) {
-    length += std::hypot(stroke[i].x - stroke[i - 1].x, stroke[i].y - stroke[i - 1].y);
-  }
-  std::vector<StrokePoint> in = densified(stroke, std::max(length / 400.0, 1e-9));
+  std::vector<StrokePoint> in = finely_densified(stroke);
   const std::size_t tip = arrow_tip(in);
   if (tip_at != nullptr) *tip_at = tip;
   const double ox = in[0].x, oy = in[0].y;

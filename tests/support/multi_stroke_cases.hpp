@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "dollar_xml.hpp"
+#include "made_shapes.hpp"
 #include "penshape/core/recognize.hpp"
 
 namespace penshape::cases {
@@ -205,13 +206,7 @@ inline std::vector<Points> cut_arrow_at(const Points& points, std::size_t tip, s
 
 // An arrow stroke cut at its tip (the sample farthest from its start) into shaft and head.
 inline std::vector<Points> cut_arrow(const Gesture& g, std::size_t v) {
-  std::size_t tip = 0;
-  double far = -1.0;
-  for (std::size_t i = 0; i < g.points.size(); ++i) {
-    const double d = std::hypot(g.points[i].x - g.points[0].x, g.points[i].y - g.points[0].y);
-    if (d > far) far = d, tip = i;
-  }
-  return cut_arrow_at(g.points, tip, v);
+  return cut_arrow_at(g.points, arrow_tip(g.points), v);
 }
 
 // Two strokes one after the other: the second moved so that its bounding box starts `gap`

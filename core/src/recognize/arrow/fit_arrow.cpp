@@ -249,6 +249,23 @@ double polish(ArrowState& a, const Objective& objective, double step, bool curve
   return best;
 }
 
+// A seed polished: none when it lies farther than kSeedWithin epsilons from the drawing (every
+// vertex of a seed lies on the ink, so a drawing that is such an arrow fits it within a few
+// epsilons already: the polish moves vertices by about epsilon, anything else is not worth
+// polishing). A compass search stalls where two errors tie (a bend between its pieces): started
+// again from where it stopped, with its full step, it often goes on (while it may still certify).
+std::optional<double> polish_seed(ArrowState& a, const Objective& objective, double epsilon,
+                                  bool curved) {
+  if (objective(a) > kSeedWithin * epsilon) return std::nullopt;
+  double error = polish(a, objective, epsilon / 2.0, curved);
+  for (int again = 0;
+       again < 2 && error > kSecondStartAbove * epsilon && error <= kRepolishBelow * epsilon;
+       ++again) {
+    error = polish(a, objective, epsilon / 2.0, curved);
+  }
+  return error;
+}
+
 // The bulge of the arc through the shaft's ends that follows the points drawn along the shaft
 // (those nearer the shaft than either barb, away from its ends): a parabola's mean offset from
 // its chord is 2/3 of its sagitta.
@@ -406,18 +423,9 @@ void fit_bent(const std::vector<PointD>& cloud, const Objective& objective, Arro
     const double parameters = base + kBendParameters * static_cast<double>(k);
     if (kPricePerParameter * parameters >= rank_to_beat || !add_bend(cloud, a, epsilon)) return;
     refind_barbs(cloud, a, epsilon);
-    // Every vertex of the seed lies on the ink: a drawing that is a bent arrow fits it within a
-    // few epsilons already (the polish moves vertices by about epsilon), anything else is not
-    // worth polishing.
-    if (objective(a) > kSeedWithin * epsilon) return;
-    error = polish(a, objective, epsilon / 2.0, false);
-    // A compass search stalls where two errors tie (a bend between its pieces): started again
-    // from where it stopped, with its full step, it often goes on (when it may still certify).
-    for (int again = 0;
-         again < 2 && error > kSecondStartAbove * epsilon && error <= kRepolishBelow * epsilon;
-         ++again) {
-      error = polish(a, objective, epsilon / 2.0, false);
-    }
+    const std::optional<double> polished = polish_seed(a, objective, epsilon, false);
+    if (!polished) return;
+    error = *polished;
     out.push_back(make_fit(objective.shape, a, error));
   }
 }
@@ -494,18 +502,10 @@ void fit_shaft_end_start(const std::vector<PointD>& cloud, const UnionStroke& u,
                          const ArrowState& start, const std::vector<PointD>& run, double epsilon,
                          double rank_to_beat, std::vector<Fit>& out) {
   const Objective objective{cloud, u, ShapeClass::kArrow};
-  // Polished, and again from where it stopped while it is loose but may still certify (as
-  // fit_bent does: a compass search stalls where two errors tie).
-  // Each seed lies on the ink: a drawing that is such an arrow fits it within a few epsilons
-  // already, anything else is not worth polishing (as fit_bent).
   auto polished = [&](ArrowState a, bool curved) {
-    if (objective(a) > kSeedWithin * epsilon) return;
-    double e = polish(a, objective, epsilon / 2.0, curved);
-    for (int again = 0;
-         again < 2 && e > kSecondStartAbove * epsilon && e <= kRepolishBelow * epsilon; ++again) {
-      e = polish(a, objective, epsilon / 2.0, curved);
+    if (const auto e = polish_seed(a, objective, epsilon, curved)) {
+      out.push_back(make_fit(ShapeClass::kArrow, std::move(a), *e));
     }
-    out.push_back(make_fit(ShapeClass::kArrow, std::move(a), e));
   };
   // A bulge beyond the limit is started at the limit (the polish keeps within it).
   const double limit = kMaxBulge * distance(start.v[0], start.v[1]);
