@@ -422,6 +422,11 @@ int main(int argc, char** argv) {
                           penshape::cases::is_polygon_of(out[0].recognition, n);
           made_polygons[kind + " in " + std::to_string(pieces)].add(ok);
           made_polygons_cut.add(ok);
+          if (!ok && !svg_dir.empty()) {
+            const std::string stem = subject_of(g.file) + "_" + std::to_string(v) + "_polygon" +
+                                     std::to_string(n) + "_in" + std::to_string(pieces);
+            draw_miss(svg_dir / (stem + ".svg"), cut, penshape::recognize_union(inputs_of(cut)));
+          }
         }
       }
     }

@@ -237,6 +237,12 @@ void print_rule_folds(const std::vector<Drawing>& drawings) {
        rd::kMinMissedCornerTurn,
        1.0,
        [](rd::RuleThresholds& r, double v) { r.min_missed_corner_turn = v; }},
+      {"kMinFlatCornerTurn: a sharp polygon's corner near its neighbours' chord is turned this "
+       "share of a regular polygon's turn",
+       {std::numeric_limits<double>::infinity(), 0.3, 0.4, 0.5, 0.6, 0.75, 1.0},
+       rd::kMinFlatCornerTurn,
+       1.0,
+       [](rd::RuleThresholds& r, double v) { r.min_flat_corner_turn = v; }},
   };
   std::printf(
       "== rule thresholds per held-out writer: %zu drawings (shapes right / non-shapes "

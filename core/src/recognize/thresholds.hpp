@@ -78,6 +78,19 @@ inline constexpr double kCornerWindow = 0.25;
 // at least this share of a regular k-gon's turn (a fit costs time; round strokes skip it).
 inline constexpr double kLeastSeedTurnShare = 0.5;
 inline constexpr double kMinSharpCornerShare = 0.5;
+// A sharp polygon's corner stands at least this many epsilons off its neighbours' chord (a
+// polyline's corner's margin; a blunt polygon's corners: one epsilon) ...
+inline constexpr double kSharpCornerOffChord = 0.5;
+// ... or at least this many where the stroke turns at it by kMinFlatCornerTurn of the regular
+// polygon's turn: a lump of the hand flattens one corner of an octagon (its corners stand out
+// 0.9 epsilon at the default tolerance) but not the turn it made there. Set at half the margin,
+// not tuned (0.15 / 0.25 / 0.33: $1 made octagons 72.2 / 72.2 / 67.2%, no real class changes).
+inline constexpr double kTurnedCornerOffChord = 0.25;
+// recognize_bench --rule-folds: 99 of 102 folds pick 0.6 (held out 91.4% / 0.4%, rule off 88.9% /
+// 0.4%): made octagons $1 45.6 -> 70.6%, gestures 64.6 -> 86.4%, heptagons 70.6 -> 72.2% /
+// 85.7 -> 91.2%; made pentagons and hexagons lose a little (84.4 -> 82.8%, 79.4 -> 77.2%: a
+// circle's kink read as one more corner); no real class changes at any value from 0.3 to 1.
+inline constexpr double kMinFlatCornerTurn = 0.6;
 // A circle or ellipse gives way to a sharp polygon that fits up to this factor more loosely
 // (fit_measure: bound + 2 rms). A drawn octagon's corners stand out 8% of its radius, within the
 // hand's wobble, so the circle may fit it more tightly than the octagon does: made octagons' sharp

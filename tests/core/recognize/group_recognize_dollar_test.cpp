@@ -104,14 +104,20 @@ TEST(GroupRecognizeDollar, DiamondsCutIntoTwoToFourStrokes) {
   }
   std::printf("diamonds in 2-4 strokes: %d / %d right (class and grouping)\n", t.right, t.total);
   ASSERT_EQ(t.total, test::dollar_count(180, 90));
-  EXPECT_GE(t.right, test::dollar_rate(0.95, 0.85) * t.total); // generated: 94% measured
+  // Generated: 79% (71 / 90) measured, as often as whole (23 of their 30 one-stroke diamonds): the
+  // generated rectangles' sides bend at a kink, which the stroke turns at as at a corner, so they
+  // are read as polygons of 5-6 corners, in pieces too since a group's polygon keeps the corners
+  // its strokes turn at (yield_to_more_corners; 94% in pieces when groups were exempt). Real:
+  // unchanged (174 / 180 here, 97.8% of all writers' in group_recognize_bench).
+  EXPECT_GE(t.right, test::dollar_rate(0.95, 0.75) * t.total);
 }
 
-// No corpus holds polygons of 5-6 corners drawn in pieces: the real circles made polygons
+// No corpus holds polygons of 5-8 corners drawn in pieces: the real circles made polygons
 // (made_shapes.hpp; their lumps are the writer's own, so not every one reads as a polygon even
 // whole) cut at 1-2 of their corners are one polygon of as many corners about as often as the
-// same polygons whole.
-TEST(GroupRecognizeDollar, PolygonsOfFiveAndSixCornersInPiecesAsWhole) {
+// same polygons whole (a polygon missing a corner the hand turned at gives way to one with it,
+// in a group's chain too: 76% as often before, heptagons and octagons losing a corner).
+TEST(GroupRecognizeDollar, PolygonsOfFiveToEightCornersInPiecesAsWhole) {
   constexpr double kTurn = 0.5;
   const std::set<std::string> polygon{"polygon", "regular_polygon"};
   Tally whole, pieces;
@@ -119,7 +125,7 @@ TEST(GroupRecognizeDollar, PolygonsOfFiveAndSixCornersInPiecesAsWhole) {
   for (const Gesture& g : subjects(test::dollar_dir())) {
     ++v;
     if (g.kind != "circle") continue;
-    for (const int n : {5, 6}) {
+    for (const int n : {5, 6, 7, 8}) {
       const Points made = cases::made_polygon(g.points, n, kTurn);
       whole.right += cases::is_polygon_of(recognize(made), n) ? 1 : 0;
       ++whole.total;
@@ -136,10 +142,11 @@ TEST(GroupRecognizeDollar, PolygonsOfFiveAndSixCornersInPiecesAsWhole) {
       }
     }
   }
-  std::printf("polygons of 5-6 corners: whole %d / %d, in 2-3 pieces %d / %d\n", whole.right,
+  std::printf("polygons of 5-8 corners: whole %d / %d, in 2-3 pieces %d / %d\n", whole.right,
               whole.total, pieces.right, pieces.total);
-  ASSERT_EQ(pieces.total, test::dollar_count(240, 120));
-  // Two cuts of each polygon: as often right in pieces as whole, less 15%.
+  ASSERT_EQ(pieces.total, test::dollar_count(480, 240));
+  // Two cuts of each polygon: as often right in pieces as whole, less 15%. Measured 89% as often
+  // (331 / 480 against 185 / 240 whole), 90% generated.
   EXPECT_GE(pieces.right, 0.85 * 2 * whole.right);
 }
 

@@ -94,7 +94,9 @@
 //   - every side of a polygon (triangle, quadrilateral, rectangle, square, diamond, polygon) is at
 //     least epsilon long, and every corner is at least epsilon from the chord of its two neighbours
 //     (otherwise the polygon with one corner less says the same within tolerance: a corner drawn
-//     round, or a bump on a side); epsilon / 2 for a polygon of 5..8 corners drawn sharp (below);
+//     round, or a bump on a side); epsilon / 2 for a polygon of 5..8 corners drawn sharp (below),
+//     epsilon / 4 at one of its corners where the stroke turns by 0.6 of a regular polygon's
+//     turn or more (a lump of the hand flattens an octagon's corner, not the turn made there);
 //   - a regular polygon's corners must stand out from its circumcircle by at least epsilon / 2
 //     (R (1 - cos(pi / n)) >= epsilon / 2), or the circle says the same thing more simply, unless
 //     the stroke turns sharply at them;
@@ -116,10 +118,9 @@
 //   - a shape of k = 3..7 corners has every corner the hand drew: when the stroke turns sharply
 //     at k + 1 places in the plane, each by at least 0.3 of a regular (k + 1)-gon's turn and
 //     twice the stroke's median turn, it gives way to a polygon snap of more corners (a heptagon
-//     lies within epsilon of a hexagon, a hexagon of a quadrilateral; one stroke only: a group's
-//     path steps across its pen-up jumps, turns the hand did not make); a (regular) polygon is no
-//     snap when the stroke turns at k + 1 places by a regular k-gon's whole turn (a star's
-//     outline);
+//     lies within epsilon of a hexagon, a hexagon of a quadrilateral; a group's chain too); a
+//     (regular) polygon is no snap when the stroke turns at k + 1 places by a regular k-gon's
+//     whole turn (a star's outline);
 //   - an arc must turn one way only (its net turning is most of its total turning; a brace or
 //     an S turns both ways) and sweep less than a full turn.
 // Among the plausible certified candidates the lowest rank wins,

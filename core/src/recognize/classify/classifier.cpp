@@ -149,18 +149,27 @@ std::string diamond_implausibility(const Fit& f, double skew) {
 
 // A closed polygon's corners must be corners: sides of at least epsilon, corners off their
 // neighbours' chord by at least epsilon (epsilon / 2, as a polyline's, where the stroke turns
-// sharply there: an octagon's corners stand out less than epsilon at the default tolerance).
-std::string corner_implausibility(const Fit& f, const Certificate& c, bool sharp) {
-  const double off_chord = sharp ? 0.5 * c.epsilon : c.epsilon;
+// sharply there: an octagon's corners stand out less than epsilon at the default tolerance; down
+// to epsilon / 4 at a corner the stroke turns at by kMinFlatCornerTurn of a regular polygon's
+// turn: a hand's wobble flattens one corner of an octagon, not the turn it made there).
+std::string corner_implausibility(const PreparedStroke& s, const Fit& f, const Certificate& c,
+                                  bool sharp, double min_flat_corner_turn) {
+  const double off_chord = (sharp ? kSharpCornerOffChord : 1.0) * c.epsilon;
   const std::vector<PointD>& v = f.params.vertices;
+  std::optional<ArcLengthPath> path; // made on first use: most corners stand out enough
   for (std::size_t i = 0; i < v.size(); ++i) {
     if (distance(v[i], v[(i + 1) % v.size()]) < c.epsilon) {
       return "a side is shorter than epsilon (a corner drawn round, not a side)";
     }
     const PointD prev = v[(i + v.size() - 1) % v.size()];
-    if (segment_distance(v[i], prev, v[(i + 1) % v.size()]) < off_chord) {
-      return "a corner is too near its neighbours' chord (not a corner)";
+    const double off = segment_distance(v[i], prev, v[(i + 1) % v.size()]);
+    if (off >= off_chord) continue;
+    if (sharp && off >= kTurnedCornerOffChord * c.epsilon) {
+      if (!path) path.emplace(s.points);
+      const std::optional<double> turn = stroke_turn_at_corner(*path, v, i, kCornerWindow);
+      if (turn && *turn >= min_flat_corner_turn * regular_turn(v.size())) continue;
     }
+    return "a corner is too near its neighbours' chord (not a corner)";
   }
   return {};
 }
@@ -226,7 +235,8 @@ std::string implausibility(const PreparedStroke& s, const Fit& f, const Certific
   }
   if (std::string why = fitted_corner_implausibility(s, f, rules); !why.empty()) return why;
   const bool sharp = sharp_polygon(s, f, rules);
-  if (has_corners(f.shape)) return corner_implausibility(f, c, sharp);
+  if (has_corners(f.shape))
+    return corner_implausibility(s, f, c, sharp, rules.min_flat_corner_turn);
   if (f.shape == ShapeClass::kRegularPolygon && !sharp) {
     const double n = static_cast<double>(f.params.vertices.size());
     if (f.params.radius_x * (1.0 - std::cos(std::numbers::pi / n)) < 0.5 * c.epsilon) {

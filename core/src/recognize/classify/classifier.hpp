@@ -43,6 +43,7 @@ struct RuleThresholds {
   double min_model_corner_share = kMinModelCornerShare;
   double sharp_polygon_slack = kSharpPolygonSlack;
   double min_missed_corner_turn = kMinMissedCornerTurn;
+  double min_flat_corner_turn = kMinFlatCornerTurn;
 };
 
 // A fit with its certificate, plausibility and rank.

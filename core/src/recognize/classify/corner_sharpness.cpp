@@ -15,6 +15,15 @@ double least_corner_share(const std::vector<PointD>& stroke, const std::vector<P
   return measured_corner_share(stroke, corners, window).value_or(0.0);
 }
 
+std::optional<double> stroke_turn_at_corner(const ArcLengthPath& stroke,
+                                            const std::vector<PointD>& corners, std::size_t k,
+                                            double window) {
+  const std::size_t n = corners.size();
+  const PointD before = corners[(k + n - 1) % n], v = corners[k], after = corners[(k + 1) % n];
+  const double half_width = window * std::min(distance(before, v), distance(v, after));
+  return stroke.turn_at(stroke.nearest(v).at, half_width);
+}
+
 std::vector<double> corner_shares(const std::vector<PointD>& stroke,
                                   const std::vector<PointD>& corners, double window) {
   const ArcLengthPath path(stroke);
@@ -24,8 +33,7 @@ std::vector<double> corner_shares(const std::vector<PointD>& stroke,
     const PointD before = corners[(k + n - 1) % n], v = corners[k], after = corners[(k + 1) % n];
     const double theta = angle_between(v - before, after - v);
     if (theta <= 0.0) continue;
-    const double half_width = window * std::min(distance(before, v), distance(v, after));
-    const std::optional<double> turn = path.turn_at(path.nearest(v).at, half_width);
+    const std::optional<double> turn = stroke_turn_at_corner(path, corners, k, window);
     if (turn) shares.push_back(*turn / theta);
   }
   return shares;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "penshape/core/point_arithmetic.hpp"
+#include "recognize/fitting/path_turn.hpp"
 
 namespace penshape::recognize_detail {
 
@@ -15,6 +16,11 @@ namespace penshape::recognize_detail {
 // stroke's ends (where a closed stroke starts and stops) are not measured; 0 when none is.
 double least_corner_share(const std::vector<PointD>& stroke, const std::vector<PointD>& corners,
                           double window);
+// The stroke's turn (radians) at the closed polygon's corner k, between chords `window` times the
+// shorter side beside it either way from the stroke's point nearest it; nothing near an end.
+std::optional<double> stroke_turn_at_corner(const ArcLengthPath& stroke,
+                                            const std::vector<PointD>& corners, std::size_t k,
+                                            double window);
 // Each measured corner's share, in the corners' order (corners not measured are left out).
 std::vector<double> corner_shares(const std::vector<PointD>& stroke,
                                   const std::vector<PointD>& corners, double window);

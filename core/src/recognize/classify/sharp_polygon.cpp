@@ -73,8 +73,7 @@ bool misses_a_corner(const PreparedStroke& s, const Fit& f, const RuleThresholds
 
 void yield_to_more_corners(const PreparedStroke& s, std::vector<Scored>& scored,
                            const RuleThresholds& rules) {
-  if (s.pieces > 1) return; // a group's joins step across pen-up jumps: no turn of the hand
-  std::size_t most = 0;     // the most corners of a polygon snap
+  std::size_t most = 0; // the most corners of a polygon snap
   for (const Scored& sc : scored) {
     if (sc.snap &&
         (sc.fit.shape == ShapeClass::kPolygon || sc.fit.shape == ShapeClass::kRegularPolygon)) {
