@@ -198,7 +198,8 @@ bool switch_off(const std::string& rule) {
       {"round_arrow_pieces", &GroupRules::no_round_arrow_pieces},
       {"a_stroke_per_arrow_part", &GroupRules::a_stroke_per_arrow_part},
       {"arrow_when_refused", &GroupRules::arrow_when_refused},
-      {"outline_when_round_refused", &GroupRules::outline_when_round_refused}};
+      {"outline_when_round_refused", &GroupRules::outline_when_round_refused},
+      {"bowed_round_pieces", &GroupRules::bowed_round_pieces}};
   if (rule == "seed_from_strokes") {
     penshape::recognize_detail::arrow_rules().seed_from_strokes = false;
   } else if (rule == "gapped_shafts") {
@@ -291,6 +292,8 @@ int main(int argc, char** argv) {
 
   Rate diamonds_all; // kept apart from polygons_all: made shapes, not drawn ones
   Rate made_polygons_cut;
+  Rate circles_cut_all;
+  std::map<std::string, Rate> circles_cut; // by strokes
   Rate bent_arrows_all;
   std::map<std::string, Rate> bent_arrows;   // by kind, whole and cut
   std::map<std::string, Rate> made_polygons; // whole ("in 1") and cut, by corners and pieces
@@ -405,6 +408,22 @@ int main(int argc, char** argv) {
     if (g.kind == "rectangle" || g.kind == "triangle") {
       group_cuts(g, g.kind, kTargets.at(g.kind));
     }
+    // A circle cut anywhere into 2-4 strokes (cut_round): one circle or ellipse.
+    if (g.kind == "circle") {
+      for (std::size_t pieces = 2; pieces <= 4; ++pieces) {
+        const std::vector<Points> cut = penshape::cases::cut_round(g.points, pieces, v);
+        if (cut.empty()) continue;
+        const bool ok = one_group_of(penshape::recognize_strokes(inputs_of(cut)), cut.size(),
+                                     kTargets.at("circle"));
+        circles_cut[std::to_string(cut.size())].add(ok);
+        circles_cut_all.add(ok);
+        if (!ok && !svg_dir.empty()) {
+          const std::string stem =
+              subject_of(g.file) + "_" + std::to_string(v) + "_circle_in" + std::to_string(pieces);
+          draw_miss(svg_dir / (stem + ".svg"), cut, penshape::recognize_union(inputs_of(cut)));
+        }
+      }
+    }
     // A circle made a polygon of 5-8 corners (made_shapes.hpp), whole and cut at its corners.
     if (g.kind == "circle") {
       for (const int n : {5, 6, 7, 8}) {
@@ -486,6 +505,8 @@ int main(int argc, char** argv) {
   for (const auto& [k, r] : polygons) {
     if (k.rfind("diamond", 0) == 0) row(("  " + k).c_str(), r, "");
   }
+  row("circles in 2-4 strokes (cut anywhere)", circles_cut_all, ">= 95%");
+  for (const auto& [k, r] : circles_cut) row(("  circle in " + k).c_str(), r, "");
   // No target: made polygons keep a circle's lumps (recognize_bench --classes); the pieces are
   // measured against the same polygons whole ("in 1").
   row("polygons of 5-8 in 2-3 strokes (made from circles)", made_polygons_cut, "(context)");

@@ -209,6 +209,19 @@ inline std::vector<Points> cut_arrow(const Gesture& g, std::size_t v) {
   return cut_arrow_at(g.points, arrow_tip(g.points), v);
 }
 
+// A round stroke (a circle) cut into `pieces` at evenly spaced samples, the first cut a share of
+// a piece that v picks (a circle is cut anywhere: it has no corners), none near its ends.
+inline std::vector<Points> cut_round(const Points& p, std::size_t pieces, std::size_t v) {
+  if (pieces < 2 || p.size() < 8 * pieces) return {};
+  const double piece = static_cast<double>(p.size()) / static_cast<double>(pieces);
+  const double offset = (0.3 + 0.4 * static_cast<double>(v % 5) / 4.0) * piece;
+  std::vector<std::size_t> cuts;
+  for (std::size_t j = 0; j + 1 < pieces; ++j) {
+    cuts.push_back(static_cast<std::size_t>(offset + static_cast<double>(j) * piece));
+  }
+  return cut(p, cuts, variation(v), v);
+}
+
 // Two strokes one after the other: the second moved so that its bounding box starts `gap`
 // pixels to the right of the first's, drawn `pause` seconds after it.
 inline std::vector<Points> side_by_side(const Points& a, const Points& b, double gap,

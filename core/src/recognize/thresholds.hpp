@@ -205,6 +205,14 @@ inline constexpr double kAlreadyExact = 1e-9;
 
 // A group has at most this many strokes (a drawn shape has few sides; bounds the unions tried).
 inline constexpr std::size_t kMaxGroupStrokes = 8;
+// A round shape's piece that is no arc alone (a polyline, freeform: a hand's third of a circle
+// wobbles into corners, hooks where it starts) is one when an arc of it fits the piece, standing
+// out from its chord (kArcMinSagitta) and centred within this share of the shape's radius of the
+// shape's centre: inside the shape, as a circle's pieces bend. group_recognize_bench, $1 circles
+// cut anywhere into 2-4 strokes, 0.5 / 0.75 / 1 / 1.5: 31.5 / 74.4 / 84.3 / 86.5% one circle
+// (9.8% with no piece bowed), MMG D's drawn as an ellipse 5 / 5 / 7 / 6 of 149 (8 before: their
+// bowls, read as polylines, had kept them apart); set at the shape's own radius, not tuned.
+inline constexpr double kMaxBowedCentreOff = 1.0;
 // Recent groups a new stroke is tried with: at most 2^6 - 1 unions.
 inline constexpr std::size_t kMaxRecentGroups = 6;
 // Touch tests run on paths thinned within this fraction of their size (added to the join

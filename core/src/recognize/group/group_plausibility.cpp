@@ -25,8 +25,6 @@ bool is_round(ShapeClass c) {
 
 bool closed_round(ShapeClass c) { return c == ShapeClass::kCircle || c == ShapeClass::kEllipse; }
 
-bool straight(ShapeClass c) { return c == ShapeClass::kSegment || c == ShapeClass::kPolyline; }
-
 bool straight_sided_closed(ShapeClass c) { return convex_polygon(c) || c == ShapeClass::kPolygon; }
 
 // Shapes whose corners follow a model (right angles, equal sides) rather than the drawn turns: a
@@ -40,12 +38,28 @@ bool model_corners(ShapeClass c) {
 constexpr double kMinReachSine = 0.25; // a model corner's reach: at most 4 epsilon
 constexpr int kReachSteps = 8;         // turns looked at on each side of the nearest point
 
+// Whether a piece that is no arc alone lies in the band of an arc that stands out from its chord
+// (kArcMinSagitta) and bends round the round `group`'s inside (its centre within
+// kMaxBowedCentreOff of the group's radius from the group's centre): a bowed stroke, a hand-drawn
+// third of a circle wobbling into corners (or hooked where the hand started or stopped) as often
+// as not. A straight stroke is no such arc's: a D's stem, a null sign's bar.
+bool bowed(const Recognition& own, const Recognition& group) {
+  if (!group_rules().bowed_round_pieces) return false;
+  const double radius = std::max(group.params.radius_x, group.params.radius_y);
+  return std::any_of(own.alternatives.begin(), own.alternatives.end(), [&](const Candidate& c) {
+    const double sagitta = c.params.radius_x * (1.0 - std::cos(0.5 * c.params.sweep_angle));
+    return c.shape == ShapeClass::kArc && c.certificate.certified &&
+           sagitta >= kArcMinSagitta * c.certificate.epsilon &&
+           distance(c.params.center, group.params.center) <= kMaxBowedCentreOff * radius;
+  });
+}
+
 // Why a piece recognized alone as `own` is no piece of a `group` (empty when it may be one).
-std::string kind_mismatch(ShapeClass group, ShapeClass own) {
-  if (is_round(group) && straight(own))
-    return "a round shape has a straight stroke among its pieces";
+std::string kind_mismatch(const Recognition& group, const Recognition& own) {
+  if (is_round(group.shape) && !is_round(own.shape) && !bowed(own, group))
+    return "a round shape has a piece that is no arc of it (a straight stroke, a D's stem)";
   // Not an arc: a side and a rounded corner drawn alone often read as one.
-  if (!is_round(group) && closed_round(own)) {
+  if (!is_round(group.shape) && closed_round(own.shape)) {
     return "a straight-sided shape has a circle or ellipse among its pieces";
   }
   return {};
@@ -129,10 +143,10 @@ bool pieces_cross(const std::vector<std::vector<PointD>>& paths, double stroke_e
 }
 
 // Why a stroke recognized alone is no piece of a `shape` (kind_mismatch; empty when none).
-std::string mismatched_piece(ShapeClass shape, std::span<const StrokeInput> strokes,
+std::string mismatched_piece(const Recognition& shape, std::span<const StrokeInput> strokes,
                              const RecognizerConfig& config) {
   for (const StrokeInput& s : strokes) {
-    std::string why = kind_mismatch(shape, recognize(s.samples, config).shape);
+    std::string why = kind_mismatch(shape, recognize(s.samples, config));
     if (!why.empty()) return why;
   }
   return {};
@@ -251,7 +265,7 @@ std::string group_implausibility(const Recognition& r, std::span<const StrokeInp
     if (group_rules().a_stroke_per_arrow_part && strokes.size() > parts)
       return "more strokes than the arrow has parts (a shaft and its barbs): a figure, no arrow";
     // Straight pieces or an arc: a loop alone (a note's head, a null sign's ring) is no part.
-    return group_rules().no_round_arrow_pieces ? mismatched_piece(r.shape, strokes, config) : "";
+    return group_rules().no_round_arrow_pieces ? mismatched_piece(r, strokes, config) : "";
   }
   for (const double jump : chain_jumps(paths)) {
     if (jump > join) {
@@ -262,7 +276,7 @@ std::string group_implausibility(const Recognition& r, std::span<const StrokeInp
   if (std::string why = piece_rules(r, paths, stroke_epsilon, join); !why.empty()) return why;
   // Each piece is a piece of the shape's own kind: a D or a P (a bar and a bowl) is no ellipse,
   // a circle crossed by a bar no polygon, whatever band covers the union.
-  return mismatched_piece(r.shape, strokes, config);
+  return mismatched_piece(r, strokes, config);
 }
 
 } // namespace penshape::recognize_detail

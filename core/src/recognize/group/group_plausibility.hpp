@@ -14,8 +14,9 @@ namespace penshape::recognize_detail {
 // end, every pen-up jump of the chain within 2 r + the epsilon of the largest stroke alone.
 // Strokes that meet at a junction (a T, an H, the bar of an A) or a row of dashes are no
 // polyline, polygon or segment even when the union's band covers them. And no stroke alone is
-// of the other kind: no circle or ellipse in a straight-sided shape, no segment or polyline in
-// a round one (circle, ellipse, arc). An arc alone may be a side and a rounded corner.
+// of the other kind: no circle or ellipse in a straight-sided shape, and in a round one (circle,
+// ellipse, arc) every piece an arc (alone, or bowed: an arc of the shape fits it, though the
+// piece alone reads as a polyline or freeform). An arc alone may be a side and a rounded corner.
 // Besides (GroupRules): an open polyline is never a group; two strokes that start at one point
 // and leave it each its own way are limbs, no segment; no stroke of a straight-sided closed
 // shape is a curve (the bowl of a D or a P); no two strokes of a closed shape cross each other
@@ -44,6 +45,9 @@ struct GroupRules {
   bool outline_when_round_refused = true;
   bool a_stroke_per_arrow_part = true; // an arrow has at most a stroke per shaft and barb
   bool no_round_arrow_pieces = true;   // no stroke of an arrow is a circle or ellipse alone
+  // A round shape's piece that is no arc alone may be one an arc of it fits (bowed,
+  // kMaxBowedCentreOff).
+  bool bowed_round_pieces = true;
   // Two strokes this many epsilons farther apart than touching are still tried together, and
   // kept only as an arrow (a shaft stroke that stops short of its head; apart_join; 0: never).
   double apart_join = kApartJoin;
