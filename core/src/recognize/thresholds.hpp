@@ -210,8 +210,9 @@ inline constexpr std::size_t kMaxGroupStrokes = 8;
 // out from its chord (kArcMinSagitta) and centred within this share of the shape's radius of the
 // shape's centre: inside the shape, as a circle's pieces bend. group_recognize_bench, $1 circles
 // cut anywhere into 2-4 strokes, 0.5 / 0.75 / 1 / 1.5: 31.5 / 74.4 / 84.3 / 86.5% one circle
-// (9.8% with no piece bowed), MMG D's drawn as an ellipse 5 / 5 / 7 / 6 of 149 (8 before: their
-// bowls, read as polylines, had kept them apart); set at the shape's own radius, not tuned.
+// (9.8% with no piece bowed), MMG D's drawn as a round shape 5 / 5 / 7 / 6 of 149 (8 before:
+// their bowls, read as polylines, had kept some apart); measured before pieces smaller than
+// epsilon were let be (87.0% at 1). Set at the shape's own radius, not tuned.
 inline constexpr double kMaxBowedCentreOff = 1.0;
 // Recent groups a new stroke is tried with: at most 2^6 - 1 unions.
 inline constexpr std::size_t kMaxRecentGroups = 6;

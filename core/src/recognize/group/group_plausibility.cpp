@@ -146,6 +146,9 @@ bool pieces_cross(const std::vector<std::vector<PointD>>& paths, double stroke_e
 std::string mismatched_piece(const Recognition& shape, std::span<const StrokeInput> strokes,
                              const RecognizerConfig& config) {
   for (const StrokeInput& s : strokes) {
+    // A piece no larger than the shape's epsilon (a tick closing a circle's gap) is too small to
+    // be told an arc or a side of it.
+    if (choose_tolerance(s.samples, config).size <= shape.epsilon) continue;
     std::string why = kind_mismatch(shape, recognize(s.samples, config));
     if (!why.empty()) return why;
   }

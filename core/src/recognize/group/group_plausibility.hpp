@@ -16,7 +16,8 @@ namespace penshape::recognize_detail {
 // polyline, polygon or segment even when the union's band covers them. And no stroke alone is
 // of the other kind: no circle or ellipse in a straight-sided shape, and in a round one (circle,
 // ellipse, arc) every piece an arc (alone, or bowed: an arc of the shape fits it, though the
-// piece alone reads as a polyline or freeform). An arc alone may be a side and a rounded corner.
+// piece alone reads as a polyline or freeform); a piece no larger than epsilon is any shape's. An
+// arc alone may be a side and a rounded corner.
 // Besides (GroupRules): an open polyline is never a group; two strokes that start at one point
 // and leave it each its own way are limbs, no segment; no stroke of a straight-sided closed
 // shape is a curve (the bowl of a D or a P); no two strokes of a closed shape cross each other
