@@ -5,6 +5,7 @@
 //                             reversed/reordered pieces, pauses): one group, right class;
 //   diamonds in 2-4 strokes   the $1 rectangles made diamonds (made_shapes.hpp), cut the same
 //                             way: one group, a diamond (no corpus holds drawn ones);
+//   circles in 2-4 strokes   the $1 circles cut anywhere (cut_round): one circle or ellipse;
 //   polygons of 5-8 in pieces the $1 circles made polygons (made_shapes.hpp) cut at 1-2 corners:
 //                             one group, a polygon; beside the same polygons whole;
 //   arrows                    $1 arrows whole (1 stroke) and cut at the tip (2 strokes);
@@ -26,11 +27,12 @@
 //           (group_loso.hpp; each swept over a few values, about 30 s per value).
 //   --loso-only KNOB: the same for the thresholds whose name starts with KNOB.
 //   --without RULE, --apart-barb X, --shaft-span X, --continuation-angle DEG, --gap-barb X,
-//   --gap-aim DEG: a rule off (open_polylines, curved_sides, crossing_pieces, limbs_as_a_line,
-//   continued_tips, arrow_when_refused, outline_when_round_refused, a_stroke_per_arrow_part,
-//   round_arrow_pieces, seed_from_strokes, gapped_shafts, heads_at_shaft_end), a head drawn apart's
-//   barb limit, a shaft stroke's least span, the cone of a stroke continuing an arrow's tip, a
-//   shaft's gap to its tip in barbs and its aim (to measure).
+//   --gap-aim DEG: a rule off (open_polylines, curved_sides, crossing_pieces,
+//   limbs_as_a_line, continued_tips, arrow_when_refused, outline_when_round_refused,
+//   a_stroke_per_arrow_part, round_arrow_pieces, bowed_round_pieces, seed_from_strokes,
+//   gapped_shafts, heads_at_shaft_end), a head drawn apart's barb limit, a shaft stroke's least
+//   span, the cone of a stroke continuing an arrow's tip, a shaft's gap to its tip in barbs and
+//   its aim (to measure).
 //   --gestures-only: only the figures on other people's drawings.
 //   --only CLASS: with --gestures-only, only the gestures of that class ("D", "arrowhead", ...).
 //   --svg-dir: every arrow missed is drawn to DIR (strokes, and the best arrow candidate with why
