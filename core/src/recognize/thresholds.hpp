@@ -84,7 +84,8 @@ inline constexpr double kSharpCornerOffChord = 0.5;
 // ... or at least this many where the stroke turns at it by kMinFlatCornerTurn of the regular
 // polygon's turn: a lump of the hand flattens one corner of an octagon (its corners stand out
 // 0.9 epsilon at the default tolerance) but not the turn it made there. Set at half the margin,
-// not tuned (0.15 / 0.25 / 0.33: $1 made octagons 72.2 / 72.2 / 67.2%, no real class changes).
+// not tuned (0.15 / 0.25 / 0.33 at kMinFlatCornerTurn 0.5: $1 made octagons 72.2 / 72.2 /
+// 67.2%, no real class changes).
 inline constexpr double kTurnedCornerOffChord = 0.25;
 // recognize_bench --rule-folds: 99 of 102 folds pick 0.6 (held out 91.4% / 0.4%, rule off 88.9% /
 // 0.4%): made octagons $1 45.6 -> 70.6%, gestures 64.6 -> 86.4%, heptagons 70.6 -> 72.2% /

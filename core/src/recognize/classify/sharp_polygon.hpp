@@ -33,7 +33,7 @@ std::string extra_corner_implausibility(const PreparedStroke& s, const Fit& f);
 // regular (k + 1)-gon's turn (sharp_turn_corners): the hand drew a corner it leaves out. A
 // group's chain too, though it steps at its joins where pieces meet off each other: polygons of
 // 5..8 made from circles and cut at 1..2 corners, 59.0 -> 70.3% named with their corners
-// (group_recognize_bench); real rectangles cut in mid-side, 1 of 360 more read as a pentagon.
+// (group_recognize_bench; real rectangles, triangles and diamonds in pieces unchanged).
 void yield_to_more_corners(const PreparedStroke& s, std::vector<Scored>& scored,
                            const RuleThresholds& rules);
 
