@@ -5,7 +5,8 @@
 //                             reversed/reordered pieces, pauses): one group, right class;
 //   diamonds in 2-4 strokes   the $1 rectangles made diamonds (made_shapes.hpp), cut the same
 //                             way: one group, a diamond (no corpus holds drawn ones);
-//   circles in 2-4 strokes   the $1 circles cut anywhere (cut_round): one circle or ellipse;
+//   circles in 2-4 strokes   the $1 circles cut anywhere (cut_round): one circle or ellipse (and
+//                             of the circles that are one whole);
 //   polygons of 5-8 in pieces the $1 circles made polygons (made_shapes.hpp) cut at 1-2 corners:
 //                             one group, a polygon; beside the same polygons whole;
 //   arrows                    $1 arrows whole (1 stroke) and cut at the tip (2 strokes);
@@ -29,10 +30,10 @@
 //   --without RULE, --apart-barb X, --shaft-span X, --continuation-angle DEG, --gap-barb X,
 //   --gap-aim DEG: a rule off (open_polylines, curved_sides, crossing_pieces,
 //   limbs_as_a_line, continued_tips, arrow_when_refused, outline_when_round_refused,
-//   a_stroke_per_arrow_part, round_arrow_pieces, bowed_round_pieces, seed_from_strokes,
-//   gapped_shafts, heads_at_shaft_end), a head drawn apart's barb limit, a shaft stroke's least
-//   span, the cone of a stroke continuing an arrow's tip, a shaft's gap to its tip in barbs and
-//   its aim (to measure).
+//   a_stroke_per_arrow_part, round_arrow_pieces, bowed_round_pieces, flat_round_pieces,
+//   bent_round_pieces, seed_from_strokes, gapped_shafts, heads_at_shaft_end), a head drawn apart's
+//   barb limit, a shaft stroke's least span, the cone of a stroke continuing an arrow's tip, a
+//   shaft's gap to its tip in barbs and its aim (to measure).
 //   --gestures-only: only the figures on other people's drawings.
 //   --only CLASS: with --gestures-only, only the gestures of that class ("D", "arrowhead", ...).
 //   --svg-dir: every arrow missed is drawn to DIR (strokes, and the best arrow candidate with why
@@ -201,7 +202,9 @@ bool switch_off(const std::string& rule) {
       {"a_stroke_per_arrow_part", &GroupRules::a_stroke_per_arrow_part},
       {"arrow_when_refused", &GroupRules::arrow_when_refused},
       {"outline_when_round_refused", &GroupRules::outline_when_round_refused},
-      {"bowed_round_pieces", &GroupRules::bowed_round_pieces}};
+      {"bowed_round_pieces", &GroupRules::bowed_round_pieces},
+      {"flat_round_pieces", &GroupRules::flat_round_pieces},
+      {"bent_round_pieces", &GroupRules::bent_round_pieces}};
   if (rule == "seed_from_strokes") {
     penshape::recognize_detail::arrow_rules().seed_from_strokes = false;
   } else if (rule == "gapped_shafts") {
@@ -294,7 +297,7 @@ int main(int argc, char** argv) {
 
   Rate diamonds_all; // kept apart from polygons_all: made shapes, not drawn ones
   Rate made_polygons_cut;
-  Rate circles_cut_all;
+  Rate circles_cut_all, circles_cut_whole_round;
   std::map<std::string, Rate> circles_cut; // by strokes
   Rate bent_arrows_all;
   std::map<std::string, Rate> bent_arrows;   // by kind, whole and cut
@@ -412,6 +415,8 @@ int main(int argc, char** argv) {
     }
     // A circle cut anywhere into 2-4 strokes (cut_round): one circle or ellipse.
     if (g.kind == "circle") {
+      const bool whole_round =
+          kTargets.at("circle").count(penshape::to_string(penshape::recognize(g.points).shape)) > 0;
       for (std::size_t pieces = 2; pieces <= 4; ++pieces) {
         const std::vector<Points> cut = penshape::cases::cut_round(g.points, pieces, v);
         if (cut.empty()) continue;
@@ -419,6 +424,7 @@ int main(int argc, char** argv) {
                                      kTargets.at("circle"));
         circles_cut[std::to_string(cut.size())].add(ok);
         circles_cut_all.add(ok);
+        if (whole_round) circles_cut_whole_round.add(ok);
         if (!ok && !svg_dir.empty()) {
           const std::string stem =
               subject_of(g.file) + "_" + std::to_string(v) + "_circle_in" + std::to_string(pieces);
@@ -509,6 +515,8 @@ int main(int argc, char** argv) {
   }
   row("circles in 2-4 strokes (cut anywhere)", circles_cut_all, ">= 95%");
   for (const auto& [k, r] : circles_cut) row(("  circle in " + k).c_str(), r, "");
+  // Beside it, the circles that are one circle or ellipse whole (s04 draws them with a gap).
+  row("  of those round whole", circles_cut_whole_round, "");
   // No target: made polygons keep a circle's lumps (recognize_bench --classes); the pieces are
   // measured against the same polygons whole ("in 1").
   row("polygons of 5-8 in 2-3 strokes (made from circles)", made_polygons_cut, "(context)");

@@ -215,6 +215,15 @@ inline constexpr std::size_t kMaxGroupStrokes = 8;
 // their bowls, read as polylines, had kept some apart); measured before pieces smaller than
 // epsilon were let be (87.0% at 1). Set at the shape's own radius, not tuned.
 inline constexpr double kMaxBowedCentreOff = 1.0;
+// A round shape's straight piece over which the shape is as straight (GroupRules::
+// flat_round_pieces) goes on into the pieces it meets turned by at most this (radians; each way
+// over epsilon of its path): a circle's pieces go on as the curve does, a D's stem meets its bowl
+// at corners. Half a right angle, not tuned.
+inline constexpr double kMaxSmoothJoinTurn = std::numbers::pi / 4;
+// A circle's or ellipse's piece that stands out from its chord, on the side the shape's own path
+// over it does, by at least this share of that path's sagitta is a stretch of it
+// (GroupRules::bent_round_pieces). Half, not tuned.
+inline constexpr double kMinBendShare = 0.5;
 // Recent groups a new stroke is tried with: at most 2^6 - 1 unions.
 inline constexpr std::size_t kMaxRecentGroups = 6;
 // Touch tests run on paths thinned within this fraction of their size (added to the join

@@ -54,6 +54,21 @@ TEST(BacktrackShare, AStemDrawnDownAndUpRunsBackOverIt) {
   EXPECT_NEAR(backtrack_share(walk(retraced, 2), kSquare), 0.25, 0.02);
 }
 
+TEST(BacktrackShare, StrokesOfAClosedShapeEachRunTheirOwnWay) {
+  // The square's left and right halves, both drawn from its top side down to its bottom one: each
+  // stroke runs one way, though no path joins them one way round.
+  const std::vector<PointD> left = walk({{50, 100}, {0, 100}, {0, 0}, {50, 0}}, 2);
+  const std::vector<PointD> right = walk({{50, 100}, {100, 100}, {100, 0}, {50, 0}}, 2);
+  EXPECT_LT(backtrack_share({left, right}, kSquare), 0.01);
+  // Taken as one path in drawing order, one of them runs back over half the square.
+  std::vector<PointD> chained = left;
+  chained.insert(chained.end(), right.begin(), right.end());
+  EXPECT_GT(backtrack_share(chained, kSquare), 0.4);
+  // A stroke that runs back within itself still counts: 100 of 400.
+  const std::vector<PointD> stem = walk({{0, 0}, {0, 100}, {0, 0}}, 2);
+  EXPECT_NEAR(backtrack_share({left, stem}, kSquare), 0.25, 0.02);
+}
+
 TEST(ClassifyRules, ALetterPDrawnInOneStrokeIsNoQuadrilateral) {
   // Down the stem and up again, then a bowl reaching near the stem's foot: a P whose stem is
   // drawn twice, inside a quadrilateral's band at the default tolerance.

@@ -4,9 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "group_test_support.hpp"
 #include "penshape/core/group_recognize.hpp"
+#include "recognize/group/group_plausibility.hpp"
 
 namespace penshape {
 namespace {
@@ -52,6 +54,35 @@ TEST(GroupPlausibility, AHeadDrawnApartMayBeAsLongAsTheShaft) {
   const auto out = recognize_strokes(s);
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(out[0].recognition.shape, ShapeClass::kArrow);
+}
+
+// A circle drawn round 300 degrees, then closed by a straight stroke across its 60-degree gap:
+// the circle's own path over that stroke stands out from it by 8 units, well within epsilon / 2,
+// and the arc goes on into it without a corner (flat_round_pieces). The straight stroke alone is
+// a segment, no arc; with the rule off it keeps the union from being one circle.
+TEST(GroupPlausibility, ACircleClosedByAShortStraightStrokeIsOneCircle) {
+  constexpr double kRadius = 60.0;
+  const auto at = [](double degrees) {
+    const double a = degrees * std::numbers::pi / 180.0;
+    return PointD{kRadius * std::cos(a), kRadius * std::sin(a)};
+  };
+  test::Path arc;
+  for (int d = 150; d >= -150; d -= 5) arc.push_back(at(d));
+  std::vector<StrokeInput> s{stroke_along(arc, 0.0)};
+  s.push_back(stroke_along({at(-150), at(150)}, next_start(s)));
+  const auto out = recognize_strokes(s);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].strokes.size(), 2u);
+  EXPECT_EQ(out[0].recognition.shape, ShapeClass::kCircle) << to_string(out[0].recognition.shape);
+  const Recognition& r = out[0].recognition;
+  EXPECT_LE(test::union_hausdorff(test::paths_of(s, out[0].strokes), test::clean_paths(r),
+                                  r.epsilon / 50),
+            r.epsilon);
+  recognize_detail::group_rules().flat_round_pieces = false;
+  EXPECT_TRUE(recognize_strokes(s).size() != 1 ||
+              recognize_strokes(s)[0].recognition.shape != ShapeClass::kCircle)
+      << "the case no longer needs the rule";
+  recognize_detail::group_rules() = recognize_detail::GroupRules{};
 }
 
 } // namespace

@@ -210,7 +210,12 @@ std::string fitted_corner_implausibility(const PreparedStroke& s, const Fit& f,
 std::string tracing_implausibility(const PreparedStroke& s, const Fit& f, double max_backtrack) {
   const std::vector<PointD> path =
       f.clean.kind == CleanShape::Kind::kPolyline ? f.clean.path : f.clean.sample(s.size / 64.0);
-  if (backtrack_share(s.fit_points, path) > max_backtrack) {
+  // An open shape's strokes chain end to end one way (a line drawn twice runs back); a closed
+  // one's may overlap where they close it, and each is then taken as drawn.
+  const bool as_drawn = !s.piece_fit_points.empty() && closed_path(path);
+  const double back =
+      as_drawn ? backtrack_share(s.piece_fit_points, path) : backtrack_share(s.fit_points, path);
+  if (back > max_backtrack) {
     return "the stroke runs back along the shape (a stem drawn twice: a letter or a note)";
   }
   return {};

@@ -4,41 +4,20 @@
 #include <cmath>
 
 #include "recognize/fitting/geometry.hpp"
+#include "recognize/fitting/path_turn.hpp"
 
 namespace penshape::recognize_detail {
 namespace {
 
-// Arc length along `path` (with cumulative lengths `at`) of the point of `path` nearest to p.
-double nearest_arc_length(PointD p, const std::vector<PointD>& path,
-                          const std::vector<double>& at) {
-  double best = INFINITY, out = 0;
-  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
-    const double d = segment_distance2(p, path[i], path[i + 1]);
-    if (d >= best) continue;
-    best = d;
-    const PointD e = path[i + 1] - path[i];
-    const double len2 = dot(e, e);
-    const double u = len2 > 0 ? std::clamp(dot(p - path[i], e) / len2, 0.0, 1.0) : 0.0;
-    out = at[i] + u * (at[i + 1] - at[i]);
-  }
-  return out;
-}
-
-} // namespace
-
-double backtrack_share(const std::vector<PointD>& stroke, const std::vector<PointD>& path) {
-  if (path.size() < 2 || stroke.size() < 2) return 0.0;
-  std::vector<double> at{0.0};
-  for (std::size_t i = 0; i + 1 < path.size(); ++i)
-    at.push_back(at.back() + distance(path[i], path[i + 1]));
-  const double total = at.back();
-  if (!(total > 0)) return 0.0;
-  // A sampled full curve ends within rounding of its start: closed too.
-  const bool closed = distance(path.front(), path.back()) <= 1e-9 * total;
+// The length of `path` (closed: steps wrap round) over which `stroke` runs against its net
+// direction along it.
+double back_length(const std::vector<PointD>& stroke, const ArcLengthPath& path, bool closed) {
+  if (stroke.size() < 2) return 0.0;
+  const double total = path.length();
   std::vector<double> steps;
-  double previous = nearest_arc_length(stroke.front(), path, at), net = 0;
+  double previous = path.nearest(stroke.front()).at, net = 0;
   for (std::size_t i = 1; i < stroke.size(); ++i) {
-    const double t = nearest_arc_length(stroke[i], path, at);
+    const double t = path.nearest(stroke[i]).at;
     double step = t - previous;
     if (closed) step -= total * std::round(step / total); // the shorter way round
     steps.push_back(step);
@@ -47,7 +26,30 @@ double backtrack_share(const std::vector<PointD>& stroke, const std::vector<Poin
   }
   double back = 0;
   for (const double step : steps) back += net >= 0 ? std::max(0.0, -step) : std::max(0.0, step);
+  return back;
+}
+
+} // namespace
+
+double backtrack_share(const std::vector<PointD>& stroke, const std::vector<PointD>& path) {
+  return backtrack_share(std::vector<std::vector<PointD>>{stroke}, path);
+}
+
+double backtrack_share(const std::vector<std::vector<PointD>>& strokes,
+                       const std::vector<PointD>& path) {
+  if (path.size() < 2) return 0.0;
+  const ArcLengthPath along(path);
+  const double total = along.length();
+  if (!(total > 0)) return 0.0;
+  const bool closed = closed_path(path);
+  double back = 0;
+  for (const std::vector<PointD>& stroke : strokes) back += back_length(stroke, along, closed);
   return back / total;
+}
+
+bool closed_path(const std::vector<PointD>& path) {
+  // A sampled full curve ends within rounding of its start: closed too.
+  return path.size() >= 2 && distance(path.front(), path.back()) <= 1e-9 * path_length(path);
 }
 
 } // namespace penshape::recognize_detail

@@ -14,4 +14,14 @@ namespace penshape::recognize_detail {
 // traced one way; about 2 x stem / perimeter for a stem drawn down and up in a box's band.
 double backtrack_share(const std::vector<PointD>& stroke, const std::vector<PointD>& path);
 
+// The same for a closed shape drawn in several strokes, each taken in its own drawing order against
+// its own net direction: where a closed shape's strokes overlap as they close it, the shortest
+// chain of them may run one backwards (a circle drawn round once and a quarter, cut in four).
+// The sum of their shares.
+double backtrack_share(const std::vector<std::vector<PointD>>& strokes,
+                       const std::vector<PointD>& path);
+
+// Whether `path` ends where it starts (within rounding of its length: a sampled full curve).
+bool closed_path(const std::vector<PointD>& path);
+
 } // namespace penshape::recognize_detail

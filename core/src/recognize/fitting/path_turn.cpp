@@ -23,15 +23,17 @@ PointD ArcLengthPath::point_at(double at) const {
 }
 
 ArcLengthPath::Nearest ArcLengthPath::nearest(PointD v) const {
-  Nearest out{0.0, INFINITY};
+  if (path_.size() == 1) return {0.0, distance(v, path_[0])};
+  Nearest out{0.0, INFINITY}; // distance squared until the end
   for (std::size_t i = 0; i + 1 < path_.size(); ++i) {
     const PointD d = path_[i + 1] - path_[i];
     const double len2 = dot(d, d);
     const double w = len2 > 0.0 ? std::clamp(dot(v - path_[i], d) / len2, 0.0, 1.0) : 0.0;
-    const double dist = distance(v, path_[i] + w * d);
-    if (dist < out.distance) out = {lengths_[i] + w * (lengths_[i + 1] - lengths_[i]), dist};
+    const PointD off = v - (path_[i] + w * d);
+    const double dist2 = dot(off, off);
+    if (dist2 < out.distance) out = {lengths_[i] + w * (lengths_[i + 1] - lengths_[i]), dist2};
   }
-  if (path_.size() == 1) out = {0.0, distance(v, path_[0])};
+  out.distance = std::sqrt(out.distance);
   return out;
 }
 

@@ -24,6 +24,9 @@ struct PreparedStroke {
   // How many strokes were joined into `points` (a group's chain, stroke_chain.hpp): at a join the
   // path steps across a pen-up jump, a turn the hand did not make.
   std::size_t pieces = 1;
+  // A group's strokes each as drawn (their own directions, which the chain may reverse),
+  // resampled as fit_points are: how each stroke traces a shape (empty for one stroke).
+  std::vector<std::vector<PointD>> piece_fit_points;
   // The turns along `points`, sharpest first (turn_corners.cpp, which reads several corner counts
   // of one stroke from them), made on first use: most strokes never need them.
   struct PathTurn {

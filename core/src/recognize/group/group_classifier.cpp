@@ -198,6 +198,20 @@ UnionRecognition dot_union(std::span<const StrokeInput> strokes, const Recognize
   return out;
 }
 
+// Each stroke resampled as a chain's fit points are (kFitPoints over the drawn length), in its own
+// drawing order: the chain may run a stroke backwards to shorten its jumps.
+std::vector<std::vector<PointD>> pieces_as_drawn(const std::vector<std::vector<PointD>>& paths,
+                                                 double drawn_length) {
+  std::vector<std::vector<PointD>> out;
+  out.reserve(paths.size());
+  for (const std::vector<PointD>& p : paths) {
+    const double share = drawn_length > 0 ? path_length(p) / drawn_length : 0.0;
+    const auto count = static_cast<std::size_t>(std::lround(share * kFitPoints));
+    out.push_back(resample(p, std::max<std::size_t>(2, count)));
+  }
+  return out;
+}
+
 } // namespace
 
 std::vector<PointD> distinct_path(const std::vector<StrokePoint>& samples) {
@@ -272,6 +286,7 @@ UnionRecognition recognize_union_detail(std::span<const StrokeInput> strokes,
   // The strokes read as one path (the single-stroke fitters see the union through it).
   PreparedStroke chain = prepare_points(chain_pieces(paths), tau);
   chain.pieces = paths.size();
+  chain.piece_fit_points = pieces_as_drawn(paths, drawn_length);
   std::vector<Scored> scored = score_chain(out.strokes, chain, config, tol.epsilon, tol.pen_radius);
   // The best snap (score_chain may leave refused candidates before it).
   const auto best =

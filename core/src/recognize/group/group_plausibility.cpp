@@ -9,6 +9,7 @@
 #include "geometry/exact_predicates.hpp"
 #include "recognize/arrow/arrow_limits.hpp"
 #include "recognize/classify/classifier.hpp"
+#include "recognize/classify/tracing.hpp"
 #include "recognize/fitting/path_turn.hpp"
 #include "recognize/fitting/thin_path.hpp"
 #include "recognize/group/arrow_tip.hpp"
@@ -52,6 +53,106 @@ bool bowed(const Recognition& own, const Recognition& group) {
            sagitta >= kArcMinSagitta * c.certificate.epsilon &&
            distance(c.params.center, group.params.center) <= kMaxBowedCentreOff * radius;
   });
+}
+
+// The round `shape`'s own path over the stretch a piece spans: between the points nearest the
+// piece's ends, the way round (of a closed shape) that holds the piece's middle. How far it
+// stands out from its chord, and its length.
+struct ShapeSpan {
+  double sagitta = 0.0;
+  double length = 0.0;
+  PointD middle; // the path's point halfway along the stretch
+};
+ShapeSpan span_of(const std::vector<PointD>& clean, const std::vector<PointD>& piece) {
+  const ArcLengthPath path(clean);
+  const double total = path.length();
+  const bool closed = closed_path(clean);
+  const ArcLengthPath along(piece);
+  double from = path.nearest(piece.front()).at;
+  double to = path.nearest(piece.back()).at;
+  const double middle = path.nearest(along.point_at(0.5 * along.length())).at;
+  if (from > to) std::swap(from, to);
+  if (closed && (middle < from || middle > to)) { // the other way round, through the start
+    std::swap(from, to);
+    to += total;
+  }
+  const auto at = [&](double t) { return path.point_at(t >= total ? t - total : t); };
+  const PointD a = at(from);
+  const PointD b = at(to);
+  ShapeSpan out{0.0, to - from, at(0.5 * (from + to))};
+  constexpr int kSteps = 16;
+  for (int k = 1; k < kSteps; ++k) {
+    const PointD p = at(from + (to - from) * static_cast<double>(k) / kSteps);
+    out.sagitta = std::max(out.sagitta, segment_distance(p, a, b));
+  }
+  return out;
+}
+
+// Whether the round `shape`'s own path over the piece is as straight as the tolerance tells
+// (it stands out from its chord by less than kArcMinSagitta epsilon, as an arc flatter than a
+// segment's band) and runs along the piece (its chord no longer than that path by as much): a
+// short piece of a circle, drawn straight, is then no evidence against it. A D's stem spans half
+// the shape, a null sign's bar crosses it, a tick across its line spans none of it.
+bool along_a_flat_span(const Recognition& shape, const std::vector<PointD>& piece) {
+  if (shape.clean.size() < 2 || piece.size() < 2) return false;
+  const double flat = kArcMinSagitta * shape.epsilon;
+  const ShapeSpan span = span_of(shape.clean, piece);
+  return span.sagitta < flat && distance(piece.front(), piece.back()) <= span.length + flat;
+}
+
+// Whether the piece bends the way the round `shape`'s own path over it does, standing out from
+// its chord on the same side by at least kMinBendShare of that path's sagitta: a hand's stretch of
+// the shape, however it wobbles into corners or hooks at its ends. A D's stem or a null sign's
+// bar is straight where the shape bends.
+bool bends_with_shape(const Recognition& shape, const std::vector<PointD>& piece) {
+  if (shape.clean.size() < 2 || piece.size() < 2) return false;
+  const ShapeSpan span = span_of(shape.clean, piece);
+  const PointD a = piece.front();
+  const PointD chord = piece.back() - a;
+  const double length = std::sqrt(dot(chord, chord));
+  if (!(length > 0)) return false;
+  const double side = cross(chord, span.middle - a) >= 0 ? 1.0 : -1.0;
+  double bulge = 0.0;
+  for (const PointD& p : piece) bulge = std::max(bulge, side * cross(chord, p - a) / length);
+  return bulge >= kMinBendShare * span.sagitta;
+}
+
+// The way a path leaves its start (`front`) or its end, outwards: from its point `reach` along
+// it (at most half of it) to that end.
+PointD leaving(const std::vector<PointD>& path, bool front, double reach) {
+  const ArcLengthPath along(path);
+  const double r = std::min(reach, 0.5 * along.length());
+  return front ? path.front() - along.point_at(r)
+               : path.back() - along.point_at(along.length() - r);
+}
+
+// Whether piece `i` of `paths` meets the others at corners wherever it meets one: at each end
+// of it that another piece's end lies within `join` of, the nearest such piece goes on turned by
+// more than kMaxSmoothJoinTurn from the way the piece arrives (each way taken over epsilon of its
+// path). A D's stem meets its bowl at two corners, a note's stem its head at one; a circle's
+// piece goes on as the curve does, bar a hook where the hand started or stopped.
+bool meets_at_corners(const std::vector<std::vector<PointD>>& paths, std::size_t i, double join,
+                      double epsilon) {
+  bool met = false;
+  for (const bool front : {true, false}) {
+    const PointD end = front ? paths[i].front() : paths[i].back();
+    double nearest = join;
+    std::optional<PointD> goes_on;
+    for (std::size_t j = 0; j < paths.size(); ++j) {
+      if (j == i || paths[j].size() < 2) continue;
+      for (const bool other_front : {true, false}) {
+        const PointD e = other_front ? paths[j].front() : paths[j].back();
+        if (distance(e, end) > nearest) continue;
+        nearest = distance(e, end);
+        goes_on = -1.0 * leaving(paths[j], other_front, epsilon);
+      }
+    }
+    if (!goes_on) continue;
+    met = true;
+    if (angle_between(leaving(paths[i], front, epsilon), *goes_on) <= kMaxSmoothJoinTurn)
+      return false;
+  }
+  return met;
 }
 
 // Why a piece recognized alone as `own` is no piece of a `group` (empty when it may be one).
@@ -142,13 +243,30 @@ bool pieces_cross(const std::vector<std::vector<PointD>>& paths, double stroke_e
   return false;
 }
 
+// Whether piece `i` of `paths` is a stretch of the circle or ellipse `shape` whatever it reads as
+// alone: the shape is as straight over it as the tolerance tells (along_a_flat_span) or it bends
+// with the shape (bends_with_shape), and it meets the others without corners wherever it meets
+// one (meets_at_corners; `join` as there).
+bool follows_round_shape(const Recognition& shape, const std::vector<std::vector<PointD>>& paths,
+                         std::size_t i, double join) {
+  if (!closed_round(shape.shape)) return false;
+  const GroupRules& rules = group_rules();
+  const bool along = (rules.flat_round_pieces && along_a_flat_span(shape, paths[i])) ||
+                     (rules.bent_round_pieces && bends_with_shape(shape, paths[i]));
+  return along && !meets_at_corners(paths, i, join, shape.epsilon);
+}
+
 // Why a stroke recognized alone is no piece of a `shape` (kind_mismatch; empty when none).
+// `paths`: the strokes' distinct paths; `join`: how far apart chained ends may be.
 std::string mismatched_piece(const Recognition& shape, std::span<const StrokeInput> strokes,
+                             const std::vector<std::vector<PointD>>& paths, double join,
                              const RecognizerConfig& config) {
-  for (const StrokeInput& s : strokes) {
+  for (std::size_t i = 0; i < strokes.size(); ++i) {
+    const StrokeInput& s = strokes[i];
     // A piece no larger than the shape's epsilon (a tick closing a circle's gap) is too small to
     // be told an arc or a side of it.
     if (choose_tolerance(s.samples, config).size <= shape.epsilon) continue;
+    if (follows_round_shape(shape, paths, i, join)) continue;
     std::string why = kind_mismatch(shape, recognize(s.samples, config));
     if (!why.empty()) return why;
   }
@@ -268,7 +386,8 @@ std::string group_implausibility(const Recognition& r, std::span<const StrokeInp
     if (group_rules().a_stroke_per_arrow_part && strokes.size() > parts)
       return "more strokes than the arrow has parts (a shaft and its barbs): a figure, no arrow";
     // Straight pieces or an arc: a loop alone (a note's head, a null sign's ring) is no part.
-    return group_rules().no_round_arrow_pieces ? mismatched_piece(r, strokes, config) : "";
+    return group_rules().no_round_arrow_pieces ? mismatched_piece(r, strokes, paths, join, config)
+                                               : "";
   }
   for (const double jump : chain_jumps(paths)) {
     if (jump > join) {
@@ -279,7 +398,7 @@ std::string group_implausibility(const Recognition& r, std::span<const StrokeInp
   if (std::string why = piece_rules(r, paths, stroke_epsilon, join); !why.empty()) return why;
   // Each piece is a piece of the shape's own kind: a D or a P (a bar and a bowl) is no ellipse,
   // a circle crossed by a bar no polygon, whatever band covers the union.
-  return mismatched_piece(r, strokes, config);
+  return mismatched_piece(r, strokes, paths, join, config);
 }
 
 } // namespace penshape::recognize_detail

@@ -16,8 +16,9 @@ namespace penshape::recognize_detail {
 // polyline, polygon or segment even when the union's band covers them. And no stroke alone is
 // of the other kind: no circle or ellipse in a straight-sided shape, and in a round one (circle,
 // ellipse, arc) every piece an arc (alone, or bowed: an arc of the shape fits it, though the
-// piece alone reads as a polyline or freeform); a piece no larger than epsilon is any shape's. An
-// arc alone may be a side and a rounded corner.
+// piece alone reads as a polyline or freeform) or, in a circle or ellipse, a piece over which the
+// shape's own path is straight within epsilon / 2 and that meets the others without corners; a
+// piece no larger than epsilon is any shape's. An arc alone may be a side and a rounded corner.
 // Besides (GroupRules): an open polyline is never a group; two strokes that start at one point
 // and leave it each its own way are limbs, no segment; no stroke of a straight-sided closed
 // shape is a curve (the bowl of a D or a P); no two strokes of a closed shape cross each other
@@ -49,6 +50,13 @@ struct GroupRules {
   // A round shape's piece that is no arc alone may be one an arc of it fits (bowed,
   // kMaxBowedCentreOff).
   bool bowed_round_pieces = true;
+  // A circle's or ellipse's piece over which the shape's own path is as straight as the tolerance
+  // tells, meeting the others without corners, may be any shape (along_a_flat_span,
+  // kMaxSmoothJoinTurn: a short piece of a circle drawn straight; a D's stem meets corners).
+  bool flat_round_pieces = true;
+  // A circle's or ellipse's piece that bends the way the shape does over it, at least
+  // kMinBendShare as far from its chord, may be any shape (bends_with_shape).
+  bool bent_round_pieces = true;
   // Two strokes this many epsilons farther apart than touching are still tried together, and
   // kept only as an arrow (a shaft stroke that stops short of its head; apart_join; 0: never).
   double apart_join = kApartJoin;
