@@ -204,7 +204,8 @@ bool switch_off(const std::string& rule) {
       {"outline_when_round_refused", &GroupRules::outline_when_round_refused},
       {"bowed_round_pieces", &GroupRules::bowed_round_pieces},
       {"flat_round_pieces", &GroupRules::flat_round_pieces},
-      {"bent_round_pieces", &GroupRules::bent_round_pieces}};
+      {"bent_round_pieces", &GroupRules::bent_round_pieces},
+      {"overlaps_are_no_crossings", &GroupRules::overlaps_are_no_crossings}};
   if (rule == "seed_from_strokes") {
     penshape::recognize_detail::arrow_rules().seed_from_strokes = false;
   } else if (rule == "gapped_shafts") {

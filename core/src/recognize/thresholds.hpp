@@ -224,6 +224,10 @@ inline constexpr double kMaxSmoothJoinTurn = std::numbers::pi / 4;
 // over it does, by at least this share of that path's sagitta is a stretch of it
 // (GroupRules::bent_round_pieces). Half, not tuned.
 inline constexpr double kMinBendShare = 0.5;
+// A stroke that runs on along another within this many epsilons (of the largest stroke alone)
+// past their crossing overlaps it, as a closing stroke overlaps the first
+// (GroupRules::overlaps_are_no_crossings). Half, not tuned.
+inline constexpr double kOverlapAlongside = 0.5;
 // Recent groups a new stroke is tried with: at most 2^6 - 1 unions.
 inline constexpr std::size_t kMaxRecentGroups = 6;
 // Touch tests run on paths thinned within this fraction of their size (added to the join

@@ -85,5 +85,34 @@ TEST(GroupPlausibility, ACircleClosedByAShortStraightStrokeIsOneCircle) {
   recognize_detail::group_rules() = recognize_detail::GroupRules{};
 }
 
+// A hexagon drawn in two strokes, the second closing it and running on along the first side
+// (drawn round once and a side, as a hand closes a shape): it crosses the first stroke in the
+// middle of that side, away from both strokes' ends, but runs on along it within epsilon / 2 to
+// its end (overlaps_are_no_crossings): an overlap, no figure.
+TEST(GroupPlausibility, AClosingStrokeThatOverlapsTheFirstIsNoCrossing) {
+  const auto at = [](int k) {
+    const double a = k * std::numbers::pi / 3.0;
+    return PointD{60.0 * std::cos(a), 60.0 * std::sin(a)};
+  };
+  std::vector<StrokeInput> s{stroke_along({at(0), at(1), at(2), at(3)}, 0.0)};
+  // Along the first side from 3 units outside to 3 units inside the hexagon.
+  const PointD out{at(0).x * 1.05, at(0).y * 1.05};
+  const PointD in{at(1).x * 0.95, at(1).y * 0.95};
+  s.push_back(stroke_along({at(3), at(4), at(5), out, in}, next_start(s)));
+  const auto out_shapes = recognize_strokes(s);
+  ASSERT_EQ(out_shapes.size(), 1u);
+  EXPECT_EQ(out_shapes[0].strokes.size(), 2u);
+  const Recognition& r = out_shapes[0].recognition;
+  EXPECT_TRUE(r.shape == ShapeClass::kRegularPolygon || r.shape == ShapeClass::kPolygon)
+      << to_string(r.shape);
+  EXPECT_EQ(r.params.vertices.size(), 6u);
+  EXPECT_LE(test::union_hausdorff(test::paths_of(s, out_shapes[0].strokes), test::clean_paths(r),
+                                  r.epsilon / 50),
+            r.epsilon);
+  recognize_detail::group_rules().overlaps_are_no_crossings = false;
+  EXPECT_FALSE(merged(recognize_strokes(s))) << "the case no longer needs the rule";
+  recognize_detail::group_rules() = recognize_detail::GroupRules{};
+}
+
 } // namespace
 } // namespace penshape

@@ -197,9 +197,10 @@ TEST(GroupRecognizeDollar, PolygonsOfFiveToEightCornersInPiecesAsWhole) {
   std::printf("polygons of 5-8 corners: whole %d / %d, in 2-3 pieces %d / %d\n", whole.right,
               whole.total, pieces.right, pieces.total);
   ASSERT_EQ(pieces.total, test::dollar_count(480, 240));
-  // Two cuts of each polygon: as often right in pieces as whole, less 15%. Measured 88% as often
-  // (325 / 480 against 185 / 240 whole), 90% generated.
-  EXPECT_GE(pieces.right, 0.85 * 2 * whole.right);
+  // Two cuts of each polygon: as often right in pieces as whole, less 10%. Measured 94% as often
+  // (349 / 480 against 185 / 240 whole; 88% before a closing stroke running on along the first
+  // was an overlap, no crossing), 97% generated (190 / 240 against 98 / 120).
+  EXPECT_GE(pieces.right, 0.9 * 2 * whole.right);
 }
 
 TEST(GroupRecognizeDollar, ArrowsWholeAndCutAtTheTip) {

@@ -206,12 +206,29 @@ bool curve_for_corner(const std::vector<std::vector<PointD>>& paths,
   return false;
 }
 
+// Whether `a`, from the point x on its segment `i` to its nearer end, runs on along `b` farther
+// than `join` and within `alongside` of it all the way: a closing stroke overlapping the first one
+// (a shape drawn round once and a bit, cut), not a stroke leaving across it.
+bool runs_on_along(const std::vector<PointD>& a, std::size_t i, PointD x,
+                   const std::vector<PointD>& b, double join, double alongside) {
+  std::vector<PointD> head(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(i) + 1);
+  head.push_back(x);
+  std::vector<PointD> tail{x};
+  tail.insert(tail.end(), a.begin() + static_cast<std::ptrdiff_t>(i) + 1, a.end());
+  const std::vector<PointD>& rest = path_length(head) < path_length(tail) ? head : tail;
+  if (path_length(rest) <= join) return false;
+  const ArcLengthPath along(b);
+  return std::all_of(rest.begin(), rest.end(),
+                     [&](PointD p) { return along.nearest(p).distance <= alongside; });
+}
+
 // Whether two pieces cross properly at a point farther than `join` from the ends of one of them
 // (`in_both`: in the middle halves of both, kMiddleOfArrowPiece). Overshooting corners cross near
 // the ends of both; an arrow's head crosses its shaft at the shaft's end (the tip, which the
-// shaft may overshoot) and in the head's own middle.
+// shaft may overshoot) and in the head's own middle. A crossing where one piece runs on along the
+// other to its end (runs_on_along, within `alongside`) is an overlap, no crossing.
 bool cross_in_middle(const std::vector<PointD>& a, const std::vector<PointD>& b, double join,
-                     bool in_both) {
+                     bool in_both, double alongside) {
   auto far_from_ends = [join, in_both](PointD x, const std::vector<PointD>& p) {
     const double margin = in_both ? std::max(join, kMiddleOfArrowPiece * path_length(p)) : join;
     return distance(x, p.front()) > margin && distance(x, p.back()) > margin;
@@ -222,7 +239,12 @@ bool cross_in_middle(const std::vector<PointD>& a, const std::vector<PointD>& b,
       PointD x;
       if (!line_intersection(a[i], a[i + 1] - a[i], b[j], b[j + 1] - b[j], x)) continue;
       const bool far_a = far_from_ends(x, a), far_b = far_from_ends(x, b);
-      if (in_both ? far_a && far_b : far_a || far_b) return true;
+      if (!(in_both ? far_a && far_b : far_a || far_b)) continue;
+      if (!in_both && group_rules().overlaps_are_no_crossings &&
+          (runs_on_along(a, i, x, b, join, alongside) ||
+           runs_on_along(b, j, x, a, join, alongside)))
+        continue;
+      return true;
     }
   }
   return false;
@@ -237,7 +259,8 @@ bool pieces_cross(const std::vector<std::vector<PointD>>& paths, double stroke_e
     thin.push_back(thin_path(p, kCrossingThinning * stroke_epsilon));
   for (std::size_t i = 0; i < thin.size(); ++i) {
     for (std::size_t j = i + 1; j < thin.size(); ++j) {
-      if (cross_in_middle(thin[i], thin[j], join, in_both)) return true;
+      if (cross_in_middle(thin[i], thin[j], join, in_both, kOverlapAlongside * stroke_epsilon))
+        return true;
     }
   }
   return false;

@@ -57,6 +57,9 @@ struct GroupRules {
   // A circle's or ellipse's piece that bends the way the shape does over it, at least
   // kMinBendShare as far from its chord, may be any shape (bends_with_shape).
   bool bent_round_pieces = true;
+  // Two strokes of an outline that cross where one runs on along the other to its end (farther
+  // than they may be apart, within kOverlapAlongside epsilon) overlap there: no crossing.
+  bool overlaps_are_no_crossings = true;
   // Two strokes this many epsilons farther apart than touching are still tried together, and
   // kept only as an arrow (a shaft stroke that stops short of its head; apart_join; 0: never).
   double apart_join = kApartJoin;
