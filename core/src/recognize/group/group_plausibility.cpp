@@ -88,25 +88,11 @@ ShapeSpan span_of(const std::vector<PointD>& clean, const std::vector<PointD>& p
   return out;
 }
 
-// Whether the round `shape`'s own path over the piece is as straight as the tolerance tells
-// (it stands out from its chord by less than kArcMinSagitta epsilon, as an arc flatter than a
-// segment's band) and runs along the piece (its chord no longer than that path by as much): a
-// short piece of a circle, drawn straight, is then no evidence against it. A D's stem spans half
-// the shape, a null sign's bar crosses it, a tick across its line spans none of it.
-bool along_a_flat_span(const Recognition& shape, const std::vector<PointD>& piece) {
-  if (shape.clean.size() < 2 || piece.size() < 2) return false;
-  const double flat = kArcMinSagitta * shape.epsilon;
-  const ShapeSpan span = span_of(shape.clean, piece);
-  return span.sagitta < flat && distance(piece.front(), piece.back()) <= span.length + flat;
-}
-
-// Whether the piece bends the way the round `shape`'s own path over it does, standing out from
+// Whether the piece bends the way the shape's own path over it (`span`) does, standing out from
 // its chord on the same side by at least kMinBendShare of that path's sagitta: a hand's stretch of
 // the shape, however it wobbles into corners or hooks at its ends. A D's stem or a null sign's
 // bar is straight where the shape bends.
-bool bends_with_shape(const Recognition& shape, const std::vector<PointD>& piece) {
-  if (shape.clean.size() < 2 || piece.size() < 2) return false;
-  const ShapeSpan span = span_of(shape.clean, piece);
+bool bends_with(const ShapeSpan& span, const std::vector<PointD>& piece) {
   const PointD a = piece.front();
   const PointD chord = piece.back() - a;
   const double length = std::sqrt(dot(chord, chord));
@@ -267,15 +253,23 @@ bool pieces_cross(const std::vector<std::vector<PointD>>& paths, double stroke_e
 }
 
 // Whether piece `i` of `paths` is a stretch of the circle or ellipse `shape` whatever it reads as
-// alone: the shape is as straight over it as the tolerance tells (along_a_flat_span) or it bends
-// with the shape (bends_with_shape), and it meets the others without corners wherever it meets
-// one (meets_at_corners; `join` as there).
+// alone. It runs along the shape's own path over it (span_of; the piece's chord no longer than that
+// path by more than kArcMinSagitta epsilon: a tick across the shape's line spans none of it), and
+// that path is as straight as the tolerance tells (it stands out from its chord by less than
+// kArcMinSagitta epsilon, as an arc flatter than a segment's band: a short piece of a circle drawn
+// straight is no evidence against it; flat_round_pieces) or the piece bends with it (bends_with;
+// bent_round_pieces). And it meets the others without corners wherever it meets one
+// (meets_at_corners; `join` as there). A D's stem spans half the shape, straight where it bends.
 bool follows_round_shape(const Recognition& shape, const std::vector<std::vector<PointD>>& paths,
                          std::size_t i, double join) {
-  if (!closed_round(shape.shape)) return false;
+  const std::vector<PointD>& piece = paths[i];
+  if (!closed_round(shape.shape) || shape.clean.size() < 2 || piece.size() < 2) return false;
+  const double flat = kArcMinSagitta * shape.epsilon;
+  const ShapeSpan span = span_of(shape.clean, piece);
+  if (distance(piece.front(), piece.back()) > span.length + flat) return false;
   const GroupRules& rules = group_rules();
-  const bool along = (rules.flat_round_pieces && along_a_flat_span(shape, paths[i])) ||
-                     (rules.bent_round_pieces && bends_with_shape(shape, paths[i]));
+  const bool along = span.sagitta < flat ? rules.flat_round_pieces
+                                         : rules.bent_round_pieces && bends_with(span, piece);
   return along && !meets_at_corners(paths, i, join, shape.epsilon);
 }
 
