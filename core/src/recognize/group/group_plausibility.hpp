@@ -51,11 +51,11 @@ struct GroupRules {
   // kMaxBowedCentreOff).
   bool bowed_round_pieces = true;
   // A circle's or ellipse's piece over which the shape's own path is as straight as the tolerance
-  // tells, meeting the others without corners, may be any shape (along_a_flat_span,
-  // kMaxSmoothJoinTurn: a short piece of a circle drawn straight; a D's stem meets corners).
+  // tells, meeting the others without corners, may be any shape (round_pieces.hpp: a short piece
+  // of a circle drawn straight; a D's stem meets its bowl at corners).
   bool flat_round_pieces = true;
   // A circle's or ellipse's piece that bends the way the shape does over it, at least
-  // kMinBendShare as far from its chord, may be any shape (bends_with_shape).
+  // kMinBendShare as far from its chord, may be any shape (round_pieces.hpp).
   bool bent_round_pieces = true;
   // Two strokes of an outline that cross where one runs on along the other to its end (farther
   // than they may be apart, within kOverlapAlongside epsilon) overlap there: no crossing.
