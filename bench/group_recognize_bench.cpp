@@ -416,8 +416,7 @@ int main(int argc, char** argv) {
     }
     // A circle cut anywhere into 2-4 strokes (cut_round): one circle or ellipse.
     if (g.kind == "circle") {
-      const bool whole_round =
-          kTargets.at("circle").count(penshape::to_string(penshape::recognize(g.points).shape)) > 0;
+      const bool whole_round = kTargets.at("circle").count(a) > 0; // recognized above
       for (std::size_t pieces = 2; pieces <= 4; ++pieces) {
         const std::vector<Points> cut = penshape::cases::cut_round(g.points, pieces, v);
         if (cut.empty()) continue;

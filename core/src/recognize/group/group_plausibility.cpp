@@ -176,7 +176,7 @@ std::string mismatched_piece(const Recognition& shape, std::span<const StrokeInp
     // A piece no larger than the shape's epsilon (a tick closing a circle's gap) is too small to
     // be told an arc or a side of it.
     if (choose_tolerance(s.samples, config).size <= shape.epsilon) continue;
-    if (follows_round_shape(shape, paths, i, join)) continue;
+    if (closed_round(shape.shape) && follows_round_shape(shape, paths, i, join)) continue;
     std::string why = kind_mismatch(shape, recognize(s.samples, config));
     if (!why.empty()) return why;
   }

@@ -105,9 +105,7 @@ bool meets_at_corners(const std::vector<std::vector<PointD>>& paths, std::size_t
 bool follows_round_shape(const Recognition& shape, const std::vector<std::vector<PointD>>& paths,
                          std::size_t i, double join) {
   const std::vector<PointD>& piece = paths[i];
-  const bool closed_round =
-      shape.shape == ShapeClass::kCircle || shape.shape == ShapeClass::kEllipse;
-  if (!closed_round || shape.clean.size() < 2 || piece.size() < 2) return false;
+  if (shape.clean.size() < 2 || piece.size() < 2) return false;
   const double flat = kArcMinSagitta * shape.epsilon;
   const ShapeSpan span = span_of(shape.clean, piece);
   if (distance(piece.front(), piece.back()) > span.length + flat) return false;
