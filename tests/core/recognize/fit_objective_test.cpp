@@ -73,6 +73,35 @@ TEST(RecognizeFitObjective, ReusedObjectiveEqualsTheDefinitionBitForBit) {
   }
 }
 
+// A search keeps a trial only when it beats its best: evaluated with that best as stop_at, the
+// value is exact below it and at least stop_at otherwise, so the search takes the same steps.
+TEST(RecognizeFitObjective, AStoppedEvaluationIsExactBelowTheStopAndAtLeastItOtherwise) {
+  std::mt19937 rng(31);
+  int stopped = 0, exact = 0;
+  for (std::size_t corners = 3; corners <= 8; ++corners) {
+    const PreparedStroke s = wobbly_stroke(rng, corners);
+    for (const bool keys : {true, false}) {
+      FitObjective objective(s, keys);
+      double best = objective(moved_polygon(rng, corners, 1.0));
+      for (int trial = 0; trial < 200; ++trial) {
+        const CleanShape shape = moved_polygon(rng, corners, trial % 17 == 0 ? 15.0 : 1.0);
+        const double plain = plain_objective(s, shape, keys);
+        const double value = objective(shape, best);
+        if (plain < best) {
+          ASSERT_EQ(value, plain) << corners << " corners, trial " << trial;
+          best = plain;
+          ++exact;
+        } else {
+          ASSERT_GE(value, best) << corners << " corners, trial " << trial;
+          ++stopped;
+        }
+      }
+    }
+  }
+  EXPECT_GT(exact, 20); // both outcomes are exercised
+  EXPECT_GT(stopped, 200);
+}
+
 TEST(RecognizeFitObjective, CurvesAndDegenerateShapesEqualTheDefinition) {
   std::mt19937 rng(7);
   const PreparedStroke s = wobbly_stroke(rng, 4);

@@ -71,51 +71,64 @@ class RememberedCost {
   std::vector<double> table_;
 };
 
-// Best path first -> last through k vertices (first and last included) over pts[first..last].
-template <typename Cost>
-double best_chain(Cost&& cost, std::size_t first, std::size_t last, std::size_t k,
-                  std::vector<std::size_t>& out) {
-  const std::size_t n = last - first + 1;
-  constexpr double kInf = std::numeric_limits<double>::infinity();
-  // dp[j][v]: best cost reaching local index v as the j-th vertex (0-based, v = 0 is first).
-  std::vector<std::vector<double>> dp(k, std::vector<double>(n, kInf));
-  std::vector<std::vector<std::size_t>> from(k, std::vector<std::size_t>(n, 0));
-  dp[0][0] = 0.0;
-  for (std::size_t j = 1; j < k; ++j) {
-    for (std::size_t v = j; v < n; ++v) {
-      if (j + 1 == k && v != n - 1) continue;
-      for (std::size_t u = j - 1; u < v; ++u) {
-        if (dp[j - 1][u] == kInf) continue;
-        const double c = dp[j - 1][u] + cost(first + u, first + v);
-        if (c < dp[j][v]) {
-          dp[j][v] = c;
-          from[j][v] = u;
+// Best paths first -> last over pts[first..last] through 2..most vertices (first and last
+// included), one dynamic programme for every count: the best path through k vertices takes the
+// best ways of reaching each point as the (k-1)-th vertex, which no other count changes.
+class ChainSearch {
+ public:
+  template <typename Cost>
+  ChainSearch(Cost&& cost, std::size_t first, std::size_t last, std::size_t most)
+      : first_(first),
+        n_(last - first + 1),
+        dp_(most, std::vector<double>(n_, kInf)),
+        from_(most, std::vector<std::size_t>(n_, 0)) {
+    // dp_[j][v]: best cost reaching local index v as the j-th vertex (0-based, v = 0 is first).
+    dp_[0][0] = 0.0;
+    for (std::size_t j = 1; j < most; ++j) {
+      for (std::size_t v = j; v < n_; ++v) {
+        if (j + 1 == most && v != n_ - 1) continue; // the last count only ends at `last`
+        for (std::size_t u = j - 1; u < v; ++u) {
+          if (dp_[j - 1][u] == kInf) continue;
+          const double c = dp_[j - 1][u] + cost(first + u, first + v);
+          if (c < dp_[j][v]) {
+            dp_[j][v] = c;
+            from_[j][v] = u;
+          }
         }
       }
     }
   }
-  out.assign(k, 0);
-  std::size_t v = n - 1;
-  for (std::size_t j = k; j-- > 0;) {
-    out[j] = first + v;
-    v = from[j][v];
+  // The cost of the best path through k vertices (2 <= k <= most), and the path.
+  [[nodiscard]] double cost(std::size_t k) const { return dp_[k - 1][n_ - 1]; }
+  [[nodiscard]] std::vector<std::size_t> chain(std::size_t k) const {
+    std::vector<std::size_t> out(k, 0);
+    std::size_t v = n_ - 1;
+    for (std::size_t j = k; j-- > 0;) {
+      out[j] = first_ + v;
+      v = from_[j][v];
+    }
+    return out;
   }
-  return dp[k - 1][n - 1];
-}
+
+ private:
+  static constexpr double kInf = std::numeric_limits<double>::infinity();
+  std::size_t first_, n_;
+  std::vector<std::vector<double>> dp_;
+  std::vector<std::vector<std::size_t>> from_;
+};
 
 } // namespace
 
 std::vector<std::size_t> open_corners(const std::vector<PointD>& pts, std::size_t k) {
   if (k < 2 || pts.size() < k) return {};
-  const ChordCost cost(pts);
-  std::vector<std::size_t> out;
-  best_chain(cost, 0, pts.size() - 1, k, out);
-  return out;
+  return ChainSearch(ChordCost(pts), 0, pts.size() - 1, k).chain(k);
 }
 
-std::vector<std::size_t> closed_corners(const std::vector<PointD>& pts, std::size_t k) {
+std::vector<std::vector<std::size_t>> closed_corner_chains(const std::vector<PointD>& pts,
+                                                           std::size_t most) {
   const std::size_t n = pts.size();
-  if (k < 3 || n < 2 * k) return {};
+  std::vector<std::vector<std::size_t>> chains(most + 1);
+  if (most < 3 || n < 6) return chains;
   // The cycle, doubled so that a chain may start anywhere.
   std::vector<PointD> twice = pts;
   twice.insert(twice.end(), pts.begin(), pts.end());
@@ -143,20 +156,29 @@ std::vector<std::size_t> closed_corners(const std::vector<PointD>& pts, std::siz
       starts.push_back(turning[i].second);
     }
   }
-  double best = std::numeric_limits<double>::infinity();
-  std::vector<std::size_t> best_chain_out;
+  // k corners need 2k fit points; the search runs to the largest count the points allow.
+  const std::size_t top = std::min(most, n / 2);
+  std::vector<double> best(top + 1, std::numeric_limits<double>::infinity());
   for (const std::size_t s : starts) {
-    std::vector<std::size_t> chain;
     // k + 1 vertices: the start appears again at the end of the cycle.
-    const double c2 = best_chain(cost, s, s + n, k + 1, chain);
-    if (c2 < best) {
-      best = c2;
+    const ChainSearch search(cost, s, s + n, top + 1);
+    for (std::size_t k = 3; k <= top; ++k) {
+      if (!(search.cost(k + 1) < best[k])) continue;
+      best[k] = search.cost(k + 1);
+      std::vector<std::size_t> chain = search.chain(k + 1);
       chain.pop_back();
       for (std::size_t& v : chain) v %= n;
-      best_chain_out = chain;
+      chains[k] = std::move(chain);
     }
   }
-  return best_chain_out;
+  return chains;
+}
+
+const std::vector<std::size_t>& closed_corners(const PreparedStroke& s, std::size_t k) {
+  if (s.closed_corner_chains.size() <= k) {
+    s.closed_corner_chains = closed_corner_chains(s.fit_points, std::max(k, kMaxPolygonCorners));
+  }
+  return s.closed_corner_chains[k];
 }
 
 Line fit_line(std::span<const PointD> pts) {

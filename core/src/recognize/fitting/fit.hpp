@@ -1,6 +1,7 @@
 #pragma once
 // The fitters: each proposes the best shape of its family for a prepared stroke (or nothing when
 // the family does not apply). Fits are estimates; only the certificate decides a snap.
+#include <cmath>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -34,11 +35,14 @@ Refinement refine_minimax(const PreparedStroke& stroke, const std::vector<double
 double fit_objective(const PreparedStroke& stroke, const CleanShape& shape, bool use_key_points);
 // The same objective, evaluated for many shapes of one search: each point's scan for its nearest
 // segment starts where the previous shape's stopped, and stops once the point cannot raise the
-// objective, so the value is fit_objective's bit for bit, at a fraction of the work.
+// objective, so the value is fit_objective's bit for bit, at a fraction of the work. A search
+// that keeps a shape only when it beats its best passes that best as `stop_at`: the evaluation
+// stops once the value reaches it (returning a value >= stop_at), starting with the point that
+// raised the last shape's value (the one most likely to rule the next trial out).
 class FitObjective {
  public:
   FitObjective(const PreparedStroke& stroke, bool use_key_points);
-  double operator()(const CleanShape& shape);
+  double operator()(const CleanShape& shape, double stop_at = INFINITY);
 
  private:
   // A run of consecutive stroke segments, with its bounding box and longest segment: a key point
@@ -53,20 +57,30 @@ class FitObjective {
   const PreparedStroke& stroke_;
   bool use_key_points_;
   std::size_t fit_hint_ = 0;           // the segment of the shape nearest the last fit point
+  std::size_t raised_at_ = 0;          // the fit point that set the last value (tried first)
+  std::size_t raised_hint_ = 0;        // the segment of the shape nearest that point
   std::vector<std::size_t> key_hints_; // per key point, the stroke segment nearest it
   std::vector<Block> blocks_;          // over stroke_.points (key points only)
 };
 // max(worst, the largest polyline_distance from `points` to `path`), exactly: each point's scan
 // starts at segment `hint` (updated to its nearest one) and stops once the point is proven no
-// farther than the maximum so far.
+// farther than the maximum so far. The run stops once the maximum reaches `stop_at` (the value
+// returned is then >= stop_at); `raised_at`, when given, is set to the index of the point that
+// raised the value last.
 double raise_to_polyline_distance(std::span<const PointD> points, std::span<const PointD> path,
-                                  double worst, std::size_t& hint);
+                                  double worst, std::size_t& hint, double stop_at = INFINITY,
+                                  std::size_t* raised_at = nullptr);
 
 // Corner search by dynamic programming on the fit points: indices of k vertices minimising the
 // summed squared distance of the points to the chords. Open: the first and last points are
 // vertices (k >= 2). Closed: the fit points are a cycle (k >= 3).
 std::vector<std::size_t> open_corners(const std::vector<PointD>& pts, std::size_t k);
-std::vector<std::size_t> closed_corners(const std::vector<PointD>& pts, std::size_t k);
+// Closed, for every k from 3 to `most` at once (index k; empty where the points are too few).
+std::vector<std::vector<std::size_t>> closed_corner_chains(const std::vector<PointD>& pts,
+                                                           std::size_t most);
+// The closed chain of k corners of s's fit points, from chains made on first use (every count up
+// to kMaxPolygonCorners in one search: a stroke is fitted with several).
+const std::vector<std::size_t>& closed_corners(const PreparedStroke& s, std::size_t k);
 
 // Total-least-squares line through points: a point on it and a unit direction.
 struct Line {

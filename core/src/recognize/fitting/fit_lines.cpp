@@ -136,7 +136,7 @@ std::optional<Fit> fit_polyline(const PreparedStroke& s, std::size_t segments) {
 }
 
 std::optional<Fit> fit_polygon(const PreparedStroke& s, std::size_t corners) {
-  const std::vector<std::size_t> idx = closed_corners(s.fit_points, corners);
+  const std::vector<std::size_t>& idx = closed_corners(s, corners);
   if (idx.size() != corners) return std::nullopt;
   std::vector<Line> lines;
   for (std::size_t i = 0; i < corners; ++i) {

@@ -34,6 +34,9 @@ struct PreparedStroke {
     double turn = 0.0; // radians
   };
   mutable std::optional<std::vector<PathTurn>> turns_by_sharpness;
+  // The closed corner chains of fit_points, index k for k corners (corners.cpp, which finds every
+  // count in one search), made on first use.
+  mutable std::vector<std::vector<std::size_t>> closed_corner_chains;
 };
 
 // Throws InvalidInput for no samples, non-finite or too large coordinates, too many samples. One

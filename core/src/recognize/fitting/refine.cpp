@@ -6,13 +6,15 @@
 namespace penshape::recognize_detail {
 
 double raise_to_polyline_distance(std::span<const PointD> points, std::span<const PointD> path,
-                                  double worst, std::size_t& hint) {
+                                  double worst, std::size_t& hint, double stop_at,
+                                  std::size_t* raised_at) {
   if (path.size() < 2) { // one point (or none: infinitely far), as polyline_distance answers
     for (const PointD& p : points) worst = std::max(worst, polyline_distance(p, path));
     return worst;
   }
   const std::size_t segments = path.size() - 1;
-  for (const PointD& p : points) {
+  for (std::size_t index = 0; index < points.size(); ++index) {
+    const PointD p = points[index];
     if (hint >= segments) hint = 0;
     // The least squared distance so far; the scan stops once it proves p cannot raise `worst`
     // (sqrt is monotone, so sqrt(least) <= worst bounds p's distance by worst).
@@ -30,8 +32,13 @@ double raise_to_polyline_distance(std::span<const PointD> points, std::span<cons
         stopped = settled();
       }
     }
+    if (stopped) continue;
     // Every segment seen: least is p's squared distance, as polyline_distance takes it.
-    if (!stopped) worst = std::max(worst, std::sqrt(least));
+    if (const double d = std::sqrt(least); d > worst) {
+      worst = d;
+      if (raised_at != nullptr) *raised_at = index;
+    }
+    if (worst >= stop_at) return worst;
   }
   return worst;
 }
@@ -93,21 +100,29 @@ double FitObjective::raise_to_stroke_distance(PointD v, double worst, std::size_
   return std::max(worst, std::sqrt(least));
 }
 
-double FitObjective::operator()(const CleanShape& shape) {
+double FitObjective::operator()(const CleanShape& shape, double stop_at) {
   double worst = 0.0;
+  const std::vector<PointD>& fit = stroke_.fit_points;
   if (shape.kind == CleanShape::Kind::kPolyline) {
-    worst = raise_to_polyline_distance(stroke_.fit_points, shape.path, worst, fit_hint_);
+    if (raised_at_ < fit.size()) {
+      worst = raise_to_polyline_distance({&fit[raised_at_], 1}, shape.path, worst, raised_hint_);
+      if (worst >= stop_at) return worst;
+    }
+    worst = raise_to_polyline_distance(fit, shape.path, worst, fit_hint_, stop_at, &raised_at_);
   } else {
-    worst = max_distance(stroke_.fit_points, shape);
+    worst = max_distance(fit, shape);
   }
-  if (!use_key_points_) return worst;
+  if (!use_key_points_ || worst >= stop_at) return worst;
   std::size_t k = 0;
   auto key = [&](PointD v) {
     if (key_hints_.size() <= k) key_hints_.resize(k + 1, 0);
     worst = raise_to_stroke_distance(v, worst, key_hints_[k++]);
   };
   if (shape.kind == CleanShape::Kind::kPolyline) {
-    for (const PointD& v : shape.path) key(v);
+    for (const PointD& v : shape.path) {
+      key(v);
+      if (worst >= stop_at) return worst;
+    }
   } else if (!shape.full_curve()) {
     key(shape.at(shape.t0));
     key(shape.at(shape.t0 + shape.sweep));
@@ -123,11 +138,12 @@ Refinement refine_minimax(const PreparedStroke& stroke, const std::vector<double
                           const ShapeBuilder& build, double initial_step, bool use_key_points) {
   // One objective for the whole search: its hints follow the small steps of the shape.
   FitObjective objective(stroke, use_key_points);
-  auto evaluate = [&](const std::vector<double>& p) {
+  // A trial is kept only when it beats the best: its evaluation stops once it cannot.
+  auto evaluate = [&](const std::vector<double>& p, double stop_at) {
     const std::optional<CleanShape> shape = build(p);
-    return shape ? objective(*shape) : INFINITY;
+    return shape ? objective(*shape, stop_at) : INFINITY;
   };
-  Refinement best{params, evaluate(params)};
+  Refinement best{params, evaluate(params, INFINITY)};
   double step = initial_step;
   const double min_step = initial_step / 32.0;
   // Evaluation budget: the search is a local polish of a least-squares start, not a solver.
@@ -139,13 +155,13 @@ Refinement refine_minimax(const PreparedStroke& stroke, const std::vector<double
       for (const double sign : {1.0, -1.0}) {
         std::vector<double> trial = best.params;
         trial[i] += sign * step;
-        const double value = evaluate(trial);
+        const double value = evaluate(trial, best.objective);
         ++evaluations;
         if (value < best.objective) {
           // Keep moving that way while it helps (a cheap pattern move).
           best = {trial, value};
           trial[i] += sign * step;
-          const double further = evaluate(trial);
+          const double further = evaluate(trial, best.objective);
           ++evaluations;
           if (further < best.objective) best = {std::move(trial), further};
           improved = true;
