@@ -11,6 +11,7 @@
 
 #include "dollar_xml.hpp"
 #include "generated_corpus.hpp"
+#include "penshape/core/group_recognize.hpp"
 #include "stroke_gen.hpp"
 
 namespace penshape::bench {
@@ -89,13 +90,18 @@ void print_labelled_accuracy(const std::string& corpus,
   std::map<std::string, std::map<std::string, int>> by_kind;
   for (const LabelledStroke& s : strokes) {
     if (s.truth.empty() || s.points.size() < 2) continue;
-    const std::string got = to_string(recognize(s.points).shape);
+    StrokeInput alone;
+    alone.samples = s.points;
+    const std::string got = to_string(recognize_strokes({&alone, 1}).front().recognition.shape);
     all.add(s, got);
     if (is_comparable(s)) comparable.add(s, got);
     by_subject[s.subject].add(s, got);
     ++by_kind[s.kind][got];
   }
-  std::printf("%s: recognizer figures (recognize(), default configuration)\n", corpus.c_str());
+  std::printf(
+      "%s: recognizer figures (each stroke alone, as `penshape recognize` reads it; "
+      "default configuration)\n",
+      corpus.c_str());
   all.print("whole corpus");
   comparable.print("$1-like kinds");
   for (const auto& [subject, tally] : by_subject) tally.print("subject " + subject);

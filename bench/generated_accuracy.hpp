@@ -25,7 +25,9 @@ std::vector<LabelledStroke> real_dollar_strokes(const std::string& root);
 // labelled with the generator's truth.
 std::vector<LabelledStroke> generated_strokes();
 
-// Prints the figures of recognize() on `strokes` under the title `corpus`.
+// Prints the figures on `strokes` under the title `corpus`: each stroke recognized alone as
+// `penshape recognize` does (recognize_strokes: a one-stroke arrow is read there, not by
+// recognize()).
 void print_labelled_accuracy(const std::string& corpus, const std::vector<LabelledStroke>& strokes);
 
 } // namespace penshape::bench
