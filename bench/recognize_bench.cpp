@@ -37,8 +37,9 @@
 // squares on a corner made from real rectangles, polygons of 5-8 corners made from real circles,
 // one-stroke stars, and the classes simplified as sketch collections store drawings; --wrong lists
 // every drawing named wrong. --rule-folds (recognize_rule_folds.hpp): each plausibility threshold
-// (kDiamondSkew, kMaxBacktrack, kMinSharpCornerShare, kMinFittedCornerShare) chosen per held-out
-// writer, the held-out figure beside the rule off and shipped.
+// (kDiamondSkew, kMaxBacktrack, kMinSharpCornerShare, kMinFittedCornerShare, ...,
+// straight_fraction) chosen per held-out writer, the held-out figure beside the rule off and
+// shipped.
 //
 // Usage: recognize_bench [--json] [--repeat N] [--khz-stride K] [--accuracy-only |
 //                         --timing-only | --derive-tolerance | --classes | --rule-folds]

@@ -50,13 +50,14 @@ struct Count {
   }
 };
 
-// A swept threshold: its grid (the first value turns the rule off) and where it goes.
+// A swept threshold: its grid (the first value turns the rule off) and where it goes (a rule
+// threshold, or a RecognizerConfig field the rules read).
 struct Sweep {
   const char* name;
   std::vector<double> grid;
   double shipped;
   double scale; // printed as value / scale
-  void (*set)(rd::RuleThresholds&, double);
+  void (*set)(rd::RuleThresholds&, RecognizerConfig&, double);
 };
 
 const std::set<std::string> kDiamond{"diamond"};
@@ -94,9 +95,10 @@ std::vector<Item> items_of(const std::vector<Drawing>& drawings) {
 }
 
 // The winning fit, or nothing (freeform).
-std::optional<rd::Fit> winner(const Item& it, const rd::RuleThresholds& rules) {
+std::optional<rd::Fit> winner(const Item& it, const rd::RuleThresholds& rules,
+                              const RecognizerConfig& config) {
   std::vector<rd::Scored> scored = rd::evaluate(it.stroke, it.fits, it.tolerance.epsilon,
-                                                it.tolerance.pen_radius, RecognizerConfig{}, rules);
+                                                it.tolerance.pen_radius, config, rules);
   if (scored.empty() || !scored.front().snap) return std::nullopt;
   return std::move(scored.front().fit);
 }
@@ -129,8 +131,9 @@ SweepCounts run_sweep(const std::vector<Item>& items, const Sweep& sw) {
     subject.resize(sw.grid.size()), row.resize(sw.grid.size());
     for (std::size_t k = 0; k < sw.grid.size(); ++k) {
       rd::RuleThresholds rules;
-      sw.set(rules, sw.grid[k]);
-      const Count c = count_of(it, winner(it, rules));
+      RecognizerConfig config;
+      sw.set(rules, config, sw.grid[k]);
+      const Count c = count_of(it, winner(it, rules, config));
       subject[k].add(c), row[k].add(c);
     }
   }
@@ -206,43 +209,48 @@ void print_rule_folds(const std::vector<Drawing>& drawings) {
         25 * degree},
        rd::kDiamondSkew,
        degree,
-       [](rd::RuleThresholds& r, double v) { r.diamond_skew = v; }},
+       [](rd::RuleThresholds& r, RecognizerConfig&, double v) { r.diamond_skew = v; }},
       {"kMaxBacktrack: the stroke runs back along the shape over at most this share",
        {std::numeric_limits<double>::infinity(), 0.05, 0.075, 0.1, 0.15, 0.2, 0.25, 0.3, 0.4},
        rd::kMaxBacktrack,
        1.0,
-       [](rd::RuleThresholds& r, double v) { r.max_backtrack = v; }},
+       [](rd::RuleThresholds& r, RecognizerConfig&, double v) { r.max_backtrack = v; }},
       {"kMinSharpCornerShare: a polygon's corners are drawn sharp when the stroke turns this share",
        {std::numeric_limits<double>::infinity(), 0.3, 0.4, 0.5, 0.6, 0.7, 0.8},
        rd::kMinSharpCornerShare,
        1.0,
-       [](rd::RuleThresholds& r, double v) { r.min_sharp_corner_share = v; }},
+       [](rd::RuleThresholds& r, RecognizerConfig&, double v) { r.min_sharp_corner_share = v; }},
       {"kSharpPolygonSlack: a circle gives way to a sharp polygon fitting this much looser",
        {1.0, 1.1, 1.2, 1.3, 1.5},
        rd::kSharpPolygonSlack,
        1.0,
-       [](rd::RuleThresholds& r, double v) { r.sharp_polygon_slack = v; }},
+       [](rd::RuleThresholds& r, RecognizerConfig&, double v) { r.sharp_polygon_slack = v; }},
       {"kMinFittedCornerShare: a fitted corner is drawn when the stroke turns this share there",
        {0.0, 0.2, 0.3, 0.4, 0.5, 0.6},
        rd::kMinFittedCornerShare,
        1.0,
-       [](rd::RuleThresholds& r, double v) { r.min_fitted_corner_share = v; }},
+       [](rd::RuleThresholds& r, RecognizerConfig&, double v) { r.min_fitted_corner_share = v; }},
       {"kMinModelCornerShare: a model shape's corners are turned at, on the mean, by this share",
        {0.0, 0.3, 0.35, 0.4, 0.45, 0.5, 0.55},
        rd::kMinModelCornerShare,
        1.0,
-       [](rd::RuleThresholds& r, double v) { r.min_model_corner_share = v; }},
+       [](rd::RuleThresholds& r, RecognizerConfig&, double v) { r.min_model_corner_share = v; }},
       {"kMinMissedCornerTurn: a polygon misses a corner where the stroke turns this share",
        {std::numeric_limits<double>::infinity(), 0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0},
        rd::kMinMissedCornerTurn,
        1.0,
-       [](rd::RuleThresholds& r, double v) { r.min_missed_corner_turn = v; }},
+       [](rd::RuleThresholds& r, RecognizerConfig&, double v) { r.min_missed_corner_turn = v; }},
       {"kMinFlatCornerTurn: a sharp polygon's corner near its neighbours' chord is turned this "
        "share of a regular polygon's turn",
        {std::numeric_limits<double>::infinity(), 0.3, 0.4, 0.5, 0.6, 0.75, 1.0},
        rd::kMinFlatCornerTurn,
        1.0,
-       [](rd::RuleThresholds& r, double v) { r.min_flat_corner_turn = v; }},
+       [](rd::RuleThresholds& r, RecognizerConfig&, double v) { r.min_flat_corner_turn = v; }},
+      {"straight_fraction: a segment or polyline certifies within this share of epsilon",
+       {std::numeric_limits<double>::infinity(), 0.2, 0.25, 0.3, 0.35, 0.4, 0.45, 0.5, 0.6},
+       RecognizerConfig{}.straight_fraction,
+       1.0,
+       [](rd::RuleThresholds&, RecognizerConfig& c, double v) { c.straight_fraction = v; }},
   };
   std::printf(
       "== rule thresholds per held-out writer: %zu drawings (shapes right / non-shapes "

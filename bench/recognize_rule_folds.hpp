@@ -1,6 +1,7 @@
 #pragma once
 // Leave-one-subject-out choice of the classifier's plausibility thresholds (recognize_bench
-// --rule-folds): each rule's threshold is swept over a grid on every labelled single-stroke
+// --rule-folds): each rule's threshold (and RecognizerConfig::straight_fraction, which the rules
+// read) is swept over a grid on every labelled single-stroke
 // drawing (and the diamonds and squares on a corner made from real rectangles, the polygons of
 // 5-8 corners made from real circles); for each writer
 // the value is chosen on the other writers only, and that writer is scored with it. The held-out
