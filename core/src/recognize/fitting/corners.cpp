@@ -77,7 +77,7 @@ class RememberedCost {
 class ChainSearch {
  public:
   template <typename Cost>
-  ChainSearch(Cost&& cost, std::size_t first, std::size_t last, std::size_t most)
+  ChainSearch(Cost&& chord_cost, std::size_t first, std::size_t last, std::size_t most)
       : first_(first),
         n_(last - first + 1),
         dp_(most, std::vector<double>(n_, kInf)),
@@ -89,7 +89,7 @@ class ChainSearch {
         if (j + 1 == most && v != n_ - 1) continue; // the last count only ends at `last`
         for (std::size_t u = j - 1; u < v; ++u) {
           if (dp_[j - 1][u] == kInf) continue;
-          const double c = dp_[j - 1][u] + cost(first + u, first + v);
+          const double c = dp_[j - 1][u] + chord_cost(first + u, first + v);
           if (c < dp_[j][v]) {
             dp_[j][v] = c;
             from_[j][v] = u;
