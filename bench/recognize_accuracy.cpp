@@ -45,11 +45,6 @@ constexpr double kShapeRateSlack = 0.01;  // f: within 1 point of f_max's shape 
 constexpr int kGridSteps = 13;            // g = 0.09, 0.095, ..., 0.15
 double grid_fraction(int k) { return 0.09 + 0.005 * k; }
 
-struct Sample {
-  const Drawing* drawing = nullptr;
-  const std::set<std::string>* targets = nullptr; // null: a non-shape
-};
-
 struct Tally {
   int shapes = 0, shapes_right = 0, non_shapes = 0, snapped = 0;
   void add(const Sample& s, ShapeClass c) {
@@ -78,19 +73,6 @@ struct Rule {
   double f = 0.0;
   double f_max = 0.0;
 };
-
-std::vector<Sample> samples_of(const std::vector<Drawing>& drawings) {
-  std::vector<Sample> out;
-  for (const Drawing& d : drawings) {
-    if (d.strokes.size() != 1) continue;
-    if (const std::set<std::string>* targets = shape_targets(d.label)) {
-      out.push_back({&d, targets});
-    } else if (is_non_shape(d.label)) {
-      out.push_back({&d, nullptr});
-    }
-  }
-  return out;
-}
 
 ShapeClass classify(const std::vector<StrokePoint>& points, const RecognizerConfig& config) {
   try {
@@ -217,6 +199,19 @@ const std::set<std::string>* shape_targets(const std::string& label) {
 
 bool is_non_shape(const std::string& label) { return kNonShapes.contains(label); }
 
+std::vector<Sample> single_stroke_samples(const std::vector<Drawing>& drawings) {
+  std::vector<Sample> out;
+  for (const Drawing& d : drawings) {
+    if (d.strokes.size() != 1) continue;
+    if (const std::set<std::string>* targets = shape_targets(d.label)) {
+      out.push_back({&d, targets});
+    } else if (is_non_shape(d.label)) {
+      out.push_back({&d, nullptr});
+    }
+  }
+  return out;
+}
+
 namespace {
 
 constexpr double kSizesMm[] = {15, 40, 80, 150};
@@ -287,7 +282,7 @@ void print_evaluation(const std::string& corpus, const Evaluation& e) {
 } // namespace
 
 void print_accuracy(const std::vector<Drawing>& drawings, const AccuracyOptions& options) {
-  const std::vector<Sample> samples = samples_of(drawings);
+  const std::vector<Sample> samples = single_stroke_samples(drawings);
   if (samples.empty()) {
     std::printf("  no labelled single-stroke drawings\n");
     return;

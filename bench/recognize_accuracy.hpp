@@ -19,6 +19,14 @@ const std::set<std::string>* shape_targets(const std::string& label);
 // Whether drawings labelled `label` are non-shapes (must stay freeform).
 bool is_non_shape(const std::string& label);
 
+// A drawing of one stroke labelled a shape (the classes it may be named) or a non-shape.
+struct Sample {
+  const Drawing* drawing = nullptr;
+  const std::set<std::string>* targets = nullptr; // null: a non-shape
+};
+// The single-stroke drawings labelled a shape or a non-shape, in order.
+std::vector<Sample> single_stroke_samples(const std::vector<Drawing>& drawings);
+
 // Prints the tables for the drawings (all corpora together and each corpus alone).
 void print_accuracy(const std::vector<Drawing>& drawings, const AccuracyOptions& options);
 

@@ -39,11 +39,13 @@
 // every drawing named wrong. --rule-folds (recognize_rule_folds.hpp): each plausibility threshold
 // (kDiamondSkew, kMaxBacktrack, kMinSharpCornerShare, kMinFittedCornerShare, ...,
 // straight_fraction) chosen per held-out writer, the held-out figure beside the rule off and
-// shipped.
+// shipped. --invariance (recognize_invariance.hpp): every labelled single stroke moved, scaled,
+// retimed, turned, mirrored, drawn backwards, and sent as other devices would (other sample
+// rates, jitter, a coarse grid).
 //
 // Usage: recognize_bench [--json] [--repeat N] [--khz-stride K] [--accuracy-only |
-//                         --timing-only | --derive-tolerance | --classes | --rule-folds]
-//                         [--wrong]
+//                         --timing-only | --derive-tolerance | --classes | --rule-folds |
+//                         --invariance] [--wrong]
 //        (data dir: $PENSHAPE_SHARED_DATA_DIR)
 #include <time.h>
 
@@ -64,6 +66,7 @@
 #include "penshape/core/recognize.hpp"
 #include "recognize_accuracy.hpp"
 #include "recognize_classes.hpp"
+#include "recognize_invariance.hpp"
 #include "recognize_rule_folds.hpp"
 #include "stroke_corpora.hpp"
 
@@ -185,6 +188,7 @@ struct AccuracyRun {
   bool classes_only = false; // the per-class table only
   bool list_wrong = false;   // every miss of the per-class table
   bool rule_folds = false;   // the rule thresholds per held-out writer only
+  bool invariance = false;   // the answers under transforms of the drawing and device only
 };
 
 // Every corpus together: the rule derived on all of their writers, figures per corpus.
@@ -198,6 +202,10 @@ void print_accuracy_figures(const std::filesystem::path& strokes, const Accuracy
               gestures.size());
   if (run.rule_folds) {
     penshape::bench::print_rule_folds(all);
+    return;
+  }
+  if (run.invariance) {
+    penshape::bench::print_invariance(all);
     return;
   }
   if (!run.classes_only) penshape::bench::print_accuracy(all, {run.derive_only});
@@ -230,13 +238,15 @@ int main(int argc, char** argv) {
       timing = false, accuracy_run.classes_only = true;
     } else if (std::strcmp(argv[i], "--rule-folds") == 0) {
       timing = false, accuracy_run.rule_folds = true;
+    } else if (std::strcmp(argv[i], "--invariance") == 0) {
+      timing = false, accuracy_run.invariance = true;
     } else if (std::strcmp(argv[i], "--wrong") == 0) {
       accuracy_run.list_wrong = true;
     } else {
       std::fprintf(stderr,
                    "usage: recognize_bench [--json] [--repeat N] [--khz-stride K] "
                    "[--accuracy-only | --timing-only | --derive-tolerance | --classes | "
-                   "--rule-folds] [--wrong]\n");
+                   "--rule-folds | --invariance] [--wrong]\n");
       return 2;
     }
   }

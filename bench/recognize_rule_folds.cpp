@@ -76,10 +76,8 @@ void add_item(std::vector<Item>& out, const Drawing& d, const std::vector<Stroke
 
 std::vector<Item> items_of(const std::vector<Drawing>& drawings) {
   std::vector<Item> out;
-  for (const Drawing& d : drawings) {
-    if (d.strokes.size() != 1) continue;
-    const std::set<std::string>* targets = shape_targets(d.label);
-    if (targets == nullptr && !is_non_shape(d.label)) continue;
+  for (const auto& [drawing, targets] : single_stroke_samples(drawings)) {
+    const Drawing& d = *drawing;
     const std::vector<StrokePoint>& p = d.strokes.front();
     add_item(out, d, p, targets, d.corpus + (targets ? " shape " : " non-shape ") + d.label);
     for (int n = 5; targets != nullptr && d.label == "circle" && n <= 8; ++n) {

@@ -144,6 +144,13 @@ Refinement refine_minimax(const PreparedStroke& stroke, const std::vector<double
     return shape ? objective(*shape, stop_at) : INFINITY;
   };
   Refinement best{params, evaluate(params, INFINITY)};
+  // A trial must gain more than rounding could: where a step leaves the farthest point where it
+  // is (a plateau of the minimax), the values tie but for their last bits, which differ with the
+  // drawing's origin and unit; taking such a "gain" would make the answer depend on them.
+  const double least_gain = kLeastRefineGain * stroke.size;
+  const auto beats = [&least_gain](double value, double best_value) {
+    return value < best_value - least_gain;
+  };
   double step = initial_step;
   const double min_step = initial_step / 32.0;
   // Evaluation budget: the search is a local polish of a least-squares start, not a solver.
@@ -155,15 +162,15 @@ Refinement refine_minimax(const PreparedStroke& stroke, const std::vector<double
       for (const double sign : {1.0, -1.0}) {
         std::vector<double> trial = best.params;
         trial[i] += sign * step;
-        const double value = evaluate(trial, best.objective);
+        const double value = evaluate(trial, best.objective - least_gain);
         ++evaluations;
-        if (value < best.objective) {
+        if (beats(value, best.objective)) {
           // Keep moving that way while it helps (a cheap pattern move).
           best = {trial, value};
           trial[i] += sign * step;
-          const double further = evaluate(trial, best.objective);
+          const double further = evaluate(trial, best.objective - least_gain);
           ++evaluations;
-          if (further < best.objective) best = {std::move(trial), further};
+          if (beats(further, best.objective)) best = {std::move(trial), further};
           improved = true;
           break;
         }
