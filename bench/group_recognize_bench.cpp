@@ -35,6 +35,8 @@
 //   barb limit, a shaft stroke's least span, the cone of a stroke continuing an arrow's tip, a
 //   shaft's gap to its tip in barbs and its aim (to measure).
 //   --gestures-only: only the figures on other people's drawings.
+//   --invariance: only those drawings (of several strokes) moved, scaled and turned, against
+//                 their own answers (group_invariance.hpp; about 2 min per transform).
 //   --only CLASS: with --gestures-only, only the gestures of that class ("D", "arrowhead", ...).
 //   --svg-dir: every arrow missed is drawn to DIR (strokes, and the best arrow candidate with why
 //              it was refused), and every miss on other people's drawings, to look at them.
@@ -54,6 +56,7 @@
 
 #include "bench_data.hpp"
 #include "group_gesture_figures.hpp"
+#include "group_invariance.hpp"
 #include "group_loso.hpp"
 #include "made_shapes.hpp"
 #include "multi_stroke_cases.hpp"
@@ -230,7 +233,7 @@ double quantile(std::vector<double> v, double q) {
 } // namespace
 
 int main(int argc, char** argv) {
-  bool json = false, gestures_only = false, loso = false;
+  bool json = false, gestures_only = false, loso = false, invariance = false;
   std::filesystem::path svg_dir;
   std::string only, loso_only;
   for (int i = 1; i < argc; ++i) {
@@ -238,6 +241,8 @@ int main(int argc, char** argv) {
       json = true;
     } else if (std::strcmp(argv[i], "--gestures-only") == 0) {
       gestures_only = true;
+    } else if (std::strcmp(argv[i], "--invariance") == 0) {
+      invariance = true;
     } else if (std::strcmp(argv[i], "--loso") == 0) {
       loso = true;
     } else if (std::strcmp(argv[i], "--loso-only") == 0 && i + 1 < argc) {
@@ -267,7 +272,7 @@ int main(int argc, char** argv) {
                    "usage: group_recognize_bench [--json] [--gestures-only [--only CLASS]] "
                    "[--loso | --loso-only KNOB] [--without RULE] [--apart-barb X] "
                    "[--shaft-span X] [--continuation-angle DEG] [--gap-barb X] [--gap-aim DEG] "
-                   "[--svg-dir DIR]\n");
+                   "[--svg-dir DIR] [--invariance]\n");
       return 2;
     }
   }
@@ -280,6 +285,10 @@ int main(int argc, char** argv) {
   }
   if (loso) {
     penshape::bench::print_group_loso(root.parent_path() / "gestures", json, loso_only);
+    return 0;
+  }
+  if (invariance) {
+    penshape::bench::print_group_invariance(root.parent_path() / "gestures");
     return 0;
   }
   if (gestures_only) {

@@ -216,6 +216,9 @@ PointD* unknown_point(ArrowState& a, std::size_t i) {
 double polish(ArrowState& a, const Objective& objective, double step, bool curved) {
   double best = objective(a);
   const double min_step = step / 32.0;
+  // A gain within rounding is none (kLeastRefineGain, as refine_minimax): the first step is
+  // epsilon / 2, and epsilon is at most an eighth of the size, so 16 steps are at most the size.
+  const double least_gain = kLeastRefineGain * 16.0 * step;
   const std::size_t points = a.v.size() + a.bends.size() + (a.shaft_end ? 1 : 0);
   std::size_t budget = 60 * (points + 1);
   const std::size_t unknowns = points + (curved ? 1 : 0);
@@ -233,9 +236,9 @@ double polish(ArrowState& a, const Objective& objective, double step, bool curve
         } else {
           *point = *point + step * dir;
         }
-        const double value = objective(a, best);
+        const double value = objective(a, best - least_gain);
         --budget;
-        if (value < best) {
+        if (value < best - least_gain) {
           best = value;
           improved = true;
           break;
