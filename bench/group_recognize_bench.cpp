@@ -12,6 +12,7 @@
 //   arrows                    $1 arrows whole (1 stroke) and cut at the tip (2 strokes);
 //   curved and bent arrows    the $1 arrows made curved (60, 100 degrees) and bent (a 90-degree
 //                             elbow; made_shapes.hpp), whole and cut at the tip: one arrow;
+//   long arrows               the same with the shaft 2 and 3 times as long, the head as drawn;
 //   separate never merged     two shape strokes one after the other, 2 px apart;
 //   non-shape pairs snapped   two non-shape gestures touching: snapped to a shape together;
 //   single strokes            recognize() (today) beside StrokeGrouper on one stroke;
@@ -31,9 +32,9 @@
 //   --gap-aim DEG: a rule off (open_polylines, curved_sides, crossing_pieces,
 //   limbs_as_a_line, continued_tips, arrow_when_refused, outline_when_round_refused,
 //   a_stroke_per_arrow_part, round_arrow_pieces, bowed_round_pieces, flat_round_pieces,
-//   bent_round_pieces, seed_from_strokes, gapped_shafts, heads_at_shaft_end), a head drawn apart's
-//   barb limit, a shaft stroke's least span, the cone of a stroke continuing an arrow's tip, a
-//   shaft's gap to its tip in barbs and its aim (to measure).
+//   bent_round_pieces, seed_from_strokes, gapped_shafts, heads_at_shaft_end, finer_head_scales),
+//   a head drawn apart's barb limit, a shaft stroke's least span, the cone of a stroke continuing
+//   an arrow's tip, a shaft's gap to its tip in barbs and its aim (to measure).
 //   --gestures-only: only the figures on other people's drawings.
 //   --invariance: only those drawings (of several strokes) moved, scaled and turned, against
 //                 their own answers (group_invariance.hpp; about 2 min per transform).
@@ -86,6 +87,10 @@ const std::vector<std::pair<const char*, penshape::cases::ShaftTurn>> kBentArrow
     {"arrow curved by 60 deg", {std::numbers::pi / 3, 0.5, 1.0}},
     {"arrow curved by 100 deg", {5 * std::numbers::pi / 9, 0.5, 1.0}},
     {"arrow bent by 90 deg", {std::numbers::pi / 2, 0.6, 0.08}}};
+// The head as drawn on a shaft made longer: a head small for the whole (finer_head_scales).
+const std::vector<std::pair<const char*, penshape::cases::ShaftTurn>> kLongArrows{
+    {"arrow with its shaft 2x as long", {0.0, 0.5, 1.0, 2.0}},
+    {"arrow with its shaft 3x as long", {0.0, 0.5, 1.0, 3.0}}};
 const std::set<std::string> kNonShapes{"pigtail", "question_mark", "left_curly_brace",
                                        "right_curly_brace", "delete_mark"};
 
@@ -215,6 +220,8 @@ bool switch_off(const std::string& rule) {
     penshape::recognize_detail::arrow_rules().gapped_shafts = false;
   } else if (rule == "heads_at_shaft_end") {
     penshape::recognize_detail::arrow_rules().heads_at_shaft_end = false;
+  } else if (rule == "finer_head_scales") {
+    penshape::recognize_detail::arrow_rules().finer_head_scales = false;
   } else if (const auto it = switches.find(rule); it != switches.end()) {
     penshape::recognize_detail::group_rules().*(it->second) = false;
   } else {
@@ -309,10 +316,34 @@ int main(int argc, char** argv) {
   Rate made_polygons_cut;
   Rate circles_cut_all, circles_cut_whole_round;
   std::map<std::string, Rate> circles_cut; // by strokes
-  Rate bent_arrows_all;
-  std::map<std::string, Rate> bent_arrows;   // by kind, whole and cut
+  Rate bent_arrows_all, long_arrows_all;
+  std::map<std::string, Rate> bent_arrows, long_arrows; // by kind, whole and cut
   std::map<std::string, Rate> made_polygons; // whole ("in 1") and cut, by corners and pieces
   std::size_t v = 0;
+  // `g` (an arrow) made as `bend` says, whole and cut at its tip: one arrow is right.
+  auto made_arrow = [&](const Gesture& g, const char* name, penshape::cases::ShaftTurn bend,
+                        Rate& all, std::map<std::string, Rate>& by_kind) {
+    bend.turn *= v % 2 == 0 ? 1.0 : -1.0;
+    std::size_t tip = 0;
+    const Points made = penshape::cases::bent_arrow(g.points, bend, &tip);
+    const auto whole = penshape::recognize_strokes(inputs_of({made}));
+    const bool whole_ok = one_group_of(whole, 1, kTargets.at("arrow"));
+    by_kind[std::string(name) + ", whole"].add(whole_ok);
+    all.add(whole_ok);
+    const std::vector<Points> cut = penshape::cases::cut_arrow_at(made, tip, v);
+    if (cut.empty()) return;
+    const bool cut_ok =
+        one_group_of(penshape::recognize_strokes(inputs_of(cut)), 2, kTargets.at("arrow"));
+    by_kind[std::string(name) + ", cut at the tip"].add(cut_ok);
+    all.add(cut_ok);
+    const std::string stem = subject_of(g.file) + "_" + std::to_string(v) + "_" + name;
+    if (!whole_ok && !svg_dir.empty()) {
+      draw_miss(svg_dir / (stem + "_whole.svg"), {made}, whole.front().recognition);
+    }
+    if (!cut_ok && !svg_dir.empty()) {
+      draw_miss(svg_dir / (stem + "_cut.svg"), cut, penshape::recognize_union(inputs_of(cut)));
+    }
+  };
   // `g` cut at 1-3 corners, the pieces fed to a grouper: one group of `targets` is right.
   auto group_cuts = [&](const Gesture& g, const std::string& kind,
                         const std::set<std::string>& targets) {
@@ -394,31 +425,12 @@ int main(int argc, char** argv) {
         }
       }
     }
-    // An arrow made curved or bent (made_shapes.hpp), whole and cut at its tip.
+    // An arrow made curved, bent or longer (made_shapes.hpp), whole and cut at its tip.
     if (g.kind == "arrow") {
-      for (const auto& [name, bend] : kBentArrows) {
-        const double side = v % 2 == 0 ? 1.0 : -1.0;
-        std::size_t tip = 0;
-        const Points made =
-            penshape::cases::bent_arrow(g.points, {side * bend.turn, bend.at, bend.width}, &tip);
-        const auto whole = penshape::recognize_strokes(inputs_of({made}));
-        const bool whole_ok = one_group_of(whole, 1, kTargets.at("arrow"));
-        bent_arrows[std::string(name) + ", whole"].add(whole_ok);
-        bent_arrows_all.add(whole_ok);
-        const std::vector<Points> cut = penshape::cases::cut_arrow_at(made, tip, v);
-        if (cut.empty()) continue;
-        const bool cut_ok =
-            one_group_of(penshape::recognize_strokes(inputs_of(cut)), 2, kTargets.at("arrow"));
-        bent_arrows[std::string(name) + ", cut at the tip"].add(cut_ok);
-        bent_arrows_all.add(cut_ok);
-        const std::string stem = subject_of(g.file) + "_" + std::to_string(v) + "_" + name;
-        if (!whole_ok && !svg_dir.empty()) {
-          draw_miss(svg_dir / (stem + "_whole.svg"), {made}, whole.front().recognition);
-        }
-        if (!cut_ok && !svg_dir.empty()) {
-          draw_miss(svg_dir / (stem + "_cut.svg"), cut, penshape::recognize_union(inputs_of(cut)));
-        }
-      }
+      for (const auto& [name, bend] : kBentArrows)
+        made_arrow(g, name, bend, bent_arrows_all, bent_arrows);
+      for (const auto& [name, bend] : kLongArrows)
+        made_arrow(g, name, bend, long_arrows_all, long_arrows);
     }
     if (g.kind == "rectangle" || g.kind == "triangle") {
       group_cuts(g, g.kind, kTargets.at(g.kind));
@@ -539,6 +551,9 @@ int main(int argc, char** argv) {
   // the shaft reaches the tip, made ones can come out loops (s01's fast arrows).
   row("curved and bent arrows (made from arrows)", bent_arrows_all, "(context)");
   for (const auto& [k, r] : bent_arrows) row(("  " + k).c_str(), r, "");
+  // No target: the writer's wobble along the shaft is stretched with it.
+  row("long arrows, the head as drawn (made from arrows)", long_arrows_all, "(context)");
+  for (const auto& [k, r] : long_arrows) row(("  " + k).c_str(), r, "");
   row("separate shapes never merged", separate, ">= 99%");
   row("non-shape pairs snapped together", pairs_merged, "<= 2%");
   row("non-shape pairs with any snap", pairs_any, "(context)");

@@ -90,20 +90,21 @@ inline std::size_t arrow_tip(const std::vector<StrokePoint>& in) {
 
 // How a made arrow's shaft turns: by `turn` radians (positive: to the left), spread over the
 // share `width` of the shaft centred at the share `at` (width 1, at 0.5: evenly, a circular arc;
-// a narrow width: an elbow).
+// a narrow width: an elbow); and its length times `stretch` (a long arrow with the head as drawn).
 struct ShaftTurn {
   double turn = 0.0;
   double at = 0.5;
   double width = 1.0;
+  double stretch = 1.0;
 };
 
-// A real one-stroke arrow (tail first, the tip its sample farthest from the start) made a curved
-// or bent one: each shaft sample (up to where the stroke first comes within 5% of the shaft of the
-// tip) keeps its distance along and across the shaft about a centre line whose heading turns as
-// `bend` says; the head (every later sample: a barb drawn out and back before the farthest
-// sample is the head's too) moves rigidly with the tip and the shaft's end direction. The writer's
-// wobble, head and speed are their own. `tip_at`, when given, is set to the made arrow's tip (its
-// index in the result).
+// A real one-stroke arrow (tail first, the tip its sample farthest from the start) made a curved,
+// bent or longer one: each shaft sample (up to where the stroke first comes within 5% of the shaft
+// of the tip) keeps its distance along (times bend.stretch) and across the shaft about a centre
+// line whose heading turns as `bend` says; the head (every later sample: a barb drawn out and back
+// before the farthest sample is the head's too) moves rigidly with the tip and the shaft's end
+// direction. The writer's wobble, head and speed are their own. `tip_at`, when given, is set to the
+// made arrow's tip (its index in the result).
 inline std::vector<StrokePoint> bent_arrow(const std::vector<StrokePoint>& stroke, ShaftTurn bend,
                                            std::size_t* tip_at = nullptr) {
   std::vector<StrokePoint> in = finely_densified(stroke);
@@ -120,26 +121,27 @@ inline std::vector<StrokePoint> bent_arrow(const std::vector<StrokePoint>& strok
       break;
     }
   }
+  const double made_shaft = bend.stretch * shaft;
   auto heading = [&](double s) {
     const double lo = bend.at - 0.5 * bend.width;
-    return bend.turn * std::clamp((s / shaft - lo) / bend.width, 0.0, 1.0);
+    return bend.turn * std::clamp((s / made_shaft - lo) / bend.width, 0.0, 1.0);
   };
   // The centre line at `steps` + 1 evenly spaced distances along the shaft.
   constexpr int steps = 800;
   std::vector<double> cx{0.0}, cy{0.0};
   for (int k = 0; k < steps; ++k) {
-    const double h = heading(shaft * (k + 0.5) / steps);
-    cx.push_back(cx.back() + shaft / steps * std::cos(h));
-    cy.push_back(cy.back() + shaft / steps * std::sin(h));
+    const double h = heading(made_shaft * (k + 0.5) / steps);
+    cx.push_back(cx.back() + made_shaft / steps * std::cos(h));
+    cy.push_back(cy.back() + made_shaft / steps * std::sin(h));
   }
   auto centre = [&](double s, double& x, double& y) {
-    const double f = std::clamp(s / shaft, 0.0, 1.0) * steps;
+    const double f = std::clamp(s / made_shaft, 0.0, 1.0) * steps;
     const auto k = std::min(static_cast<std::size_t>(f), static_cast<std::size_t>(steps - 1));
     const double t = f - static_cast<double>(k);
     x = cx[k] + t * (cx[k + 1] - cx[k]) + std::min(s, 0.0);
     y = cy[k] + t * (cy[k + 1] - cy[k]);
   };
-  const double end = heading(shaft);
+  const double end = heading(made_shaft);
   std::vector<StrokePoint> out = in;
   for (std::size_t i = 0; i < in.size(); ++i) {
     const double dx = in[i].x - ox, dy = in[i].y - oy;
@@ -147,11 +149,11 @@ inline std::vector<StrokePoint> bent_arrow(const std::vector<StrokePoint>& strok
     // In the shaft's frame (x along it from the tail, y to its left), then back.
     double x = 0, y = 0;
     if (i <= arrival) {
-      centre(s, x, y);
-      const double h = heading(s);
+      centre(bend.stretch * s, x, y);
+      const double h = heading(bend.stretch * s);
       x -= across * std::sin(h), y += across * std::cos(h);
     } else {
-      centre(shaft, x, y);
+      centre(made_shaft, x, y);
       x += (s - shaft) * std::cos(end) - across * std::sin(end);
       y += (s - shaft) * std::sin(end) + across * std::cos(end);
     }

@@ -148,6 +148,10 @@ inline constexpr double kCertifyIfBelow = 1.25;
 
 // --- arrow/ --------------------------------------------------------------------------------
 
+// The scales of epsilon at which arrows are sought, in turn until one snaps (group_classifier.cpp
+// score_each_arrow): epsilon follows the whole drawing, a head may be much smaller.
+inline constexpr double kArrowHeadScales[] = {1.0, 0.5};
+
 // A head's barbs open between these angles to the shaft: flatter is a line, wider a T or a hook.
 inline constexpr double kMinHeadAngle = 10.0 * kDegree;
 inline constexpr double kMaxHeadAngle = 80.0 * kDegree;

@@ -254,5 +254,63 @@ TEST_F(ArrowRulesTest, ACurvedArrowsHeadIsFoundAgainstItsShaftsEnd) {
   EXPECT_FALSE(one_arrow_of_all(two));
 }
 
+// A long shaft's small head: epsilon follows the whole arrow (about 12% of its length), so barbs
+// of 7.5% of the shaft are shorter than epsilon and lie within half of it of the shaft's line.
+// They are a head at half the scale (finer_head_scales), where the whole arrow certifies: drawn
+// in two strokes and in one (the shaft, then a barb out and back, then the other), with a hand's
+// slow wobble along the shaft. Off, neither is an arrow.
+TEST_F(ArrowRulesTest, ALongShaftsSmallHeadIsFoundAtAFinerScale) {
+  for (const double length : {300.0, 600.0}) {
+    test::Path shaft;
+    for (int k = 0; k <= 40; ++k) {
+      const double x = length * k / 40.0;
+      shaft.push_back({x, 0.004 * length * std::sin(2.0 * std::numbers::pi * x / length)});
+    }
+    const PointD tip = shaft.back();
+    const test::Path v = head(tip, 0.075 * length, 0.075 * length);
+    std::vector<StrokeInput> two{stroke_along(shaft, 0.0)};
+    two.push_back(stroke_along(v, next_start(two)));
+    test::Path drawn = shaft;
+    for (const PointD p : {v[0], tip, v[2]}) drawn.push_back(p);
+    const std::vector<StrokeInput> one{stroke_along(drawn, 0.0)};
+    const std::vector<StrokeInput>* const drawings[] = {&two, &one};
+    for (const std::vector<StrokeInput>* strokes : drawings) {
+      arrow_rules().finer_head_scales = true;
+      const auto out = recognize_strokes(*strokes);
+      ASSERT_EQ(out.size(), 1u) << length;
+      const Recognition& r = out[0].recognition;
+      ASSERT_EQ(r.shape, ShapeClass::kArrow) << length << " in " << strokes->size();
+      std::vector<std::size_t> all(strokes->size());
+      for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+      const double h = test::union_hausdorff(test::paths_of(*strokes, all), test::clean_paths(r),
+                                             r.epsilon / 20.0);
+      EXPECT_LE(h, r.epsilon / 2.0) << length; // certified at the finer scale
+      EXPECT_LT(std::hypot(r.params.vertices[1].x - tip.x, r.params.vertices[1].y - tip.y),
+                0.02 * length);
+      arrow_rules().finer_head_scales = false;
+      for (const GroupedShape& g : recognize_strokes(*strokes)) {
+        EXPECT_NE(g.recognition.shape, ShapeClass::kArrow) << length << " in " << strokes->size();
+      }
+    }
+  }
+}
+
+// The finer scale names no head that is not there: a long line whose end hooks back once (a
+// flick of the pen) or zigzags on one side is still no arrow.
+TEST_F(ArrowRulesTest, ALongLinesHookIsNoHeadAtAFinerScale) {
+  const double c = std::cos(35.0 * std::numbers::pi / 180.0);
+  const double s = std::sin(35.0 * std::numbers::pi / 180.0);
+  const test::Path hooked{{0, 0}, {400, 0}, {400 - 30 * c, -30 * s}};
+  const test::Path one_sided{
+      {0, 0}, {400, 0}, {400 - 30 * c, -30 * s}, {400, 0}, {400 - 20 * c, -20 * s}};
+  for (const test::Path& p : {hooked, one_sided}) {
+    const std::vector<StrokeInput> line{stroke_along(p, 0.0)};
+    for (const GroupedShape& g : recognize_strokes(line)) {
+      EXPECT_NE(g.recognition.shape, ShapeClass::kArrow);
+      EXPECT_NE(g.recognition.shape, ShapeClass::kDoubleArrow);
+    }
+  }
+}
+
 } // namespace
 } // namespace penshape

@@ -434,10 +434,12 @@ void fit_bent(const std::vector<PointD>& cloud, const Objective& objective, Arro
 }
 
 // The arrows from one start (tail, tip, barb ends): straight, curved when the straight one fits
-// too loosely, and bent when neither fits tightly.
+// too loosely, and bent when neither fits tightly (only straight ones for kStraightShafts).
 void fit_from_start(const std::vector<PointD>& cloud, const UnionStroke& u, const ArrowState& start,
-                    double epsilon, double rank_to_beat, std::vector<Fit>& out) {
-  const bool try_curved = kPricePerParameter * kCurvedParameters < rank_to_beat;
+                    double epsilon, double rank_to_beat, ArrowSearch search,
+                    std::vector<Fit>& out) {
+  const bool any_shaft = search == ArrowSearch::kAll;
+  const bool try_curved = any_shaft && kPricePerParameter * kCurvedParameters < rank_to_beat;
   const double step = epsilon / 2.0;
   const Objective objective{cloud, u, ShapeClass::kArrow};
   // Straight: polished from the raw start or the least-squares start, the one fitting better
@@ -474,7 +476,7 @@ void fit_from_start(const std::vector<PointD>& cloud, const UnionStroke& u, cons
   }
   // Bent (a polyline shaft), when neither the straight nor the curved shaft fits tightly enough
   // to pass surely.
-  if (e_best > kSecondStartAbove * epsilon)
+  if (any_shaft && e_best > kSecondStartAbove * epsilon)
     fit_bent(cloud, objective, start, epsilon, rank_to_beat, out);
 }
 
@@ -531,12 +533,12 @@ void fit_shaft_end_start(const std::vector<PointD>& cloud, const UnionStroke& u,
 // when no barb stands out on both sides). Returns the best fit error among them (infinite when
 // no head is found).
 double fit_single(const std::vector<PointD>& cloud, const UnionStroke& u, PointD tail, PointD tip,
-                  double epsilon, double rank_to_beat, std::vector<Fit>& out) {
+                  double epsilon, double rank_to_beat, ArrowSearch search, std::vector<Fit>& out) {
   const auto head = find_barbs(cloud, tip, tail, epsilon);
   if (!head) return INFINITY;
   const std::size_t before = out.size();
   const ArrowState start{{tail, tip, head->first, head->second}, 0.0, {}, std::nullopt};
-  fit_from_start(cloud, u, start, epsilon, rank_to_beat, out);
+  fit_from_start(cloud, u, start, epsilon, rank_to_beat, search, out);
   double best = INFINITY;
   for (std::size_t i = before; i < out.size(); ++i) best = std::min(best, out[i].fit_error);
   return best;
@@ -630,7 +632,8 @@ ArrowRules& arrow_rules() {
   return rules;
 }
 
-std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon, double rank_to_beat) {
+std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon, double rank_to_beat,
+                            ArrowSearch search) {
   auto may_win = [&](double parameters) { return kPricePerParameter * parameters < rank_to_beat; };
   if (!may_win(kStraightParameters)) return {};
   const std::vector<PointD> cloud = cloud_of(u);
@@ -654,7 +657,7 @@ std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon, double rank_to
   double best = INFINITY;
   for (const bool tip_is_b : {true, false}) {
     const PointD tail = tip_is_b ? cloud[a] : cloud[b], tip = tip_is_b ? cloud[b] : cloud[a];
-    best = std::min(best, fit_single(cloud, u, tail, tip, epsilon, rank_to_beat, out));
+    best = std::min(best, fit_single(cloud, u, tail, tip, epsilon, rank_to_beat, search, out));
   }
   // Neither end of the diameter is the tip when a barb reaches farther from the tail than the
   // tip: then no head stands out at either end, and each end is tried as the tail with the
@@ -663,12 +666,12 @@ std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon, double rank_to
     for (const bool tail_is_a : {true, false}) {
       const PointD tail = tail_is_a ? cloud[a] : cloud[b], tip = tail_is_a ? cloud[b] : cloud[a];
       if (const auto t = other_tip(cloud, tail, tip, epsilon)) {
-        fit_single(cloud, u, tail, *t, epsilon, rank_to_beat, out);
+        fit_single(cloud, u, tail, *t, epsilon, rank_to_beat, search, out);
       }
     }
   }
   fit_from_strokes(cloud, u, epsilon, out);
-  if (arrow_rules().heads_at_shaft_end) {
+  if (arrow_rules().heads_at_shaft_end && search == ArrowSearch::kAll) {
     fit_heads_at_shaft_end(cloud, u, epsilon, rank_to_beat, out);
   }
   const auto at_a = find_barbs(cloud, cloud[a], cloud[b], epsilon);
@@ -684,7 +687,7 @@ std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon, double rank_to
     const double e = polish(st, objective, epsilon / 2.0, false);
     const double both_ways = std::max(e, shaft_stray(u, st));
     out.push_back(make_fit(ShapeClass::kDoubleArrow, std::move(st), e));
-    if (both_ways > kSecondStartAbove * epsilon) {
+    if (search == ArrowSearch::kAll && both_ways > kSecondStartAbove * epsilon) {
       fit_bent(cloud, objective, start, epsilon, rank_to_beat, out);
     }
   }

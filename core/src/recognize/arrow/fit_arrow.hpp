@@ -17,8 +17,12 @@ std::vector<PointD> cloud_of(const UnionStroke& u);
 // Candidates (arrow in either direction, double arrow) fitted to the union of the strokes, best
 // fit first; empty when no head stands out. Estimates only: the certificate decides. Kinds whose
 // least possible rank (kPricePerParameter x free parameters, classifier.hpp) is not below
-// `rank_to_beat` are not fitted: they could never win over the snap that set it.
-std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon, double rank_to_beat = INFINITY);
+// `rank_to_beat` are not fitted: they could never win over the snap that set it. kStraightShafts
+// fits straight shafts only: no curved or bent one, and no head sought at a shaft's own end
+// (ArrowRules::heads_at_shaft_end).
+enum class ArrowSearch { kAll, kStraightShafts };
+std::vector<Fit> fit_arrows(const UnionStroke& u, double epsilon, double rank_to_beat = INFINITY,
+                            ArrowSearch search = ArrowSearch::kAll);
 
 // Whether a single arrow fitted to several strokes has its head drawn apart from its shaft: every
 // stroke lies within epsilon of the shaft or of the head, some only of the shaft and some only of
@@ -43,6 +47,9 @@ struct ArrowRules {
   // shaft_end), when its head is drawn apart, the gap is at most max_gap_barb mean barbs and it
   // leaves the shaft's end within max_gap_aim of the shaft's direction (arrow_implausibility).
   bool gapped_shafts = true;
+  // Arrows are sought again at the finer scales of kArrowHeadScales when none snaps at epsilon
+  // (group_classifier.cpp, score_each_arrow): a long shaft's small head.
+  bool finer_head_scales = true;
   double max_gap_barb = kMaxGapBarb;
   double max_gap_aim = kMaxGapAim;
 };

@@ -56,34 +56,60 @@ void prefer_unbent_shafts(std::vector<Scored>& arrows, double epsilon) {
   }
 }
 
-// Arrows that might beat a snap of rank `rank_to_beat` (infinite: none), each certified and
-// checked for plausibility on its own (before prefer_unbent_shafts compares them).
-std::vector<Scored> score_each_arrow(const UnionStroke& u, const std::vector<PointD>& cloud,
-                                     double drawn_length, double epsilon, double pen_radius,
-                                     double rank_to_beat) {
+// Arrows fitted at `scale` epsilon (see score_each_arrow), each certified and checked for
+// plausibility at that scale (a certificate within scale * epsilon is one within epsilon);
+// ranked against the other families at epsilon.
+std::vector<Scored> score_arrows_at(const UnionStroke& u, const std::vector<PointD>& cloud,
+                                    double drawn_length, double epsilon, double scale,
+                                    double pen_radius, double rank_to_beat) {
+  const double e = scale * epsilon;
   std::vector<Scored> out;
-  for (Fit& f : fit_arrows(u, epsilon, rank_to_beat)) {
+  // Curved and bent shafts are sought at epsilon only (they cost the most).
+  const ArrowSearch search = scale < 1.0 ? ArrowSearch::kStraightShafts : ArrowSearch::kAll;
+  for (Fit& f : fit_arrows(u, e, rank_to_beat, search)) {
     Scored sc;
     Candidate& c = sc.candidate;
     c.shape = f.shape;
     c.params = f.params;
     c.clean = f.clean.path;
-    if (f.fit_error <= kCertifyIfBelow * epsilon) {
-      c.certificate = certify_union(u, f.clean, epsilon, pen_radius);
+    if (f.fit_error <= kCertifyIfBelow * e) {
+      c.certificate = certify_union(u, f.clean, e, pen_radius);
     } else {
-      c.certificate.epsilon = epsilon;
+      c.certificate.epsilon = e;
       c.certificate.pen_radius = pen_radius;
       c.certificate.bound = f.fit_error;
     }
     if (c.certificate.certified) {
-      c.rejected =
-          arrow_implausibility(f, c.certificate, drawn_length, head_drawn_apart(f, u, epsilon));
+      c.rejected = arrow_implausibility(f, c.certificate, drawn_length, head_drawn_apart(f, u, e));
     }
+    c.certificate.epsilon = epsilon;
     c.rms = rms_distance(cloud, f.clean);
     sc.rank = rank_of(c, f, epsilon);
     sc.snap = c.certificate.certified && c.rejected.empty();
     sc.fit = std::move(f);
     out.push_back(std::move(sc));
+  }
+  return out;
+}
+
+// Arrows that might beat a snap of rank `rank_to_beat` (infinite: none), each certified and
+// checked for plausibility on its own (before prefer_unbent_shafts compares them). A head is
+// found and judged at the scale of epsilon, which follows the whole drawing, so a long shaft's
+// small head (barbs shorter than epsilon) is no head there: when no arrow snaps, arrows are
+// sought again at the finer scales of kArrowHeadScales, where the whole arrow must then certify
+// (the shaft as well as the head) and pass every rule.
+std::vector<Scored> score_each_arrow(const UnionStroke& u, const std::vector<PointD>& cloud,
+                                     double drawn_length, double epsilon, double pen_radius,
+                                     double rank_to_beat) {
+  std::vector<Scored> out;
+  for (const double scale : kArrowHeadScales) {
+    std::vector<Scored> at =
+        score_arrows_at(u, cloud, drawn_length, epsilon, scale, pen_radius, rank_to_beat);
+    const bool snaps = std::any_of(at.begin(), at.end(), [](const Scored& a) { return a.snap; });
+    if (scale == kArrowHeadScales[0] || snaps) {
+      out.insert(out.end(), std::make_move_iterator(at.begin()), std::make_move_iterator(at.end()));
+    }
+    if (snaps || !arrow_rules().finer_head_scales) break;
   }
   return out;
 }
