@@ -65,7 +65,8 @@ std::vector<Scored> score_arrows_at(const UnionStroke& u, const std::vector<Poin
   const double e = scale * epsilon;
   std::vector<Scored> out;
   // Curved and bent shafts are sought at epsilon only (they cost the most).
-  const ArrowSearch search = scale < 1.0 ? ArrowSearch::kStraightShafts : ArrowSearch::kAll;
+  const ArrowSearch search =
+      scale == kArrowHeadScales[0] ? ArrowSearch::kAll : ArrowSearch::kStraightShafts;
   for (Fit& f : fit_arrows(u, e, rank_to_beat, search)) {
     Scored sc;
     Candidate& c = sc.candidate;
