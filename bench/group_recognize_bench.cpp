@@ -28,6 +28,7 @@
 //   --loso: only the leave-one-subject-out figures of the thresholds picked on real strokes
 //           (group_loso.hpp; each swept over a few values, about 30 s per value).
 //   --loso-only KNOB: the same for the thresholds whose name starts with KNOB.
+//   --arrow-share X: arrows fitted within X epsilon (ArrowRules::tolerance_share; default 0.925).
 //   --without RULE, --apart-barb X, --shaft-span X, --continuation-angle DEG, --gap-barb X,
 //   --gap-aim DEG: a rule off (open_polylines, curved_sides, crossing_pieces,
 //   limbs_as_a_line, continued_tips, arrow_when_refused, outline_when_round_refused,
@@ -262,6 +263,8 @@ int main(int argc, char** argv) {
           std::atof(argv[++i]) * penshape::recognize_detail::kDegree;
     } else if (std::strcmp(argv[i], "--without") == 0 && i + 1 < argc) {
       if (!switch_off(argv[++i])) return 2;
+    } else if (std::strcmp(argv[i], "--arrow-share") == 0 && i + 1 < argc) {
+      penshape::recognize_detail::arrow_rules().tolerance_share = std::atof(argv[++i]);
     } else if (std::strcmp(argv[i], "--apart-barb") == 0 && i + 1 < argc) {
       penshape::recognize_detail::arrow_rules().max_apart_barb = std::atof(argv[++i]);
     } else if (std::strcmp(argv[i], "--shaft-span") == 0 && i + 1 < argc) {
@@ -275,11 +278,12 @@ int main(int argc, char** argv) {
       svg_dir = argv[++i];
       std::filesystem::create_directories(svg_dir);
     } else {
-      std::fprintf(stderr,
-                   "usage: group_recognize_bench [--json] [--gestures-only [--only CLASS]] "
-                   "[--loso | --loso-only KNOB] [--without RULE] [--apart-barb X] "
-                   "[--shaft-span X] [--continuation-angle DEG] [--gap-barb X] [--gap-aim DEG] "
-                   "[--svg-dir DIR] [--invariance]\n");
+      std::fprintf(
+          stderr,
+          "usage: group_recognize_bench [--json] [--gestures-only [--only CLASS]] "
+          "[--loso | --loso-only KNOB] [--without RULE] [--arrow-share X] [--apart-barb X] "
+          "[--shaft-span X] [--continuation-angle DEG] [--gap-barb X] [--gap-aim DEG] "
+          "[--svg-dir DIR] [--invariance]\n");
       return 2;
     }
   }

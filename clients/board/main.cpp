@@ -37,7 +37,7 @@ constexpr const char* kUsage =
     "  --radius MM          pen radius in mm (default 1; 4 window pixels are 1 mm)\n"
     "  --tolerance FRACTION tolerance as a fraction of the radius (default 0.5) of the ink's\n"
     "                       outline; shapes snap with the recognizer's own rule, which follows\n"
-    "                       the drawing: min(0.115 S + r, 0.125 S), S the shape's size\n"
+    "                       the drawing: min(0.125 S + r, 0.135 S), S the shape's size\n"
     "  --size WxH           window size in pixels (default 800x600)\n"
     "  --script FILE        run the commands in FILE (see clients/board/board_script.hpp)\n"
     "  --socket PATH        the daemon's unix socket (default: $XDG_RUNTIME_DIR/penshape.sock)\n"

@@ -35,7 +35,7 @@ const char* const kRecognizeHelp =
     "\n"
     "  --pen-radius R  pen radius in the file's unit (default: 2.5% of each drawing's size)\n"
     "  --tolerance E   Hausdorff tolerance (default: it follows the drawing, not the pen:\n"
-    "                  min(0.115 S + R, 0.125 S), S the diagonal of the stroke's or group's\n"
+    "                  min(0.125 S + R, 0.135 S), S the diagonal of the stroke's or group's\n"
     "                  bounding box; fractions derived from real strokes: recognize.hpp)\n"
     "  --ink           certify single strokes on the inks: build each stroke's ink polygon with\n"
     "                  the pen radius and certify the snap against it (certificate_method\n"

@@ -52,7 +52,7 @@ constexpr const char* kHelp =
     "  --pen-radius R  pen radius in document units (default: each stroke's: half its width,\n"
     "                  the median for pressure strokes)\n"
     "  --tolerance E   Hausdorff tolerance in document units (default: the recognizer's rule,\n"
-    "                  min(0.115 S + R, 0.125 S), S the diagonal of the stroke's or group's\n"
+    "                  min(0.125 S + R, 0.135 S), S the diagonal of the stroke's or group's\n"
     "                  bounding box: it follows the drawing, not the pen); runs in-process\n"
     "  --no-group      recognize every stroke on its own (default: strokes drawn one after the\n"
     "                  other that together make one shape, such as a rectangle's four sides or\n"

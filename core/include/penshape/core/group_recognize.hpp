@@ -67,12 +67,15 @@
 // shaft's direction, or the tip within epsilon / 2 of the shaft's line), and only when no arrow
 // whose shaft runs to its tip is a snap. Two strokes up to 2 epsilon farther apart than touching
 // are tried together for it, and kept together only as an arrow.
-// A head is sought and judged at the scale of epsilon, which follows the whole drawing (about
-// an eighth of it): a long shaft's small head, barbs shorter than epsilon, is no head there. When
-// no arrow is a snap at epsilon, arrows with a straight shaft are sought again at epsilon / 2,
-// where the whole arrow must certify (within epsilon / 2, so within epsilon) and pass every rule
-// above with epsilon / 2 (barbs 7.5% of a 300 or 600 unit shaft make an arrow there). Its rank
-// is taken at epsilon, as every other candidate's.
+// Arrows are fitted, certified and judged within 0.925 epsilon (the rules above read epsilon as
+// that): 12.5% of the size where the default epsilon is 13.5%, the fraction the arrow rules were
+// measured at (the default tolerance is derived on single strokes; a looser band lets a brace or
+// a half note pass for an arrow). A head is sought and judged at that scale, which follows the
+// whole drawing (about an eighth of it): a long shaft's small head, barbs shorter than it, is no
+// head there. When no arrow is a snap, arrows with a straight shaft are sought again at half of
+// it, where the whole arrow must certify (so within epsilon) and pass every rule at that scale
+// (barbs 7.5% of a 300 or 600 unit shaft make an arrow there). Its rank is taken at epsilon, as
+// every other candidate's.
 //
 // Tidy-up (TidyConfig). The winner is then made more regular, one constraint at a time, each kept
 // only when the result is still certified on the same strokes (else that constraint is skipped):

@@ -50,6 +50,8 @@ struct ArrowRules {
   // Arrows are sought again at the finer scales of kArrowHeadScales when none snaps at epsilon
   // (group_classifier.cpp, score_each_arrow): a long shaft's small head.
   bool finer_head_scales = true;
+  // Arrows are fitted and judged within this share of epsilon (kArrowToleranceShare).
+  double tolerance_share = kArrowToleranceShare;
   double max_gap_barb = kMaxGapBarb;
   double max_gap_aim = kMaxGapAim;
 };

@@ -61,12 +61,9 @@ void prefer_unbent_shafts(std::vector<Scored>& arrows, double epsilon) {
 // ranked against the other families at epsilon.
 std::vector<Scored> score_arrows_at(const UnionStroke& u, const std::vector<PointD>& cloud,
                                     double drawn_length, double epsilon, double scale,
-                                    double pen_radius, double rank_to_beat) {
+                                    ArrowSearch search, double pen_radius, double rank_to_beat) {
   const double e = scale * epsilon;
   std::vector<Scored> out;
-  // Curved and bent shafts are sought at epsilon only (they cost the most).
-  const ArrowSearch search =
-      scale == kArrowHeadScales[0] ? ArrowSearch::kAll : ArrowSearch::kStraightShafts;
   for (Fit& f : fit_arrows(u, e, rank_to_beat, search)) {
     Scored sc;
     Candidate& c = sc.candidate;
@@ -94,20 +91,24 @@ std::vector<Scored> score_arrows_at(const UnionStroke& u, const std::vector<Poin
 }
 
 // Arrows that might beat a snap of rank `rank_to_beat` (infinite: none), each certified and
-// checked for plausibility on its own (before prefer_unbent_shafts compares them). A head is
-// found and judged at the scale of epsilon, which follows the whole drawing, so a long shaft's
-// small head (barbs shorter than epsilon) is no head there: when no arrow snaps, arrows are
-// sought again at the finer scales of kArrowHeadScales, where the whole arrow must then certify
-// (the shaft as well as the head) and pass every rule.
+// checked for plausibility on its own (before prefer_unbent_shafts compares them), within the
+// arrows' share of epsilon (ArrowRules::tolerance_share). A head is found and judged at that
+// scale, which follows the whole drawing, so a long shaft's small head (barbs shorter than it)
+// is no head there: when no arrow snaps, arrows with a straight shaft are sought again at the
+// finer scales of kArrowHeadScales, where the whole arrow must then certify (the shaft as well
+// as the head) and pass every rule. Curved and bent shafts are sought at the first scale only
+// (they cost the most).
 std::vector<Scored> score_each_arrow(const UnionStroke& u, const std::vector<PointD>& cloud,
                                      double drawn_length, double epsilon, double pen_radius,
                                      double rank_to_beat) {
   std::vector<Scored> out;
   for (const double scale : kArrowHeadScales) {
-    std::vector<Scored> at =
-        score_arrows_at(u, cloud, drawn_length, epsilon, scale, pen_radius, rank_to_beat);
+    const bool first = scale == kArrowHeadScales[0];
+    std::vector<Scored> at = score_arrows_at(
+        u, cloud, drawn_length, epsilon, arrow_rules().tolerance_share * scale,
+        first ? ArrowSearch::kAll : ArrowSearch::kStraightShafts, pen_radius, rank_to_beat);
     const bool snaps = std::any_of(at.begin(), at.end(), [](const Scored& a) { return a.snap; });
-    if (scale == kArrowHeadScales[0] || snaps) {
+    if (first || snaps) {
       out.insert(out.end(), std::make_move_iterator(at.begin()), std::make_move_iterator(at.end()));
     }
     if (snaps || !arrow_rules().finer_head_scales) break;
