@@ -152,9 +152,9 @@ inline constexpr double kCertifyIfBelow = 1.25;
 // 12.5 / 13.5, the fraction of the size their rules were measured at before the default
 // tolerance rose to the one derived on single strokes (recognize.hpp; no arrow is counted there).
 // At the full epsilon a looser band lets a brace's middle or a half note's head pass for one
-// (group_recognize_bench --arrow-share 1: $1 braces and question marks through the grouper, single
-// non-shapes snapped 0.8 -> 1.1%; non-shape drawings of other people snapped together 1.3 ->
-// 1.8%, MMG arrows in 2 strokes 95.9 -> 93.8%).
+// (group_recognize_bench --arrow-share 1: four $1 curly braces read as arrows through the
+// grouper, single non-shapes snapped 0.8 -> 1.1%; non-shape drawings of other people snapped
+// together 1.3 -> 1.8%, MMG arrows in 2 strokes 95.9 -> 93.8%).
 inline constexpr double kArrowToleranceShare = 0.925;
 // The scales of that share at which arrows are sought, in turn until one snaps
 // (group_classifier.cpp score_each_arrow): epsilon follows the whole drawing, a head may be much

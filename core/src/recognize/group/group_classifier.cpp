@@ -80,7 +80,8 @@ std::vector<Scored> score_arrows_at(const UnionStroke& u, const std::vector<Poin
     if (c.certificate.certified) {
       c.rejected = arrow_implausibility(f, c.certificate, drawn_length, head_drawn_apart(f, u, e));
     }
-    c.certificate.epsilon = epsilon;
+    // Within scale * epsilon is within epsilon; a refused fit keeps the scale it was refused at.
+    if (c.certificate.certified) c.certificate.epsilon = epsilon;
     c.rms = rms_distance(cloud, f.clean);
     sc.rank = rank_of(c, f, epsilon);
     sc.snap = c.certificate.certified && c.rejected.empty();
